@@ -1,0 +1,43 @@
+# dispkin — the two set-up commands are `make demo` and `make test` (see README.md).
+# Each installs whatever is missing first (scripts/install-deps.sh).
+
+BUILD ?= build/cmake
+VENV  ?= .venv
+JOBS  ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build python test test-cpp test-python demo bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DDISPKIN_BUILD_TESTS=ON \
+	  -DDISPKIN_BUILD_BENCHMARKS=ON $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The Python package, built by scikit-build-core exactly as `pip install .` does (the build
+# requirements are already in the venv, so no isolated build environment is downloaded).
+python: deps
+	$(VENV)/bin/python -m pip install -q --no-build-isolation .
+
+test-cpp: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-python: python
+	$(VENV)/bin/python -m pytest -q tests/python
+
+test: test-cpp test-python
+
+demo: python
+	$(VENV)/bin/dispkin demo
+
+bench: build
+	$(BUILD)/benchmarks/dispkin_benchmarks --benchmark_min_time=0.2
+
+clean:
+	rm -rf build

@@ -1,0 +1,357 @@
+//! The DISP metric: chord distance, point and sphere speeds, and exact section lengths.
+//!
+//! MATH.md §3–5. Pure functions of a MetricSet and poses; none allocates. They throw only on
+//! bad input (a set that is not well-formed, a missing system velocity for a group limit).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/error.hpp"
+#include "dispkin/metric_set.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+
+//! How a section moves between its end poses (MATH.md §1, §5).
+enum class Interpolation {
+  screw,      //!< T(τ) = Ta·exp(τ ξ): constant body twist
+  decoupled,  //!< pivot on a straight line, orientation by SLERP about one fixed axis (LIN)
+};
+
+inline const char* to_string(Interpolation kind) {
+  return kind == Interpolation::screw ? "screw" : "decoupled";
+}
+
+//! "screw" or "decoupled"; anything else throws std::invalid_argument naming the value.
+inline Interpolation interpolation_from_string(const std::string& name) {
+  if (name == "screw") return Interpolation::screw;
+  if (name == "decoupled") return Interpolation::decoupled;
+  throw std::invalid_argument(describe("interpolation", name, "must be \"decoupled\" or \"screw\""));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Norm policies for the chord distance ("metric form", MATH.md §3). Each gives the norm of a
+// vector and its maximum over a flat disk {u + x : x ⊥ n̂, ‖x‖₂ ≤ r}, the set of chords of a
+// ball under a rigid motion (used for spheres).
+
+//! The Euclidean norm (the default, and the only one under which speeds are rotation-invariant).
+struct EuclideanNorm {
+  template <typename Scalar>
+  static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
+    return u.norm();
+  }
+  template <typename Scalar>
+  static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
+    using std::sqrt;
+    const Scalar along = u.dot(n);
+    const Scalar across = (u - along * n).norm();
+    return sqrt(along * along + (across + r) * (across + r));
+  }
+};
+
+//! The maximum norm max |uᵢ|.
+struct MaxNorm {
+  template <typename Scalar>
+  static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
+    return u.cwiseAbs().maxCoeff();
+  }
+  // max over the disk of ±eᵢ·x is r‖eᵢ − (eᵢ·n̂)n̂‖ = r √(1 − n̂ᵢ²).
+  template <typename Scalar>
+  static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
+    using std::abs;
+    using std::sqrt;
+    Scalar best(0);
+    for (int i = 0; i < 3; ++i) {
+      const Scalar reach = abs(u(i)) + r * sqrt(std::max(Scalar(0), Scalar(1) - n(i) * n(i)));
+      best = std::max(best, reach);
+    }
+    return best;
+  }
+};
+
+//! The L1 norm Σ |uᵢ|.
+struct L1Norm {
+  template <typename Scalar>
+  static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
+    return u.cwiseAbs().sum();
+  }
+  // ‖x‖₁ = max over sign vectors s of s·x; over the disk s·x peaks at s·u + r‖s − (s·n̂)n̂‖.
+  template <typename Scalar>
+  static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
+    using std::sqrt;
+    Scalar best(0);
+    for (int mask = 0; mask < 8; ++mask) {
+      const Eigen::Matrix<Scalar, 3, 1> s((mask & 1) ? -1 : 1, (mask & 2) ? -1 : 1, (mask & 4) ? -1 : 1);
+      const Scalar sn = s.dot(n);
+      best = std::max(best, s.dot(u) + r * sqrt(std::max(Scalar(0), Scalar(3) - sn * sn)));
+    }
+    return best;
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Speeds for a twist (MATH.md §4).
+
+//! Speed of the body point p under body twist (v, ω): ‖v + ω × p‖. Also the apparent speed
+//! of an absolute point whose current body coordinates are p.
+template <typename Scalar>
+Scalar point_speed(const Twist<Scalar>& xi, const Eigen::Matrix<Scalar, 3, 1>& p) noexcept {
+  return (xi.linear + xi.angular.cross(p)).norm();
+}
+
+//! Largest speed of any point of the ball (centre c, radius ρ) under body twist (v, ω), exact:
+//! √((v_c·ω̂)² + (‖v_c − (v_c·ω̂)ω̂‖ + ‖ω‖ρ)²) with v_c = v + ω × c; ‖v_c‖ when ω = 0.
+template <typename Scalar>
+Scalar sphere_speed(const Twist<Scalar>& xi, const Eigen::Matrix<Scalar, 3, 1>& center, Scalar radius) noexcept {
+  using std::sqrt;
+  const Eigen::Matrix<Scalar, 3, 1> vc = xi.linear + xi.angular.cross(center);
+  const Scalar w2 = xi.angular.squaredNorm();
+  if (w2 == Scalar(0)) return vc.norm();
+  const Scalar along = vc.dot(xi.angular);
+  const Scalar along2 = along * along / w2;
+  const Scalar across = sqrt(std::max(Scalar(0), vc.squaredNorm() - along2));
+  const Scalar rim = across + sqrt(w2) * radius;
+  return sqrt(along2 + rim * rim);
+}
+
+namespace detail {
+
+// The body twist (v, ω) at pose T seen in world coordinates as a spatial twist (v_s, ω_s):
+// the apparent speed of the absolute point a, ‖v + ω × T⁻¹a‖, equals ‖v_s + ω_s × a‖ with
+// ω_s = R ω, v_s = R v − ω_s × t. One rotation for the whole set instead of one per point.
+template <typename Scalar>
+Twist<Scalar> world_view(const Pose<Scalar>& pose, const Twist<Scalar>& body) noexcept {
+  const Eigen::Matrix<Scalar, 3, 1> ws = pose.quaternion() * body.angular;
+  const Eigen::Matrix<Scalar, 3, 1> vs = pose.quaternion() * body.linear - ws.cross(pose.translation());
+  return Twist<Scalar>(vs, ws);
+}
+
+// Largest speed of the group's objects under `body` at `pose`.
+template <typename Scalar>
+Scalar group_max_speed(const MetricGroup<Scalar>& g, const Pose<Scalar>& pose, const Twist<Scalar>& body) noexcept {
+  using std::sqrt;
+  Scalar best2(0);
+  for (const auto& r : g.relative_points) best2 = std::max(best2, (body.linear + body.angular.cross(r)).squaredNorm());
+  Scalar best = sqrt(best2);
+  for (const auto& s : g.relative_spheres) best = std::max(best, sphere_speed(body, s.center, s.radius));
+  if (!g.absolute_points.empty() || !g.absolute_spheres.empty()) {
+    const Twist<Scalar> world = world_view(pose, body);
+    Scalar abs2(0);
+    for (const auto& a : g.absolute_points) abs2 = std::max(abs2, (world.linear + world.angular.cross(a)).squaredNorm());
+    best = std::max(best, sqrt(abs2));
+    for (const auto& s : g.absolute_spheres) best = std::max(best, sphere_speed(world, s.center, s.radius));
+  }
+  return best;
+}
+
+}  // namespace detail
+
+//! The DISP speed of the set at `pose` moving with body twist `body`: the largest speed of any
+//! of its points and spheres, each group's speed multiplied by its weight v_sys / v_g.
+template <typename Scalar>
+Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, const Twist<Scalar>& body,
+                       std::optional<Scalar> system_velocity = std::nullopt) {
+  Scalar best(0);
+  for (const auto& g : set.groups()) best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Chord distance (MATH.md §3)
+
+namespace detail {
+
+// Chord length of every object of a group between poses a and b, under `Norm`.
+template <typename Norm, typename Scalar>
+Scalar group_chord(const MetricGroup<Scalar>& g, const Pose<Scalar>& a, const Pose<Scalar>& b) {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+  using std::atan2;
+  using std::sin;
+  Scalar best(0);
+
+  // The relative rotation Q = Raᵀ Rb turns by φ about k (body coordinates of a).
+  const Eigen::Quaternion<Scalar> q_rel = a.quaternion().conjugate() * b.quaternion();
+  const Vector3 rotvec = quaternion_log(q_rel);
+  const Scalar phi = rotvec.norm();
+  const Vector3 k = phi > Scalar(0) ? Vector3(rotvec / phi) : Vector3::UnitZ();
+  // A ball of radius ρ under x ↦ (Q − I)x becomes a flat disk ⊥ k of radius 2ρ sin(φ/2).
+  const Scalar disk_scale = 2 * sin(phi / 2);
+
+  if (!g.relative_points.empty() || !g.relative_spheres.empty()) {
+    // Tb r − Ta r = (Rb − Ra) r + (tb − ta), in world coordinates.
+    const Matrix3 dr = b.rotation() - a.rotation();
+    const Vector3 dt = b.translation() - a.translation();
+    for (const auto& r : g.relative_points) best = std::max(best, Norm::of(Vector3(dr * r + dt)));
+    const Vector3 axis_world = a.quaternion() * k;
+    for (const auto& s : g.relative_spheres)
+      best = std::max(best, Norm::max_over_disk(Vector3(dr * s.center + dt), axis_world, disk_scale * s.radius));
+  }
+  if (!g.absolute_points.empty() || !g.absolute_spheres.empty()) {
+    // Tb⁻¹ x − Ta⁻¹ x = (Rbᵀ − Raᵀ) x − (Rbᵀ tb − Raᵀ ta), in body coordinates.
+    const Matrix3 ra_t = a.rotation().transpose();
+    const Matrix3 rb_t = b.rotation().transpose();
+    const Matrix3 dr = rb_t - ra_t;
+    const Vector3 dt = rb_t * b.translation() - ra_t * a.translation();
+    for (const auto& x : g.absolute_points) best = std::max(best, Norm::of(Vector3(dr * x - dt)));
+    for (const auto& s : g.absolute_spheres)
+      best = std::max(best, Norm::max_over_disk(Vector3(dr * s.center - dt), k, disk_scale * s.radius));
+  }
+  return best;
+}
+
+}  // namespace detail
+
+//! The DISP distance d(a, b) = max over groups of weight · (largest chord of any object),
+//! chords measured with `Norm` (MATH.md §3). A metric on SE(3) for a well-formed set.
+template <typename Norm = EuclideanNorm, typename Scalar>
+Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
+                     std::optional<Scalar> system_velocity = std::nullopt) {
+  set.require_well_formed();
+  Scalar best(0);
+  for (const auto& g : set.groups())
+    best = std::max(best, g.weight(system_velocity) * detail::group_chord<Norm>(g, a, b));
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section length (MATH.md §5): the largest speed of any object per unit of τ ∈ [0, 1].
+
+namespace detail {
+
+// A decoupled section, precomputed once for all objects: the pivot travels Δc (world) while
+// the orientation turns by θ about k (body coordinates of a) — ω per unit τ is Ω = θ k.
+template <typename Scalar>
+struct DecoupledSection {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+
+  DecoupledSection(const Pose<Scalar>& a, const Pose<Scalar>& b, const Vector3& pivot) noexcept {
+    const Vector3 ca = a * pivot;
+    delta_c = b * pivot - ca;
+    omega = quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion()));
+    theta = omega.norm();
+    k = theta > Scalar(0) ? Vector3(omega / theta) : Vector3::UnitZ();
+    pivot_body = pivot;
+    // Body-frame views of Δc at both ends (Rb = Ra·exp(θk), so they differ by a turn about k).
+    d_a = a.quaternion().conjugate() * delta_c;
+    d_b = b.quaternion().conjugate() * delta_c;
+    along = d_a.dot(k);
+    d_a_across = d_a - along * k;
+    d_b_across = d_b - along * k;
+    across = d_a_across.norm();
+    // q·m_a ≥ 0 and q·m_b ≥ 0 say that the direction of Δc⊥ lies on the arc swept by the
+    // direction of ω × (r − p) (θ ≤ π): there the speed peaks between the ends.
+    m_a = d_a.cross(omega);
+    m_b = omega.cross(d_b);
+    // World view for absolute points: g(τ) = Δc + θ ŵ × (x − c(τ)), affine in τ.
+    omega_world = a.quaternion() * omega;
+    w_hat = a.quaternion() * k;
+    pivot_start = ca;
+  }
+
+  // Squared speed peak over τ of a relative point r: ‖v(τ)‖² where v(τ) = Δc + θ ŵ × u(τ).
+  Scalar relative_point_speed2(const Vector3& r) const noexcept {
+    const Vector3 q = omega.cross(r - pivot_body);
+    Scalar best2 = std::max((d_a + q).squaredNorm(), (d_b + q).squaredNorm());
+    if (q.dot(m_a) >= Scalar(0) && q.dot(m_b) >= Scalar(0)) {
+      const Scalar rim = across + q.norm();
+      best2 = std::max(best2, along * along + rim * rim);
+    }
+    return best2;
+  }
+
+  // Peak over τ of a relative sphere: the centre's velocity across k is maximised as for a
+  // point, then the rim adds θρ across the axis (exact, §4 with ω = θ ŵ).
+  Scalar relative_sphere_speed(const Sphere<Scalar>& s) const noexcept {
+    using std::sqrt;
+    const Vector3 q = omega.cross(s.center - pivot_body);
+    Scalar across_peak = std::max((d_a_across + q).norm(), (d_b_across + q).norm());
+    if (q.dot(m_a) >= Scalar(0) && q.dot(m_b) >= Scalar(0)) across_peak = std::max(across_peak, across + q.norm());
+    const Scalar rim = across_peak + theta * s.radius;
+    return sqrt(along * along + rim * rim);
+  }
+
+  // Absolute point x: its apparent velocity is affine in τ, so the peak is at an end.
+  Scalar absolute_point_speed2(const Vector3& x) const noexcept {
+    const Vector3 g0 = delta_c + omega_world.cross(x - pivot_start);
+    const Vector3 g1 = g0 - omega_world.cross(delta_c);
+    return std::max(g0.squaredNorm(), g1.squaredNorm());
+  }
+
+  Scalar absolute_sphere_speed(const Sphere<Scalar>& s) const noexcept {
+    using std::sqrt;
+    const Vector3 g0 = delta_c + omega_world.cross(s.center - pivot_start);
+    const Vector3 g1 = g0 - omega_world.cross(delta_c);
+    const Scalar along_w = delta_c.dot(w_hat);
+    const Scalar across_peak =
+        std::max((g0 - g0.dot(w_hat) * w_hat).norm(), (g1 - g1.dot(w_hat) * w_hat).norm());
+    const Scalar rim = across_peak + theta * s.radius;
+    return sqrt(along_w * along_w + rim * rim);
+  }
+
+  Vector3 delta_c, omega, k, pivot_body, d_a, d_b, d_a_across, d_b_across, m_a, m_b, omega_world, w_hat,
+      pivot_start;
+  Scalar theta, along, across;
+};
+
+template <typename Scalar>
+Scalar group_decoupled_length(const MetricGroup<Scalar>& g, const DecoupledSection<Scalar>& section) noexcept {
+  using std::sqrt;
+  Scalar rel2(0);
+  for (const auto& r : g.relative_points) rel2 = std::max(rel2, section.relative_point_speed2(r));
+  Scalar abs2(0);
+  for (const auto& x : g.absolute_points) abs2 = std::max(abs2, section.absolute_point_speed2(x));
+  Scalar best = sqrt(std::max(rel2, abs2));
+  for (const auto& s : g.relative_spheres) best = std::max(best, section.relative_sphere_speed(s));
+  for (const auto& s : g.absolute_spheres) best = std::max(best, section.absolute_sphere_speed(s));
+  return best;
+}
+
+}  // namespace detail
+
+//! The exact length L of the section from `a` to `b` under the set: the largest speed of any
+//! point or sphere per unit of the section parameter τ ∈ [0, 1] (MATH.md §5), each group
+//! weighted by v_sys / v_g. With τ = (s − s_k)/L every object moves at most at speed ṡ.
+//!
+//! `pivot` (body coordinates) is the point that travels the straight line of a decoupled
+//! section; a screw section does not depend on it.
+template <typename Scalar>
+Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
+                      Interpolation interpolation,
+                      const Eigen::Matrix<Scalar, 3, 1>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero(),
+                      std::optional<Scalar> system_velocity = std::nullopt) {
+  set.require_well_formed();
+  Scalar best(0);
+  if (interpolation == Interpolation::screw) {
+    // Constant body twist: every object's speed is constant along the section (§5), so the
+    // speed at τ = 0 is the section length.
+    const Twist<Scalar> xi = (a.inverse() * b).log();
+    for (const auto& g : set.groups())
+      best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, a, xi));
+  } else {
+    require_finite(pivot, "pivot");
+    const detail::DecoupledSection<Scalar> section(a, b, pivot);
+    for (const auto& g : set.groups())
+      best = std::max(best, g.weight(system_velocity) * detail::group_decoupled_length(g, section));
+  }
+  return best;
+}
+
+//! The pose at τ ∈ [0, 1] of a section — the motion whose speed section_length bounds.
+template <typename Scalar>
+Pose<Scalar> interpolate(const Pose<Scalar>& a, const Pose<Scalar>& b, Scalar tau, Interpolation interpolation,
+                         const Eigen::Matrix<Scalar, 3, 1>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) noexcept {
+  if (interpolation == Interpolation::screw) return a * Pose<Scalar>::exp((a.inverse() * b).log() * tau);
+  // Decoupled: R(τ) = Ra·exp(τ θ k), pivot c(τ) = ca + τ Δc, t = c − R p.
+  const Eigen::Quaternion<Scalar> q_rel = a.quaternion().conjugate() * b.quaternion();
+  const Eigen::Quaternion<Scalar> q = a.quaternion() * quaternion_exp<Scalar>(tau * quaternion_log(q_rel));
+  const Eigen::Matrix<Scalar, 3, 1> c = a * pivot + tau * (b * pivot - a * pivot);
+  return Pose<Scalar>::unchecked(q.normalized(), c - q * pivot);
+}
+
+}  // namespace dispkin

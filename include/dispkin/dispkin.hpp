@@ -1,0 +1,10 @@
+//! dispkin: trajectory planning under a point-set speed limit. The whole public API.
+#pragma once
+
+#include "dispkin/version.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/pose.hpp"
+#include "dispkin/metric_set.hpp"
+#include "dispkin/shapes.hpp"
+#include "dispkin/disp.hpp"
+#include "dispkin/convex_hull.hpp"

@@ -1,0 +1,77 @@
+//! Input checks for the planning side: each failure names the argument and its value.
+//!
+//! Only planning code throws. Sampling code never includes a check that can throw.
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+namespace dispkin {
+namespace detail {
+
+inline void append_value(std::ostringstream& out, double value) { out << value; }
+inline void append_value(std::ostringstream& out, float value) { out << value; }
+inline void append_value(std::ostringstream& out, long double value) { out << value; }
+inline void append_value(std::ostringstream& out, int value) { out << value; }
+inline void append_value(std::ostringstream& out, long value) { out << value; }
+inline void append_value(std::ostringstream& out, long long value) { out << value; }
+inline void append_value(std::ostringstream& out, unsigned long value) { out << value; }
+inline void append_value(std::ostringstream& out, const std::string& value) { out << '"' << value << '"'; }
+inline void append_value(std::ostringstream& out, const char* value) { out << '"' << value << '"'; }
+
+template <typename Derived>
+void append_value(std::ostringstream& out, const Eigen::DenseBase<Derived>& value) {
+  out << '(';
+  for (Eigen::Index i = 0; i < value.size(); ++i) {
+    if (i > 0) out << ", ";
+    out << value.derived().coeff(i);
+  }
+  out << ')';
+}
+
+}  // namespace detail
+
+//! The message "<argument> = <value>: <reason>", the shape every dispkin error has.
+template <typename Value>
+std::string describe(const std::string& argument, const Value& value, const std::string& reason) {
+  std::ostringstream out;
+  out.precision(17);
+  out << argument << " = ";
+  detail::append_value(out, value);
+  out << ": " << reason;
+  return out.str();
+}
+
+//! Throws std::invalid_argument("<argument> = <value>: <reason>") unless `condition` holds.
+template <typename Value>
+void require(bool condition, const std::string& argument, const Value& value, const std::string& reason) {
+  if (!condition) throw std::invalid_argument(describe(argument, value, reason));
+}
+
+//! A finite scalar (not NaN, not ±inf).
+template <typename Scalar, typename = std::enable_if_t<!std::is_base_of_v<Eigen::EigenBase<Scalar>, Scalar>>>
+void require_finite(Scalar value, const std::string& argument) {
+  using std::isfinite;
+  require(static_cast<bool>(isfinite(value)), argument, value, "must be finite");
+}
+
+//! Every coefficient finite.
+template <typename Derived>
+void require_finite(const Eigen::DenseBase<Derived>& value, const std::string& argument) {
+  require(value.derived().allFinite(), argument, value, "must be finite (no NaN or infinity)");
+}
+
+//! A finite, strictly positive scalar (speed limits, accelerations, lengths of shapes).
+template <typename Scalar>
+void require_positive(Scalar value, const std::string& argument) {
+  using std::isfinite;
+  require(static_cast<bool>(isfinite(value)) && value > Scalar(0), argument, value,
+          "must be finite and greater than zero");
+}
+
+}  // namespace dispkin

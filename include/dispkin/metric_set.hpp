@@ -1,0 +1,225 @@
+//! The metric establishment set: the points and spheres the speed limit applies to.
+//!
+//! MATH.md §2. Relative points and spheres are given in body (tool) coordinates and move with
+//! the tool; absolute points and spheres are given in world coordinates and stay put, their
+//! apparent speed seen from the tool is what is limited. Objects belong to groups; a group may
+//! carry its own speed limit (patent Fig. 18), the others are held to the system velocity.
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include "dispkin/error.hpp"
+
+namespace dispkin {
+
+//! Which coordinates an object of the set is given in.
+enum class Frame {
+  relative,  //!< body coordinates: the object moves with the tool
+  absolute,  //!< world coordinates: the object stays put
+};
+
+inline const char* to_string(Frame frame) { return frame == Frame::relative ? "relative" : "absolute"; }
+
+template <typename Scalar>
+struct Sphere {
+  Eigen::Matrix<Scalar, 3, 1> center;
+  Scalar radius;  //!< ≥ 0; a sphere of radius 0 is a point
+};
+
+//! One group of the set: its objects and, optionally, its own speed limit.
+template <typename Scalar>
+struct MetricGroup {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+
+  int id = 0;
+  std::optional<Scalar> speed_limit;  //!< unset: the group is held to the system velocity
+  std::vector<Vector3> relative_points;
+  std::vector<Vector3> absolute_points;
+  std::vector<Sphere<Scalar>> relative_spheres;
+  std::vector<Sphere<Scalar>> absolute_spheres;
+
+  bool empty() const {
+    return relative_points.empty() && absolute_points.empty() && relative_spheres.empty() &&
+           absolute_spheres.empty();
+  }
+
+  //! The factor this group's lengths are multiplied by so that path speed ≤ v_sys keeps the
+  //! group under its own limit: v_sys / v_g (patent M3/M4), 1 without a group limit.
+  Scalar weight(std::optional<Scalar> system_velocity) const {
+    if (!speed_limit) return Scalar(1);
+    if (!system_velocity) {
+      throw std::invalid_argument(describe("system_velocity", std::string("None"),
+                                           "is required because group " + std::to_string(id) +
+                                               " has its own speed limit " + std::to_string(*speed_limit)));
+    }
+    require_positive(*system_velocity, "system_velocity");
+    return *system_velocity / *speed_limit;
+  }
+};
+
+namespace detail {
+
+//! Running first and second moments of a point cloud, shifted by its first point so the
+//! covariance keeps its digits far from the origin. Enough to tell, in O(1), whether the
+//! points are coincident, collinear or span a plane.
+template <typename Scalar>
+struct AffineSpan {
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
+
+  long count = 0;
+  Vector3 shift = Vector3::Zero();
+  Vector3 sum = Vector3::Zero();
+  Matrix3 outer = Matrix3::Zero();
+  bool has_ball = false;  // a sphere of positive radius spans space on its own
+
+  void add(const Vector3& p) {
+    if (count == 0) shift = p;
+    const Vector3 x = p - shift;
+    sum += x;
+    outer += x * x.transpose();
+    ++count;
+  }
+
+  //! Points affinely span at least a plane (relative tolerance 1e-9 on the spread).
+  bool spans_plane() const {
+    if (has_ball) return true;
+    if (count < 3) return false;
+    const Vector3 mean = sum / Scalar(count);
+    const Matrix3 covariance = outer / Scalar(count) - mean * mean.transpose();
+    Eigen::SelfAdjointEigenSolver<Matrix3> eig;
+    eig.computeDirect(covariance, Eigen::EigenvaluesOnly);
+    const Vector3 lambda = eig.eigenvalues();  // ascending
+    // The spread across the main line must be a real fraction of the spread along it.
+    return lambda(2) > Scalar(0) && lambda(1) > Scalar(1e-18) * lambda(2);
+  }
+};
+
+}  // namespace detail
+
+//! The metric establishment set. Mutable while it is being built; every DISP function reads
+//! it through a const reference and allocates nothing.
+template <typename Scalar>
+class MetricSet {
+ public:
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Group = MetricGroup<Scalar>;
+
+  //! A point moving with the tool, in body coordinates.
+  void add_relative(const Vector3& point, int group = 0) { add_points({point}, Frame::relative, group); }
+  void add_relative(const std::vector<Vector3>& points, int group = 0) { add_points(points, Frame::relative, group); }
+
+  //! A fixed point of the world (a protected zone), in world coordinates.
+  void add_absolute(const Vector3& point, int group = 0) { add_points({point}, Frame::absolute, group); }
+  void add_absolute(const std::vector<Vector3>& points, int group = 0) { add_points(points, Frame::absolute, group); }
+
+  //! Points in the given frame. Every point must be finite.
+  void add_points(const std::vector<Vector3>& points, Frame frame, int group = 0) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      require_finite(points[i], "points[" + std::to_string(i) + "]");
+    }
+    Group& g = group_for(group);
+    auto& target = frame == Frame::relative ? g.relative_points : g.absolute_points;
+    auto& span = frame == Frame::relative ? relative_span_ : absolute_span_;
+    target.insert(target.end(), points.begin(), points.end());
+    for (const Vector3& p : points) span.add(p);
+    update_well_formed();
+  }
+
+  //! A sphere (handled exactly, MATH.md §4), relative (body) or absolute (world) centre.
+  void add_sphere(const Vector3& center, Scalar radius, Frame frame = Frame::relative, int group = 0) {
+    require_finite(center, "center");
+    using std::isfinite;
+    require(isfinite(radius) && radius >= Scalar(0), "radius", radius, "must be finite and not negative");
+    Group& g = group_for(group);
+    (frame == Frame::relative ? g.relative_spheres : g.absolute_spheres).push_back({center, radius});
+    auto& span = frame == Frame::relative ? relative_span_ : absolute_span_;
+    span.add(center);
+    if (radius > Scalar(0)) span.has_ball = true;
+    update_well_formed();
+  }
+
+  //! Give group `group` its own speed limit (it is created if it does not exist yet).
+  void set_group_speed(int group, Scalar speed) {
+    require_positive(speed, "speed");
+    group_for(group).speed_limit = speed;
+  }
+
+  const std::vector<Group>& groups() const noexcept { return groups_; }
+
+  //! The group with this id, or nullptr.
+  const Group* find_group(int id) const noexcept {
+    for (const Group& g : groups_)
+      if (g.id == id) return &g;
+    return nullptr;
+  }
+
+  std::size_t point_count() const noexcept {
+    std::size_t n = 0;
+    for (const Group& g : groups_) n += g.relative_points.size() + g.absolute_points.size();
+    return n;
+  }
+  std::size_t sphere_count() const noexcept {
+    std::size_t n = 0;
+    for (const Group& g : groups_) n += g.relative_spheres.size() + g.absolute_spheres.size();
+    return n;
+  }
+  bool empty() const noexcept { return point_count() == 0 && sphere_count() == 0; }
+
+  //! Whether the DISP distance over this set is a metric for every pair of poses (MATH.md §2):
+  //! the relative part or the absolute part must on its own span at least a plane (or contain
+  //! a sphere of positive radius). If both parts are collinear, some pose lines them up and a
+  //! rotation about that line goes unseen.
+  //! Cached when the set changes, so the DISP functions can check it at no cost.
+  bool is_well_formed() const noexcept { return well_formed_; }
+
+  //! Throws std::invalid_argument explaining why the set is not well-formed.
+  void require_well_formed() const {
+    if (is_well_formed()) return;
+    std::string why;
+    if (empty()) {
+      why = "the set is empty";
+    } else {
+      why = "its relative part (" + part_summary(relative_span_) + ") and its absolute part (" +
+            part_summary(absolute_span_) +
+            ") are each at most collinear, so a rotation about their common line would have zero "
+            "length; add a point off that line or a sphere of positive radius";
+    }
+    throw std::invalid_argument(describe("metric_set", std::string("MetricSet"), "is not well-formed: " + why));
+  }
+
+ private:
+  static std::string part_summary(const detail::AffineSpan<Scalar>& span) {
+    return std::to_string(span.count) + (span.count == 1 ? " object" : " objects");
+  }
+
+  Group& group_for(int id) {
+    require(id >= 0, "group", id, "must be a non-negative integer");
+    for (Group& g : groups_)
+      if (g.id == id) return g;
+    Group g;
+    g.id = id;
+    groups_.push_back(std::move(g));
+    std::sort(groups_.begin(), groups_.end(), [](const Group& a, const Group& b) { return a.id < b.id; });
+    for (Group& h : groups_)
+      if (h.id == id) return h;
+    return groups_.back();  // unreachable
+  }
+
+  void update_well_formed() { well_formed_ = relative_span_.spans_plane() || absolute_span_.spans_plane(); }
+
+  std::vector<Group> groups_;
+  bool well_formed_ = false;
+  detail::AffineSpan<Scalar> relative_span_;
+  detail::AffineSpan<Scalar> absolute_span_;
+};
+
+using MetricSetd = MetricSet<double>;
+
+}  // namespace dispkin
