@@ -52,20 +52,24 @@ std::vector<Eigen::Vector3d> convex_hull_vertices(const std::vector<Eigen::Vecto
   for (std::size_t i = 0; i < points.size(); ++i) require_finite(points[i], "points[" + std::to_string(i) + "]");
   if (points.size() <= 3) return points;
 
-  // Principal axes decide the dimension of the hull: Qhull refuses flat input in 3-D.
+  // Principal axes decide the dimension of the hull: Qhull refuses flat input in 3-D. The
+  // eigenvalues only suggest the axes; flatness is then measured directly as the largest
+  // distance from the plane (or line), so that only points within rounding of it — 1e-12 of
+  // the cloud's extent — are treated as lying in it. Anything thicker goes to the 3-D hull.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const auto& p : points) mean += p;
   mean /= static_cast<double>(points.size());
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const auto& p : points) covariance += (p - mean) * (p - mean).transpose();
-  covariance /= static_cast<double>(points.size());
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance);
-  const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
-  const Eigen::Matrix3d axes = eig.eigenvectors();
-  const double flat = 1e-24;  // relative variance: spread below 1e-12 of the extent
+  const Eigen::Matrix3d axes = eig.eigenvectors();  // columns by ascending spread
+  Eigen::Vector3d reach = Eigen::Vector3d::Zero();   // largest |coordinate| along each axis
+  for (const auto& p : points) reach = reach.cwiseMax((axes.transpose() * (p - mean)).cwiseAbs());
+  const double extent = reach(2);
+  const double within_rounding = 1e-12 * extent;
 
-  if (!(lambda(2) > 0.0)) return {points.front()};  // all coincide
-  if (lambda(1) <= flat * lambda(2)) {
+  if (!(extent > 0.0)) return {points.front()};  // all coincide
+  if (reach(1) <= within_rounding && reach(0) <= within_rounding) {
     // Collinear: the two extremes along the line.
     const Eigen::Vector3d dir = axes.col(2);
     auto [lo, hi] = std::minmax_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
@@ -75,7 +79,7 @@ std::vector<Eigen::Vector3d> convex_hull_vertices(const std::vector<Eigen::Vecto
     if (lo > hi) std::swap(out[0], out[1]);
     return out;
   }
-  const int dim = lambda(0) <= flat * lambda(2) ? 2 : 3;
+  const int dim = reach(0) <= within_rounding ? 2 : 3;
   std::vector<coordT> coordinates;
   coordinates.reserve(points.size() * static_cast<std::size_t>(dim));
   for (const auto& p : points) {

@@ -100,14 +100,15 @@ struct L1Norm {
 //! Speed of the body point p under body twist (v, ω): ‖v + ω × p‖. Also the apparent speed
 //! of an absolute point whose current body coordinates are p.
 template <typename Scalar>
-Scalar point_speed(const Twist<Scalar>& xi, const Eigen::Matrix<Scalar, 3, 1>& p) noexcept {
+Scalar point_speed(const Twist<Scalar>& xi, const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& p) noexcept {
   return (xi.linear + xi.angular.cross(p)).norm();
 }
 
 //! Largest speed of any point of the ball (centre c, radius ρ) under body twist (v, ω), exact:
 //! √((v_c·ω̂)² + (‖v_c − (v_c·ω̂)ω̂‖ + ‖ω‖ρ)²) with v_c = v + ω × c; ‖v_c‖ when ω = 0.
 template <typename Scalar>
-Scalar sphere_speed(const Twist<Scalar>& xi, const Eigen::Matrix<Scalar, 3, 1>& center, Scalar radius) noexcept {
+Scalar sphere_speed(const Twist<Scalar>& xi, const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center,
+                    non_deduced<Scalar> radius) noexcept {
   using std::sqrt;
   const Eigen::Matrix<Scalar, 3, 1> vc = xi.linear + xi.angular.cross(center);
   const Scalar w2 = xi.angular.squaredNorm();
@@ -155,7 +156,7 @@ Scalar group_max_speed(const MetricGroup<Scalar>& g, const Pose<Scalar>& pose, c
 //! of its points and spheres, each group's speed multiplied by its weight v_sys / v_g.
 template <typename Scalar>
 Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, const Twist<Scalar>& body,
-                       std::optional<Scalar> system_velocity = std::nullopt) {
+                       std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   Scalar best(0);
   for (const auto& g : set.groups()) best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));
   return best;
@@ -211,7 +212,7 @@ Scalar group_chord(const MetricGroup<Scalar>& g, const Pose<Scalar>& a, const Po
 //! chords measured with `Norm` (MATH.md §3). A metric on SE(3) for a well-formed set.
 template <typename Norm = EuclideanNorm, typename Scalar>
 Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
-                     std::optional<Scalar> system_velocity = std::nullopt) {
+                     std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   set.require_well_formed();
   Scalar best(0);
   for (const auto& g : set.groups())
@@ -323,8 +324,8 @@ Scalar group_decoupled_length(const MetricGroup<Scalar>& g, const DecoupledSecti
 template <typename Scalar>
 Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
                       Interpolation interpolation,
-                      const Eigen::Matrix<Scalar, 3, 1>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero(),
-                      std::optional<Scalar> system_velocity = std::nullopt) {
+                      const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero(),
+                      std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   set.require_well_formed();
   Scalar best(0);
   if (interpolation == Interpolation::screw) {
@@ -344,8 +345,8 @@ Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const
 
 //! The pose at τ ∈ [0, 1] of a section — the motion whose speed section_length bounds.
 template <typename Scalar>
-Pose<Scalar> interpolate(const Pose<Scalar>& a, const Pose<Scalar>& b, Scalar tau, Interpolation interpolation,
-                         const Eigen::Matrix<Scalar, 3, 1>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) noexcept {
+Pose<Scalar> interpolate(const Pose<Scalar>& a, const Pose<Scalar>& b, non_deduced<Scalar> tau,
+                         Interpolation interpolation, const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) noexcept {
   if (interpolation == Interpolation::screw) return a * Pose<Scalar>::exp((a.inverse() * b).log() * tau);
   // Decoupled: R(τ) = Ra·exp(τ θ k), pivot c(τ) = ca + τ Δc, t = c − R p.
   const Eigen::Quaternion<Scalar> q_rel = a.quaternion().conjugate() * b.quaternion();

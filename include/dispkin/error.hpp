@@ -12,6 +12,16 @@
 #include <Eigen/Core>
 
 namespace dispkin {
+
+//! T in a position that template argument deduction skips, so that `f(radius, V::Zero())` or
+//! `f(set, a, b, 0.5)` deduce the scalar from the other arguments (std::type_identity, C++20).
+template <typename T>
+struct non_deduced_wrapper {
+  using type = T;
+};
+template <typename T>
+using non_deduced = typename non_deduced_wrapper<T>::type;
+
 namespace detail {
 
 inline void append_value(std::ostringstream& out, double value) { out << value; }

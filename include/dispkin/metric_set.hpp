@@ -87,17 +87,20 @@ struct AffineSpan {
     ++count;
   }
 
-  //! Points affinely span at least a plane (relative tolerance 1e-9 on the spread).
+  //! Points affinely span at least a plane: the spread across their main line is more than
+  //! 1e-7 of the spread along it. (The moments carry rounding of about 1e-16 of the variance,
+  //! i.e. 1e-8 in spread, so a finer test would call exactly collinear points a plane; a set
+  //! within 1e-7 of a line is numerically degenerate anyway: rotations about the line would
+  //! barely register.)
   bool spans_plane() const {
     if (has_ball) return true;
     if (count < 3) return false;
     const Vector3 mean = sum / Scalar(count);
     const Matrix3 covariance = outer / Scalar(count) - mean * mean.transpose();
     Eigen::SelfAdjointEigenSolver<Matrix3> eig;
-    eig.computeDirect(covariance, Eigen::EigenvaluesOnly);
+    eig.compute(covariance, Eigen::EigenvaluesOnly);  // iterative: computeDirect loses half the digits
     const Vector3 lambda = eig.eigenvalues();  // ascending
-    // The spread across the main line must be a real fraction of the spread along it.
-    return lambda(2) > Scalar(0) && lambda(1) > Scalar(1e-18) * lambda(2);
+    return lambda(2) > Scalar(0) && lambda(1) > Scalar(1e-14) * lambda(2);
   }
 };
 

@@ -47,11 +47,13 @@ constexpr Scalar unit_quaternion_tolerance() {
   return std::max(Scalar(1e-6), Scalar(100) * std::numeric_limits<Scalar>::epsilon());
 }
 
-//! Below this cos V an XYZUVW orientation is gimbal-locked (V = ±90°): W is then set to 0 and
-//! U carries the whole rotation about the (then common) X/Z axis.
+//! Below this cos V an XYZUVW orientation is gimbal-locked (V = ±90° to working precision): W
+//! is then set to 0 and U carries the whole rotation about the (then common) X/Z axis. Above
+//! it U and W are both computed (W from the residual rotation), which reproduces R to
+//! rounding however close V is to ±90°; only the split of U and W is ill-conditioned there.
 template <typename Scalar>
 constexpr Scalar gimbal_lock_tolerance() {
-  return Scalar(1e-10);
+  return Scalar(2) * std::numeric_limits<Scalar>::epsilon();
 }
 
 namespace detail {

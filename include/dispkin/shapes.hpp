@@ -53,7 +53,7 @@ Scalar icosahedron_circumradius_ratio() {
 //! The 8 corners of an axis-aligned box with edge lengths `size` around `center`.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> box(const Eigen::Matrix<Scalar, 3, 1>& size,
-                                            const Eigen::Matrix<Scalar, 3, 1>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+                                            const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   require_finite(center, "center");
   require(size.allFinite() && (size.array() > Scalar(0)).all(), "size", size, "edge lengths must be finite and positive");
   std::vector<Eigen::Matrix<Scalar, 3, 1>> corners;
@@ -125,7 +125,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> placed(const Polyhedron<Scalar>& unit, 
 //! under-estimates the sphere's speed; otherwise its vertices lie on the sphere.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(Scalar radius,
-                                                    const Eigen::Matrix<Scalar, 3, 1>& center = Eigen::Matrix<Scalar, 3, 1>::Zero(),
+                                                    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero(),
                                                     bool circumscribed = true) {
   require_positive(radius, "radius");
   require_finite(center, "center");
@@ -138,7 +138,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(Scalar radius,
 //! and its speed bound converges to the sphere's exact speed as subdivisions grow.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisions,
-                                                  const Eigen::Matrix<Scalar, 3, 1>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+                                                  const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   require_positive(radius, "radius");
   require_finite(center, "center");
   require(subdivisions >= 0 && subdivisions <= 7, "subdivisions", subdivisions,
@@ -154,7 +154,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisio
 //! angular speed about the pivot to the system velocity through the radius.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int count,
-                                                        const Eigen::Matrix<Scalar, 3, 1>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+                                                        const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   using std::cos;
   using std::sin;
   using std::sqrt;
