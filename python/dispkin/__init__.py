@@ -1,0 +1,38 @@
+"""dispkin: robot trajectories under a point-set speed limit (the Euclidean DISP metric).
+
+Poses (:class:`Pose`), metric sets (:class:`MetricSet`), point-set builders
+(:mod:`dispkin.shapes`), and the DISP functions: chord distance, point and sphere speeds and
+exact section lengths. Units: metres, radians, seconds. Arrays in and out are float64 numpy
+arrays; bad input raises ValueError naming the argument and the value.
+"""
+
+from . import _core
+from ._core import (
+    MetricSet,
+    Pose,
+    convex_hull_vertices,
+    disp_distance,
+    interpolate,
+    max_point_speed,
+    point_speed,
+    section_length,
+    sphere_speed,
+)
+from . import shapes
+
+#: The library version, the one set in CMakeLists.txt (``project(dispkin VERSION ...)``).
+__version__: str = _core.__version__
+
+__all__ = [
+    "MetricSet",
+    "Pose",
+    "__version__",
+    "convex_hull_vertices",
+    "disp_distance",
+    "interpolate",
+    "max_point_speed",
+    "point_speed",
+    "section_length",
+    "shapes",
+    "sphere_speed",
+]

@@ -1,0 +1,174 @@
+"""The ``dispkin`` command line.
+
+``dispkin demo`` plans one LIN move of a built-in tool under a point-set speed limit and
+compares it with a conventional controller that limits the TCP speed and the angular speed
+separately (Orocos KDL's ``Path_Line`` with an equivalent radius), then measures, over many
+random LIN moves, how much faster than commanded such a controller lets the points of a tool
+sphere move.
+"""
+
+import argparse
+import math
+import sys
+from typing import List, Optional, TextIO, Tuple
+
+import numpy as np
+
+from . import MetricSet, Pose, __version__, disp_distance, section_length
+
+#: Commanded speed of the demo (m/s).
+SYSTEM_VELOCITY = 0.1
+#: KDL Path_Line's equivalent radius (m): rotation by θ counts as a path of length eqradius·θ.
+EQRADIUS = 0.1
+#: The built-in tool: its tip (body coordinates, m) and a ball of this radius around the TCP.
+TOOL_TIP = (0.0, 0.0, 0.3)
+TCP_SPHERE_RADIUS = 0.1
+#: The built-in move, XYZUVW in metres and radians (pivot = TCP).
+MOVE_START = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+MOVE_END = (0.05, 0.02, 0.0, math.radians(10.0), 0.0, math.radians(30.0))
+#: The random moves of the sweep: translation up to this length (m), rotation up to this angle.
+SWEEP_MAX_TRANSLATION = 0.2
+SWEEP_MAX_ANGLE = math.radians(90.0)
+
+
+def demo_tool() -> MetricSet:
+    """The demo's tool: its tip as a relative point and a 0.1 m ball around the TCP."""
+    tool = MetricSet()
+    tool.add_relative(TOOL_TIP)
+    tool.add_sphere((0.0, 0.0, 0.0), TCP_SPHERE_RADIUS)
+    return tool
+
+
+def demo_move() -> Tuple[Pose, Pose]:
+    """The demo's move as (start, end) poses."""
+    return Pose.from_xyzuvw(MOVE_START), Pose.from_xyzuvw(MOVE_END)
+
+
+def kdl_path_length(pose_a: Pose, pose_b: Pose, eqradius: float = EQRADIUS) -> float:
+    """Path length of KDL's ``Path_Line`` (single-axis rotation) from pose_a to pose_b, metres.
+
+    KDL moves the TCP on a straight line and turns about one axis by θ, and parameterises both
+    by one path length ``max(|Δp|, eqradius·θ)``: at path speed v the TCP moves at most at v and
+    the orientation turns at most at v / eqradius.
+    """
+    dp = float(np.linalg.norm(pose_b.translation - pose_a.translation))
+    theta = float(np.linalg.norm((pose_a.inverse() * pose_b).log()[3:]))
+    return max(dp, eqradius * theta)
+
+
+def random_lin_moves(count: int, seed: int) -> List[Pose]:
+    """End poses of `count` random LIN moves from the identity: uniformly random translation
+    direction with length uniform in [0, 0.2] m, uniformly random rotation axis with angle
+    uniform in [0, 90°]."""
+    rng = np.random.default_rng(seed)
+    direction = rng.normal(size=(count, 3))
+    direction /= np.linalg.norm(direction, axis=1, keepdims=True)
+    translation = direction * rng.uniform(0.0, SWEEP_MAX_TRANSLATION, size=(count, 1))
+    axis = rng.normal(size=(count, 3))
+    axis /= np.linalg.norm(axis, axis=1, keepdims=True)
+    rotation_vector = axis * rng.uniform(0.0, SWEEP_MAX_ANGLE, size=(count, 1))
+    moves = []
+    for t, w in zip(translation, rotation_vector):
+        turn = Pose.exp(np.concatenate(([0.0, 0.0, 0.0], w)))
+        moves.append(Pose(quaternion=turn.quaternion, translation=t))
+    return moves
+
+
+def sweep_ratios(count: int, seed: int, eqradius: float = EQRADIUS) -> np.ndarray:
+    """For random LIN moves (see random_lin_moves), the ratio exact LIN section length of the
+    ball of radius `eqradius` around the TCP / KDL path length: how many times the commanded
+    speed the fastest point of that ball moves under KDL's Path_Line."""
+    sphere = MetricSet()
+    sphere.add_sphere((0.0, 0.0, 0.0), eqradius)
+    start = Pose()
+    ratios = []
+    for end in random_lin_moves(count, seed):
+        kdl = kdl_path_length(start, end, eqradius)
+        if kdl > 0.0:  # a move of length zero has no speed to compare
+            ratios.append(section_length(sphere, start, end, interpolation="decoupled") / kdl)
+    return np.asarray(ratios)
+
+
+def run_demo(moves: int, seed: int, out: TextIO) -> int:
+    """Print the demo (see the module docstring) to `out`; returns the exit status 0."""
+    tool = demo_tool()
+    start, end = demo_move()
+    chord = disp_distance(tool, start, end)
+    lin = section_length(tool, start, end, interpolation="decoupled")
+    screw = section_length(tool, start, end, interpolation="screw")
+    kdl = kdl_path_length(start, end)
+    v = SYSTEM_VELOCITY
+    x, y, z, u, vv, w = MOVE_END
+    print(f"dispkin {__version__} demo: one LIN move under a point-set speed limit", file=out)
+    print(
+        f"tool: tip {TOOL_TIP} m (relative point) + ball r = {TCP_SPHERE_RADIUS} m around the TCP",
+        file=out,
+    )
+    print(
+        f"move: XYZUVW 0 -> ({x} m, {y} m, {z} m, {math.degrees(u):g}°, {math.degrees(vv):g}°, "
+        f"{math.degrees(w):g}°), LIN (TCP on a straight line)",
+        file=out,
+    )
+    print(f"  chord distance (DISP)           {chord:.6f} m", file=out)
+    print(f"  section length, LIN (exact)     {lin:.6f} m -> {lin / v:.4f} s at {v} m/s", file=out)
+    print(f"  section length, screw (exact)   {screw:.6f} m -> {screw / v:.4f} s at {v} m/s", file=out)
+    print(
+        f"  KDL Path_Line (eqradius {EQRADIUS} m) {kdl:.6f} m -> {kdl / v:.4f} s; its fastest tool point "
+        f"moves at {lin / kdl:.3f}x the commanded {v} m/s",
+        file=out,
+    )
+    ratios = sweep_ratios(moves, seed)
+    print(
+        f"sweep: {moves} random LIN moves (seed {seed}; translation <= {SWEEP_MAX_TRANSLATION} m, "
+        f"rotation <= {math.degrees(SWEEP_MAX_ANGLE):g}°), set = ball r = {EQRADIUS} m around the TCP",
+        file=out,
+    )
+    print(
+        f"  under KDL Path_Line the points of the tool sphere move {ratios.mean():.3f}x the commanded "
+        f"speed on average and up to {ratios.max():.3f}x",
+        file=out,
+    )
+    print(
+        "computed: DISP chord distance and exact LIN/screw section lengths (dispkin), and the ratio "
+        "exact section length / KDL Path_Line path length for the built-in move and the sweep.",
+        file=out,
+    )
+    return 0
+
+
+def _positive_int(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {value}")
+    return value
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="dispkin",
+        description="Robot trajectories under a point-set speed limit (the Euclidean DISP metric).",
+    )
+    parser.add_argument("--version", action="version", version=f"dispkin {__version__}")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND")
+    commands.required = True
+    demo = commands.add_parser(
+        "demo",
+        help="plan a built-in LIN move and compare with a TCP + angular speed controller (KDL)",
+        description="Plan a built-in LIN move of a tool under a point-set speed limit, compare it "
+        "with KDL's Path_Line (eqradius 0.1 m), and sweep random LIN moves.",
+    )
+    demo.add_argument("--moves", type=_positive_int, default=10000, help="random moves in the sweep (default 10000)")
+    demo.add_argument("--seed", type=int, default=1, help="seed of the random moves (default 1)")
+    return parser
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    """Entry point of the ``dispkin`` command; returns the exit status."""
+    args = build_parser().parse_args(argv)
+    if args.command == "demo":
+        return run_demo(args.moves, args.seed, sys.stdout)
+    return 2  # unreachable: argparse requires a command
+
+
+if __name__ == "__main__":
+    sys.exit(main())

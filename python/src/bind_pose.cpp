@@ -1,0 +1,130 @@
+// Python binding of dispkin/pose.hpp: Pose (twists are (6,) arrays (v, ω)).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+Posed make_pose(const py::object& quaternion, const py::object& translation) {
+  const Eigen::Vector4d q = vector<4>(quaternion, "quaternion");
+  require_finite(q, "quaternion");  // here, so the message shows (w, x, y, z) as the user wrote it
+  return Posed(Eigen::Quaterniond(q(0), q(1), q(2), q(3)), vector3(translation, "translation"));
+}
+
+Eigen::Vector4d wxyz(const Posed& pose) {
+  const Eigen::Quaterniond& q = pose.quaternion();
+  return Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+}
+
+}  // namespace
+
+void bind_pose(py::module_& m) {
+  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
+
+  py::class_<Posed>(m, "Pose", R"doc(
+A rigid transform T = (R, t) in SE(3), mapping body (tool) coordinates to world coordinates:
+x_world = R x_body + t. Stored as a unit quaternion and a translation in metres; immutable.
+Twists are (6,) arrays (v, ω): body velocity in m/s (or m per unit parameter) and angular
+velocity in rad/s, both in body coordinates.)doc")
+      .def(py::init(&make_pose), py::arg_v("quaternion", py::make_tuple(1.0, 0.0, 0.0, 0.0), "(1, 0, 0, 0)"),
+           py::arg_v("translation", origin, "(0, 0, 0)"),
+           "Pose from a unit quaternion (w, x, y, z) (normalised if within 1e-6 of unit norm) and a "
+           "translation (x, y, z) in metres. The defaults give the identity.")
+      .def_static(
+          "from_matrix", [](const py::object& matrix) { return Posed::from_matrix(matrix4(matrix, "matrix")); },
+          py::arg("matrix"),
+          "Pose from a homogeneous (4, 4) matrix [R t; 0 0 0 1] (R orthonormal to 1e-6, t in metres).")
+      .def_static(
+          "from_xyzuvw",
+          [](const py::object& xyzuvw, const py::object& pivot) {
+            return Posed::from_xyzuvw(vector<6>(xyzuvw, "xyzuvw"), vector3(pivot, "pivot"));
+          },
+          py::arg("xyzuvw"), py::arg_v("pivot", origin, "(0, 0, 0)"),
+          "Pose from (X, Y, Z, U, V, W): metres and radians, R = Rx(U) Ry(V) Rz(W) (moving axes), the "
+          "rotation acting about `pivot` (body coordinates, metres): x_w = R (x_b - p) + p + (X, Y, Z).")
+      .def_static(
+          "exp",
+          [](const py::object& twist) {
+            const Vector6d xi = vector<6>(twist, "twist");
+            require_finite(xi, "twist");
+            return Posed::exp(Twistd(xi));
+          },
+          py::arg("twist"),
+          "SE(3) exponential of a body twist (v, ω) (metres, radians): the pose reached after unit "
+          "time at that constant twist.")
+      .def(
+          "log", [](const Posed& self) { return self.log().vector(); },
+          "SE(3) logarithm: the (6,) body twist (v, ω) with Pose.exp(twist) == self, rotation angle "
+          "in [0, π].")
+      .def("matrix", &Posed::matrix, "The homogeneous (4, 4) matrix [R t; 0 0 0 1] (metres).")
+      .def("rotation", &Posed::rotation, "The (3, 3) rotation matrix R (body to world).")
+      .def_property_readonly("quaternion", &wxyz, "The unit quaternion (w, x, y, z) of R, as a (4,) array.")
+      .def_property_readonly(
+          "translation", [](const Posed& self) { return to_array(self.translation()); },
+          "The translation t in metres (world position of the body origin), as a (3,) array.")
+      .def(
+          "to_xyzuvw",
+          [](const Posed& self, const py::object& pivot) {
+            const Eigen::Vector3d p = vector3(pivot, "pivot");
+            require_finite(p, "pivot");  // to_xyzuvw itself does not check (it is noexcept-style)
+            return self.to_xyzuvw(p);
+          },
+          py::arg_v("pivot", origin, "(0, 0, 0)"),
+          "(X, Y, Z, U, V, W) as a (6,) array, the inverse of from_xyzuvw for the same pivot: U, W in "
+          "(-π, π], V in [-π/2, π/2]; at gimbal lock (V = ±π/2) W = 0 and U carries the rotation.")
+      .def("inverse", &Posed::inverse, "The inverse transform (world to body).")
+      .def(
+          "__mul__", [](const Posed& self, const Posed& other) { return self * other; }, py::is_operator(),
+          "Composition: (a * b) maps x to a(b(x)).")
+      .def(
+          "transform",
+          [](const Posed& self, const py::object& points_in) -> py::object {
+            const Array a = as_array(points_in, "points", "an array of shape (3,) or (N, 3)");
+            std::vector<Eigen::Vector3d> pts = points(a, "points", true);
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+              require_finite(pts[i], "points[" + std::to_string(i) + "]");
+              pts[i] = self * pts[i];
+            }
+            if (a.ndim() == 1) return to_array(pts.front());
+            return to_array(pts);
+          },
+          py::arg("points"),
+          "Map points from body to world coordinates (metres): a (3,) array or the rows of an (N, 3) "
+          "array; returns the same shape.")
+      .def(
+          "rotated_about_pivot",
+          [](const Posed& self, const Posed& orientation, const py::object& pivot) {
+            return self.rotated_about_pivot(orientation, vector3(pivot, "pivot"));
+          },
+          py::arg("orientation"), py::arg("pivot"),
+          "The pose with the orientation of `orientation` whose body point `pivot` (body coordinates, "
+          "metres) stays where it is in world: a rotation commanded about a pivot.")
+      .def(
+          "is_approx",
+          [](const Posed& self, const Posed& other, double tol) {
+            require(std::isfinite(tol) && tol >= 0.0, "tol", tol, "must be finite and not negative");
+            return self.is_approx(other, tol);
+          },
+          py::arg("other"), py::arg("tol") = 1e-9,
+          "Whether `other` is the same transform to within `tol` (rotation-matrix entries, and "
+          "translation in metres per coordinate).")
+      .def("__repr__", [](const Posed& self) {
+        return "Pose(quaternion=" + tuple_repr(wxyz(self)) + ", translation=" + tuple_repr(self.translation()) + ")";
+      });
+}
+
+}  // namespace python
+}  // namespace dispkin

@@ -1,0 +1,15 @@
+// One function per C++ module, each defined in its own binding source and called by module.cpp.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace dispkin {
+namespace python {
+
+void bind_pose(pybind11::module_& m);        // bind_pose.cpp: Pose
+void bind_metric_set(pybind11::module_& m);  // bind_metric_set.cpp: MetricSet
+void bind_shapes(pybind11::module_& m);      // bind_shapes.cpp: the submodule `shapes`
+void bind_disp(pybind11::module_& m);        // bind_disp.cpp: distances, speeds, section lengths
+
+}  // namespace python
+}  // namespace dispkin

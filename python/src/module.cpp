@@ -1,0 +1,16 @@
+// The extension module dispkin._core. The pure-Python package `dispkin` re-exports it.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "dispkin/version.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() =
+      "dispkin._core: the compiled core of dispkin (poses, metric sets, shapes, DISP distances and "
+      "section lengths). Use it through the package `dispkin`. Units: metres, radians, seconds.";
+  m.attr("__version__") = dispkin::version;
+  dispkin::python::bind_pose(m);
+  dispkin::python::bind_metric_set(m);
+  dispkin::python::bind_shapes(m);
+  dispkin::python::bind_disp(m);
+}
