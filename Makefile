@@ -5,6 +5,7 @@ BUILD ?= build/cmake
 VENV  ?= .venv
 JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
+export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
 .PHONY: all deps build python test test-cpp test-python demo bench clean
 

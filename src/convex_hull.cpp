@@ -49,7 +49,8 @@ std::vector<int> qhull_vertex_indices(std::vector<coordT>& coordinates, int dim)
 }  // namespace
 
 std::vector<Eigen::Vector3d> convex_hull_vertices(const std::vector<Eigen::Vector3d>& points) {
-  for (std::size_t i = 0; i < points.size(); ++i) require_finite(points[i], "points[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points[i].allFinite()) require_finite(points[i], "points[" + std::to_string(i) + "]");
   if (points.size() <= 3) return points;
 
   // Principal axes decide the dimension of the hull: Qhull refuses flat input in 3-D. The
@@ -99,8 +100,8 @@ MetricSetd reduced_to_hull_vertices(const MetricSetd& set) {
   MetricSetd out;
   for (const auto& g : set.groups()) {
     if (g.speed_limit) out.set_group_speed(g.id, *g.speed_limit);
-    if (!g.relative_points.empty()) out.add_relative(convex_hull_vertices(g.relative_points), g.id);
-    if (!g.absolute_points.empty()) out.add_absolute(convex_hull_vertices(g.absolute_points), g.id);
+    if (!g.relative_points.empty()) out.add_relative(convex_hull_vertices(g.relative_points.to_vectors()), g.id);
+    if (!g.absolute_points.empty()) out.add_absolute(convex_hull_vertices(g.absolute_points.to_vectors()), g.id);
     for (const auto& s : g.relative_spheres) out.add_sphere(s.center, s.radius, Frame::relative, g.id);
     for (const auto& s : g.absolute_spheres) out.add_sphere(s.center, s.radius, Frame::absolute, g.id);
   }

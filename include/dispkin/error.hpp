@@ -50,7 +50,7 @@ void append_value(std::ostringstream& out, const Eigen::DenseBase<Derived>& valu
 template <typename Value>
 std::string describe(const std::string& argument, const Value& value, const std::string& reason) {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(12);  // enough to recognise a value, short enough to read
   out << argument << " = ";
   detail::append_value(out, value);
   out << ": " << reason;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,56 @@ struct Sphere {
   Scalar radius;  //!< ≥ 0; a sphere of radius 0 is a point
 };
 
+//! Points stored as three coordinate columns (x…, y…, z…): the speed kernels then stream
+//! through contiguous arrays and vectorise (MATH.md §4 evaluates one affine map per point).
+template <typename Scalar>
+class PointColumns {
+ public:
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Column = Eigen::Map<const Eigen::Array<Scalar, Eigen::Dynamic, 1>>;
+
+  void push_back(const Vector3& p) {
+    x_.push_back(p.x());
+    y_.push_back(p.y());
+    z_.push_back(p.z());
+  }
+  std::size_t size() const noexcept { return x_.size(); }
+  bool empty() const noexcept { return x_.empty(); }
+  Vector3 operator[](std::size_t i) const noexcept { return Vector3(x_[i], y_[i], z_[i]); }
+
+  Column x() const noexcept { return Column(x_.data(), static_cast<Eigen::Index>(x_.size())); }
+  Column y() const noexcept { return Column(y_.data(), static_cast<Eigen::Index>(y_.size())); }
+  Column z() const noexcept { return Column(z_.data(), static_cast<Eigen::Index>(z_.size())); }
+
+  std::vector<Vector3> to_vectors() const {
+    std::vector<Vector3> out;
+    out.reserve(size());
+    for (std::size_t i = 0; i < size(); ++i) out.push_back((*this)[i]);
+    return out;
+  }
+
+  //! Iteration yields the points by value.
+  class const_iterator {
+   public:
+    const_iterator(const PointColumns* owner, std::size_t i) : owner_(owner), i_(i) {}
+    Vector3 operator*() const { return (*owner_)[i_]; }
+    const_iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    bool operator!=(const const_iterator& other) const { return i_ != other.i_; }
+
+   private:
+    const PointColumns* owner_;
+    std::size_t i_;
+  };
+  const_iterator begin() const { return const_iterator(this, 0); }
+  const_iterator end() const { return const_iterator(this, size()); }
+
+ private:
+  std::vector<Scalar> x_, y_, z_;
+};
+
 //! One group of the set: its objects and, optionally, its own speed limit.
 template <typename Scalar>
 struct MetricGroup {
@@ -39,8 +90,8 @@ struct MetricGroup {
 
   int id = 0;
   std::optional<Scalar> speed_limit;  //!< unset: the group is held to the system velocity
-  std::vector<Vector3> relative_points;
-  std::vector<Vector3> absolute_points;
+  PointColumns<Scalar> relative_points;
+  PointColumns<Scalar> absolute_points;
   std::vector<Sphere<Scalar>> relative_spheres;
   std::vector<Sphere<Scalar>> absolute_spheres;
 
@@ -54,9 +105,10 @@ struct MetricGroup {
   Scalar weight(std::optional<Scalar> system_velocity) const {
     if (!speed_limit) return Scalar(1);
     if (!system_velocity) {
-      throw std::invalid_argument(describe("system_velocity", std::string("None"),
-                                           "is required because group " + std::to_string(id) +
-                                               " has its own speed limit " + std::to_string(*speed_limit)));
+      std::ostringstream why;
+      why << "system_velocity is missing: group " << id << " has its own speed limit " << *speed_limit
+          << ", and its lengths are weighted by system_velocity / " << *speed_limit;
+      throw std::invalid_argument(why.str());
     }
     require_positive(*system_velocity, "system_velocity");
     return *system_velocity / *speed_limit;
@@ -125,13 +177,15 @@ class MetricSet {
   //! Points in the given frame. Every point must be finite.
   void add_points(const std::vector<Vector3>& points, Frame frame, int group = 0) {
     for (std::size_t i = 0; i < points.size(); ++i) {
-      require_finite(points[i], "points[" + std::to_string(i) + "]");
+      if (!points[i].allFinite()) require_finite(points[i], "points[" + std::to_string(i) + "]");
     }
     Group& g = group_for(group);
     auto& target = frame == Frame::relative ? g.relative_points : g.absolute_points;
     auto& span = frame == Frame::relative ? relative_span_ : absolute_span_;
-    target.insert(target.end(), points.begin(), points.end());
-    for (const Vector3& p : points) span.add(p);
+    for (const Vector3& p : points) {
+      target.push_back(p);
+      span.add(p);
+    }
     update_well_formed();
   }
 

@@ -47,13 +47,15 @@ constexpr Scalar unit_quaternion_tolerance() {
   return std::max(Scalar(1e-6), Scalar(100) * std::numeric_limits<Scalar>::epsilon());
 }
 
-//! Below this cos V an XYZUVW orientation is gimbal-locked (V = ±90° to working precision): W
-//! is then set to 0 and U carries the whole rotation about the (then common) X/Z axis. Above
-//! it U and W are both computed (W from the residual rotation), which reproduces R to
-//! rounding however close V is to ±90°; only the split of U and W is ill-conditioned there.
+//! Below this cos V an XYZUVW orientation is gimbal-locked: W is then set to 0 and U carries
+//! the whole rotation about the (then common) X/Z axis. 16ε: an input of exactly V = ±90°
+//! comes back from the rotation matrix with cos V up to 4ε, and must count as locked. Inside
+//! this band setting W = 0 moves R by at most cos V · |W| < 2e-14. Above it U and W are both
+//! computed (W from the residual rotation), which reproduces R to rounding however close V
+//! is to ±90°; only the split of U and W is ill-conditioned there.
 template <typename Scalar>
 constexpr Scalar gimbal_lock_tolerance() {
-  return Scalar(2) * std::numeric_limits<Scalar>::epsilon();
+  return Scalar(16) * std::numeric_limits<Scalar>::epsilon();
 }
 
 namespace detail {
@@ -145,12 +147,12 @@ class Pose {
   //! From a unit quaternion (w, x, y, z) and a translation. Throws if anything is not finite
   //! or |‖q‖ − 1| exceeds unit_quaternion_tolerance(); a quaternion within it is normalised.
   Pose(const Quaternion& quaternion, const Vector3& translation) : t_(translation) {
-    require_finite(quaternion.coeffs(), "quaternion");
+    const Eigen::Matrix<Scalar, 4, 1> wxyz(quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z());
+    require_finite(wxyz, "quaternion (w, x, y, z)");
     require_finite(translation, "translation");
     using std::abs;
     const Scalar norm = quaternion.norm();
     if (!(abs(norm - Scalar(1)) <= unit_quaternion_tolerance<Scalar>())) {
-      const Eigen::Matrix<Scalar, 4, 1> wxyz(quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z());
       throw std::invalid_argument(describe("quaternion (w, x, y, z)", wxyz,
                                            "must be a unit quaternion, its norm is " + std::to_string(norm)));
     }
@@ -187,6 +189,7 @@ class Pose {
   //! The inverse of from_xyzuvw: U, W in (−π, π], V in [−π/2, π/2]. At gimbal lock
   //! (cos V < gimbal_lock_tolerance()) V = ±π/2 as computed, W = 0 and U carries the rotation.
   Vector6 to_xyzuvw(const Vector3& pivot = Vector3::Zero()) const {
+    require_finite(pivot, "pivot");
     using std::atan2;
     using std::sqrt;
     const Matrix3 r = rotation();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <dispkin/metric_set.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -78,6 +79,14 @@ inline std::vector<Eigen::Vector3d> points(const py::handle& obj, const std::str
 
 //! Points as an (N, 3) float64 array.
 inline py::array_t<double> to_array(const std::vector<Eigen::Vector3d>& pts) {
+  py::array_t<double> out({static_cast<py::ssize_t>(pts.size()), py::ssize_t{3}});
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < pts.size(); ++i) Eigen::Map<Eigen::Vector3d>(data + 3 * i) = pts[i];
+  return out;
+}
+
+//! A metric group's points as an (N, 3) float64 array.
+inline py::array_t<double> to_array(const dispkin::PointColumns<double>& pts) {
   py::array_t<double> out({static_cast<py::ssize_t>(pts.size()), py::ssize_t{3}});
   double* data = out.mutable_data();
   for (std::size_t i = 0; i < pts.size(); ++i) Eigen::Map<Eigen::Vector3d>(data + 3 * i) = pts[i];

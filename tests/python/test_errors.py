@@ -162,7 +162,7 @@ def test_group_speeds_and_system_velocity():
     assert s.groups == [0]  # nothing was added by the failed calls
     s.add_relative([1.0, 1.0, 1.0], group=2)
     s.set_group_speed(2, 0.05)
-    missing = r'^system_velocity = "None": is required because group 2 has its own speed limit'
+    missing = r"^system_velocity is missing: group 2 has its own speed limit"
     raises(missing, lambda: dispkin.disp_distance(s, A, B))
     raises(missing, lambda: dispkin.section_length(s, A, B))
     raises(missing, lambda: dispkin.max_point_speed(s, A, XI))

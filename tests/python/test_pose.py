@@ -118,12 +118,6 @@ def test_xyzuvw_at_gimbal_lock(sign):
         assert dispkin.Pose.from_xyzuvw(back).is_approx(p, 4e-15)  # rounding of U ± W, sin, cos
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="pose.hpp: to_xyzuvw sets W = 0 only when cos V computed from R is below 2 eps; for "
-    "V = ±π/2 exactly, rounding in R puts it above that for ~9% of (U, W), e.g. U = 0.26, "
-    "W = 2.61 gives (2.8966, π/2, -0.0266) (cos V = 4.52e-16 > 4.44e-16). Reported.",
-)
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_xyzuvw_at_gimbal_lock_puts_the_whole_rotation_in_u(sign):
     # The documented convention at gimbal lock: W = 0 and U carries the rotation.
