@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -48,7 +49,7 @@ void append_value(std::ostringstream& out, const Eigen::DenseBase<Derived>& valu
 
 //! The message "<argument> = <value>: <reason>", the shape every dispkin error has.
 template <typename Value>
-std::string describe(const std::string& argument, const Value& value, const std::string& reason) {
+std::string describe(std::string_view argument, const Value& value, std::string_view reason) {
   std::ostringstream out;
   out.precision(12);  // enough to recognise a value, short enough to read
   out << argument << " = ";
@@ -59,26 +60,26 @@ std::string describe(const std::string& argument, const Value& value, const std:
 
 //! Throws std::invalid_argument("<argument> = <value>: <reason>") unless `condition` holds.
 template <typename Value>
-void require(bool condition, const std::string& argument, const Value& value, const std::string& reason) {
+void require(bool condition, std::string_view argument, const Value& value, std::string_view reason) {
   if (!condition) throw std::invalid_argument(describe(argument, value, reason));
 }
 
 //! A finite scalar (not NaN, not ±inf).
 template <typename Scalar, typename = std::enable_if_t<!std::is_base_of_v<Eigen::EigenBase<Scalar>, Scalar>>>
-void require_finite(Scalar value, const std::string& argument) {
+void require_finite(Scalar value, std::string_view argument) {
   using std::isfinite;
   require(static_cast<bool>(isfinite(value)), argument, value, "must be finite");
 }
 
 //! Every coefficient finite.
 template <typename Derived>
-void require_finite(const Eigen::DenseBase<Derived>& value, const std::string& argument) {
+void require_finite(const Eigen::DenseBase<Derived>& value, std::string_view argument) {
   require(value.derived().allFinite(), argument, value, "must be finite (no NaN or infinity)");
 }
 
 //! A finite, strictly positive scalar (speed limits, accelerations, lengths of shapes).
 template <typename Scalar>
-void require_positive(Scalar value, const std::string& argument) {
+void require_positive(Scalar value, std::string_view argument) {
   using std::isfinite;
   require(static_cast<bool>(isfinite(value)) && value > Scalar(0), argument, value,
           "must be finite and greater than zero");
