@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,17 @@ inline unsigned long env_or(const char* name, unsigned long fallback) {
 
 //! Cases per sweep: DISPKIN_TEST_COUNT, else `fallback` (the CI size).
 inline int case_count(int fallback) { return static_cast<int>(env_or("DISPKIN_TEST_COUNT", static_cast<unsigned long>(fallback))); }
+
+//! The message of the std::invalid_argument that `f` throws, or "<no exception>".
+template <typename F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "<no exception>";
+}
 
 class Random {
  public:

@@ -4,20 +4,14 @@
 #include <dispkin/disp.hpp>
 #include <dispkin/metric_set.hpp>
 
+#include "random_cases.hpp"
+
 namespace dispkin {
 namespace {
 
-using V = Eigen::Vector3d;
+using testing::message_of;
 
-template <typename F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no exception>";
-}
+using V = Eigen::Vector3d;
 
 TEST(MetricSet, WellFormedNeedsAPlaneOrABall) {
   MetricSetd set;

@@ -11,6 +11,8 @@
 namespace dispkin {
 namespace {
 
+using testing::message_of;
+
 using testing::Random;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 constexpr double pi = 3.14159265358979323846;
@@ -193,16 +195,6 @@ TEST(Pose, LogOfRandomPosesInvertsExp) {
 }
 
 // ---- bad input: every message names the argument and its value ------------------------------
-
-template <typename F>
-std::string message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no exception>";
-}
 
 TEST(PoseBadInput, NonFiniteTranslation) {
   const double nan = std::nan("");
