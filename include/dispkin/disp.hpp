@@ -120,6 +120,16 @@ struct L1Norm {
   }
 };
 
+namespace detail {
+
+// A system velocity, when given, must be a speed even if no group needs it.
+template <typename Scalar>
+void require_system_velocity(const std::optional<Scalar>& system_velocity) {
+  if (system_velocity) require_positive(*system_velocity, "system_velocity");
+}
+
+}  // namespace detail
+
 // ---------------------------------------------------------------------------------------------
 // Speeds for a twist (MATH.md §4).
 
@@ -203,6 +213,7 @@ Scalar group_max_speed(const MetricGroup<Scalar>& g, const Pose<Scalar>& pose, c
 template <typename Scalar>
 Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, const Twist<Scalar>& body,
                        std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
+  detail::require_system_velocity(system_velocity);
   Scalar best(0);
   for (const auto& g : set.groups()) best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));
   return best;
@@ -266,6 +277,7 @@ template <typename Norm = EuclideanNorm, typename Scalar>
 Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
                      std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   set.require_well_formed();
+  detail::require_system_velocity(system_velocity);
   Scalar best(0);
   for (const auto& g : set.groups())
     best = std::max(best, g.weight(system_velocity) * detail::group_chord<Norm>(g, a, b));
@@ -398,6 +410,7 @@ Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const
                       const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero(),
                       std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   set.require_well_formed();
+  detail::require_system_velocity(system_velocity);
   require_finite(pivot, "pivot");
   Scalar best(0);
   if (interpolation == Interpolation::screw) {

@@ -26,15 +26,8 @@ Twistd checked_twist(const py::object& twist) {
   return Twistd(xi);
 }
 
-// A given system velocity must be valid even when no group needs it.
-OptionalSpeed checked_system_velocity(OptionalSpeed system_velocity) {
-  if (system_velocity) require_positive(*system_velocity, "system_velocity");
-  return system_velocity;
-}
-
 double distance(const MetricSetd& set, const Posed& a, const Posed& b, const std::string& norm,
                 OptionalSpeed system_velocity) {
-  system_velocity = checked_system_velocity(system_velocity);
   if (norm == "euclidean") return disp_distance<EuclideanNorm, double>(set, a, b, system_velocity);
   if (norm == "max") return disp_distance<MaxNorm, double>(set, a, b, system_velocity);
   if (norm == "l1") return disp_distance<L1Norm, double>(set, a, b, system_velocity);
@@ -71,8 +64,7 @@ void bind_disp(py::module_& m) {
          const py::object& pivot, OptionalSpeed system_velocity) {
         const Interpolation kind = interpolation_from_string(interpolation);
         const Eigen::Vector3d p = vector3(pivot, "pivot");
-        require_finite(p, "pivot");  // also for screw sections, which do not use it
-        return section_length<double>(set, a, b, kind, p, checked_system_velocity(system_velocity));
+        return section_length<double>(set, a, b, kind, p, system_velocity);
       },
       py::arg("metric_set"), py::arg("pose_a"), py::arg("pose_b"), py::arg("interpolation") = "decoupled",
       py::arg_v("pivot", origin, "(0, 0, 0)"), py::arg("system_velocity") = py::none(),
@@ -100,7 +92,7 @@ void bind_disp(py::module_& m) {
   m.def(
       "max_point_speed",
       [](const MetricSetd& set, const Posed& pose, const py::object& twist, OptionalSpeed system_velocity) {
-        return max_point_speed<double>(set, pose, checked_twist(twist), checked_system_velocity(system_velocity));
+        return max_point_speed<double>(set, pose, checked_twist(twist), system_velocity);
       },
       py::arg("metric_set"), py::arg("pose"), py::arg("twist"), py::arg("system_velocity") = py::none(),
       "The largest speed (m/s) of any point or sphere of the set when the tool is at `pose` and moves "

@@ -123,6 +123,14 @@ TEST(MetricSetBadInput, GroupLimitNeedsTheSystemVelocity) {
   EXPECT_NE(m.find("group 1"), std::string::npos) << m;
   EXPECT_NE(message_of([&] { disp_distance(set, Posed(), Posed(), -1.0); }).find("system_velocity = -1"),
             std::string::npos);
+  // A given system velocity is checked even where no group needs it.
+  MetricSetd plain;
+  plain.add_sphere(V::Zero(), 0.1);
+  EXPECT_NE(message_of([&] { section_length(plain, Posed(), Posed(), Interpolation::screw, V::Zero(), 0.0); })
+                .find("system_velocity = 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { max_point_speed(plain, Posed(), Twistd(), std::nan("")); }).find("system_velocity = nan"),
+            std::string::npos);
 }
 
 }  // namespace
