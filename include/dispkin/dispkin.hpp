@@ -8,3 +8,4 @@
 #include "dispkin/shapes.hpp"
 #include "dispkin/disp.hpp"
 #include "dispkin/convex_hull.hpp"
+#include "dispkin/path.hpp"

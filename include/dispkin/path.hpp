@@ -1,0 +1,183 @@
+//! Pose paths: LIN and CIRC moves cut into sections whose DISP length bounds every point's
+//! speed (MATH.md §1, §5; seed 002 for the interpolations).
+//!
+//! A path is geometry only. It is a chain of sections; section k moves from its start to its
+//! end pose as τ runs over [0, 1], and `section_length` gives L_k with: along the section, no
+//! point of the metric set moves faster than L_k per unit τ. The planner maps the cumulative
+//! DISP arc length s onto (k, τ = (s − s_k)/L_k).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/disp.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/metric_set.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+
+//! A straight section: the decoupled LIN (pivot on a line, SLERP about one axis) or a screw.
+struct LinSection {
+  Posed start, end;
+  Interpolation interpolation = Interpolation::decoupled;
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
+
+  Posed pose(double tau) const noexcept { return interpolate(start, end, tau, interpolation, pivot); }
+
+  //! Exact (MATH.md §5).
+  double length(const MetricSetd& set, std::optional<double> system_velocity) const {
+    return section_length(set, start, end, interpolation, pivot, system_velocity);
+  }
+};
+
+//! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
+//! orientation turns by `rotation_angle` about the fixed world axis `rotation_axis`.
+struct ArcSection {
+  Posed start;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  //!< world
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); //!< world, unit; the pivot turns about it
+  double angle = 0.0;                                 //!< of the pivot about `normal`
+  Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();  //!< world, unit
+  double rotation_angle = 0.0;
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
+
+  Posed pose(double tau) const noexcept {
+    const Eigen::Vector3d c = center + Eigen::AngleAxisd(tau * angle, normal) * (start * pivot - center);
+    const Eigen::Quaterniond q =
+        (Eigen::Quaterniond(Eigen::AngleAxisd(tau * rotation_angle, rotation_axis)) * start.quaternion()).normalized();
+    return Posed::unchecked(q, c - q * pivot);
+  }
+
+  Posed end() const noexcept { return pose(1.0); }
+
+  //! An upper bound of the speed of every object per unit τ, conservative by at most
+  //! (2 + θ) δ with δ = 2 φ ρ sin(φ/4) (φ = angle, ρ = radius of the pivot's circle, θ =
+  //! rotation_angle). Reference: the decoupled section whose pivot moves with the constant
+  //! velocity ċ(½) of the arc's middle. Along the arc ‖ċ(τ) − ċ(½)‖ ≤ δ, which bounds the
+  //! difference of every relative point's velocity by δ; for an absolute point the pivot's
+  //! position also differs by at most δ, adding θ δ through the rotation.
+  double length(const MetricSetd& set, std::optional<double> system_velocity) const {
+    set.require_well_formed();
+    const Posed reference_end = reference_section_end();
+    const double reference = section_length(set, start, reference_end, Interpolation::decoupled, pivot, system_velocity);
+    return reference + (1.0 + std::abs(rotation_angle)) * deviation_bound() * max_weight(set, system_velocity);
+  }
+
+  //! δ = 2 φ ρ sin(φ/4): how far the pivot velocity along the arc strays from its middle value.
+  double deviation_bound() const noexcept {
+    const double radius = (start * pivot - center).norm();
+    return 2.0 * std::abs(angle) * radius * std::sin(std::abs(angle) / 4.0);
+  }
+
+  //! The end pose of the reference (straight, constant-velocity) section.
+  Posed reference_section_end() const noexcept {
+    const Eigen::Vector3d c0 = start * pivot;
+    const Eigen::Vector3d mid = center + Eigen::AngleAxisd(0.5 * angle, normal) * (c0 - center);
+    const Eigen::Vector3d velocity = angle * normal.cross(mid - center);
+    const Eigen::Quaterniond q =
+        (Eigen::Quaterniond(Eigen::AngleAxisd(rotation_angle, rotation_axis)) * start.quaternion()).normalized();
+    return Posed::unchecked(q, c0 + velocity - q * pivot);
+  }
+
+ private:
+  static double max_weight(const MetricSetd& set, std::optional<double> system_velocity) {
+    double w = 0.0;
+    for (const auto& g : set.groups()) w = std::max(w, g.weight(system_velocity));
+    return w;
+  }
+};
+
+using Section = std::variant<LinSection, ArcSection>;
+
+//! The pose at τ of any section.
+inline Posed section_pose(const Section& section, double tau) noexcept {
+  return std::visit([tau](const auto& s) { return s.pose(tau); }, section);
+}
+
+//! The start and end poses of any section.
+inline Posed section_start(const Section& section) noexcept {
+  return std::visit([](const auto& s) { return s.pose(0.0); }, section);
+}
+inline Posed section_end(const Section& section) noexcept {
+  return std::visit([](const auto& s) { return s.pose(1.0); }, section);
+}
+
+//! L of any section under the set (exact for LIN, a tight upper bound for arcs).
+inline double section_length(const Section& section, const MetricSetd& set,
+                             std::optional<double> system_velocity = std::nullopt) {
+  return std::visit([&](const auto& s) { return s.length(set, system_velocity); }, section);
+}
+
+//! Geometry of a circle through three points (MATH: circumcentre), with the arc from the
+//! first to the last point passing through the middle one.
+struct CircleThroughPoints {
+  Eigen::Vector3d center;
+  Eigen::Vector3d normal;  //!< unit; the arc runs counter-clockwise about it
+  double radius;
+  double angle;  //!< of the arc from start to end through via, in (0, 2π)
+};
+
+//! Throws std::invalid_argument if two points coincide or the three are collinear (relative
+//! tolerance 1e-9 of the triangle's sides).
+CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via, const Eigen::Vector3d& end);
+
+//! A path: a chain of sections, each starting where the previous one ends.
+class Path {
+ public:
+  //! A LIN move from a to b: one section. `pivot` (body coordinates) travels the straight
+  //! line; `interpolation` "screw" gives the constant-twist variant instead.
+  static Path lin(const Posed& a, const Posed& b, Interpolation interpolation = Interpolation::decoupled,
+                  const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero());
+
+  //! A CIRC move: the pivot on the circular arc from a through via to b (arcs over 180° are
+  //! fine), the orientation turning from a's to b's about one fixed axis, proportionally to the
+  //! arc angle (the via pose's orientation is not used). Cut into equal arc sections, as many
+  //! as needed for ArcSection::length to exceed the exact speed by at most `tolerance`
+  //! relative to the pivot's own speed ((2 + θ) δ ≤ tolerance · φ ρ).
+  static Path circ(const Posed& a, const Posed& via, const Posed& b,
+                   const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero(), double tolerance = 1e-3);
+
+  //! Append `next`, which must start where this path ends (to 1e-9 m and 1e-9 rad).
+  Path& then(const Path& next);
+
+  const std::vector<Section>& sections() const noexcept { return sections_; }
+  std::size_t size() const noexcept { return sections_.size(); }
+  Posed start() const noexcept { return section_start(sections_.front()); }
+  Posed end() const noexcept { return section_end(sections_.back()); }
+
+  //! L_k of every section under the set.
+  std::vector<double> section_lengths(const MetricSetd& set, std::optional<double> system_velocity = std::nullopt) const;
+
+  //! Geometry only: the pose at u ∈ [0, 1], with u spread over the sections in proportion to
+  //! their geometric size (pivot travel plus 0.1 m per radian of rotation). Clamped outside.
+  Posed sample(double u) const noexcept;
+
+ private:
+  Path() = default;
+  void append(Section section);
+
+  std::vector<Section> sections_;
+  std::vector<double> cumulative_;  // geometric size up to the end of each section
+};
+
+//! A PTP move: the straight line between two joint vectors (joint space, no pose yet; the
+//! kinematics plugins map it to poses).
+class JointPath {
+ public:
+  JointPath(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_end);
+  const Eigen::VectorXd& start() const noexcept { return q_start_; }
+  const Eigen::VectorXd& end() const noexcept { return q_end_; }
+  //! q(u) = q_a + u (q_b − q_a), u clamped to [0, 1].
+  Eigen::VectorXd sample(double u) const;
+
+ private:
+  Eigen::VectorXd q_start_, q_end_;
+};
+
+}  // namespace dispkin

@@ -1,0 +1,174 @@
+// Pose paths: LIN, CIRC and PTP geometry and the cutting of arcs into sections.
+#include "dispkin/path.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace dispkin {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// The geometric size of a section, the weight of its share of the path parameter u: pivot
+// travel plus 0.1 m per radian of rotation (so that pure rotations get a share too).
+constexpr double metres_per_radian = 0.1;
+
+double rotation_angle(const Posed& a, const Posed& b) {
+  return quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion())).norm();
+}
+
+double geometric_size(const Section& section) {
+  return std::visit(
+      [](const auto& s) -> double {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, LinSection>) {
+          return ((s.end * s.pivot) - (s.start * s.pivot)).norm() + metres_per_radian * rotation_angle(s.start, s.end);
+        } else {
+          const double radius = ((s.start * s.pivot) - s.center).norm();
+          return std::abs(s.angle) * radius + metres_per_radian * std::abs(s.rotation_angle);
+        }
+      },
+      section);
+}
+
+void require_pose_distinct(const Posed& a, const Posed& b, const char* what) {
+  if (a.is_approx(b, 1e-12)) {
+    throw std::invalid_argument(describe(what, a.translation(), "start and end poses coincide: the move has no length"));
+  }
+}
+
+}  // namespace
+
+CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via, const Eigen::Vector3d& end) {
+  require_finite(start, "start");
+  require_finite(via, "via");
+  require_finite(end, "end");
+  const Eigen::Vector3d u = via - start;
+  const Eigen::Vector3d v = end - start;
+  const double scale = std::max({u.norm(), v.norm(), (end - via).norm()});
+  require(u.norm() > 1e-12 * std::max(scale, 1.0), "via", via, "coincides with the start point of the arc");
+  require(v.norm() > 1e-12 * std::max(scale, 1.0), "end", end, "coincides with the start point of the arc");
+  require((end - via).norm() > 1e-12 * std::max(scale, 1.0), "end", end, "coincides with the via point of the arc");
+  const Eigen::Vector3d w = u.cross(v);
+  // |u × v| = |u||v| sin(angle at start): collinear when the sine is below 1e-9.
+  require(w.norm() > 1e-9 * u.norm() * v.norm(), "via", via,
+          "is collinear with the start and end points: no circle passes through them");
+  // Circumcentre of the triangle (start, via, end), relative to start.
+  const Eigen::Vector3d offset = (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u)) / (2.0 * w.squaredNorm());
+  CircleThroughPoints circle;
+  circle.center = start + offset;
+  circle.normal = w.normalized();
+  circle.radius = offset.norm();
+  // The triangle (start, via, end) turns counter-clockwise about w, so does the arc start →
+  // via → end: its angle is the counter-clockwise angle from start to end.
+  const Eigen::Vector3d ra = start - circle.center;
+  const Eigen::Vector3d rb = end - circle.center;
+  double angle = std::atan2(circle.normal.dot(ra.cross(rb)), ra.dot(rb));
+  if (angle <= 0.0) angle += 2.0 * pi;
+  circle.angle = angle;
+  return circle;
+}
+
+Path Path::lin(const Posed& a, const Posed& b, Interpolation interpolation, const Eigen::Vector3d& pivot) {
+  require_finite(pivot, "pivot");
+  require_pose_distinct(a, b, "b");
+  Path path;
+  path.append(LinSection{a, b, interpolation, pivot});
+  return path;
+}
+
+Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::Vector3d& pivot, double tolerance) {
+  require_finite(pivot, "pivot");
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance,
+          "must be in (0, 0.1]");
+  const CircleThroughPoints circle = circle_through(a * pivot, via * pivot, b * pivot);
+
+  // The orientation turns about one world axis, shortest way, proportionally to the arc.
+  const Eigen::Vector3d rotvec = quaternion_log(Eigen::Quaterniond(b.quaternion() * a.quaternion().conjugate()));
+  const double total_rotation = rotvec.norm();
+  const Eigen::Vector3d axis = total_rotation > 0.0 ? Eigen::Vector3d(rotvec / total_rotation) : Eigen::Vector3d::UnitZ();
+
+  // Sections so that the arc bound is within `tolerance` of the pivot's speed φρ:
+  // (2 + θ/N) · 2 sin(φ/(4N)) ≤ tolerance.
+  auto slack = [&](double n) { return (2.0 + total_rotation / n) * 2.0 * std::sin(circle.angle / (4.0 * n)); };
+  double n = std::max(1.0, std::ceil(circle.angle / tolerance));
+  while (slack(n) > tolerance) n = std::ceil(n * 1.05);
+  const int count = static_cast<int>(n);
+
+  // Each section starts at the exact point of the whole arc (no accumulated rounding).
+  const Eigen::Vector3d radius_vector = (a * pivot) - circle.center;
+  auto pose_at = [&](double fraction) {
+    const Eigen::Vector3d c = circle.center + Eigen::AngleAxisd(fraction * circle.angle, circle.normal) * radius_vector;
+    const Eigen::Quaterniond q =
+        (Eigen::Quaterniond(Eigen::AngleAxisd(fraction * total_rotation, axis)) * a.quaternion()).normalized();
+    return Posed::unchecked(q, c - q * pivot);
+  };
+  Path path;
+  for (int k = 0; k < count; ++k) {
+    ArcSection arc;
+    arc.start = k == 0 ? a : pose_at(double(k) / count);
+    arc.center = circle.center;
+    arc.normal = circle.normal;
+    arc.angle = circle.angle / count;
+    arc.rotation_axis = axis;
+    arc.rotation_angle = total_rotation / count;
+    arc.pivot = pivot;
+    path.append(arc);
+  }
+  return path;
+}
+
+Path& Path::then(const Path& next) {
+  const Posed here = end();
+  const Posed there = next.start();
+  const double gap = (here.translation() - there.translation()).norm();
+  const double turn = rotation_angle(here, there);
+  if (gap > 1e-9 || turn > 1e-9) {
+    throw std::invalid_argument(describe("next", there.translation(),
+                                         "must start where the path ends (gap " + std::to_string(gap) + " m, " +
+                                             std::to_string(turn) + " rad)"));
+  }
+  for (const Section& s : next.sections_) append(s);
+  return *this;
+}
+
+void Path::append(Section section) {
+  const double before = cumulative_.empty() ? 0.0 : cumulative_.back();
+  cumulative_.push_back(before + geometric_size(section));
+  sections_.push_back(std::move(section));
+}
+
+std::vector<double> Path::section_lengths(const MetricSetd& set, std::optional<double> system_velocity) const {
+  std::vector<double> lengths;
+  lengths.reserve(sections_.size());
+  for (const Section& s : sections_) lengths.push_back(section_length(s, set, system_velocity));
+  return lengths;
+}
+
+Posed Path::sample(double u) const noexcept {
+  const double total = cumulative_.back();
+  if (!(u > 0.0) || total == 0.0) return start();
+  if (u >= 1.0) return end();
+  const double target = u * total;
+  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), target);
+  const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(it - cumulative_.begin()), sections_.size() - 1);
+  const double begin = k == 0 ? 0.0 : cumulative_[k - 1];
+  const double size = cumulative_[k] - begin;
+  const double tau = size > 0.0 ? std::clamp((target - begin) / size, 0.0, 1.0) : 0.0;
+  return section_pose(sections_[k], tau);
+}
+
+JointPath::JointPath(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_end) : q_start_(q_start), q_end_(q_end) {
+  require(q_start.size() > 0, "q_start", static_cast<long>(q_start.size()), "must have at least one joint");
+  require(q_end.size() == q_start.size(), "q_end size", static_cast<long>(q_end.size()),
+          "must equal q_start size " + std::to_string(q_start.size()));
+  require_finite(q_start, "q_start");
+  require_finite(q_end, "q_end");
+}
+
+Eigen::VectorXd JointPath::sample(double u) const {
+  const double t = std::clamp(u, 0.0, 1.0);
+  return q_start_ + t * (q_end_ - q_start_);
+}
+
+}  // namespace dispkin
