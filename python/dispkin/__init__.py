@@ -8,7 +8,9 @@ arrays; bad input raises ValueError naming the argument and the value.
 
 from . import _core
 from ._core import (
+    JointPath,
     MetricSet,
+    Path,
     Pose,
     convex_hull_vertices,
     disp_distance,
@@ -24,7 +26,9 @@ from . import shapes
 __version__: str = _core.__version__
 
 __all__ = [
+    "JointPath",
     "MetricSet",
+    "Path",
     "Pose",
     "__version__",
     "convex_hull_vertices",

@@ -1,0 +1,134 @@
+// Python binding of dispkin/path.hpp: Path (LIN, CIRC), its sections, and JointPath (PTP).
+#include <optional>
+#include <string>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/path.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+// Section is a std::variant, which pybind11/stl.h would convert alternative by alternative;
+// Python sees one class, so the variant travels in a holder.
+struct SectionHolder {
+  Section value;
+};
+
+const char* section_kind(const SectionHolder& s) { return std::holds_alternative<LinSection>(s.value) ? "lin" : "arc"; }
+
+// A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices.
+py::object sample_path(const Path& path, const py::object& u) {
+  const Array a = as_array(u, "u", "a number or an array of shape (N,)");
+  if (a.ndim() == 0) return py::cast(path.sample(*a.data()));
+  if (a.ndim() != 1) wrong_shape("u", "a number or an array of shape (N,)", a);
+  py::array_t<double> out({a.shape(0), py::ssize_t{4}, py::ssize_t{4}});
+  double* data = out.mutable_data();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    const double ui = a.data()[i];
+    require_finite(ui, "u");
+    Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(data + 16 * i) = path.sample(ui).matrix();
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_path(py::module_& m) {
+  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
+
+  py::class_<SectionHolder>(m, "Section", R"doc(
+One section of a Path: the motion from `start` to `end` as the section parameter tau runs over
+[0, 1]. `kind` is "lin" (straight: decoupled LIN or screw, exact length) or "arc" (a piece of a
+CIRC, length a tight upper bound).)doc")
+      .def_property_readonly("kind", &section_kind, "\"lin\" or \"arc\".")
+      .def_property_readonly("start", [](const SectionHolder& s) { return section_start(s.value); }, "Pose at tau = 0.")
+      .def_property_readonly("end", [](const SectionHolder& s) { return section_end(s.value); }, "Pose at tau = 1.")
+      .def(
+          "pose",
+          [](const SectionHolder& s, double tau) {
+            require_finite(tau, "tau");
+            return section_pose(s.value, tau);
+          },
+          py::arg("tau"), "The pose at section parameter tau (0 = start, 1 = end).")
+      .def(
+          "length",
+          [](const SectionHolder& s, const MetricSetd& set, std::optional<double> v) {
+            return section_length(s.value, set, v);
+          },
+          py::arg("metric_set"), py::arg("system_velocity") = py::none(),
+          "L: no point or sphere of the set moves faster than L (metres) per unit of tau along this "
+          "section.")
+      .def("__repr__", [](const SectionHolder& s) { return std::string("Section(kind=\"") + section_kind(s) + "\")"; });
+
+  py::class_<Path>(m, "Path", R"doc(
+A pose path (geometry only, no time): a chain of sections. Build it with Path.lin / Path.circ
+and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
+      .def_static(
+          "lin",
+          [](const Posed& a, const Posed& b, const std::string& interpolation, const py::object& pivot) {
+            return Path::lin(a, b, interpolation_from_string(interpolation), vector3(pivot, "pivot"));
+          },
+          py::arg("a"), py::arg("b"), py::arg("interpolation") = "decoupled", py::arg_v("pivot", origin, "(0, 0, 0)"),
+          "A LIN move from pose a to pose b: the pivot (body coordinates, m) on a straight line, the "
+          "orientation by SLERP (\"decoupled\"), or a constant-twist \"screw\".")
+      .def_static(
+          "circ",
+          [](const Posed& a, const Posed& via, const Posed& b, const py::object& pivot, double tolerance) {
+            return Path::circ(a, via, b, vector3(pivot, "pivot"), tolerance);
+          },
+          py::arg("a"), py::arg("via"), py::arg("b"), py::arg_v("pivot", origin, "(0, 0, 0)"),
+          py::arg("tolerance") = 1e-3,
+          "A CIRC move: the pivot on the circular arc from a through via to b, the orientation turning "
+          "from a's to b's proportionally to the arc angle (via's orientation is not used). Cut into "
+          "sections whose length bound exceeds the exact speed by at most `tolerance` (relative).")
+      .def_static(
+          "ptp",
+          [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
+          py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).")
+      .def("then", &Path::then, py::arg("next"), py::return_value_policy::reference_internal,
+           "Append `next`, which must start where this path ends; returns this path.")
+      .def(
+          "sections",
+          [](const Path& p) {
+            py::list out;
+            for (const Section& s : p.sections()) out.append(SectionHolder{s});
+            return out;
+          },
+          "The sections, in order.")
+      .def(
+          "section_lengths",
+          [](const Path& p, const MetricSetd& set, std::optional<double> v) {
+            const std::vector<double> lengths = p.section_lengths(set, v);
+            return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
+          },
+          py::arg("metric_set"), py::arg("system_velocity") = py::none(), "L of every section (metres), as an (N,) array.")
+      .def("sample", &sample_path, py::arg("u"),
+           "Geometry only: the pose at u in [0, 1] (a Pose), or (N, 4, 4) matrices for an array of u. "
+           "u is spread over the sections in proportion to pivot travel plus 0.1 m per radian.")
+      .def_property_readonly("start", &Path::start, "The first pose.")
+      .def_property_readonly("end", &Path::end, "The last pose.")
+      .def("__len__", &Path::size, "Number of sections.")
+      .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " sections)"; });
+
+  py::class_<JointPath>(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).")
+      .def_property_readonly("start", &JointPath::start, "q at u = 0.")
+      .def_property_readonly("end", &JointPath::end, "q at u = 1.")
+      .def(
+          "sample",
+          [](const JointPath& p, double u) {
+            require_finite(u, "u");
+            return p.sample(u);
+          },
+          py::arg("u"), "q(u) = q_a + u (q_b - q_a), u clamped to [0, 1].")
+      .def("__repr__", [](const JointPath& p) { return "JointPath(" + std::to_string(p.start().size()) + " joints)"; });
+}
+
+}  // namespace python
+}  // namespace dispkin
