@@ -9,3 +9,5 @@
 #include "dispkin/disp.hpp"
 #include "dispkin/convex_hull.hpp"
 #include "dispkin/path.hpp"
+#include "dispkin/profile.hpp"
+#include "dispkin/planner.hpp"

@@ -30,6 +30,16 @@ struct LinSection {
 
   Posed pose(double tau) const noexcept { return interpolate(start, end, tau, interpolation, pivot); }
 
+  //! Body twist per unit τ at τ.
+  Twistd twist(double tau) const noexcept {
+    if (interpolation == Interpolation::screw) return (start.inverse() * end).log();
+    // Pivot velocity Δc and rotation θk: the body origin t = c − R p moves at Δc − θŵ × R p.
+    const Eigen::Vector3d omega_body = quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * end.quaternion()));
+    const Posed at = pose(tau);
+    const Eigen::Vector3d delta_c = (end * pivot) - (start * pivot);
+    return Twistd(at.quaternion().conjugate() * delta_c - omega_body.cross(pivot), omega_body);
+  }
+
   //! Exact (MATH.md §5).
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     return section_length(set, start, end, interpolation, pivot, system_velocity);
@@ -55,6 +65,15 @@ struct ArcSection {
   }
 
   Posed end() const noexcept { return pose(1.0); }
+
+  //! Body twist per unit τ at τ: pivot velocity φ n × (c − o), rotation θ ŵ.
+  Twistd twist(double tau) const noexcept {
+    const Posed at = pose(tau);
+    const Eigen::Vector3d c = at * pivot;
+    const Eigen::Vector3d pivot_velocity = angle * normal.cross(c - center);
+    const Eigen::Vector3d omega_body = at.quaternion().conjugate() * (rotation_angle * rotation_axis);
+    return Twistd(at.quaternion().conjugate() * pivot_velocity - omega_body.cross(pivot), omega_body);
+  }
 
   //! An upper bound of the speed of every object per unit τ, conservative by at most
   //! (2 + θ) δ with δ = 2 φ ρ sin(φ/4) (φ = angle, ρ = radius of the pivot's circle, θ =
@@ -98,6 +117,11 @@ using Section = std::variant<LinSection, ArcSection>;
 //! The pose at τ of any section.
 inline Posed section_pose(const Section& section, double tau) noexcept {
   return std::visit([tau](const auto& s) { return s.pose(tau); }, section);
+}
+
+//! The body twist per unit τ of any section at τ.
+inline Twistd section_twist(const Section& section, double tau) noexcept {
+  return std::visit([tau](const auto& s) { return s.twist(tau); }, section);
 }
 
 //! The start and end poses of any section.

@@ -14,10 +14,12 @@ from typing import List, Optional, TextIO, Tuple
 
 import numpy as np
 
-from . import MetricSet, Pose, __version__, disp_distance, section_length
+from . import Limits, MetricSet, Path, Pose, Trajectory, __version__, disp_distance, max_point_speed, plan, section_length
 
-#: Commanded speed of the demo (m/s).
+#: Commanded speed of the demo (m/s), and the acceleration (m/s²) and jerk (m/s³) of its plan.
 SYSTEM_VELOCITY = 0.1
+DEMO_ACCELERATION = 0.5
+DEMO_JERK = 5.0
 #: KDL Path_Line's equivalent radius (m): rotation by θ counts as a path of length eqradius·θ.
 EQRADIUS = 0.1
 #: The built-in tool: its tip (body coordinates, m) and a ball of this radius around the TCP.
@@ -89,6 +91,17 @@ def sweep_ratios(count: int, seed: int, eqradius: float = EQRADIUS) -> np.ndarra
     return np.asarray(ratios)
 
 
+def peak_point_speed(traj: Trajectory, tool: MetricSet, step: float = 1e-3) -> Tuple[float, float]:
+    """The largest speed of any point or sphere of `tool` along `traj`, sampled every `step`
+    seconds from the trajectory's own body twist, and the time it occurs."""
+    times = np.arange(0.0, traj.duration + step, step)
+    poses = traj.sample(times)
+    twists = traj.body_twist(times)
+    speeds = [max_point_speed(tool, Pose.from_matrix(m), xi) for m, xi in zip(poses, twists)]
+    i = int(np.argmax(speeds))
+    return float(speeds[i]), float(times[i])
+
+
 def run_demo(moves: int, seed: int, out: TextIO) -> int:
     """Print the demo (see the module docstring) to `out`; returns the exit status 0."""
     tool = demo_tool()
@@ -117,6 +130,14 @@ def run_demo(moves: int, seed: int, out: TextIO) -> int:
         f"moves at {lin / kdl:.3f}x the commanded {v} m/s",
         file=out,
     )
+    limits = Limits(velocity=v, acceleration=DEMO_ACCELERATION, jerk=DEMO_JERK)
+    traj = plan(Path.lin(start, end), tool, limits, profile="scurve")
+    peak, at = peak_point_speed(traj, tool)
+    print(
+        f"  planned (S-curve, a = {DEMO_ACCELERATION} m/s², j = {DEMO_JERK} m/s³): {traj.duration:.4f} s; "
+        f"fastest point of the set at any 1 ms sample {peak:.6f} m/s (t = {at:.3f} s) <= {v} m/s",
+        file=out,
+    )
     ratios = sweep_ratios(moves, seed)
     print(
         f"sweep: {moves} random LIN moves (seed {seed}; translation <= {SWEEP_MAX_TRANSLATION} m, "
@@ -129,8 +150,9 @@ def run_demo(moves: int, seed: int, out: TextIO) -> int:
         file=out,
     )
     print(
-        "computed: DISP chord distance and exact LIN/screw section lengths (dispkin), and the ratio "
-        "exact section length / KDL Path_Line path length for the built-in move and the sweep.",
+        "computed: DISP chord distance, exact LIN/screw section lengths and an S-curve plan of the move "
+        "(dispkin), and the ratio exact section length / KDL Path_Line path length for the built-in "
+        "move and the sweep.",
         file=out,
     )
     return 0

@@ -10,7 +10,9 @@ void bind_pose(pybind11::module_& m);        // bind_pose.cpp: Pose
 void bind_metric_set(pybind11::module_& m);  // bind_metric_set.cpp: MetricSet
 void bind_shapes(pybind11::module_& m);      // bind_shapes.cpp: the submodule `shapes`
 void bind_disp(pybind11::module_& m);        // bind_disp.cpp: distances, speeds, section lengths
+void bind_profile(pybind11::module_& m);     // bind_profile.cpp: Profile (trapezoid, S-curve)
 void bind_path(pybind11::module_& m);        // bind_path.cpp: Path, Section, JointPath
+void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory
 
 }  // namespace python
 }  // namespace dispkin

@@ -13,5 +13,7 @@ PYBIND11_MODULE(_core, m) {
   dispkin::python::bind_metric_set(m);
   dispkin::python::bind_shapes(m);
   dispkin::python::bind_disp(m);
+  dispkin::python::bind_profile(m);
   dispkin::python::bind_path(m);
+  dispkin::python::bind_planner(m);
 }

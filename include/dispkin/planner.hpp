@@ -1,0 +1,81 @@
+//! The DISP trajectory planner: a path, a metric set and limits → a trajectory whose points
+//! never move faster than the system velocity (MATH.md §5–7).
+//!
+//! The path length is the sum of the section lengths L_k under the set (each group weighted
+//! by v_sys / v_g). A time law s(t) with 0 ≤ ṡ ≤ v_sys, |s̈| ≤ a, |s⃛| ≤ j runs over it and
+//! section k is traversed at τ = (s − s_k)/L_k: every point of every group then moves at most
+//! at ṡ · (its weight)⁻¹ ≤ its limit, at every instant (not only at samples).
+//!
+//! Rule at corners (this version): where the path's direction changes between two sections
+//! (their twists per unit of s differ), the trajectory comes to rest — the patent's "lower
+//! speed at direction reversals" in its simplest safe form. Tangent-continuous junctions (the
+//! sections of one CIRC, collinear LINs) are passed at speed within one time law.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "dispkin/metric_set.hpp"
+#include "dispkin/path.hpp"
+#include "dispkin/pose.hpp"
+#include "dispkin/profile.hpp"
+
+namespace dispkin {
+
+//! System limits in the DISP metric: velocity (m/s), acceleration (m/s²), jerk (m/s³, for the
+//! S-curve). Each must be finite and positive.
+struct Limits {
+  double velocity = 0.0;
+  double acceleration = 0.0;
+  std::optional<double> jerk;
+
+  //! Throws std::invalid_argument naming the limit; the jerk is required for the S-curve
+  //! and refused for the trapezoid (it would be silently ignored).
+  void validate(ProfileKind kind) const;
+};
+
+//! What a trajectory is at one instant.
+struct TrajectorySample {
+  Posed pose;          //!< the pose
+  Twistd body_twist;   //!< its body twist (v, ω), m/s and rad/s
+  double s = 0.0;      //!< DISP arc length travelled, m
+  double s_dot = 0.0;  //!< ṡ: the speed bound of every point of the set, m/s
+  double s_ddot = 0.0; //!< s̈, m/s²
+};
+
+//! A planned trajectory. Sampling is noexcept and allocation-free.
+class Trajectory {
+ public:
+  double duration() const noexcept { return stops_.empty() ? 0.0 : stops_.back().end_time; }
+  double length() const noexcept { return section_s_.empty() ? 0.0 : section_s_.back() + lengths_.back(); }
+  std::size_t section_count() const noexcept { return sections_.size(); }
+  const std::vector<double>& section_lengths() const noexcept { return lengths_; }
+  //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
+  std::size_t piece_count() const noexcept { return stops_.size(); }
+
+  //! The state at time t (clamped to [0, duration]).
+  TrajectorySample sample(double t) const noexcept;
+  //! out[i] = sample(times[i]).
+  void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
+
+ private:
+  friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind);
+
+  // One rest-to-rest piece: a time law over the DISP length of sections [first, last].
+  struct Piece {
+    Profile profile;
+    double start_time, end_time;  // in trajectory time
+    double start_s;               // DISP arc length at its start
+  };
+
+  std::vector<Section> sections_;
+  std::vector<double> lengths_;    // L_k
+  std::vector<double> section_s_;  // s at the start of section k
+  std::vector<Piece> stops_;
+};
+
+//! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
+//! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed.
+Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile = ProfileKind::scurve);
+
+}  // namespace dispkin

@@ -1,0 +1,126 @@
+// Python binding of dispkin/planner.hpp: Limits, plan, Trajectory.
+#include <optional>
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/planner.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+ProfileKind profile_kind(const std::string& name) {
+  if (name == "scurve") return ProfileKind::scurve;
+  if (name == "trapezoid") return ProfileKind::trapezoid;
+  throw std::invalid_argument(describe("profile", name, "must be \"scurve\" or \"trapezoid\""));
+}
+
+// Times as a (N,) array (a number is one time); each must be finite.
+std::vector<double> times_of(const py::object& times) {
+  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
+  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
+  std::vector<double> out(a.data(), a.data() + a.size());
+  for (double t : out) require_finite(t, "times");
+  return out;
+}
+
+// Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
+template <typename Write>
+py::array_t<double> sampled(const Trajectory& traj, const py::object& times, std::vector<py::ssize_t> shape_tail,
+                            py::ssize_t columns, Write write) {
+  const std::vector<double> t = times_of(times);
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
+  shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
+  py::array_t<double> out(shape);
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  return out;
+}
+
+}  // namespace
+
+void bind_planner(py::module_& m) {
+  py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only).")
+      .def(py::init([](double velocity, double acceleration, std::optional<double> jerk) {
+             Limits limits{velocity, acceleration, jerk};
+             require_positive(velocity, "velocity");
+             require_positive(acceleration, "acceleration");
+             if (jerk) require_positive(*jerk, "jerk");
+             return limits;
+           }),
+           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none())
+      .def_readonly("velocity", &Limits::velocity)
+      .def_readonly("acceleration", &Limits::acceleration)
+      .def_readonly("jerk", &Limits::jerk)
+      .def("__repr__", [](const Limits& l) {
+        return "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
+               ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None")) + ")";
+      });
+
+  py::class_<Trajectory>(m, "Trajectory", R"doc(
+A planned trajectory: no point or sphere of the metric set moves faster than its limit at any
+time. Sample it at any times (seconds, clamped to [0, duration]).)doc")
+      .def_property_readonly("duration", &Trajectory::duration, "Seconds.")
+      .def_property_readonly("length", &Trajectory::length, "The DISP arc length, metres.")
+      .def_property_readonly("piece_count", &Trajectory::piece_count, "Rest-to-rest pieces (1 + corners).")
+      .def("section_lengths", [](const Trajectory& t) {
+        return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()), t.section_lengths().data());
+      }, "L of every section, metres.")
+      .def(
+          "sample",
+          [](const Trajectory& traj, const py::object& times) {
+            return sampled(traj, times, {4, 4}, 16, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+            });
+          },
+          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices.")
+      .def(
+          "sample_xyzuvw",
+          [](const Trajectory& traj, const py::object& times) {
+            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
+            });
+          },
+          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians).")
+      .def(
+          "body_twist",
+          [](const Trajectory& traj, const py::object& times) {
+            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+            });
+          },
+          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s.")
+      .def(
+          "path_position",
+          [](const Trajectory& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
+          },
+          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
+      .def(
+          "path_velocity",
+          [](const Trajectory& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
+          },
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
+      .def("__repr__", [](const Trajectory& t) {
+        return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
+      });
+
+  m.def(
+      "plan",
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile) {
+        return plan(path, set, limits, profile_kind(profile));
+      },
+      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",
+      "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
+      "or \"trapezoid\" law. The trajectory stops at corners of the path.");
+}
+
+}  // namespace python
+}  // namespace dispkin

@@ -1,0 +1,92 @@
+// Python binding of dispkin/profile.hpp: Profile (time-optimal trapezoid and S-curve).
+#include <cmath>
+#include <cstddef>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/profile.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+// (N,) times in, (N, 4) rows (s, v, a, j) out. Times must be finite; outside [0, T] the end
+// states are returned (Profile::state_at clamps).
+py::array_t<double> sample(const Profile& profile, const py::object& times) {
+  const std::string expected = "an array of shape (N,)";
+  const Array t = as_array(times, "times", expected);
+  if (t.ndim() != 1) wrong_shape("times", expected, t);
+  const auto n = static_cast<std::size_t>(t.shape(0));
+  for (std::size_t i = 0; i < n; ++i) {
+    require(std::isfinite(t.data()[i]), "times[" + std::to_string(i) + "]", t.data()[i], "must be finite");
+  }
+  py::array_t<double> out({static_cast<py::ssize_t>(n), py::ssize_t{4}});
+  double* row = out.mutable_data();
+  for (std::size_t i = 0; i < n; ++i, row += 4) {
+    const ProfileState x = profile.state_at(t.data()[i]);
+    row[0] = x.s;
+    row[1] = x.v;
+    row[2] = x.a;
+    row[3] = x.j;
+  }
+  return out;
+}
+
+py::list phases(const Profile& profile) {
+  py::list out;
+  for (int i = 0; i < profile.phase_count(); ++i) {
+    const ProfilePhase& p = profile.phase(i);
+    out.append(py::make_tuple(p.duration, p.jerk, p.start.s, p.start.v, p.start.a));
+  }
+  return out;
+}
+
+const char* kind_name(const Profile& p) { return p.kind() == ProfileKind::scurve ? "scurve" : "trapezoid"; }
+
+std::string profile_repr(const Profile& p) {
+  return std::string("Profile(kind=\"") + kind_name(p) + "\", distance=" + float_repr(p.distance()) +
+         ", duration=" + float_repr(p.duration()) + ", peak_velocity=" + float_repr(p.peak_velocity()) +
+         ", phases=" + std::to_string(p.phase_count()) + ")";
+}
+
+}  // namespace
+
+void bind_profile(py::module_& m) {
+  py::class_<Profile>(m, "Profile", R"doc(
+A one-dimensional time-optimal time law s(t) over a distance S (metres, or any unit of path
+length): piecewise-constant jerk, at most seven phases, from velocity v_start to v_end with
+zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurve; immutable.)doc")
+      .def_static("trapezoid", &Profile::trapezoid, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
+                  py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
+                  "The time-optimal law under |v| <= v_max, |a| <= a_max (no jerk limit): accelerate at "
+                  "+a_max to the peak velocity, cruise, decelerate at -a_max. v_start, v_end in [0, v_max]. "
+                  "ValueError on bad input or if `distance` is too short to go from v_start to v_end.")
+      .def_static("scurve", &Profile::scurve, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
+                  py::arg("j_max"), py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
+                  "The time-optimal seven-phase law under |v| <= v_max, |a| <= a_max, |jerk| <= j_max, "
+                  "accelerations zero at both ends. v_start, v_end in [0, v_max]. ValueError on bad input, "
+                  "or if `distance` is too short for the accelerate-cruise-decelerate law between v_start "
+                  "and v_end (a law dipping below both boundary velocities is not supported).")
+      .def_property_readonly("kind", &kind_name, "\"trapezoid\" or \"scurve\".")
+      .def_property_readonly("duration", &Profile::duration, "The duration T in seconds.")
+      .def_property_readonly("distance", &Profile::distance, "The distance S covered.")
+      .def_property_readonly("peak_velocity", &Profile::peak_velocity,
+                             "The velocity reached between acceleration and deceleration.")
+      .def_property_readonly("phases", &phases,
+                             "The phases of non-zero duration, each a tuple (duration, jerk, s, v, a) with "
+                             "the state (s, v, a) at the phase start. Trapezoid phases have jerk 0 and a "
+                             "constant acceleration a.")
+      .def("sample", &sample, py::arg("times"),
+           "States at `times` ((N,) seconds, finite) as an (N, 4) array of rows (s, v, a, jerk). Times "
+           "outside [0, duration] give the start or end state.")
+      .def("__repr__", &profile_repr);
+}
+
+}  // namespace python
+}  // namespace dispkin

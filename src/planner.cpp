@@ -1,0 +1,98 @@
+// The DISP trajectory planner (MATH.md §5–7).
+#include "dispkin/planner.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "dispkin/error.hpp"
+
+namespace dispkin {
+namespace {
+
+// Whether the path keeps its direction from section k to k + 1: the twists per unit of s at
+// the junction agree (to 1e-6 relative). Otherwise some point's velocity direction jumps there.
+bool tangent_continuous(const Section& before, double length_before, const Section& after, double length_after) {
+  const Eigen::Matrix<double, 6, 1> out = section_twist(before, 1.0).vector() / length_before;
+  const Eigen::Matrix<double, 6, 1> in = section_twist(after, 0.0).vector() / length_after;
+  return (out - in).norm() <= 1e-6 * std::max(out.norm(), in.norm());
+}
+
+}  // namespace
+
+void Limits::validate(ProfileKind kind) const {
+  require_positive(velocity, "velocity");
+  require_positive(acceleration, "acceleration");
+  if (kind == ProfileKind::scurve) {
+    if (!jerk) throw std::invalid_argument("jerk is missing: the S-curve profile needs a jerk limit (or use the trapezoid)");
+    require_positive(*jerk, "jerk");
+  } else if (jerk) {
+    throw std::invalid_argument(describe("jerk", *jerk, "is not used by the trapezoidal profile; leave it unset"));
+  }
+}
+
+Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile) {
+  limits.validate(profile);
+  set.require_well_formed();
+  Trajectory trajectory;
+  trajectory.sections_ = path.sections();
+  // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
+  // under its own limit.
+  trajectory.lengths_ = path.section_lengths(set, limits.velocity);
+  const std::size_t n = trajectory.sections_.size();
+  trajectory.section_s_.resize(n);
+  double s = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    trajectory.section_s_[k] = s;
+    s += trajectory.lengths_[k];
+  }
+
+  auto make_profile = [&](double distance) {
+    return profile == ProfileKind::scurve
+               ? Profile::scurve(distance, limits.velocity, limits.acceleration, *limits.jerk)
+               : Profile::trapezoid(distance, limits.velocity, limits.acceleration);
+  };
+  // Rest-to-rest pieces between corners.
+  double time = 0.0;
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool last = k + 1 == n;
+    if (!last && tangent_continuous(trajectory.sections_[k], trajectory.lengths_[k], trajectory.sections_[k + 1],
+                                    trajectory.lengths_[k + 1]))
+      continue;
+    const double start_s = trajectory.section_s_[first];
+    const double end_s = trajectory.section_s_[k] + trajectory.lengths_[k];
+    Profile law = make_profile(end_s - start_s);
+    const double duration = law.duration();
+    trajectory.stops_.push_back(Trajectory::Piece{law, time, time + duration, start_s});
+    time += duration;
+    first = k + 1;
+  }
+  return trajectory;
+}
+
+TrajectorySample Trajectory::sample(double t) const noexcept {
+  TrajectorySample out;
+  if (stops_.empty()) return out;
+  if (!(t > 0.0)) t = 0.0;
+  // The piece running at t: the first that ends after t (the last one for t ≥ duration).
+  auto piece = std::upper_bound(stops_.begin(), stops_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
+  if (piece == stops_.end()) --piece;
+  const ProfileState law = piece->profile.state_at(t - piece->start_time);
+  out.s = piece->start_s + law.s;
+  out.s_dot = law.v;
+  out.s_ddot = law.a;
+  // The section holding s, and τ within it.
+  auto next = std::upper_bound(section_s_.begin(), section_s_.end(), out.s);
+  std::size_t k = next == section_s_.begin() ? 0 : static_cast<std::size_t>(next - section_s_.begin()) - 1;
+  k = std::min(k, sections_.size() - 1);
+  const double tau = std::clamp((out.s - section_s_[k]) / lengths_[k], 0.0, 1.0);
+  out.pose = section_pose(sections_[k], tau);
+  out.body_twist = section_twist(sections_[k], tau) * (out.s_dot / lengths_[k]);
+  return out;
+}
+
+void Trajectory::sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept {
+  for (std::size_t i = 0; i < count; ++i) out[i] = sample(times[i]);
+}
+
+}  // namespace dispkin

@@ -1,0 +1,304 @@
+// The planning side of dispkin/profile.hpp: the time-optimal trapezoid and S-curve (MATH.md §6).
+//
+// Both laws share one structure: change the velocity from v_s up to a peak v_p, cruise at v_p,
+// change it down to v_e. Every velocity change starts and ends at zero acceleration (S-curve)
+// or is one constant-acceleration ramp (trapezoid). The peak is the largest v_p ≤ v_max whose
+// two changes fit in S: a higher peak gives a higher velocity at every position s, and the
+// time is ∫ ds / v(s). The cruise at v_p covers what the changes leave of S.
+#include "dispkin/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "dispkin/error.hpp"
+
+namespace dispkin {
+
+namespace {
+
+// --- input checks ----------------------------------------------------------------------------
+
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(12);
+  out << x;
+  return out.str();
+}
+
+void require_distance(double distance) {
+  require(std::isfinite(distance) && distance >= 0.0, "distance", distance, "must be finite and not negative");
+}
+
+// The message is built only on failure: planning stays free of string work on the good path.
+void require_boundary_velocity(double v, const char* name, double v_max) {
+  if (!(std::isfinite(v) && v >= 0.0 && v <= v_max)) {
+    throw std::invalid_argument(describe(name, v, "must be finite and within [0, v_max = " + number(v_max) + "]"));
+  }
+}
+
+[[noreturn]] void throw_too_short(double distance, double needed, double v_start, double v_end,
+                                  const std::string& limits, const std::string& beyond) {
+  throw std::invalid_argument(describe("distance", distance,
+                                       "too short to change the velocity from v_start = " + number(v_start) +
+                                           " to v_end = " + number(v_end) + " under " + limits + ": it needs at least " +
+                                           number(needed) + beyond + "; lower v_start or v_end"));
+}
+
+// --- trapezoid -------------------------------------------------------------------------------
+
+// Distance of a constant-acceleration ramp between velocities v and w: |w² − v²| / (2a).
+double ramp_distance(double v, double w, double a_max) { return std::abs(w - v) * (w + v) / (2.0 * a_max); }
+
+// The trapezoid's peak: v_p² / a − (v_s² + v_e²) / (2a) = S (two ramps, no cruise), capped
+// at v_max and kept ≥ max(v_s, v_e) against rounding.
+double trapezoid_peak(double distance, double v_max, double a_max, double v_start, double v_end) {
+  const double lowest = std::max(v_start, v_end);
+  if (ramp_distance(v_start, v_max, a_max) + ramp_distance(v_end, v_max, a_max) <= distance) return v_max;
+  const double peak = std::sqrt(a_max * distance + 0.5 * (v_start * v_start + v_end * v_end));
+  return std::clamp(peak, lowest, v_max);
+}
+
+// --- S-curve: one velocity change ------------------------------------------------------------
+
+// The time-optimal change of velocity by dv ≥ 0 from zero to zero acceleration: jerk ±j for
+// t_j on both sides of a hold at the peak acceleration a_p for t_a. a_max is reached iff
+// dv ≥ a²/j (then t_j = a/j, t_a = dv/a − a/j); otherwise t_j = √(dv/j), t_a = 0, a_p = j t_j.
+struct VelocityChange {
+  double jerk_time = 0.0;
+  double hold_time = 0.0;
+  double peak_acceleration = 0.0;
+  double duration() const { return 2.0 * jerk_time + hold_time; }
+};
+
+VelocityChange velocity_change(double dv, double a_max, double j_max) {
+  if (dv * j_max >= a_max * a_max) {
+    const double jerk_time = a_max / j_max;
+    return {jerk_time, std::max(0.0, dv / a_max - jerk_time), a_max};
+  }
+  const double jerk_time = std::sqrt(dv / j_max);
+  return {jerk_time, 0.0, j_max * jerk_time};
+}
+
+// The acceleration profile of a change is symmetric in time, so its mean velocity is the mean
+// of its end velocities: distance = (v + w)/2 · duration.
+double change_distance(double v, double w, double a_max, double j_max) {
+  return 0.5 * (v + w) * velocity_change(std::abs(w - v), a_max, j_max).duration();
+}
+
+// D(v_p): the distance of the two changes v_s → v_p → v_e without cruise.
+double changes_distance(double peak, double v_start, double v_end, double a_max, double j_max) {
+  return change_distance(v_start, peak, a_max, j_max) + change_distance(peak, v_end, a_max, j_max);
+}
+
+// d/dw of a change's duration when its velocity step is dv = c + w² (c ≥ 0): 2w/a if a_max is
+// reached, else d/dw 2√((c + w²)/j) = 2w / √(j (c + w²)) (= 2/√j at c = w = 0).
+double change_duration_slope(double c, double w, double a_max, double j_max) {
+  const double dv = c + w * w;
+  if (dv * j_max >= a_max * a_max) return 2.0 * w / a_max;
+  const double root = std::sqrt(j_max * dv);
+  return root > 0.0 ? 2.0 * w / root : 2.0 / std::sqrt(j_max);
+}
+
+// Rest-to-rest peak, closed form (v_s = v_e = 0, D(v_p) = v_p · T_change(v_p)):
+//   a_max not reached (v_p ≤ a²/j):  D = 2 v_p √(v_p/j) = S   →  v_p = ∛(j S² / 4);
+//   a_max reached:                   D = v_p (v_p/a + a/j) = S →  v_p² + (a²/j) v_p − a S = 0.
+double scurve_rest_peak(double distance, double v_max, double a_max, double j_max) {
+  if (changes_distance(v_max, 0.0, 0.0, a_max, j_max) <= distance) return v_max;
+  const double a_reached_at = a_max * a_max / j_max;  // the velocity step that just reaches a_max
+  const double no_hold = std::cbrt(j_max * distance * distance / 4.0);
+  if (no_hold <= a_reached_at) return std::min(no_hold, v_max);
+  // The positive root of the quadratic, in the form without cancellation.
+  const double with_hold = 2.0 * a_max * distance / (a_reached_at + std::sqrt(a_reached_at * a_reached_at + 4.0 * a_max * distance));
+  return std::min(with_hold, v_max);
+}
+
+// A peak and the two velocity steps to it, v_p − v_s and v_p − v_e, kept apart from v_p: a
+// step recomputed as a difference of velocities loses the digits a small step needs.
+struct Peak {
+  double velocity, rise, fall;
+};
+
+// General peak between max(v_s, v_e) and v_max with D(v_p) = S, D increasing. Solved for
+// w = √(v_p − max(v_s, v_e)), in which D is smooth (in v_p it has a √ at the low end), by
+// Newton's method kept inside a bracket [w_lo, w_hi] with D(w_lo) ≤ S < D(w_hi), until the
+// bracket or the Newton step is at rounding level.
+Peak scurve_peak(double distance, double v_max, double a_max, double j_max, double v_start, double v_end) {
+  const double lowest = std::max(v_start, v_end);
+  const double c_start = lowest - v_start;  // velocity steps at w = 0: one of them is exactly 0
+  const double c_end = lowest - v_end;
+  // D(w) with the steps c + w² (not v_p − v): S − D at the root is then at rounding level.
+  auto excess = [&](double w) {
+    const double peak = lowest + w * w;
+    return 0.5 * (v_start + peak) * velocity_change(c_start + w * w, a_max, j_max).duration() +
+           0.5 * (peak + v_end) * velocity_change(c_end + w * w, a_max, j_max).duration() - distance;
+  };
+  // D = Σ_k (v_k + v_p)/2 · T_k with dv_p/dw = 2w:  dD/dw = w (T_s + T_e) + Σ_k (v_k + v_p)/2 · dT_k/dw.
+  auto slope = [&](double w) {
+    const double peak = lowest + w * w;
+    const double t_start = velocity_change(c_start + w * w, a_max, j_max).duration();
+    const double t_end = velocity_change(c_end + w * w, a_max, j_max).duration();
+    return w * (t_start + t_end) + 0.5 * (v_start + peak) * change_duration_slope(c_start, w, a_max, j_max) +
+           0.5 * (v_end + peak) * change_duration_slope(c_end, w, a_max, j_max);
+  };
+  if (excess(0.0) >= 0.0) return {lowest, c_start, c_end};  // S is exactly the direct change
+  double lo = 0.0;
+  double hi = std::sqrt(v_max - lowest);
+  double w = 0.5 * hi;
+  for (int iteration = 0; iteration < 200 && hi - lo > 2.0 * std::numeric_limits<double>::epsilon() * hi; ++iteration) {
+    const double f = excess(w);
+    if (f == 0.0) break;
+    (f < 0.0 ? lo : hi) = w;
+    const double d = slope(w);
+    double next = d > 0.0 ? w - f / d : lo - 1.0;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
+    if (next == w) break;                                    // converged to rounding
+    w = next;
+  }
+  return {lowest + w * w, c_start + w * w, c_end + w * w};
+}
+
+// The cruise at v_p that covers what the two changes leave of S. A remainder at rounding level
+// (the peak is a root of D(v_p) = S computed in floating point) is no cruise: the law then
+// misses S by at most 64 ε S, and state_at's end state is exactly S.
+double cruise_time(double distance, double changes, double peak) {
+  const double rest = distance - changes;
+  if (!(peak > 0.0) || rest <= 64.0 * std::numeric_limits<double>::epsilon() * distance) return 0.0;
+  return rest / peak;
+}
+
+}  // namespace
+
+// --- phases ----------------------------------------------------------------------------------
+
+void Profile::add_phase(double duration, double jerk, double a_start, double a_end) noexcept {
+  if (!(duration > 0.0)) return;
+  ProfilePhase& p = phases_[static_cast<std::size_t>(count_)];
+  p.duration = duration;
+  p.jerk = jerk;
+  p.start.a = a_start;
+  p.end.a = a_end;
+  p.start.j = p.end.j = jerk;
+  time_[static_cast<std::size_t>(count_ + 1)] = time_[static_cast<std::size_t>(count_)] + duration;
+  ++count_;
+}
+
+void Profile::integrate(double v_start, double v_end, int cruise) noexcept {
+  // Forward: s₁ = s₀ + v₀ d + a₀ d²/2 + j d³/6, v₁ = v₀ + a₀ d + j d²/2.
+  double s = 0.0;
+  double v = v_start;
+  for (int i = 0; i < std::min(cruise, count_); ++i) {
+    ProfilePhase& p = phases_[static_cast<std::size_t>(i)];
+    const double d = p.duration;
+    const double a = p.start.a;
+    p.start.s = s;
+    p.start.v = v;
+    s += d * (v + d * (0.5 * a + p.jerk * d / 6.0));
+    v += d * (a + 0.5 * p.jerk * d);
+    p.end.s = s;
+    p.end.v = v;
+  }
+  if (cruise < count_) {
+    phases_[static_cast<std::size_t>(cruise)].start.s = s;
+    phases_[static_cast<std::size_t>(cruise)].start.v = v;
+  }
+  // Backward from the end state: s₀ = s₁ − v₁ d + a₁ d²/2 − j d³/6, v₀ = v₁ − a₁ d + j d²/2.
+  s = distance_;
+  v = v_end;
+  for (int i = count_ - 1; i >= cruise; --i) {
+    ProfilePhase& p = phases_[static_cast<std::size_t>(i)];
+    const double d = p.duration;
+    const double a = p.end.a;
+    p.end.s = s;
+    p.end.v = v;
+    s -= d * (v - d * (0.5 * a - p.jerk * d / 6.0));
+    v -= d * (a - 0.5 * p.jerk * d);
+    if (i > cruise) {
+      p.start.s = s;
+      p.start.v = v;
+    }
+  }
+}
+
+// --- the two laws ----------------------------------------------------------------------------
+
+Profile Profile::trapezoid(double distance, double v_max, double a_max, double v_start, double v_end) {
+  require_distance(distance);
+  require_positive(v_max, "v_max");
+  require_positive(a_max, "a_max");
+  require_boundary_velocity(v_start, "v_start", v_max);
+  require_boundary_velocity(v_end, "v_end", v_max);
+  const double needed = ramp_distance(v_start, v_end, a_max);
+  if (distance < needed) throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max), "");
+
+  Profile p;
+  p.distance_ = distance;
+  p.start_ = {0.0, v_start, 0.0, 0.0};
+  p.end_ = {distance, v_end, 0.0, 0.0};
+  const double peak = trapezoid_peak(distance, v_max, a_max, v_start, v_end);
+  p.peak_velocity_ = peak;
+  // Ramps (v_p − v)/a at ±a; the cruise covers the rest at v_p.
+  const double ramps = ramp_distance(v_start, peak, a_max) + ramp_distance(peak, v_end, a_max);
+  const double cruise = cruise_time(distance, ramps, peak);
+  p.add_phase((peak - v_start) / a_max, 0.0, a_max, a_max);
+  const int cruise_index = p.count_;
+  p.add_phase(cruise, 0.0, 0.0, 0.0);
+  p.add_phase((peak - v_end) / a_max, 0.0, -a_max, -a_max);
+  p.integrate(v_start, v_end, cruise_index);
+  return p;
+}
+
+Profile Profile::scurve(double distance, double v_max, double a_max, double j_max, double v_start, double v_end) {
+  require_distance(distance);
+  require_positive(v_max, "v_max");
+  require_positive(a_max, "a_max");
+  require_positive(j_max, "j_max");
+  require_boundary_velocity(v_start, "v_start", v_max);
+  require_boundary_velocity(v_end, "v_end", v_max);
+  const double lowest = std::max(v_start, v_end);
+  const double needed = changes_distance(lowest, v_start, v_end, a_max, j_max);
+  if (distance < needed) {
+    throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max) + ", j_max = " + number(j_max),
+                    " with the accelerate-cruise-decelerate law (a shorter law would have to dip below both boundary "
+                    "velocities, which is not supported, or does not exist)");
+  }
+
+  Profile p;
+  p.kind_ = ProfileKind::scurve;
+  p.distance_ = distance;
+  p.start_ = {0.0, v_start, 0.0, 0.0};
+  p.end_ = {distance, v_end, 0.0, 0.0};
+  Peak peak;
+  if (v_start == 0.0 && v_end == 0.0) {
+    const double v = scurve_rest_peak(distance, v_max, a_max, j_max);
+    peak = {v, v, v};
+  } else if (changes_distance(v_max, v_start, v_end, a_max, j_max) <= distance) {
+    peak = {v_max, v_max - v_start, v_max - v_end};
+  } else {
+    peak = scurve_peak(distance, v_max, a_max, j_max, v_start, v_end);
+  }
+  p.peak_velocity_ = peak.velocity;
+  const VelocityChange up = velocity_change(peak.rise, a_max, j_max);
+  const VelocityChange down = velocity_change(peak.fall, a_max, j_max);
+  const double changes =
+      0.5 * (v_start + peak.velocity) * up.duration() + 0.5 * (peak.velocity + v_end) * down.duration();
+  const double cruise = cruise_time(distance, changes, peak.velocity);
+  const double ua = up.peak_acceleration;
+  const double da = down.peak_acceleration;
+  // Phases 1–3: jerk +j to a_p, hold, jerk −j to 0.  4: cruise.  5–7: the mirror, down to v_e.
+  p.add_phase(up.jerk_time, j_max, 0.0, ua);
+  p.add_phase(up.hold_time, 0.0, ua, ua);
+  p.add_phase(up.jerk_time, -j_max, ua, 0.0);
+  const int cruise_index = p.count_;
+  p.add_phase(cruise, 0.0, 0.0, 0.0);
+  p.add_phase(down.jerk_time, -j_max, 0.0, -da);
+  p.add_phase(down.hold_time, 0.0, -da, -da);
+  p.add_phase(down.jerk_time, j_max, -da, 0.0);
+  p.integrate(v_start, v_end, cruise_index);
+  return p;
+}
+
+}  // namespace dispkin

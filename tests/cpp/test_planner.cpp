@@ -1,0 +1,169 @@
+// The planner and MATH.md §7 oracle 4, the guarantee: along any planned trajectory, sampled
+// densely by finite differences, no point or sphere of the set moves faster than its limit.
+#include <gtest/gtest.h>
+
+#include <dispkin/planner.hpp>
+#include <dispkin/shapes.hpp>
+
+#include "random_cases.hpp"
+
+namespace dispkin {
+namespace {
+
+using V = Eigen::Vector3d;
+using testing::message_of;
+using testing::Random;
+
+// A random path: a LIN (decoupled or screw), a CIRC, or a chain with a corner.
+Path random_path(Random& rnd, int family) {
+  const Posed a = rnd.pose(0.5);
+  const V pivot = rnd.vector(0.1);
+  switch (family % 4) {
+    case 0:
+      return Path::lin(a, rnd.nearby(a, 0.4, 1.5), Interpolation::decoupled, pivot);
+    case 1:
+      return Path::lin(a, rnd.nearby(a, 0.4, 1.5), Interpolation::screw, pivot);
+    case 2: {
+      // The pivot on an arc through two random points; random orientations at via and end.
+      auto with_pivot_at = [&](const Eigen::Quaterniond& q, const V& point) { return Posed(q, point - q * pivot); };
+      const V start = a * pivot;
+      const Posed via = with_pivot_at(rnd.rotation(), start + V(rnd.uniform(0.1, 0.3), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
+      const Posed b = with_pivot_at(rnd.rotation(), start + V(rnd.uniform(-0.3, -0.1), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
+      return Path::circ(a, via, b, pivot, 1e-2);
+    }
+    default: {
+      const Posed b = rnd.nearby(a, 0.3, 1.0);
+      Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
+      path.then(Path::lin(b, rnd.nearby(b, 0.3, 1.0), Interpolation::decoupled, pivot));
+      return path;
+    }
+  }
+}
+
+// A random well-formed set with, sometimes, a second group held to a lower limit.
+MetricSetd random_set(Random& rnd, double v_sys) {
+  MetricSetd set;
+  std::vector<V> tool;
+  for (int k = rnd.integer(3, 6); k > 0; --k) tool.push_back(rnd.vector(0.3));
+  set.add_relative(tool);
+  if (rnd.integer(0, 1)) set.add_absolute(rnd.vector(1.0), 0);
+  if (rnd.integer(0, 1)) set.add_sphere(rnd.vector(0.2), rnd.uniform(0.01, 0.2), rnd.integer(0, 1) ? Frame::relative : Frame::absolute);
+  if (rnd.integer(0, 1)) {
+    set.add_relative(rnd.vector(0.5), 1);
+    set.add_sphere(rnd.vector(1.0), 0.05, Frame::absolute, 1);
+    set.set_group_speed(1, v_sys * rnd.uniform(0.2, 1.5));
+  }
+  return set;
+}
+
+// Largest speed / limit ratio over the trajectory, by finite differences of the motion itself
+// (a chord over dt is never longer than the arc, so this never over-estimates).
+double worst_speed_ratio(const Trajectory& traj, const MetricSetd& set, double v_sys, int steps) {
+  const double dt = traj.duration() / steps;
+  double worst = 0;
+  for (int i = 0; i < steps; ++i) {
+    const Posed p = traj.sample(i * dt).pose, q = traj.sample((i + 1) * dt).pose;
+    const Twistd xi = (p.inverse() * q).log() * (1.0 / dt);
+    for (const auto& g : set.groups()) {
+      const double limit = g.speed_limit.value_or(v_sys);
+      double speed = 0;
+      for (const V& r : g.relative_points) speed = std::max(speed, ((q * r) - (p * r)).norm() / dt);
+      for (const V& x : g.absolute_points) speed = std::max(speed, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
+      for (const auto& s : g.relative_spheres) speed = std::max(speed, sphere_speed(xi, s.center, s.radius));
+      for (const auto& s : g.absolute_spheres) speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
+      worst = std::max(worst, speed / limit);
+    }
+  }
+  return worst;
+}
+
+TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
+  Random rnd(201);
+  const int n = std::max(40, testing::case_count(10000) / 10);
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = random_set(rnd, v);
+    const Path path = random_path(rnd, i);
+    const ProfileKind kind = i % 2 ? ProfileKind::scurve : ProfileKind::trapezoid;
+    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
+    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const Trajectory traj = plan(path, set, limits, kind);
+    ASSERT_GT(traj.duration(), 0.0);
+    const double worst = worst_speed_ratio(traj, set, v, 10000);
+    ASSERT_LE(worst, 1.0 + 1e-6) << "case " << i << " family " << i % 4;
+    ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-9)) << "case " << i;
+    ASSERT_TRUE(traj.sample(0.0).pose.is_approx(path.start(), 1e-12));
+  }
+}
+
+// Not needlessly slow: on a long screw move the fastest point cruises at the limit.
+TEST(Planner, FastestPointReachesTheLimitWhileCruising) {
+  Random rnd(202);
+  for (int i = 0; i < 20; ++i) {
+    MetricSetd set;
+    set.add_relative(shapes::icosahedron(0.1));
+    const Posed a = rnd.pose();
+    const Path path = Path::lin(a, a * Posed::exp(Twistd(rnd.vector(1.0), rnd.vector(1.0))), Interpolation::screw);
+    const Limits limits{0.05, 1.0, 20.0};
+    const Trajectory traj = plan(path, set, limits);
+    const double t = 0.5 * traj.duration(), dt = 1e-4;
+    const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;
+    double fastest = 0;
+    for (const V& r : set.groups().front().relative_points) fastest = std::max(fastest, ((q * r) - (p * r)).norm() / dt);
+    ASSERT_GE(fastest, 0.999 * limits.velocity);
+    ASSERT_LE(fastest, limits.velocity * (1 + 1e-6));
+  }
+}
+
+TEST(Planner, StopsAtCornersAndPassesTangentJunctions) {
+  MetricSetd set;
+  set.add_sphere(V::Zero(), 0.1);
+  const Posed a, b = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0)),
+                 c = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0.2, 0)),
+                 d = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0.4, 0));
+  Path corner = Path::lin(a, b);
+  corner.then(Path::lin(b, c)).then(Path::lin(c, d));  // a corner at b, straight on at c
+  const Limits limits{0.1, 0.5, 5.0};
+  const Trajectory traj = plan(corner, set, limits);
+  EXPECT_EQ(traj.piece_count(), 2u);
+  // At the corner the trajectory is at rest.
+  const Profile first = Profile::scurve(0.3, 0.1, 0.5, 5.0);
+  EXPECT_NEAR(traj.sample(first.duration()).s_dot, 0.0, 1e-12);
+  EXPECT_NEAR(traj.duration(), first.duration() + Profile::scurve(0.4, 0.1, 0.5, 5.0).duration(), 1e-12);
+  // A CIRC's sections are one piece.
+  const Path arc = Path::circ(a, Posed(Eigen::Quaterniond::Identity(), V(0.1, 0.1, 0)), Posed(Eigen::Quaterniond::Identity(), V(0.2, 0, 0)));
+  EXPECT_EQ(plan(arc, set, limits).piece_count(), 1u);
+}
+
+TEST(Planner, SampleReportsTheTwistOfTheMotion) {
+  Random rnd(203);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  for (int i = 0; i < 20; ++i) {
+    const Trajectory traj = plan(random_path(rnd, i), set, Limits{0.2, 1.0, 10.0});
+    for (int k = 1; k < 50; ++k) {
+      const double t = traj.duration() * k / 50.0, h = 1e-6;
+      const TrajectorySample now = traj.sample(t);
+      const Twistd fd = (traj.sample(t - h).pose.inverse() * traj.sample(t + h).pose).log() * (0.5 / h);
+      ASSERT_LT((now.body_twist.vector() - fd.vector()).norm(), 1e-5 * (1 + fd.vector().norm())) << i << " " << k;
+    }
+  }
+}
+
+TEST(PlannerBadInput, Limits) {
+  MetricSetd set;
+  set.add_sphere(V::Zero(), 0.1);
+  const Path path = Path::lin(Posed(), Posed(Eigen::Quaterniond::Identity(), V(0.1, 0, 0)));
+  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.0, 1.0, 1.0}); }).find("velocity = 0"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, -1.0, 1.0}); }).find("acceleration = -1"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, std::nan("")}); }).find("jerk = nan"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, std::nullopt}); }).find("jerk is missing"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, 2.0}, ProfileKind::trapezoid); }).find("jerk = 2"),
+            std::string::npos);
+  MetricSetd line;
+  line.add_relative(std::vector<V>{V::Zero(), V::UnitX()});
+  EXPECT_NE(message_of([&] { plan(path, line, Limits{0.1, 1.0, 1.0}); }).find("not well-formed"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dispkin

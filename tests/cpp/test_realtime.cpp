@@ -1,0 +1,131 @@
+// Real-time claims, proven by counting: this executable replaces the global operator new and
+// delete with versions that count every call, and checks that the sampling paths allocate
+// nothing (STYLE.md: no allocation on the sampling path; Drake's LimitMalloc idea).
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+// Eigen allocates with malloc, not operator new: its own guard (EIGEN_RUNTIME_NO_MALLOC) sees
+// those, and eigen_assert is redefined to count failures even in a release (NDEBUG) build.
+#include <atomic>
+namespace {
+std::atomic<long> eigen_assert_failures{0};
+}  // namespace
+#define EIGEN_RUNTIME_NO_MALLOC
+#define eigen_assert(x) \
+  do {                  \
+    if (!(x)) ++eigen_assert_failures; \
+  } while (false)
+#include "dispkin/planner.hpp"
+#include "dispkin/profile.hpp"
+#include "dispkin/shapes.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  ++allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
+  ++allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace dispkin {
+namespace {
+
+// Eigen's guard works: a dynamic matrix made while malloc is disallowed is seen.
+TEST(Realtime, EigenGuardSeesAllocations) {
+  const long before = eigen_assert_failures.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  Eigen::VectorXd v(100);
+  Eigen::internal::set_is_malloc_allowed(true);
+  v.setZero();
+  EXPECT_GT(eigen_assert_failures.load(), before);
+  eigen_assert_failures = 0;
+}
+
+// The counter itself works: a vector allocates and is counted.
+TEST(Realtime, CounterSeesAllocations) {
+  const long before = allocations.load();
+  std::vector<double> v(100);
+  v[0] = 1.0;
+  EXPECT_GT(allocations.load(), before);
+}
+
+TEST(Realtime, ProfileSamplingDoesNotAllocate) {
+  const Profile profiles[] = {
+      Profile::trapezoid(1.0, 1.0, 2.0),         Profile::trapezoid(0.3, 1.0, 2.0, 0.5, 0.2),
+      Profile::scurve(1.0, 1.0, 2.0, 5.0),       Profile::scurve(1e-6, 1.0, 2.0, 5.0),
+      Profile::scurve(2.0, 1.0, 2.0, 5.0, 0.7, 0.1), Profile::scurve(0.0, 1.0, 2.0, 5.0),
+  };
+  constexpr int kTimes = 100000;
+  std::vector<double> times(kTimes);
+  std::vector<ProfileState> out(kTimes);
+  double checksum = 0.0;
+  for (const Profile& p : profiles) {
+    for (int i = 0; i < kTimes; ++i) times[static_cast<std::size_t>(i)] = p.duration() * (1.2 * i / kTimes - 0.1);
+    const long before = allocations.load();
+    for (int i = 0; i < kTimes; ++i) checksum += p.state_at(times[static_cast<std::size_t>(i)]).s;
+    p.sample(times.data(), out.data(), times.size());
+    EXPECT_EQ(allocations.load(), before) << "state_at or sample allocated";
+  }
+  EXPECT_TRUE(checksum >= 0.0);  // keeps the loop from being optimised away
+}
+
+// Sampling planned trajectories (LIN, screw, CIRC with ~1000 sections, a cornered chain):
+// no operator new, and Eigen's own no-malloc guard on.
+TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  set.add_sphere(Eigen::Vector3d(0, 0, 0.3), 0.05, Frame::absolute);
+  using V = Eigen::Vector3d;
+  const Posed a, b(Eigen::Quaterniond(Eigen::AngleAxisd(0.8, V::UnitZ())), V(0.3, 0.1, 0));
+  const Posed via(Eigen::Quaterniond::Identity(), V(0.15, 0.2, 0));
+  Path chain = Path::lin(a, b);
+  chain.then(Path::lin(b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))));
+  const std::vector<Trajectory> trajectories = {
+      plan(Path::lin(a, b), set, Limits{0.1, 0.5, 5.0}),
+      plan(Path::lin(a, b, Interpolation::screw), set, Limits{0.1, 0.5, std::nullopt}, ProfileKind::trapezoid),
+      plan(Path::circ(a, via, b), set, Limits{0.1, 0.5, 5.0}),
+      plan(chain, set, Limits{0.1, 0.5, 5.0}),
+  };
+  constexpr int kTimes = 20000;
+  std::vector<double> times(kTimes);
+  std::vector<TrajectorySample> out(kTimes);
+  double checksum = 0.0;
+  for (const Trajectory& traj : trajectories) {
+    for (int i = 0; i < kTimes; ++i) times[static_cast<std::size_t>(i)] = traj.duration() * (1.2 * i / kTimes - 0.1);
+    const long before = allocations.load();
+    Eigen::internal::set_is_malloc_allowed(false);
+    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).s_dot;
+    traj.sample(times.data(), out.data(), times.size());
+    Eigen::internal::set_is_malloc_allowed(true);
+    EXPECT_EQ(allocations.load(), before) << "Trajectory::sample allocated";
+    EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
+  }
+  EXPECT_TRUE(checksum >= 0.0);
+}
+
+}  // namespace
+}  // namespace dispkin
