@@ -2,6 +2,7 @@
 #include "dispkin/planner.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "dispkin/error.hpp"
@@ -17,7 +18,68 @@ bool tangent_continuous(const Section& before, double length_before, const Secti
   return (out - in).norm() <= 1e-6 * std::max(out.norm(), in.norm());
 }
 
+// The unit quaternion of a turn by `angle` about the unit axis `axis`.
+Eigen::Quaterniond turn(const Eigen::Vector3d& axis, double angle) noexcept {
+  const double half = 0.5 * angle;
+  const double s = std::sin(half);
+  return Eigen::Quaterniond(std::cos(half), s * axis.x(), s * axis.y(), s * axis.z());
+}
+
 }  // namespace
+
+Trajectory::Motion Trajectory::Motion::of(const Section& section) {
+  Motion m;
+  if (const auto* lin = std::get_if<LinSection>(&section)) {
+    m.pivot = lin->pivot;
+    if (lin->interpolation == Interpolation::screw) {
+      m.kind = Kind::screw;
+      m.start = lin->start;
+      m.xi = (lin->start.inverse() * lin->end).log();
+      return m;
+    }
+    m.kind = Kind::line;
+    m.q0 = lin->start.quaternion();
+    m.c0 = lin->start * lin->pivot;
+    m.delta_c = (lin->end * lin->pivot) - m.c0;
+    const Eigen::Vector3d rotation = m.q0 * quaternion_log(Eigen::Quaterniond(m.q0.conjugate() * lin->end.quaternion()));
+    m.theta = rotation.norm();
+    if (m.theta > 0.0) m.w_hat = rotation / m.theta;
+    return m;
+  }
+  const auto& arc = std::get<ArcSection>(section);
+  m.kind = Kind::arc;
+  m.pivot = arc.pivot;
+  m.q0 = arc.start.quaternion();
+  m.c0 = arc.start * arc.pivot;
+  m.center = arc.center;
+  m.normal = arc.normal;
+  m.angle = arc.angle;
+  m.w_hat = arc.rotation_axis;
+  m.theta = arc.rotation_angle;
+  return m;
+}
+
+void Trajectory::Motion::at(double tau, Posed& pose, Twistd& twist) const noexcept {
+  if (kind == Kind::screw) {
+    pose = start * Posed::exp(xi * tau);
+    twist = xi;
+    return;
+  }
+  const Eigen::Quaterniond q = turn(w_hat, tau * theta) * q0;
+  Eigen::Vector3d c, c_dot;
+  if (kind == Kind::line) {
+    c = c0 + tau * delta_c;
+    c_dot = delta_c;
+  } else {
+    c = center + turn(normal, tau * angle) * (c0 - center);
+    c_dot = angle * normal.cross(c - center);
+  }
+  pose = Posed::unchecked(q, c - q * pivot);
+  // Body twist: ω_b = Rᵀ θŵ, v_b = Rᵀ ċ − ω_b × p (the body origin is t = c − R p).
+  const Eigen::Quaterniond q_inv = q.conjugate();
+  twist.angular = q_inv * (theta * w_hat);
+  twist.linear = q_inv * c_dot - twist.angular.cross(pivot);
+}
 
 void Limits::validate(ProfileKind kind) const {
   require_positive(velocity, "velocity");
@@ -34,11 +96,13 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   limits.validate(profile);
   set.require_well_formed();
   Trajectory trajectory;
-  trajectory.sections_ = path.sections();
+  const std::vector<Section>& sections = path.sections();
   // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
   // under its own limit.
   trajectory.lengths_ = path.section_lengths(set, limits.velocity);
-  const std::size_t n = trajectory.sections_.size();
+  const std::size_t n = sections.size();
+  trajectory.motions_.reserve(n);
+  for (const Section& section : sections) trajectory.motions_.push_back(Trajectory::Motion::of(section));
   trajectory.section_s_.resize(n);
   double s = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -56,8 +120,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   std::size_t first = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const bool last = k + 1 == n;
-    if (!last && tangent_continuous(trajectory.sections_[k], trajectory.lengths_[k], trajectory.sections_[k + 1],
-                                    trajectory.lengths_[k + 1]))
+    if (!last && tangent_continuous(sections[k], trajectory.lengths_[k], sections[k + 1], trajectory.lengths_[k + 1]))
       continue;
     const double start_s = trajectory.section_s_[first];
     const double end_s = trajectory.section_s_[k] + trajectory.lengths_[k];
@@ -84,10 +147,10 @@ TrajectorySample Trajectory::sample(double t) const noexcept {
   // The section holding s, and τ within it.
   auto next = std::upper_bound(section_s_.begin(), section_s_.end(), out.s);
   std::size_t k = next == section_s_.begin() ? 0 : static_cast<std::size_t>(next - section_s_.begin()) - 1;
-  k = std::min(k, sections_.size() - 1);
+  k = std::min(k, motions_.size() - 1);
   const double tau = std::clamp((out.s - section_s_[k]) / lengths_[k], 0.0, 1.0);
-  out.pose = section_pose(sections_[k], tau);
-  out.body_twist = section_twist(sections_[k], tau) * (out.s_dot / lengths_[k]);
+  motions_[k].at(tau, out.pose, out.body_twist);
+  out.body_twist = out.body_twist * (out.s_dot / lengths_[k]);
   return out;
 }
 

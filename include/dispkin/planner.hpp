@@ -48,7 +48,7 @@ class Trajectory {
  public:
   double duration() const noexcept { return stops_.empty() ? 0.0 : stops_.back().end_time; }
   double length() const noexcept { return section_s_.empty() ? 0.0 : section_s_.back() + lengths_.back(); }
-  std::size_t section_count() const noexcept { return sections_.size(); }
+  std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
   std::size_t piece_count() const noexcept { return stops_.size(); }
@@ -61,6 +61,27 @@ class Trajectory {
  private:
   friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind);
 
+  // What sampling needs of a section, precomputed at planning time so that a sample costs one
+  // sine/cosine pair per rotation and no logarithm: the pivot on its line (c₀ + τΔc) or arc
+  // (about `normal` through `center` by τφ), the orientation turned by τθ about the world
+  // axis ŵ, t = c − R p. Screw sections keep T₀ and their constant twist ξ.
+  struct Motion {
+    enum class Kind { line, arc, screw } kind = Kind::line;
+    Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
+    Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
+    Eigen::Vector3d center = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
+    double angle = 0.0;
+    Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
+    double theta = 0.0;
+    Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+    Posed start;
+    Twistd xi;
+
+    static Motion of(const Section& section);
+    //! Pose and body twist per unit τ at τ.
+    void at(double tau, Posed& pose, Twistd& twist) const noexcept;
+  };
+
   // One rest-to-rest piece: a time law over the DISP length of sections [first, last].
   struct Piece {
     Profile profile;
@@ -68,7 +89,7 @@ class Trajectory {
     double start_s;               // DISP arc length at its start
   };
 
-  std::vector<Section> sections_;
+  std::vector<Motion> motions_;    // section k, ready to sample
   std::vector<double> lengths_;    // L_k
   std::vector<double> section_s_;  // s at the start of section k
   std::vector<Piece> stops_;

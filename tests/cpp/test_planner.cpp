@@ -150,6 +150,26 @@ TEST(Planner, SampleReportsTheTwistOfTheMotion) {
   }
 }
 
+// The precomputed sampling form of each section reproduces the path's own geometry.
+TEST(Planner, SamplesLieOnThePath) {
+  Random rnd(204);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  for (int i = 0; i < 40; ++i) {
+    const Path path = random_path(rnd, i);
+    const Trajectory traj = plan(path, set, Limits{0.2, 1.0, 10.0});
+    const auto& lengths = traj.section_lengths();
+    for (int k = 0; k <= 100; ++k) {
+      const TrajectorySample now = traj.sample(traj.duration() * k / 100.0);
+      double s = now.s;
+      std::size_t j = 0;
+      while (j + 1 < lengths.size() && s > lengths[j]) s -= lengths[j++];
+      const double tau = std::clamp(s / lengths[j], 0.0, 1.0);
+      ASSERT_TRUE(now.pose.is_approx(section_pose(path.sections()[j], tau), 1e-12)) << i << " " << k;
+    }
+  }
+}
+
 TEST(PlannerBadInput, Limits) {
   MetricSetd set;
   set.add_sphere(V::Zero(), 0.1);

@@ -1,0 +1,61 @@
+// Planning and sampling trajectories (issue 4 targets: a 1000-section path planned in
+// ≤ 100 µs, sampling ≤ 50 ns per sample).
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "dispkin/planner.hpp"
+#include "dispkin/shapes.hpp"
+
+namespace {
+
+using dispkin::Posed;
+using V = Eigen::Vector3d;
+
+dispkin::MetricSetd icosahedron_tool() {
+  dispkin::MetricSetd set;
+  set.add_relative(dispkin::shapes::icosahedron(0.1));
+  return set;
+}
+
+const Posed kStart;
+const Posed kEnd(Eigen::Quaterniond(Eigen::AngleAxisd(0.8, V(0.3, 0.2, 1.0).normalized())), V(0.3, 0.1, 0.05));
+const Posed kVia(Eigen::Quaterniond::Identity(), V(0.15, 0.2, 0.0));
+
+void plan_lin_icosahedron(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  const auto path = dispkin::Path::lin(kStart, kEnd);
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}));
+}
+BENCHMARK(plan_lin_icosahedron);
+
+// A CIRC cut into about 1000 sections (tolerance chosen for it), icosahedron set.
+void plan_circ_1000_sections(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  const auto path = dispkin::Path::circ(kStart, kVia, kEnd, V::Zero(), 2.2e-3);
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}));
+  state.counters["sections"] = static_cast<double>(path.size());
+}
+BENCHMARK(plan_circ_1000_sections)->Unit(benchmark::kMicrosecond);
+
+void sample_trajectory(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  const bool circ = state.range(0) >= 1;
+  const bool in_order = state.range(0) == 2;  // a control loop: consecutive cycles
+  const auto path = circ ? dispkin::Path::circ(kStart, kVia, kEnd, V::Zero(), 2.2e-3) : dispkin::Path::lin(kStart, kEnd);
+  const auto traj = dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0});
+  std::vector<double> times(4096);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::size_t slot = in_order ? i : (i * 2654435761u) % 4096;
+    times[i] = traj.duration() * static_cast<double>(slot) / 4096.0;
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(traj.sample(times[i]));
+    i = (i + 1) & 4095;
+  }
+  state.SetLabel(in_order ? "CIRC, ~1000 sections, consecutive times" : circ ? "CIRC, ~1000 sections, random times" : "LIN, random times");
+}
+BENCHMARK(sample_trajectory)->Arg(0)->Arg(1)->Arg(2);
+
+}  // namespace
