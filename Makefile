@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python test test-cpp test-python demo bench clean
+.PHONY: all deps build python test test-cpp test-python demo bench sanitize clean
 
 all: build
 
@@ -36,6 +36,15 @@ test: test-cpp test-python
 
 demo: python
 	$(VENV)/bin/dispkin demo
+
+# The C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (any finding fails).
+SANITIZE_BUILD ?= build/sanitize
+sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON \
+	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  DISPKIN_TEST_COUNT=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
 
 bench: build
 	$(BUILD)/benchmarks/dispkin_benchmarks --benchmark_min_time=0.2
