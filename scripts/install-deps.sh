@@ -9,6 +9,7 @@ debian_packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev          # linear algebra, quaternions
   libqhull-dev           # convex hulls
+  nlohmann-json3-dev     # hexapod description files (JSON, header-only)
   liburdfdom-dev         # URDF parsing (serial-arm plugin)
   liborocos-kdl-dev      # chains, Jacobians, dynamics (serial-arm plugin)
   libgtest-dev           # C++ tests

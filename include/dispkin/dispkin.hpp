@@ -11,3 +11,5 @@
 #include "dispkin/path.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/planner.hpp"
+#include "dispkin/kinematics.hpp"
+#include "dispkin/hexapod.hpp"

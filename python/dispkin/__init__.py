@@ -8,6 +8,11 @@ arrays; bad input raises ValueError naming the argument and the value.
 
 from . import _core
 from ._core import (
+    Hexapod,
+    LegExcursion,
+    LegViolation,
+    TrajectoryCheck,
+    WorkspaceCheck,
     JointPath,
     Limits,
     MetricSet,
@@ -23,6 +28,7 @@ from ._core import (
     point_speed,
     section_length,
     sphere_speed,
+    xyzuvw_for_new_pivot,
 )
 from . import shapes
 
@@ -30,6 +36,11 @@ from . import shapes
 __version__: str = _core.__version__
 
 __all__ = [
+    "Hexapod",
+    "LegExcursion",
+    "LegViolation",
+    "TrajectoryCheck",
+    "WorkspaceCheck",
     "JointPath",
     "Limits",
     "MetricSet",
@@ -47,4 +58,5 @@ __all__ = [
     "section_length",
     "shapes",
     "sphere_speed",
+    "xyzuvw_for_new_pivot",
 ]

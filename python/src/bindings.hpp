@@ -13,6 +13,7 @@ void bind_disp(pybind11::module_& m);        // bind_disp.cpp: distances, speeds
 void bind_profile(pybind11::module_& m);     // bind_profile.cpp: Profile (trapezoid, S-curve)
 void bind_path(pybind11::module_& m);        // bind_path.cpp: Path, Section, JointPath
 void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory
+void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, WorkspaceCheck, LegViolation
 
 }  // namespace python
 }  // namespace dispkin

@@ -16,4 +16,5 @@ PYBIND11_MODULE(_core, m) {
   dispkin::python::bind_profile(m);
   dispkin::python::bind_path(m);
   dispkin::python::bind_planner(m);
+  dispkin::python::bind_hexapod(m);
 }

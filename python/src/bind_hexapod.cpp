@@ -1,0 +1,209 @@
+// Python binding of dispkin/hexapod.hpp: Hexapod, WorkspaceCheck, LegViolation,
+// xyzuvw_for_new_pivot. Joints are (6, 3) arrays (one joint per row), legs (6,) arrays.
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/hexapod.hpp"
+#include "dispkin/planner.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+using Legs = Hexapod::Legs;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+Hexapod::Joints joints(const py::handle& obj, const std::string& name) {
+  const std::string expected = "an array of shape (6, 3)";
+  const Array a = as_array(obj, name, expected);
+  if (a.ndim() != 2 || a.shape(0) != 6 || a.shape(1) != 3) wrong_shape(name, expected, a);
+  return Eigen::Map<const Eigen::Matrix<double, 3, 6>>(a.data());  // row-major (6, 3) = column-major (3, 6)
+}
+
+py::array_t<double> joints_array(const Hexapod::Joints& j) {
+  py::array_t<double> out({py::ssize_t{6}, py::ssize_t{3}});
+  Eigen::Map<Eigen::Matrix<double, 3, 6>>(out.mutable_data()) = j;
+  return out;
+}
+
+// A number for all six legs, or one per leg.
+Legs legs(const py::handle& obj, const std::string& name) {
+  const std::string expected = "a number or an array of shape (6,)";
+  const Array a = as_array(obj, name, expected);
+  if (a.ndim() == 0) return Legs::Constant(*a.data());
+  if (a.ndim() != 1 || a.shape(0) != 6) wrong_shape(name, expected, a);
+  return Eigen::Map<const Legs>(a.data());
+}
+
+py::array_t<double> legs_array(const Legs& l) {
+  py::array_t<double> out(py::ssize_t{6});
+  Eigen::Map<Legs>(out.mutable_data()) = l;
+  return out;
+}
+
+// A Pose or a (4, 4) matrix.
+Posed pose_of(const py::handle& obj, const std::string& name) {
+  if (py::isinstance<Posed>(obj)) return obj.cast<Posed>();
+  return Posed::from_matrix(matrix4(obj, name));
+}
+
+// inverse(): a Pose or (4, 4) → (6,); a sequence of poses or (N, 4, 4) → (N, 6).
+py::array_t<double> inverse(const Hexapod& h, const py::object& poses) {
+  if (py::isinstance<Posed>(poses)) return legs_array(h.leg_lengths(poses.cast<Posed>()));
+  std::vector<Posed> list;
+  if (py::isinstance<py::array>(poses) || !py::isinstance<py::sequence>(poses)) {
+    const std::string expected = "a Pose, a sequence of Poses, or an array of shape (4, 4) or (N, 4, 4)";
+    const Array a = as_array(poses, "pose", expected);
+    if (a.ndim() == 2) return legs_array(h.leg_lengths(pose_of(a, "pose")));
+    if (a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) wrong_shape("pose", expected, a);
+    for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+      const Eigen::Matrix4d m = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(a.data() + 16 * i);
+      list.push_back(Posed::from_matrix(m));
+    }
+  } else {
+    const py::sequence seq = poses.cast<py::sequence>();
+    for (std::size_t i = 0; i < seq.size(); ++i) list.push_back(pose_of(seq[i], "pose[" + std::to_string(i) + "]"));
+  }
+  py::array_t<double> out({static_cast<py::ssize_t>(list.size()), py::ssize_t{6}});
+  for (std::size_t i = 0; i < list.size(); ++i) Eigen::Map<Legs>(out.mutable_data() + 6 * i) = h.leg_lengths(list[i]);
+  return out;
+}
+
+// inverse_xyzuvw(): (6,) → (6,), (N, 6) → (N, 6).
+py::array_t<double> inverse_xyzuvw(const Hexapod& h, const py::object& xyzuvw, const py::object& pivot) {
+  const Eigen::Vector3d p = vector3(pivot, "pivot");
+  const std::string expected = "an array of shape (6,) or (N, 6)";
+  const Array a = as_array(xyzuvw, "xyzuvw", expected);
+  if (a.ndim() == 1 && a.shape(0) == 6) return legs_array(h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data())), p));
+  if (a.ndim() != 2 || a.shape(1) != 6) wrong_shape("xyzuvw", expected, a);
+  py::array_t<double> out({a.shape(0), py::ssize_t{6}});
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
+    Eigen::Map<Legs>(out.mutable_data() + 6 * i) = h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data() + 6 * i)), p);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_hexapod(py::module_& m) {
+  py::class_<LegViolation>(m, "LegViolation", "A leg out of its length range (Hexapod.check).")
+      .def_readonly("leg", &LegViolation::leg, "0-based leg index")
+      .def_readonly("length", &LegViolation::length, "the leg's length at the pose (m)")
+      .def_readonly("lower", &LegViolation::lower, "the leg's shortest length (m)")
+      .def_readonly("upper", &LegViolation::upper, "the leg's longest length (m)")
+      .def_readonly("excess", &LegViolation::excess, "how far outside the range (m), > 0")
+      .def("__repr__", [](const LegViolation& v) {
+        return "LegViolation(leg=" + std::to_string(v.leg) + ", length=" + float_repr(v.length) +
+               ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) + ", excess=" + float_repr(v.excess) + ")";
+      });
+
+  py::class_<WorkspaceCheck>(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).")
+      .def_property_readonly("lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
+      .def_readonly("violations", &WorkspaceCheck::violations, "list of LegViolation, empty when reachable")
+      .def_property_readonly("reachable", &WorkspaceCheck::reachable, "True when every leg is within its range")
+      .def("__bool__", &WorkspaceCheck::reachable);
+
+  py::class_<LegExcursion>(m, "LegExcursion",
+                           "A stretch of a trajectory where a leg leaves its range or exceeds its speed.")
+      .def_property_readonly("kind", [](const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; },
+                             "'length' or 'speed'")
+      .def_readonly("leg", &LegExcursion::leg, "0-based leg index")
+      .def_readonly("start_time", &LegExcursion::start_time, "first sample out of range (s)")
+      .def_readonly("end_time", &LegExcursion::end_time, "last sample out of range (s)")
+      .def_readonly("worst_time", &LegExcursion::worst_time, "the sample with the largest excess (s)")
+      .def_readonly("worst_value", &LegExcursion::worst_value, "the leg's length (m) or speed (m/s) there")
+      .def_readonly("excess", &LegExcursion::excess, "how far beyond the range or limit, > 0")
+      .def("__repr__", [](const LegExcursion& e) {
+        return std::string("LegExcursion(kind='") + (e.kind == LegExcursion::Kind::length ? "length" : "speed") +
+               "', leg=" + std::to_string(e.leg) + ", start_time=" + float_repr(e.start_time) +
+               ", end_time=" + float_repr(e.end_time) + ", excess=" + float_repr(e.excess) + ")";
+      });
+
+  py::class_<TrajectoryCheck>(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).")
+      .def_property_readonly("min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
+      .def_property_readonly("max_length", [](const TrajectoryCheck& c) { return legs_array(c.max_length); }, "(6,) m")
+      .def_property_readonly("max_speed", [](const TrajectoryCheck& c) { return legs_array(c.max_speed); }, "(6,) m/s")
+      .def_readonly("excursions", &TrajectoryCheck::excursions, "list of LegExcursion, empty when ok")
+      .def_property_readonly("ok", &TrajectoryCheck::ok, "True when no leg leaves its range or exceeds its speed")
+      .def("__bool__", &TrajectoryCheck::ok);
+
+  py::class_<Hexapod>(m, "Hexapod", R"doc(
+A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
+joints p_i (platform coordinates). A platform pose T maps platform to base coordinates and
+leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
+      .def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
+                       const py::object& speed, const py::object& home) {
+             return Hexapod(joints(base, "base_joints"), joints(platform, "platform_joints"), legs(lo, "leg_min"),
+                            legs(hi, "leg_max"), legs(speed, "leg_speed"),
+                            home.is_none() ? Posed() : pose_of(home, "home"));
+           }),
+           py::arg("base_joints"), py::arg("platform_joints"), py::arg("leg_min"), py::arg("leg_max"),
+           py::arg("leg_speed"), py::arg("home") = py::none(),
+           "From any layout: (6, 3) base and platform joints, leg limits (a number or (6,) each), and the "
+           "home pose forward() starts from (default identity).")
+      .def_static("symmetric", &Hexapod::symmetric, py::arg("base_radius"), py::arg("base_gap"),
+                  py::arg("platform_radius"), py::arg("platform_gap"), py::arg("height"), py::arg("leg_min"),
+                  py::arg("leg_max"), py::arg("leg_speed"),
+                  "The symmetric 6-6 layout (joints in pairs `gap` rad apart, base pairs at 0, 120, 240 deg, "
+                  "platform pairs at 60, 180, 300 deg); platform_gap = 0 gives 6-3. Home: `height` above the base.")
+      .def_static("load", &Hexapod::load, py::arg("path"), "Reads a JSON description written by save().")
+      .def("save", &Hexapod::save, py::arg("path"), "Writes the JSON description.")
+      .def_static("from_json", &Hexapod::from_json, py::arg("text"), "From the JSON description as text.")
+      .def("to_json", &Hexapod::to_json, "The JSON description as text.")
+      .def_property_readonly("base_joints", [](const Hexapod& h) { return joints_array(h.base_joints()); },
+                             "(6, 3) base joints, base coordinates (m)")
+      .def_property_readonly("platform_joints", [](const Hexapod& h) { return joints_array(h.platform_joints()); },
+                             "(6, 3) platform joints, platform coordinates (m)")
+      .def_property_readonly("leg_min", [](const Hexapod& h) { return legs_array(h.leg_min()); }, "(6,) shortest leg lengths (m)")
+      .def_property_readonly("leg_max", [](const Hexapod& h) { return legs_array(h.leg_max()); }, "(6,) longest leg lengths (m)")
+      .def_property_readonly("leg_speed", [](const Hexapod& h) { return legs_array(h.leg_speed()); }, "(6,) leg speed limits (m/s)")
+      .def_property_readonly("home", &Hexapod::home, "the pose forward() starts from by default")
+      .def_property_readonly("dof", &Hexapod::dof, "6")
+      .def_property_readonly("joint_names", &Hexapod::joint_names, "['leg1', ..., 'leg6']")
+      .def("inverse", &inverse, py::arg("pose"),
+           "Leg lengths: a Pose or (4, 4) matrix -> (6,); a sequence of poses or (N, 4, 4) -> (N, 6).")
+      .def("inverse_xyzuvw", &inverse_xyzuvw, py::arg("xyzuvw"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
+           "Leg lengths of XYZUVW about `pivot` (platform coordinates): (6,) -> (6,), (N, 6) -> (N, 6).")
+      .def("leg_jacobian", [](const Hexapod& h, const py::object& pose) {
+             return Eigen::Matrix<double, 6, 6, Eigen::RowMajor>(h.leg_jacobian(pose_of(pose, "pose")));
+           }, py::arg("pose"), "(6, 6) d(legs)/d(body twist (v, w)) of T exp(twist).")
+      .def("forward",
+           [](const Hexapod& h, const py::object& l, const py::object& guess) {
+             const Legs target = vector<6>(l, "legs");
+             return guess.is_none() ? h.forward(target) : h.forward(target, pose_of(guess, "guess"));
+           },
+           py::arg("legs"), py::arg("guess") = py::none(),
+           "The pose with these leg lengths (Newton's method from `guess`, default home), to 1e-12 m. "
+           "RuntimeError, with the iteration count and residual, when it does not converge or is singular.")
+      .def("check", [](const Hexapod& h, const py::object& pose) { return h.check(pose_of(pose, "pose")); },
+           py::arg("pose"), "Which legs are out of range at `pose`, and by how much.")
+      .def("require_reachable", [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); },
+           py::arg("pose"), "ValueError naming the first leg out of range.")
+      .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::arg("trajectory"), py::arg("dt"),
+           "Dense check every `dt` seconds: leg lengths and leg speeds (J times the body twist) against the limits.")
+      .def("add_leg_speed_group", &Hexapod::add_leg_speed_group, py::arg("metric_set"), py::arg("group"),
+           "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
+      .def("__repr__", [](const Hexapod& h) {
+        return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
+               ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";
+      });
+
+  m.def(
+      "xyzuvw_for_new_pivot",
+      [](const py::object& xyzuvw, const py::object& old_pivot, const py::object& new_pivot) {
+        return Vector6d(xyzuvw_for_new_pivot(vector<6>(xyzuvw, "xyzuvw"), vector3(old_pivot, "old_pivot"),
+                                             vector3(new_pivot, "new_pivot")));
+      },
+      py::arg("xyzuvw"), py::arg("old_pivot"), py::arg("new_pivot"),
+      "The XYZUVW about `new_pivot` of the pose that is `xyzuvw` about `old_pivot` (same pose, same UVW).");
+}
+
+}  // namespace python
+}  // namespace dispkin
