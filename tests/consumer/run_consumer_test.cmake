@@ -1,6 +1,18 @@
 # Installs the build tree into a scratch prefix, then configures, builds and runs a consumer
 # project against it — the find_package(dispkin) promise, checked end to end.
 file(REMOVE_RECURSE ${WORK_DIR})
+# The README's C++ quick start, wrapped in main(), is built as a second consumer program.
+file(READ ${CONSUMER_SOURCE_DIR}/../../README.md readme)
+string(FIND "${readme}" "```cpp\n" begin)
+if(begin EQUAL -1)
+  message(FATAL_ERROR "README.md has no ```cpp block")
+endif()
+math(EXPR begin "${begin} + 7")
+string(SUBSTRING "${readme}" ${begin} -1 rest)
+string(FIND "${rest}" "```" end)
+string(SUBSTRING "${rest}" 0 ${end} quickstart)
+string(REPLACE "#include <dispkin/dispkin.hpp>" "#include <dispkin/dispkin.hpp>\nint main() {" quickstart "${quickstart}")
+file(WRITE ${WORK_DIR}/readme/readme_quickstart.cpp "${quickstart}  return 0;\n}\n")
 set(prefix ${WORK_DIR}/prefix)
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${DISPKIN_BUILD_DIR} --prefix ${prefix}
                 RESULT_VARIABLE rc)
@@ -9,6 +21,7 @@ if(NOT rc EQUAL 0)
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build
                         -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
+                        -DREADME_QUICKSTART=${WORK_DIR}/readme/readme_quickstart.cpp
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "configuring the consumer failed: ${rc}")
@@ -16,6 +29,10 @@ endif()
 execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "building the consumer failed: ${rc}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/build/readme_quickstart RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the README quick start failed: ${rc}")
 endif()
 execute_process(COMMAND ${WORK_DIR}/build/consumer RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 message(STATUS "${out}")
