@@ -182,6 +182,12 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
            py::arg("legs"), py::arg("guess") = py::none(),
            "The pose with these leg lengths (Newton's method from `guess`, default home), to 1e-12 m. "
            "RuntimeError, with the iteration count and residual, when it does not converge or is singular.")
+      .def(
+          "check",
+          [](const Hexapod& h, const Trajectory& trajectory, double dt) { return h.check_trajectory(trajectory, dt); },
+          py::arg("trajectory"), py::arg("dt") = 1e-3,
+          "For a planned Trajectory: leg lengths and leg speeds every `dt` seconds against the limits "
+          "(a TrajectoryCheck with the margins and every excursion). Same as check_trajectory.")
       .def("check", [](const Hexapod& h, const py::object& pose) { return h.check(pose_of(pose, "pose")); },
            py::arg("pose"), "Which legs are out of range at `pose`, and by how much.")
       .def("require_reachable", [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); },

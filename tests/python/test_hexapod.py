@@ -221,3 +221,18 @@ def test_leg_speed_group_bounds_every_leg_along_a_planned_trajectory():
     np.testing.assert_allclose(check.max_length, legs.max(axis=0), rtol=0, atol=1e-15)
     with pytest.raises(ValueError, match=r"^dt = 0: must be finite and greater than zero"):
         h.check_trajectory(trajectory, 0.0)
+
+
+def test_check_accepts_a_trajectory_as_the_issue_names_it():
+    hx = dispkin.Hexapod.symmetric(0.12, math.radians(20), 0.08, math.radians(20), 0.15, 0.13, 0.20, 0.01)
+    a = dispkin.Pose.from_xyzuvw([0, 0, 0.15, 0, 0, 0])
+    b = dispkin.Pose.from_xyzuvw([0.01, 0, 0.15, 0, math.radians(3), 0])
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.02))
+    hx.add_leg_speed_group(tool, 1)
+    traj = dispkin.plan(dispkin.Path.lin(a, b), tool, dispkin.Limits(0.01, 0.05, 0.5))
+    report = hx.check(traj)
+    same = hx.check_trajectory(traj, 1e-3)
+    assert report.ok and same.ok
+    np.testing.assert_array_equal(report.max_speed, same.max_speed)
+    assert isinstance(hx.check(a), dispkin.WorkspaceCheck)
