@@ -39,3 +39,21 @@ print(f"leg lengths {check.min_length.min() * 1000:.2f} .. {check.max_length.max
       f"(range {0.13 * 1000:.0f} .. {0.20 * 1000:.0f} mm)")
 print(f"fastest leg {check.max_speed.max() * 1000:.3f} mm/s (limit {0.01 * 1000:.0f} mm/s); within limits: {check.ok}")
 assert check.ok
+
+# Leg lengths and the fastest point's speed over time (needs matplotlib: pip install dispkin[plot]).
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    print("matplotlib is not installed: no plot")
+else:
+    from dispkin import plots
+
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True, constrained_layout=True)
+    plots.leg_lengths(hexapod, traj, ax=top)
+    plots.point_speed(traj, scan, system_velocity=limits.velocity, ax=bottom)
+    top.set_title("hexapod scan about the fibre end")
+    plots.save([top], "02_hexapod_scan.png")
+    print("plot: 02_hexapod_scan.png")

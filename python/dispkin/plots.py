@@ -1,0 +1,74 @@
+"""Plots of planned trajectories (matplotlib; ``pip install dispkin[plot]``).
+
+Each function draws into a matplotlib Axes (a new figure when none is given) and returns it,
+so it works in notebooks and scripts alike; ``save`` writes a figure to a PNG file.
+"""
+
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from ._core import Hexapod, MetricSet, Pose, Trajectory, max_point_speed
+
+
+def _axes(ax: Optional[Any]) -> Any:
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+
+    _, ax = plt.subplots(figsize=(7, 3.5), constrained_layout=True)
+    return ax
+
+
+def sample_times(trajectory: Trajectory, step: float = 1e-3) -> np.ndarray:
+    """Times from 0 to the trajectory's duration, `step` seconds apart (the end included)."""
+    count = max(2, int(np.ceil(trajectory.duration / step)) + 1)
+    return np.linspace(0.0, trajectory.duration, count)
+
+
+def point_speed(
+    trajectory: Trajectory,
+    metric_set: MetricSet,
+    system_velocity: Optional[float] = None,
+    step: float = 1e-3,
+    ax: Optional[Any] = None,
+) -> Any:
+    """The path velocity s-dot and the DISP speed of the set over time — the fastest point's
+    speed, each group's scaled by system_velocity / its own limit (so that every curve is held
+    to the same line) — with the system velocity as a dashed line. `system_velocity` is needed
+    when a group has its own limit."""
+    ax = _axes(ax)
+    t = sample_times(trajectory, step)
+    poses, twists = trajectory.sample(t), trajectory.body_twist(t)
+    fastest = [max_point_speed(metric_set, Pose.from_matrix(m), xi, system_velocity) for m, xi in zip(poses, twists)]
+    ax.plot(t, trajectory.path_velocity(t), label="path velocity ṡ", lw=2, alpha=0.6)
+    ax.plot(t, fastest, label="fastest point (group-scaled)", lw=1)
+    if system_velocity is not None:
+        ax.axhline(system_velocity, color="k", ls="--", lw=1, label="system velocity")
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("speed (m/s)")
+    ax.legend(loc="lower center")
+    return ax
+
+
+def leg_lengths(
+    hexapod: Hexapod, trajectory: Trajectory, step: float = 1e-3, ax: Optional[Any] = None
+) -> Any:
+    """The six leg lengths over time, with the tightest leg range as dashed lines."""
+    ax = _axes(ax)
+    t = sample_times(trajectory, step)
+    legs = hexapod.inverse(trajectory.sample(t))
+    for i in range(6):
+        ax.plot(t, legs[:, i] * 1000.0, label=f"leg {i + 1}")
+    ax.axhline(float(np.max(hexapod.leg_min)) * 1000.0, color="k", ls="--", lw=1)
+    ax.axhline(float(np.min(hexapod.leg_max)) * 1000.0, color="k", ls="--", lw=1)
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("leg length (mm)")
+    ax.legend(ncol=3, fontsize="small")
+    return ax
+
+
+def save(axes: Sequence[Any], path: str) -> None:
+    """Write the figure(s) of `axes` (one or several Axes of one figure) to a PNG file."""
+    figure = axes[0].figure
+    figure.savefig(path, dpi=110)
