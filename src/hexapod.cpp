@@ -31,6 +31,9 @@ bool spans_plane(const Hexapod::Joints& joints) {
   return s2(2) > 0.0 && s2(1) > 1e-18 * s2(2);
 }
 
+// A JSON value as it appears in a message: strings bare (describe() quotes them), the rest as JSON.
+std::string json_text(const nlohmann::json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+
 std::string leg_argument(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 
 }  // namespace
@@ -115,6 +118,14 @@ Posed Hexapod::forward(const Legs& legs, const Posed& guess, const ForwardOption
   for (int i = 0; i < 6; ++i) {
     require(std::isfinite(legs(i)) && legs(i) > 0.0, leg_argument("legs", i), legs(i),
             "must be finite and greater than zero");
+  }
+  for (int i = 0; i < 6; ++i) {
+    if (legs(i) < leg_min_(i) || legs(i) > leg_max_(i)) {
+      throw std::invalid_argument(describe("legs", legs,
+                                           "legs[" + std::to_string(i) + "] is outside its length range [" +
+                                               std::to_string(leg_min_(i)) + ", " + std::to_string(leg_max_(i)) +
+                                               "]: no pose has these legs within the hexapod's limits"));
+    }
   }
   require_positive(options.tolerance, "tolerance");
   require(options.max_iterations > 0, "max_iterations", options.max_iterations, "must be at least 1");
@@ -222,7 +233,7 @@ using nlohmann::json;
 
 const json& member(const json& object, const std::string& key, const std::string& where) {
   const std::string name = where.empty() ? key : where + "." + key;
-  require(object.is_object(), where.empty() ? std::string("description") : where, object.dump(),
+  require(object.is_object(), where.empty() ? std::string("description") : where, json_text(object),
           "must be a JSON object");
   const auto it = object.find(key);
   require(it != object.end(), name, std::string("<missing>"), "required key is missing");
@@ -230,12 +241,12 @@ const json& member(const json& object, const std::string& key, const std::string
 }
 
 double number(const json& value, const std::string& name) {
-  require(value.is_number(), name, value.dump(), "must be a number");
+  require(value.is_number(), name, json_text(value), "must be a number");
   return value.get<double>();
 }
 
 Eigen::Vector3d vector3(const json& value, const std::string& name) {
-  require(value.is_array() && value.size() == 3, name, value.dump(), "must be an array of 3 numbers");
+  require(value.is_array() && value.size() == 3, name, json_text(value), "must be an array of 3 numbers");
   Eigen::Vector3d out;
   for (int i = 0; i < 3; ++i) out(i) = number(value[static_cast<std::size_t>(i)], name + "[" + std::to_string(i) + "]");
   return out;
@@ -272,11 +283,11 @@ Hexapod Hexapod::from_json(const std::string& text) {
     throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
   }
   const json& format = member(d, "format", "");
-  require(format == "dispkin.hexapod", "format", format.dump(), "must be \"dispkin.hexapod\"");
+  require(format == "dispkin.hexapod", "format", json_text(format), "must be \"dispkin.hexapod\"");
   const json& version = member(d, "version", "");
-  require(version == 1, "version", version.dump(), "must be 1 (the only version this build reads)");
+  require(version == 1, "version", json_text(version), "must be 1 (the only version this build reads)");
   const json& legs = member(d, "legs", "");
-  require(legs.is_array() && legs.size() == 6, "legs", legs.dump(), "must be an array of 6 leg objects");
+  require(legs.is_array() && legs.size() == 6, "legs", json_text(legs), "must be an array of 6 leg objects");
   Joints base;
   Joints platform;
   Legs lo, hi, speed;
@@ -292,7 +303,7 @@ Hexapod Hexapod::from_json(const std::string& text) {
   const json& home = member(d, "home", "");
   const Eigen::Vector3d t = vector3(member(home, "translation", "home"), "home.translation");
   const json& q = member(home, "quaternion_wxyz", "home");
-  require(q.is_array() && q.size() == 4, "home.quaternion_wxyz", q.dump(), "must be an array of 4 numbers");
+  require(q.is_array() && q.size() == 4, "home.quaternion_wxyz", json_text(q), "must be an array of 4 numbers");
   Eigen::Quaterniond quaternion(number(q[0], "home.quaternion_wxyz[0]"), number(q[1], "home.quaternion_wxyz[1]"),
                                 number(q[2], "home.quaternion_wxyz[2]"), number(q[3], "home.quaternion_wxyz[3]"));
   return Hexapod(base, platform, lo, hi, speed, Posed(quaternion, t));

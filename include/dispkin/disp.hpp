@@ -213,6 +213,10 @@ Scalar group_max_speed(const MetricGroup<Scalar>& g, const Pose<Scalar>& pose, c
 template <typename Scalar>
 Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, const Twist<Scalar>& body,
                        std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
+  // A speed of 0 must mean "standing still", never "nothing was measured". (A collinear set
+  // is fine here: its speed is well defined, only its distance is not a metric.)
+  if (set.empty()) throw std::invalid_argument(describe("metric_set", std::string("MetricSet"), "is empty: there is no point whose speed could be measured"));
+  require_finite(body.vector(), "twist");
   detail::require_system_velocity(system_velocity);
   Scalar best(0);
   for (const auto& g : set.groups()) best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));

@@ -123,8 +123,17 @@ def test_check_names_the_leg():
     assert s.check(s.home.matrix()).reachable
 
 
-def test_forward_failures_raise_runtime_error():
+def test_forward_refuses_legs_out_of_range():
     h = desktop()
+    legs = h.inverse(h.home)
+    legs[5] = 5.0
+    with pytest.raises(ValueError, match=r"legs\[5\] is outside its length range"):
+        h.forward(legs)
+
+
+def test_forward_failures_raise_runtime_error():
+    # Wide leg ranges, so that forward() gets to Newton's method and reports its failures.
+    h = dispkin.Hexapod.symmetric(0.15, math.radians(20), 0.10, math.radians(20), 0.20, 0.0, 10.0, 0.01)
     legs = h.inverse(h.home)
     legs[5] = 5.0
     with pytest.raises(RuntimeError, match=r"no convergence after 50 iterations, leg length residual"):

@@ -1,0 +1,402 @@
+// The bad-input table (issue 9, item 5), C++ side: every public entry point × every kind of
+// bad input (NaN, ±inf, empty, wrong size, zero or negative limits, degenerate sets,
+// unreachable poses, out-of-range legs, malformed files, unknown names), one row each. A row
+// asserts the exception type (std::invalid_argument / std::runtime_error) AND a fragment of
+// the message "<argument> = <value>: <reason>" that names the argument and shows the value.
+//
+// Rows with `observed` set are the known gaps ("strict xfail"): the entry point does NOT
+// reject the input. Such a row passes while the input is still accepted and fails once the
+// library starts rejecting it, so that the row is promoted. The Python table and the list in
+// tests/BAD_INPUT.md are in tests/python/test_bad_input_table.py.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <ostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <dispkin/convex_hull.hpp>
+#include <dispkin/disp.hpp>
+#include <dispkin/hexapod.hpp>
+#include <dispkin/metric_set.hpp>
+#include <dispkin/path.hpp>
+#include <dispkin/planner.hpp>
+#include <dispkin/pose.hpp>
+#include <dispkin/profile.hpp>
+#include <dispkin/shapes.hpp>
+
+namespace {
+
+using namespace dispkin;
+using Eigen::Matrix4d;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+const double nan_ = std::numeric_limits<double>::quiet_NaN();
+const double inf_ = std::numeric_limits<double>::infinity();
+const double pi = 3.14159265358979323846;
+
+enum class Expect { invalid_argument, runtime_error };
+
+struct Row {
+  std::string entry;
+  std::string bad;
+  std::function<void()> call;
+  Expect expect;
+  std::string fragment;
+  std::string observed;  // non-empty: the input is NOT rejected (strict xfail), what happens instead
+};
+
+Vector6d v6(double a, double b, double c, double d, double e, double f) {
+  Vector6d v;
+  v << a, b, c, d, e, f;
+  return v;
+}
+
+MetricSetd good_set() {
+  MetricSetd s;
+  s.add_relative(std::vector<Vector3d>{Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()});
+  return s;
+}
+
+MetricSetd collinear_set() {
+  MetricSetd s;
+  s.add_relative(std::vector<Vector3d>{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(2, 0, 0)});
+  return s;
+}
+
+Hexapod hexapod() { return Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01); }
+
+const Posed A;
+const Posed B = Posed::from_xyzuvw(v6(0.1, 0, 0, 0, 0, 0.5));
+const Posed C = Posed::from_xyzuvw(v6(0.1, 0.1, 0, 0, 0, 0));
+const Twistd XI(Vector3d(0.1, 0, 0), Vector3d(0, 0, 1));
+
+Limits limits(double v, double a, std::optional<double> j) {
+  Limits l;
+  l.velocity = v;
+  l.acceleration = a;
+  l.jerk = j;
+  return l;
+}
+
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string temp_file(const std::string& name, const std::string& content) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << content;
+  return path;
+}
+
+std::vector<Row> rows() {
+  const auto IA = Expect::invalid_argument;
+  const auto RT = Expect::runtime_error;
+  std::vector<Row> r;
+  auto row = [&](std::string entry, std::string bad, std::function<void()> call, Expect e, std::string fragment,
+                 std::string observed = "") {
+    r.push_back({std::move(entry), std::move(bad), std::move(call), e, std::move(fragment), std::move(observed)});
+  };
+  (void)RT;
+
+  // --- Pose ---
+  row("Pose(quaternion, translation)", "NaN quaternion", [] { Posed(Quaterniond(nan_, 0, 0, 0), Vector3d::Zero()); }, IA,
+      "quaternion (w, x, y, z) = (nan, 0, 0, 0)");
+  row("Pose(quaternion, translation)", "+inf translation", [] { Posed(Quaterniond::Identity(), Vector3d(inf_, 0, 0)); }, IA,
+      "translation = (inf, 0, 0)");
+  row("Pose(quaternion, translation)", "-inf translation", [] { Posed(Quaterniond::Identity(), Vector3d(0, -inf_, 0)); }, IA,
+      "translation = (0, -inf, 0)");
+  row("Pose(quaternion, translation)", "zero quaternion", [] { Posed(Quaterniond(0, 0, 0, 0), Vector3d::Zero()); }, IA,
+      "quaternion (w, x, y, z) = (0, 0, 0, 0): must be a unit quaternion");
+  row("Pose(quaternion, translation)", "non-unit quaternion", [] { Posed(Quaterniond(2, 0, 0, 0), Vector3d::Zero()); }, IA,
+      "quaternion (w, x, y, z) = (2, 0, 0, 0): must be a unit quaternion");
+  row("Pose(rotation, translation)", "scaled rotation", [] { Posed(Eigen::Matrix3d(2 * Eigen::Matrix3d::Identity()), Vector3d::Zero()); }, IA,
+      "rotation = (2, 0, 0, 0, 2, 0, 0, 0, 2): must be orthonormal with determinant +1");
+  row("Pose(rotation, translation)", "reflection (det -1)", [] { Posed(Eigen::Matrix3d(Vector3d(1, 1, -1).asDiagonal()), Vector3d::Zero()); }, IA,
+      "rotation = (1, 0, 0, 0, 1, 0, 0, 0, -1): must be orthonormal with determinant +1");
+  row("Pose(rotation, translation)", "NaN rotation", [] { Posed(Eigen::Matrix3d::Constant(nan_), Vector3d::Zero()); }, IA, "rotation = (nan, nan, nan");
+  row("Pose::from_matrix", "NaN entry", [] { Matrix4d m = Matrix4d::Identity(); m(0, 3) = nan_; Posed::from_matrix(m); }, IA,
+      "matrix = (1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, nan, 0, 0, 1)");
+  row("Pose::from_matrix", "+inf entry", [] { Matrix4d m = Matrix4d::Identity(); m(1, 1) = inf_; Posed::from_matrix(m); }, IA,
+      "matrix = (1, 0, 0, 0, 0, inf");
+  row("Pose::from_matrix", "bad last row", [] { Matrix4d m = Matrix4d::Identity(); m(3, 3) = 2; Posed::from_matrix(m); }, IA,
+      "matrix last row = (0, 0, 0, 2)");
+  row("Pose::from_matrix", "scaled rotation", [] { Matrix4d m = 2 * Matrix4d::Identity(); m(3, 3) = 1; Posed::from_matrix(m); }, IA,
+      "rotation = (2, 0, 0, 0, 2, 0, 0, 0, 2): must be orthonormal");
+  row("Pose::from_xyzuvw", "NaN", [] { Posed::from_xyzuvw(v6(0, 0, 0, nan_, 0, 0)); }, IA, "xyzuvw = (0, 0, 0, nan, 0, 0)");
+  row("Pose::from_xyzuvw", "+inf", [] { Posed::from_xyzuvw(v6(inf_, 0, 0, 0, 0, 0)); }, IA, "xyzuvw = (inf, 0, 0, 0, 0, 0)");
+  row("Pose::from_xyzuvw", "NaN pivot", [] { Posed::from_xyzuvw(Vector6d::Zero(), Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Pose::to_xyzuvw", "NaN pivot", [] { B.to_xyzuvw(Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Pose::to_xyzuvw", "-inf pivot", [] { B.to_xyzuvw(Vector3d(0, 0, -inf_)); }, IA, "pivot = (0, 0, -inf)");
+  row("Pose::rotated_about_pivot", "NaN pivot", [] { A.rotated_about_pivot(B, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Pose::rotated_about_pivot", "+inf pivot", [] { A.rotated_about_pivot(B, Vector3d(0, inf_, 0)); }, IA, "pivot = (0, inf, 0)");
+
+  // --- MetricSet ---
+  row("MetricSet::add_relative", "NaN point", [] { MetricSetd s; s.add_relative(std::vector<Vector3d>{Vector3d::Zero(), Vector3d(nan_, 0, 0)}); }, IA,
+      "points[1] = (nan, 0, 0)");
+  row("MetricSet::add_relative", "+inf point", [] { MetricSetd s; s.add_relative(Vector3d(0, inf_, 0)); }, IA, "points[0] = (0, inf, 0)");
+  row("MetricSet::add_relative", "negative group", [] { MetricSetd s; s.add_relative(Vector3d::Zero(), -1); }, IA, "group = -1");
+  row("MetricSet::add_absolute", "-inf point", [] { MetricSetd s; s.add_absolute(Vector3d(0, 0, -inf_)); }, IA, "points[0] = (0, 0, -inf)");
+  row("MetricSet::add_absolute", "negative group", [] { MetricSetd s; s.add_absolute(Vector3d::Zero(), -3); }, IA, "group = -3");
+  row("MetricSet::add_points", "NaN point", [] { MetricSetd s; s.add_points({Vector3d(nan_, 0, 0)}, Frame::absolute); }, IA, "points[0] = (nan, 0, 0)");
+  row("MetricSet::add_sphere", "NaN center", [] { MetricSetd s; s.add_sphere(Vector3d(nan_, 0, 0), 0.1); }, IA, "center = (nan, 0, 0)");
+  row("MetricSet::add_sphere", "negative radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), -0.1); }, IA, "radius = -0.1");
+  row("MetricSet::add_sphere", "NaN radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), nan_); }, IA, "radius = nan");
+  row("MetricSet::add_sphere", "+inf radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), inf_); }, IA, "radius = inf");
+  row("MetricSet::add_sphere", "negative group", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), 0.1, Frame::relative, -1); }, IA, "group = -1");
+  row("MetricSet::set_group_speed", "zero speed", [] { MetricSetd s; s.set_group_speed(1, 0.0); }, IA, "speed = 0");
+  row("MetricSet::set_group_speed", "negative speed", [] { MetricSetd s; s.set_group_speed(1, -1.0); }, IA, "speed = -1");
+  row("MetricSet::set_group_speed", "NaN speed", [] { MetricSetd s; s.set_group_speed(1, nan_); }, IA, "speed = nan");
+  row("MetricSet::set_group_speed", "+inf speed", [] { MetricSetd s; s.set_group_speed(1, inf_); }, IA, "speed = inf");
+  row("MetricSet::set_group_speed", "negative group", [] { MetricSetd s; s.set_group_speed(-1, 1.0); }, IA, "group = -1");
+  row("MetricSet::require_well_formed", "empty set", [] { MetricSetd().require_well_formed(); }, IA,
+      "metric_set = \"MetricSet\": is not well-formed: the set is empty");
+  row("MetricSet::require_well_formed", "collinear set", [] { collinear_set().require_well_formed(); }, IA,
+      "metric_set = \"MetricSet\": is not well-formed: its relative part (3 objects)");
+
+  // --- shapes ---
+  row("shapes::box", "zero edge", [] { shapes::box<double>(Vector3d(0, 1, 1)); }, IA, "size = (0, 1, 1)");
+  row("shapes::box", "negative edge", [] { shapes::box<double>(Vector3d(1, -1, 1)); }, IA, "size = (1, -1, 1)");
+  row("shapes::box", "NaN edge", [] { shapes::box<double>(Vector3d(1, 1, nan_)); }, IA, "size = (1, 1, nan)");
+  row("shapes::box", "+inf center", [] { shapes::box<double>(Vector3d(1, 1, 1), Vector3d(inf_, 0, 0)); }, IA, "center = (inf, 0, 0)");
+  row("shapes::icosahedron", "zero radius", [] { shapes::icosahedron(0.0); }, IA, "radius = 0");
+  row("shapes::icosahedron", "negative radius", [] { shapes::icosahedron(-1.0); }, IA, "radius = -1");
+  row("shapes::icosahedron", "NaN radius", [] { shapes::icosahedron(nan_); }, IA, "radius = nan");
+  row("shapes::icosahedron", "+inf radius", [] { shapes::icosahedron(inf_); }, IA, "radius = inf");
+  row("shapes::icosahedron", "NaN center", [] { shapes::icosahedron(1.0, Vector3d(nan_, 0, 0)); }, IA, "center = (nan, 0, 0)");
+  row("shapes::icosphere", "zero radius", [] { shapes::icosphere(0.0, 1); }, IA, "radius = 0");
+  row("shapes::icosphere", "negative subdivisions", [] { shapes::icosphere(1.0, -1); }, IA, "subdivisions = -1");
+  row("shapes::icosphere", "too many subdivisions", [] { shapes::icosphere(1.0, 8); }, IA, "subdivisions = 8");
+  row("shapes::icosphere", "-inf center", [] { shapes::icosphere(1.0, 1, Vector3d(0, -inf_, 0)); }, IA, "center = (0, -inf, 0)");
+  row("shapes::spherical_shell", "negative radius", [] { shapes::spherical_shell(-1.0, 10); }, IA, "radius = -1");
+  row("shapes::spherical_shell", "count too small", [] { shapes::spherical_shell(1.0, 3); }, IA, "count = 3");
+  row("shapes::spherical_shell", "zero count", [] { shapes::spherical_shell(1.0, 0); }, IA, "count = 0");
+  row("shapes::spherical_shell", "NaN pivot", [] { shapes::spherical_shell(1.0, 10, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+
+  // --- convex hull ---
+  row("convex_hull_vertices", "NaN point", [] { convex_hull_vertices({Vector3d::Zero(), Vector3d::UnitX(), Vector3d::UnitY(), Vector3d(0, 0, nan_)}); }, IA,
+      "points[3] = (0, 0, nan): must be finite");
+  row("convex_hull_vertices", "+inf point", [] { convex_hull_vertices({Vector3d::Zero(), Vector3d::UnitX(), Vector3d::UnitY(), Vector3d(inf_, 0, 1)}); }, IA,
+      "points[3] = (inf, 0, 1): must be finite");
+
+  // --- DISP functions ---
+  row("disp_distance", "empty set", [] { disp_distance(MetricSetd(), A, B); }, IA, "metric_set = \"MetricSet\": is not well-formed: the set is empty");
+  row("disp_distance", "collinear set", [] { disp_distance(collinear_set(), A, B); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("disp_distance", "zero system_velocity", [] { disp_distance(good_set(), A, B, 0.0); }, IA, "system_velocity = 0");
+  row("disp_distance", "negative system_velocity", [] { disp_distance(good_set(), A, B, -1.0); }, IA, "system_velocity = -1");
+  row("disp_distance", "NaN system_velocity", [] { disp_distance(good_set(), A, B, nan_); }, IA, "system_velocity = nan");
+  row("interpolation_from_string", "unknown interpolation", [] { interpolation_from_string("slerp"); }, IA, "interpolation = \"slerp\"");
+  row("interpolation_from_string", "empty name", [] { interpolation_from_string(""); }, IA, "interpolation = \"\"");
+  row("interpolate", "NaN tau", [] { (void)interpolate(A, B, nan_, Interpolation::decoupled); }, IA, "tau = nan",
+      "returns a pose whose quaternion and translation are all NaN (noexcept, unchecked; the Python binding rejects it)");
+  row("interpolate", "tau above 1", [] { (void)interpolate(A, B, 2.0, Interpolation::decoupled); }, IA, "tau = 2",
+      "extrapolates: the pose at tau = 2 (x = 0.2); tau in [0, 1] is not checked");
+  row("section_length", "empty set", [] { section_length(MetricSetd(), A, B, Interpolation::decoupled); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("section_length", "collinear set", [] { section_length(collinear_set(), A, B, Interpolation::screw); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("section_length", "NaN pivot", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("section_length", "zero system_velocity", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d::Zero(), 0.0); }, IA, "system_velocity = 0");
+  row("section_length", "+inf system_velocity", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d::Zero(), inf_); }, IA, "system_velocity = inf");
+  row("max_point_speed", "negative system_velocity", [] { max_point_speed(good_set(), A, XI, -2.0); }, IA, "system_velocity = -2");
+  row("max_point_speed", "empty set", [] { (void)max_point_speed(MetricSetd(), A, XI); }, IA, "metric_set = \"MetricSet\": is empty");
+  row("max_point_speed", "NaN twist", [] { (void)max_point_speed(good_set(), A, Twistd(Vector3d(nan_, 0, 0), Vector3d::Zero())); }, IA, "twist");
+
+  // --- Path / JointPath ---
+  row("Path::lin", "NaN pivot", [] { Path::lin(A, B, Interpolation::decoupled, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::lin", "coinciding poses", [] { Path::lin(A, A); }, IA, "b = (0, 0, 0): start and end poses coincide");
+  row("Path::circ", "collinear via", [] { Path::circ(A, Posed::from_xyzuvw(v6(0.05, 0, 0, 0, 0, 0)), Posed::from_xyzuvw(v6(0.1, 0, 0, 0, 0, 0))); }, IA, "via = (0.05, 0, 0): is collinear with the start and end points");
+  row("Path::circ", "via equals start", [] { Path::circ(A, A, C); }, IA, "via = (0, 0, 0): coincides with the start point");
+  row("Path::circ", "zero tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), 0.0); }, IA, "tolerance = 0");
+  row("Path::circ", "negative tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), -1e-3); }, IA, "tolerance = -0.001");
+  row("Path::circ", "NaN tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), nan_); }, IA, "tolerance = nan");
+  row("Path::circ", "NaN pivot", [] { Path::circ(A, B, C, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::then", "discontinuous join", [] { Path p = Path::lin(A, B); p.then(Path::lin(C, A)); }, IA, "next = (0.1, 0.1, 0): must start where the path ends");
+  row("Path::section_lengths", "empty set", [] { Path::lin(A, B).section_lengths(MetricSetd()); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("Path::sample", "NaN u", [] { (void)Path::lin(A, B).sample(nan_); }, IA, "u = nan",
+      "returns the start pose (noexcept; NaN treated as u <= 0)");
+  row("Path::sample", "u above 1", [] { (void)Path::lin(A, B).sample(1.5); }, IA, "u = 1.5",
+      "clamped to the end pose (documented: \"Clamped outside\")");
+  row("Path::sample", "-inf u", [] { (void)Path::lin(A, B).sample(-inf_); }, IA, "u = -inf",
+      "clamped to the start pose (documented: \"Clamped outside\")");
+  row("JointPath", "NaN joint", [] { JointPath(Eigen::Vector2d(0, nan_), Eigen::Vector2d(0, 1)); }, IA, "q_start = (0, nan): must be finite");
+  row("JointPath", "size mismatch", [] { JointPath(Eigen::VectorXd::Zero(2), Eigen::VectorXd::Zero(3)); }, IA, "q_end size = 3");
+  row("JointPath", "empty", [] { JointPath(Eigen::VectorXd(), Eigen::VectorXd()); }, IA, "q_start = 0: must have at least one joint");
+  row("JointPath::sample", "NaN u", [] { JointPath(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)).sample(nan_); }, IA, "u = nan",
+      "returns (nan, nan) (the Python binding rejects it: u = nan: must be finite)");
+  row("max_point_speed", "+inf twist", [] { (void)max_point_speed(good_set(), A, Twistd(Vector3d(inf_, 0, 0), Vector3d::Zero())); }, IA, "twist");
+  row("JointPath::sample", "u above 1", [] { JointPath(Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 1)).sample(2.0); }, IA, "u = 2",
+      "clamped, returns (1, 1) (documented: \"u clamped to [0, 1]\")");
+
+  // --- Profile ---
+  row("Profile::trapezoid", "NaN distance", [] { Profile::trapezoid(nan_, 1, 1); }, IA, "distance = nan");
+  row("Profile::trapezoid", "negative distance", [] { Profile::trapezoid(-1, 1, 1); }, IA, "distance = -1");
+  row("Profile::trapezoid", "+inf distance", [] { Profile::trapezoid(inf_, 1, 1); }, IA, "distance = inf");
+  row("Profile::trapezoid", "zero v_max", [] { Profile::trapezoid(1, 0, 1); }, IA, "v_max = 0");
+  row("Profile::trapezoid", "negative a_max", [] { Profile::trapezoid(1, 1, -1); }, IA, "a_max = -1");
+  row("Profile::trapezoid", "+inf v_max", [] { Profile::trapezoid(1, inf_, 1); }, IA, "v_max = inf");
+  row("Profile::trapezoid", "negative v_start", [] { Profile::trapezoid(1, 1, 1, -0.5); }, IA, "v_start = -0.5");
+  row("Profile::trapezoid", "v_end above v_max", [] { Profile::trapezoid(1, 1, 1, 0, 2.0); }, IA, "v_end = 2");
+  row("Profile::scurve", "zero j_max", [] { Profile::scurve(1, 1, 1, 0); }, IA, "j_max = 0");
+  row("Profile::scurve", "NaN j_max", [] { Profile::scurve(1, 1, 1, nan_); }, IA, "j_max = nan");
+  row("Profile::scurve", "negative v_max", [] { Profile::scurve(1, -1, 1, 1); }, IA, "v_max = -1");
+  row("Profile::scurve", "NaN distance", [] { Profile::scurve(nan_, 1, 1, 1); }, IA, "distance = nan");
+
+  // --- Limits / plan ---
+  row("Limits::validate", "zero velocity", [] { limits(0, 1, 10).validate(ProfileKind::scurve); }, IA, "velocity = 0");
+  row("Limits::validate", "negative acceleration", [] { limits(1, -1, 10).validate(ProfileKind::scurve); }, IA, "acceleration = -1");
+  row("Limits::validate", "NaN velocity", [] { limits(nan_, 1, 10).validate(ProfileKind::scurve); }, IA, "velocity = nan");
+  row("Limits::validate", "+inf acceleration", [] { limits(1, inf_, 10).validate(ProfileKind::scurve); }, IA, "acceleration = inf");
+  row("Limits::validate", "zero jerk", [] { limits(1, 1, 0.0).validate(ProfileKind::scurve); }, IA, "jerk = 0");
+  row("Limits::validate", "negative jerk", [] { limits(1, 1, -5.0).validate(ProfileKind::scurve); }, IA, "jerk = -5");
+  row("Limits::validate", "scurve without jerk", [] { limits(1, 1, std::nullopt).validate(ProfileKind::scurve); }, IA, "jerk is missing: the S-curve profile needs a jerk limit");
+  row("Limits::validate", "jerk with trapezoid", [] { limits(1, 1, 10).validate(ProfileKind::trapezoid); }, IA, "jerk = 10");
+  row("plan", "empty set", [] { plan(Path::lin(A, B), MetricSetd(), limits(0.1, 1, 10)); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("plan", "collinear set", [] { plan(Path::lin(A, B), collinear_set(), limits(0.1, 1, 10)); }, IA, "metric_set = \"MetricSet\": is not well-formed");
+  row("plan", "zero velocity", [] { plan(Path::lin(A, B), good_set(), limits(0, 1, 10)); }, IA, "velocity = 0");
+  row("plan", "NaN jerk", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, nan_)); }, IA, "jerk = nan");
+
+  // --- Hexapod ---
+  row("Hexapod(...)", "NaN base joint", [] { Hexapod h = hexapod(); Hexapod::Joints b = h.base_joints(); b(0, 0) = nan_;
+        Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "base_joints = (nan, -0.02604722665, 0");
+  row("Hexapod(...)", "+inf platform joint", [] { Hexapod h = hexapod(); Hexapod::Joints p = h.platform_joints(); p(2, 5) = inf_;
+        Hexapod(h.base_joints(), p, h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "platform_joints = (0.0642787609687, -0.0766044443119, 0");
+  row("Hexapod(...)", "collinear base joints", [] { Hexapod h = hexapod(); Hexapod::Joints b = Hexapod::Joints::Zero(); b.row(0).setLinSpaced(0.0, 1.0);
+        Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA,
+      "base_joints = (0, 0, 0, 0.2, 0, 0, 0.4, 0, 0, 0.6, 0, 0, 0.8, 0, 0, 1, 0, 0): must not be collinear");
+  row("Hexapod(...)", "leg_max below leg_min", [] { Hexapod h = hexapod(); Hexapod::Legs mx = h.leg_max(); mx(3) = 0.1;
+        Hexapod(h.base_joints(), h.platform_joints(), h.leg_min(), mx, h.leg_speed()); }, IA, "leg_max[3] = 0.1");
+  row("Hexapod(...)", "negative leg_min", [] { Hexapod h = hexapod(); Hexapod::Legs mn = h.leg_min(); mn(0) = -0.1;
+        Hexapod(h.base_joints(), h.platform_joints(), mn, h.leg_max(), h.leg_speed()); }, IA, "leg_min[0] = -0.1");
+  row("Hexapod(...)", "zero leg_speed", [] { Hexapod h = hexapod(); Hexapod::Legs s = h.leg_speed(); s(5) = 0.0;
+        Hexapod(h.base_joints(), h.platform_joints(), h.leg_min(), h.leg_max(), s); }, IA, "leg_speed[5] = 0");
+  row("Hexapod(...)", "NaN leg_max", [] { Hexapod h = hexapod(); Hexapod::Legs mx = h.leg_max(); mx(1) = nan_;
+        Hexapod(h.base_joints(), h.platform_joints(), h.leg_min(), mx, h.leg_speed()); }, IA, "leg_max[1] = nan");
+  row("Hexapod(...)", "unreachable home", [] { Hexapod h = hexapod();
+        Hexapod(h.base_joints(), h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed(), Posed(Quaterniond::Identity(), Vector3d(0, 0, 5))); }, IA, "home",
+      "accepted: home at z = 5 m (legs ~5 m, range [0.15, 0.32]) is not checked against the leg ranges");
+  row("Hexapod::symmetric", "zero base_radius", [] { Hexapod::symmetric(0.0, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01); }, IA, "base_radius = 0");
+  row("Hexapod::symmetric", "NaN height", [] { Hexapod::symmetric(0.15, 0.3, 0.1, 0.3, nan_, 0.1, 0.3, 0.01); }, IA, "height = nan");
+  row("Hexapod::symmetric", "negative leg_speed", [] { Hexapod::symmetric(0.15, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, -0.01); }, IA, "leg_speed[0] = -0.01");
+  row("Hexapod::symmetric", "+inf platform_radius", [] { Hexapod::symmetric(0.15, 0.3, inf_, 0.3, 0.2, 0.1, 0.3, 0.01); }, IA, "platform_radius = inf");
+  row("Hexapod::symmetric", "negative base_gap", [] { Hexapod::symmetric(0.15, -0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01); }, IA, "base_gap = -0.3");
+  row("Hexapod::symmetric", "both gaps zero", [] { Hexapod::symmetric(0.15, 0.0, 0.1, 0.0, 0.2, 0.1, 0.3, 0.01); }, IA, "base_gap = 0");
+  row("Hexapod::from_json", "truncated JSON", [] { Hexapod::from_json("{"); }, IA, "description = \"<text>\": is not JSON");
+  row("Hexapod::from_json", "empty text", [] { Hexapod::from_json(""); }, IA, "description = \"<text>\": is not JSON");
+  row("Hexapod::from_json", "not an object", [] { Hexapod::from_json("[1, 2]"); }, IA, "description = \"[1,2]\": must be a JSON object");
+  row("Hexapod::from_json", "negative speed", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": -1.0")); }, IA, "leg_speed[0] = -1: must be finite and greater than zero");
+  row("Hexapod::from_json", "string speed", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": \"fast\"")); }, IA, "legs[0].speed = \"fast\": must be a number");
+  row("Hexapod::from_json", "NaN literal", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": NaN")); }, IA, "description = \"<text>\": is not JSON");
+  row("Hexapod::from_json", "wrong format tag", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"dispkin.hexapod\"", "\"urdf\"")); }, IA,
+      "format = \"urdf\": must be");
+  row("Hexapod::load", "missing file", [] { Hexapod::load("/nonexistent/hexapod.json"); }, IA, "path = \"/nonexistent/hexapod.json\": cannot be opened");
+  row("Hexapod::load", "malformed file", [] {
+        const std::string path = temp_file("dispkin_bad_input_malformed.json", "{\"format\": \"dispkin.hexapod\", \"legs\": [");
+        try {
+          Hexapod::load(path);
+        } catch (...) {
+          std::remove(path.c_str());
+          throw;
+        }
+        std::remove(path.c_str());
+      }, IA,
+      "dispkin_bad_input_malformed.json: description = \"<text>\": is not JSON");
+  row("Hexapod::forward", "NaN legs", [] { Hexapod::Legs l = Hexapod::Legs::Constant(0.2); l(0) = nan_; hexapod().forward(l); }, IA, "legs[0] = nan");
+  row("Hexapod::forward", "negative legs", [] { hexapod().forward(Hexapod::Legs(Hexapod::Legs::Constant(-0.2))); }, IA, "legs[0] = -0.2");
+  row("Hexapod::forward", "zero tolerance", [] { ForwardOptions o; o.tolerance = 0; Hexapod h = hexapod(); h.forward(Hexapod::Legs(Hexapod::Legs::Constant(0.2)), h.home(), o); }, IA,
+      "tolerance = 0");
+  row("Hexapod::forward", "wrong size q (5)", [] { const Hexapod h = hexapod(); h.forward(Eigen::VectorXd(Eigen::VectorXd::Constant(5, 0.2))); }, IA, "q size = 5: a hexapod has 6 legs");
+  row("Hexapod::forward", "out-of-range legs", [] { hexapod().forward(Hexapod::Legs(Hexapod::Legs::Constant(5.0))); }, IA, "legs");
+  row("Hexapod::require_reachable", "unreachable pose", [] { hexapod().require_reachable(Posed(Quaterniond::Identity(), Vector3d(0, 0, 5))); }, IA,
+      "leg 0 length = 5.00095177608: outside the leg's range [0.15, 0.32]");
+  row("Hexapod::check_trajectory", "zero dt", [] { Hexapod h = hexapod(); h.check_trajectory(plan(Path::lin(h.home(), h.home() * B), good_set(), limits(0.1, 1, 10)), 0.0); }, IA,
+      "dt = 0");
+  row("Hexapod::check_trajectory", "negative dt", [] { Hexapod h = hexapod(); h.check_trajectory(plan(Path::lin(h.home(), h.home() * B), good_set(), limits(0.1, 1, 10)), -0.01); }, IA,
+      "dt = -0.01");
+  row("Hexapod::check_trajectory", "NaN dt", [] { Hexapod h = hexapod(); h.check_trajectory(plan(Path::lin(h.home(), h.home() * B), good_set(), limits(0.1, 1, 10)), nan_); }, IA,
+      "dt = nan");
+  row("Hexapod::check_trajectory", "+inf dt", [] { Hexapod h = hexapod(); h.check_trajectory(plan(Path::lin(h.home(), h.home() * B), good_set(), limits(0.1, 1, 10)), inf_); }, IA,
+      "dt = inf");
+  row("Hexapod::add_leg_speed_group", "negative group", [] { MetricSetd s = good_set(); hexapod().add_leg_speed_group(s, -1); }, IA, "group = -1");
+  return r;
+}
+
+std::string row_name(const Row& row) {
+  std::string name = row.entry + "_" + row.bad;
+  std::string out;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    if (c == '+' && name.compare(i, 4, "+inf") == 0) out += "Pos";
+    else if (c == '-' && name.compare(i, 4, "-inf") == 0) out += "Neg";
+    else if (std::isalnum(static_cast<unsigned char>(c))) out += c;
+    else if (!out.empty() && out.back() != '_') out += '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
+// Readable test parameters in gtest's output (instead of a byte dump).
+void PrintTo(const Row& row, std::ostream* out) { *out << row.entry << " / " << row.bad; }
+
+class BadInputRows : public ::testing::TestWithParam<Row> {};
+
+TEST_P(BadInputRows, RejectsWithNamedArgumentAndValue) {
+  const Row& row = GetParam();
+  std::string what;
+  bool invalid_argument = false, runtime_error = false, other = false, threw = false;
+  try {
+    row.call();
+  } catch (const std::invalid_argument& e) {
+    threw = invalid_argument = true;
+    what = e.what();
+  } catch (const std::runtime_error& e) {
+    threw = runtime_error = true;
+    what = e.what();
+  } catch (const std::exception& e) {
+    threw = other = true;
+    what = e.what();
+  }
+  if (threw) RecordProperty("message", what);
+  const bool right_type = row.expect == Expect::invalid_argument ? invalid_argument : runtime_error;
+  const bool matches = threw && right_type && what.find(row.fragment) != std::string::npos;
+  if (!row.observed.empty()) {
+    // Strict xfail: the gap must still be there, else promote the row.
+    EXPECT_FALSE(matches) << row.entry << " now rejects " << row.bad << " (" << what
+                          << "): remove `observed` from this row";
+    RecordProperty("xfail", row.observed);
+    return;
+  }
+  ASSERT_TRUE(threw) << row.entry << " accepted " << row.bad;
+  EXPECT_FALSE(other) << "unexpected exception type: " << what;
+  EXPECT_TRUE(right_type) << "wrong exception type: " << what;
+  EXPECT_NE(what.find(row.fragment), std::string::npos) << "message \"" << what << "\" lacks \"" << row.fragment << "\"";
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInputTable, BadInputRows, ::testing::ValuesIn(rows()),
+                         [](const ::testing::TestParamInfo<Row>& param) { return row_name(param.param); });
+
+TEST(BadInputTableMeta, NamesAreUniqueAndGapsAreCounted) {
+  const std::vector<Row> all = rows();
+  std::vector<std::string> names;
+  int gaps = 0;
+  for (const Row& r : all) {
+    names.push_back(row_name(r));
+    if (!r.observed.empty()) ++gaps;
+  }
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
+  RecordProperty("rows", static_cast<int>(all.size()));
+  RecordProperty("not_rejected", gaps);
+}
+
+}  // namespace

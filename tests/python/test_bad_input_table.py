@@ -1,0 +1,370 @@
+"""The bad-input table (issue 9, item 5): every public Python entry point × every kind of bad
+input, one row each, asserting the exception type AND that the message names the argument and
+shows the value ("<argument> = <value>: <reason>").
+
+Rows whose entry point does NOT reject the input are strict xfails carrying the observed
+behaviour, so a fix turns them into failures that ask for the row to be promoted.
+
+tests/BAD_INPUT.md is generated from ROWS by tests/python/make_bad_input_table.py; the last
+test checks it is up to date.
+"""
+
+import atexit
+import json
+import math
+import pathlib
+import re
+import shutil
+import tempfile
+
+import numpy as np
+import pytest
+
+import dispkin
+from dispkin import shapes
+
+NAN, INF = float("nan"), float("inf")
+
+
+def good_set():
+    s = dispkin.MetricSet()
+    s.add_relative(np.eye(3))
+    return s
+
+
+def collinear_set():
+    s = dispkin.MetricSet()
+    s.add_relative([[0, 0, 0], [1, 0, 0], [2, 0, 0]])
+    return s
+
+
+def hexapod():
+    return dispkin.Hexapod.symmetric(0.15, math.radians(20), 0.10, math.radians(20), 0.20, 0.15, 0.32, 0.01)
+
+
+def hexapod_json(**change):
+    d = json.loads(hexapod().to_json())
+    d.update(change)
+    return json.dumps(d)
+
+
+LEGS = json.loads(hexapod().to_json())["legs"]
+
+
+def leg_changed(**change):
+    legs = json.loads(json.dumps(LEGS))
+    legs[0].update(change)
+    return legs
+
+
+def without(key):
+    d = json.loads(hexapod().to_json())
+    del d[key]
+    return json.dumps(d)
+
+
+A = dispkin.Pose()
+B = dispkin.Pose.from_xyzuvw([0.1, 0.0, 0.0, 0.0, 0.0, 0.5])
+C = dispkin.Pose.from_xyzuvw([0.1, 0.1, 0.0, 0.0, 0.0, 0.0])
+XI = [0.1, 0.0, 0.0, 0.0, 0.0, 1.0]
+LINE = dispkin.Path.lin(A, B)
+LIMITS = dispkin.Limits(0.1, 1.0, 10.0)
+
+
+def trajectory():
+    return dispkin.plan(dispkin.Path.lin(hexapod().home, hexapod().home * B), good_set(), LIMITS)
+
+
+# (entry point, bad input, call, exception, message fragment). The fragment is matched with
+# re.search after re.escape, so write it literally; it contains the argument and the value.
+R = []
+
+
+def row(entry, bad, call, exc, fragment, xfail=None):
+    R.append(dict(entry=entry, bad=bad, call=call, exc=exc, fragment=fragment, xfail=xfail))
+
+
+V = ValueError  # every rejection in the Python API is a ValueError (no RuntimeError row is needed)
+
+_TMP = tempfile.mkdtemp(prefix="dispkin_bad_input_")
+atexit.register(shutil.rmtree, _TMP, ignore_errors=True)
+MALFORMED = pathlib.Path(_TMP) / "malformed.json"
+MALFORMED.write_text("{\"format\": \"dispkin.hexapod\", \"legs\": [")
+
+# --- Pose ---------------------------------------------------------------------------------
+row("Pose(quaternion, translation)", "NaN quaternion", lambda: dispkin.Pose((NAN, 0, 0, 0), (0, 0, 0)), V, "quaternion = (nan, 0, 0, 0)")
+row("Pose(quaternion, translation)", "+inf translation", lambda: dispkin.Pose((1, 0, 0, 0), (INF, 0, 0)), V, "translation = (inf, 0, 0)")
+row("Pose(quaternion, translation)", "-inf translation", lambda: dispkin.Pose((1, 0, 0, 0), (0, -INF, 0)), V, "translation = (0, -inf, 0)")
+row("Pose(quaternion, translation)", "zero quaternion", lambda: dispkin.Pose((0, 0, 0, 0), (0, 0, 0)), V, "quaternion (w, x, y, z) = (0, 0, 0, 0): must be a unit quaternion")
+row("Pose(quaternion, translation)", "non-unit quaternion", lambda: dispkin.Pose((2, 0, 0, 0), (0, 0, 0)), V, "quaternion (w, x, y, z) = (2, 0, 0, 0): must be a unit quaternion")
+row("Pose(quaternion, translation)", "wrong size quaternion (3)", lambda: dispkin.Pose((1, 0, 0), (0, 0, 0)), V, "quaternion: expected an array of shape (4,), got shape (3,)")
+row("Pose(quaternion, translation)", "wrong size translation (2)", lambda: dispkin.Pose((1, 0, 0, 0), (0, 0)), V, "translation: expected an array of shape (3,), got shape (2,)")
+row("Pose(quaternion, translation)", "empty translation", lambda: dispkin.Pose((1, 0, 0, 0), ()), V, "translation: expected an array of shape (3,), got shape (0,)")
+row("Pose.from_matrix", "NaN entry", lambda: dispkin.Pose.from_matrix(np.where(np.eye(4) == 1, np.eye(4), NAN)), V, "matrix = (1, nan, nan, nan, nan, 1,")
+row("Pose.from_matrix", "+inf entry", lambda: dispkin.Pose.from_matrix(np.diag([1, 1, 1, 1.0]) + np.pad([[INF]], ((0, 3), (3, 0)))), V, "matrix = (1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, inf, 0, 0, 1): must be finite")
+row("Pose.from_matrix", "bad last row", lambda: dispkin.Pose.from_matrix(np.diag([1, 1, 1, 2.0])), V, "matrix last row = (0, 0, 0, 2)")
+row("Pose.from_matrix", "not a rotation (scaled)", lambda: dispkin.Pose.from_matrix(np.diag([2, 2, 2, 1.0])), V, "rotation = (2, 0, 0, 0, 2, 0, 0, 0, 2): must be orthonormal with determinant +1")
+row("Pose.from_matrix", "reflection (det -1)", lambda: dispkin.Pose.from_matrix(np.diag([1, 1, -1, 1.0])), V, "rotation = (1, 0, 0, 0, 1, 0, 0, 0, -1): must be orthonormal with determinant +1")
+row("Pose.from_matrix", "wrong shape 3x3", lambda: dispkin.Pose.from_matrix(np.eye(3)), V, "matrix: expected an array of shape (4, 4), got shape (3, 3)")
+row("Pose.from_matrix", "empty", lambda: dispkin.Pose.from_matrix(np.zeros((0, 0))), V, "matrix: expected an array of shape (4, 4), got shape (0, 0)")
+row("Pose.from_xyzuvw", "NaN", lambda: dispkin.Pose.from_xyzuvw([0, 0, 0, NAN, 0, 0]), V, "xyzuvw = (0, 0, 0, nan, 0, 0)")
+row("Pose.from_xyzuvw", "+inf", lambda: dispkin.Pose.from_xyzuvw([INF, 0, 0, 0, 0, 0]), V, "xyzuvw = (inf, 0, 0, 0, 0, 0)")
+row("Pose.from_xyzuvw", "NaN pivot", lambda: dispkin.Pose.from_xyzuvw([0] * 6, [NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("Pose.from_xyzuvw", "wrong size (5)", lambda: dispkin.Pose.from_xyzuvw([0] * 5), V, "xyzuvw: expected an array of shape (6,), got shape (5,)")
+row("Pose.from_xyzuvw", "empty", lambda: dispkin.Pose.from_xyzuvw([]), V, "xyzuvw: expected an array of shape (6,), got shape (0,)")
+row("Pose.to_xyzuvw", "NaN pivot", lambda: B.to_xyzuvw([NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("Pose.to_xyzuvw", "-inf pivot", lambda: B.to_xyzuvw([0, 0, -INF]), V, "pivot = (0, 0, -inf)")
+row("Pose.to_xyzuvw", "wrong size pivot (4)", lambda: B.to_xyzuvw([0, 0, 0, 0]), V, "pivot: expected an array of shape (3,), got shape (4,)")
+row("Pose.rotated_about_pivot", "NaN pivot", lambda: A.rotated_about_pivot(B, [NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("Pose.rotated_about_pivot", "+inf pivot", lambda: A.rotated_about_pivot(B, [0, INF, 0]), V, "pivot = (0, inf, 0)")
+row("Pose.rotated_about_pivot", "wrong size pivot (2)", lambda: A.rotated_about_pivot(B, [0, 0]), V, "pivot: expected an array of shape (3,), got shape (2,)")
+row("Pose.exp", "NaN twist", lambda: dispkin.Pose.exp([NAN, 0, 0, 0, 0, 0]), V, "twist = (nan, 0, 0, 0, 0, 0)")
+row("Pose.exp", "wrong size twist (3)", lambda: dispkin.Pose.exp([0, 0, 0]), V, "twist: expected an array of shape (6,), got shape (3,)")
+row("Pose.transform", "NaN point", lambda: A.transform([NAN, 0, 0]), V, "points[0] = (nan, 0, 0)")
+row("Pose.transform", "wrong shape points (N, 2)", lambda: A.transform(np.zeros((4, 2))), V, "points: expected an array of shape (3,) or (N, 3), got shape (4, 2)")
+
+# --- MetricSet ----------------------------------------------------------------------------
+row("MetricSet.add_relative", "NaN point", lambda: dispkin.MetricSet().add_relative([[0, 0, 0], [NAN, 0, 0]]), V, "points[1] = (nan, 0, 0)")
+row("MetricSet.add_relative", "+inf point", lambda: dispkin.MetricSet().add_relative([0, INF, 0]), V, "points[0] = (0, inf, 0): must be finite")
+row("MetricSet.add_relative", "wrong shape (N, 2)", lambda: dispkin.MetricSet().add_relative(np.zeros((3, 2))), V, "points: expected an array of shape (3,) or (N, 3), got shape (3, 2)")
+row("MetricSet.add_relative", "negative group", lambda: dispkin.MetricSet().add_relative([0, 0, 0], group=-1), V, "group = -1")
+row("MetricSet.add_absolute", "-inf point", lambda: dispkin.MetricSet().add_absolute([[0, 0, -INF]]), V, "points[0] = (0, 0, -inf): must be finite")
+row("MetricSet.add_absolute", "wrong shape (N, 4)", lambda: dispkin.MetricSet().add_absolute(np.zeros((2, 4))), V, "points: expected an array of shape (3,) or (N, 3), got shape (2, 4)")
+row("MetricSet.add_absolute", "negative group", lambda: dispkin.MetricSet().add_absolute([0, 0, 0], group=-3), V, "group = -3")
+row("MetricSet.add_sphere", "NaN center", lambda: dispkin.MetricSet().add_sphere([NAN, 0, 0], 0.1), V, "center = (nan, 0, 0)")
+row("MetricSet.add_sphere", "negative radius", lambda: dispkin.MetricSet().add_sphere([0, 0, 0], -0.1), V, "radius = -0.1")
+row("MetricSet.add_sphere", "NaN radius", lambda: dispkin.MetricSet().add_sphere([0, 0, 0], NAN), V, "radius = nan")
+row("MetricSet.add_sphere", "+inf radius", lambda: dispkin.MetricSet().add_sphere([0, 0, 0], INF), V, "radius = inf")
+row("MetricSet.add_sphere", "wrong size center (2)", lambda: dispkin.MetricSet().add_sphere([0, 0], 0.1), V, "center: expected an array of shape (3,), got shape (2,)")
+row("MetricSet.add_sphere", "negative group", lambda: dispkin.MetricSet().add_sphere([0, 0, 0], 0.1, group=-1), V, "group = -1")
+row("MetricSet.set_group_speed", "zero speed", lambda: dispkin.MetricSet().set_group_speed(1, 0.0), V, "speed = 0")
+row("MetricSet.set_group_speed", "negative speed", lambda: dispkin.MetricSet().set_group_speed(1, -1.0), V, "speed = -1")
+row("MetricSet.set_group_speed", "NaN speed", lambda: dispkin.MetricSet().set_group_speed(1, NAN), V, "speed = nan")
+row("MetricSet.set_group_speed", "+inf speed", lambda: dispkin.MetricSet().set_group_speed(1, INF), V, "speed = inf")
+row("MetricSet.set_group_speed", "negative group", lambda: dispkin.MetricSet().set_group_speed(-1, 1.0), V, "group = -1")
+row("MetricSet.relative_points", "unknown group", lambda: good_set().relative_points(7), V, "group = 7: no such group")
+row("MetricSet.require_well_formed", "empty set", lambda: dispkin.MetricSet().require_well_formed(), V, "metric_set = \"MetricSet\": is not well-formed: the set is empty")
+row("MetricSet.require_well_formed", "collinear set", lambda: collinear_set().require_well_formed(), V, "metric_set = \"MetricSet\": is not well-formed")
+
+# --- shapes -------------------------------------------------------------------------------
+row("shapes.box", "zero edge", lambda: shapes.box([0, 1, 1]), V, "size = (0, 1, 1)")
+row("shapes.box", "negative edge", lambda: shapes.box([1, -1, 1]), V, "size = (1, -1, 1)")
+row("shapes.box", "NaN edge", lambda: shapes.box([1, 1, NAN]), V, "size = (1, 1, nan)")
+row("shapes.box", "+inf center", lambda: shapes.box([1, 1, 1], [INF, 0, 0]), V, "center = (inf, 0, 0)")
+row("shapes.box", "wrong size (2)", lambda: shapes.box([1, 1]), V, "size: expected an array of shape (3,), got shape (2,)")
+row("shapes.icosahedron", "zero radius", lambda: shapes.icosahedron(0.0), V, "radius = 0")
+row("shapes.icosahedron", "negative radius", lambda: shapes.icosahedron(-1.0), V, "radius = -1")
+row("shapes.icosahedron", "NaN radius", lambda: shapes.icosahedron(NAN), V, "radius = nan")
+row("shapes.icosahedron", "+inf radius", lambda: shapes.icosahedron(INF), V, "radius = inf")
+row("shapes.icosahedron", "NaN center", lambda: shapes.icosahedron(1.0, [NAN, 0, 0]), V, "center = (nan, 0, 0)")
+row("shapes.icosphere", "zero radius", lambda: shapes.icosphere(0.0, 1), V, "radius = 0")
+row("shapes.icosphere", "negative subdivisions", lambda: shapes.icosphere(1.0, -1), V, "subdivisions = -1")
+row("shapes.icosphere", "too many subdivisions", lambda: shapes.icosphere(1.0, 8), V, "subdivisions = 8")
+row("shapes.icosphere", "-inf center", lambda: shapes.icosphere(1.0, 1, [0, -INF, 0]), V, "center = (0, -inf, 0)")
+row("shapes.spherical_shell", "negative radius", lambda: shapes.spherical_shell(-1.0, 10), V, "radius = -1")
+row("shapes.spherical_shell", "count too small", lambda: shapes.spherical_shell(1.0, 3), V, "count = 3")
+row("shapes.spherical_shell", "zero count", lambda: shapes.spherical_shell(1.0, 0), V, "count = 0")
+row("shapes.spherical_shell", "NaN pivot", lambda: shapes.spherical_shell(1.0, 10, [NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+
+# --- convex hull --------------------------------------------------------------------------
+row("convex_hull_vertices", "NaN point", lambda: dispkin.convex_hull_vertices([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, NAN]]), V, "points[3] = (0, 0, nan): must be finite")
+row("convex_hull_vertices", "+inf point", lambda: dispkin.convex_hull_vertices([[0, 0, 0], [1, 0, 0], [0, 1, 0], [INF, 0, 1]]), V, "points[3] = (inf, 0, 1): must be finite")
+row("convex_hull_vertices", "wrong shape (N, 2)", lambda: dispkin.convex_hull_vertices(np.zeros((4, 2))), V, "points: expected an array of shape (N, 3), got shape (4, 2)")
+
+# --- DISP functions -----------------------------------------------------------------------
+row("disp_distance", "empty set", lambda: dispkin.disp_distance(dispkin.MetricSet(), A, B), V, "metric_set = \"MetricSet\": is not well-formed: the set is empty")
+row("disp_distance", "collinear set", lambda: dispkin.disp_distance(collinear_set(), A, B), V, "metric_set = \"MetricSet\": is not well-formed")
+row("disp_distance", "unknown norm", lambda: dispkin.disp_distance(good_set(), A, B, norm="manhattan"), V, "norm = \"manhattan\"")
+row("disp_distance", "zero system_velocity", lambda: dispkin.disp_distance(good_set(), A, B, system_velocity=0.0), V, "system_velocity = 0")
+row("disp_distance", "negative system_velocity", lambda: dispkin.disp_distance(good_set(), A, B, system_velocity=-1.0), V, "system_velocity = -1")
+row("disp_distance", "NaN system_velocity", lambda: dispkin.disp_distance(good_set(), A, B, system_velocity=NAN), V, "system_velocity = nan")
+row("section_length", "empty set", lambda: dispkin.section_length(dispkin.MetricSet(), A, B), V, "metric_set = \"MetricSet\": is not well-formed")
+row("section_length", "unknown interpolation", lambda: dispkin.section_length(good_set(), A, B, interpolation="slerp"), V, "interpolation = \"slerp\"")
+row("section_length", "NaN pivot", lambda: dispkin.section_length(good_set(), A, B, pivot=[NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("section_length", "wrong size pivot (2)", lambda: dispkin.section_length(good_set(), A, B, pivot=[0, 0]), V, "pivot: expected an array of shape (3,), got shape (2,)")
+row("section_length", "zero system_velocity", lambda: dispkin.section_length(good_set(), A, B, system_velocity=0.0), V, "system_velocity = 0")
+row("section_length", "+inf system_velocity", lambda: dispkin.section_length(good_set(), A, B, system_velocity=INF), V, "system_velocity = inf")
+row("max_point_speed", "empty set", lambda: dispkin.max_point_speed(dispkin.MetricSet(), A, XI), V, "metric_set = \"MetricSet\": is empty")
+row("max_point_speed", "NaN twist", lambda: dispkin.max_point_speed(good_set(), A, [NAN, 0, 0, 0, 0, 0]), V, "twist = (nan, 0, 0, 0, 0, 0)")
+row("max_point_speed", "+inf twist", lambda: dispkin.max_point_speed(good_set(), A, [INF, 0, 0, 0, 0, 0]), V, "twist = (inf, 0, 0, 0, 0, 0)")
+row("max_point_speed", "wrong size twist (5)", lambda: dispkin.max_point_speed(good_set(), A, [0] * 5), V, "twist: expected an array of shape (6,), got shape (5,)")
+row("max_point_speed", "negative system_velocity", lambda: dispkin.max_point_speed(good_set(), A, XI, system_velocity=-2.0), V, "system_velocity = -2")
+row("point_speed", "NaN point", lambda: dispkin.point_speed(XI, (NAN, 0.0, 0.0)), V, "point = (nan, 0, 0)")
+row("point_speed", "wrong size twist (4)", lambda: dispkin.point_speed([0] * 4, (0.0, 0.0, 0.0)), V, "twist: expected an array of shape (6,), got shape (4,)")
+row("sphere_speed", "negative radius", lambda: dispkin.sphere_speed(XI, [0, 0, 0], -1.0), V, "radius = -1")
+row("sphere_speed", "NaN center", lambda: dispkin.sphere_speed(XI, [NAN, 0, 0], 1.0), V, "center = (nan, 0, 0)")
+row("interpolate", "NaN tau", lambda: dispkin.interpolate(A, B, NAN), V, "tau = nan")
+row("interpolate", "tau above 1", lambda: dispkin.interpolate(A, B, 2.0), V, "tau = 2", xfail="observed: extrapolates, returns the pose at tau = 2 (x = 0.2, 1 rad about z); tau in [0, 1] is not checked")
+row("interpolate", "unknown interpolation", lambda: dispkin.interpolate(A, B, 0.5, interpolation="cubic"), V, "interpolation = \"cubic\"")
+row("interpolate", "NaN pivot", lambda: dispkin.interpolate(A, B, 0.5, pivot=[0, NAN, 0]), V, "pivot = (0, nan, 0)")
+row("xyzuvw_for_new_pivot", "NaN xyzuvw", lambda: dispkin.xyzuvw_for_new_pivot([NAN, 0, 0, 0, 0, 0], [0, 0, 0], [0, 0, 1]), V, "xyzuvw = (nan, 0, 0, 0, 0, 0)")
+row("xyzuvw_for_new_pivot", "+inf new_pivot", lambda: dispkin.xyzuvw_for_new_pivot([0] * 6, [0, 0, 0], [0, 0, INF]), V, "new_pivot = (0, 0, inf): must be finite")
+
+# --- Path / JointPath ---------------------------------------------------------------------
+row("Path.lin", "unknown interpolation", lambda: dispkin.Path.lin(A, B, interpolation="spline"), V, "interpolation = \"spline\"")
+row("Path.lin", "NaN pivot", lambda: dispkin.Path.lin(A, B, pivot=[NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("Path.lin", "wrong size pivot (4)", lambda: dispkin.Path.lin(A, B, pivot=[0, 0, 0, 0]), V, "pivot: expected an array of shape (3,), got shape (4,)")
+row("Path.circ", "collinear via", lambda: dispkin.Path.circ(A, dispkin.Pose.from_xyzuvw([0.05, 0, 0, 0, 0, 0]), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0])), V, "via = (0.05, 0, 0): is collinear with the start and end points")
+row("Path.circ", "via equals start", lambda: dispkin.Path.circ(A, A, C), V, "via = (0, 0, 0): coincides with the start point")
+row("Path.circ", "zero tolerance", lambda: dispkin.Path.circ(A, B, C, tolerance=0.0), V, "tolerance = 0")
+row("Path.circ", "negative tolerance", lambda: dispkin.Path.circ(A, B, C, tolerance=-1e-3), V, "tolerance = -0.001")
+row("Path.circ", "NaN tolerance", lambda: dispkin.Path.circ(A, B, C, tolerance=NAN), V, "tolerance = nan")
+row("Path.circ", "NaN pivot", lambda: dispkin.Path.circ(A, B, C, pivot=[NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("Path.then", "discontinuous join", lambda: dispkin.Path.lin(A, B).then(dispkin.Path.lin(C, A)), V, "next = (0.1, 0.1, 0): must start where the path ends")
+row("Path.sample", "NaN u", lambda: LINE.sample(NAN), V, "u = nan", xfail='observed: returns the start pose (NaN u treated as u <= 0; sample is noexcept)')
+row("Path.sample", "u below 0", lambda: LINE.sample(-0.5), V, "u = -0.5", xfail='observed: clamped to u = 0, returns the start pose (documented: "Clamped outside", noexcept sampling side)')
+row("Path.sample", "u above 1", lambda: LINE.sample(1.5), V, "u = 1.5", xfail='observed: clamped to u = 1, returns the end pose (documented: "Clamped outside", noexcept sampling side)')
+row("Path.sample", "+inf u", lambda: LINE.sample(INF), V, "u = inf", xfail='observed: returns the end pose (clamped; sample is noexcept)')
+row("Section.length", "empty set", lambda: LINE.sections()[0].length(dispkin.MetricSet()), V, "metric_set = \"MetricSet\": is not well-formed: the set is empty")
+row("Section.pose", "tau above 1", lambda: LINE.sections()[0].pose(2.0), V, "tau = 2", xfail="observed: extrapolates, returns the pose at tau = 2 (x = 0.2, 1 rad about z); tau in [0, 1] is not checked")
+row("Path.section_lengths", "empty set", lambda: LINE.section_lengths(dispkin.MetricSet()), V, "metric_set = \"MetricSet\": is not well-formed")
+row("Path.ptp", "NaN joint", lambda: dispkin.Path.ptp([0, NAN], [0, 1]), V, "q_start = (0, nan): must be finite")
+row("Path.ptp", "+inf joint", lambda: dispkin.Path.ptp([0, INF], [0, 1]), V, "q_start = (0, inf)")
+row("Path.ptp", "size mismatch", lambda: dispkin.Path.ptp([0, 0], [0, 1, 2]), V, "q_end size = 3")
+row("Path.ptp", "empty", lambda: dispkin.Path.ptp([], []), V, "q_start = 0: must have at least one joint")
+row("JointPath.sample", "NaN u", lambda: dispkin.Path.ptp([0, 0], [1, 1]).sample(NAN), V, "u = nan")
+row("JointPath.sample", "u above 1", lambda: dispkin.Path.ptp([0, 0], [1, 1]).sample(2.0), V, "u = 2", xfail='observed: clamped, returns [1, 1] (documented: "u clamped to [0, 1]")')
+row("Section.pose", "NaN tau", lambda: LINE.sections()[0].pose(NAN), V, "tau = nan")
+
+# --- Profile ------------------------------------------------------------------------------
+row("Profile.trapezoid", "NaN distance", lambda: dispkin.Profile.trapezoid(NAN, 1, 1), V, "distance = nan")
+row("Profile.trapezoid", "negative distance", lambda: dispkin.Profile.trapezoid(-1, 1, 1), V, "distance = -1")
+row("Profile.trapezoid", "+inf distance", lambda: dispkin.Profile.trapezoid(INF, 1, 1), V, "distance = inf")
+row("Profile.trapezoid", "zero v_max", lambda: dispkin.Profile.trapezoid(1, 0, 1), V, "v_max = 0")
+row("Profile.trapezoid", "negative a_max", lambda: dispkin.Profile.trapezoid(1, 1, -1), V, "a_max = -1")
+row("Profile.trapezoid", "+inf v_max", lambda: dispkin.Profile.trapezoid(1, INF, 1), V, "v_max = inf")
+row("Profile.trapezoid", "negative v_start", lambda: dispkin.Profile.trapezoid(1, 1, 1, v_start=-0.5), V, "v_start = -0.5")
+row("Profile.trapezoid", "v_end above v_max", lambda: dispkin.Profile.trapezoid(1, 1, 1, v_end=2.0), V, "v_end = 2")
+row("Profile.scurve", "zero j_max", lambda: dispkin.Profile.scurve(1, 1, 1, 0), V, "j_max = 0")
+row("Profile.scurve", "NaN j_max", lambda: dispkin.Profile.scurve(1, 1, 1, NAN), V, "j_max = nan")
+row("Profile.scurve", "negative v_max", lambda: dispkin.Profile.scurve(1, -1, 1, 1), V, "v_max = -1")
+row("Profile.scurve", "NaN distance", lambda: dispkin.Profile.scurve(NAN, 1, 1, 1), V, "distance = nan")
+row("Profile.sample", "NaN time", lambda: dispkin.Profile.trapezoid(1, 1, 1).sample([NAN]), V, "times[0] = nan")
+
+# --- Limits / plan ------------------------------------------------------------------------
+row("Limits", "zero velocity", lambda: dispkin.Limits(0.0, 1.0), V, "velocity = 0")
+row("Limits", "negative acceleration", lambda: dispkin.Limits(1.0, -1.0), V, "acceleration = -1")
+row("Limits", "NaN velocity", lambda: dispkin.Limits(NAN, 1.0), V, "velocity = nan")
+row("Limits", "+inf acceleration", lambda: dispkin.Limits(1.0, INF), V, "acceleration = inf")
+row("Limits", "zero jerk", lambda: dispkin.Limits(1.0, 1.0, 0.0), V, "jerk = 0")
+row("Limits", "negative jerk", lambda: dispkin.Limits(1.0, 1.0, -5.0), V, "jerk = -5")
+row("plan", "empty set", lambda: dispkin.plan(LINE, dispkin.MetricSet(), LIMITS), V, "metric_set = \"MetricSet\": is not well-formed")
+row("plan", "collinear set", lambda: dispkin.plan(LINE, collinear_set(), LIMITS), V, "metric_set = \"MetricSet\": is not well-formed")
+row("plan", "unknown profile", lambda: dispkin.plan(LINE, good_set(), LIMITS, profile="sine"), V, "profile = \"sine\"")
+row("plan", "scurve without jerk", lambda: dispkin.plan(LINE, good_set(), dispkin.Limits(0.1, 1.0), profile="scurve"), V, "jerk is missing: the S-curve profile needs a jerk limit")
+row("Trajectory.sample", "NaN time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([NAN]), V, "times = nan: must be finite")
+row("Trajectory.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([INF]), V, "times = inf")
+row("Trajectory.sample", "negative time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([-1.0]), V, "times = -1", xfail="observed: clamped, returns the start pose (sampling is noexcept)")
+
+# --- Hexapod ------------------------------------------------------------------------------
+HJ = hexapod()
+row("Hexapod(...)", "NaN base joint", lambda: dispkin.Hexapod(np.where(np.arange(18).reshape(6, 3) == 0, NAN, HJ.base_joints), HJ.platform_joints, 0.15, 0.32, 0.01), V, "base_joints = (nan, -0.02604722665, 0, 0.147721162952, 0.026")
+row("Hexapod(...)", "wrong shape base_joints (5, 3)", lambda: dispkin.Hexapod(HJ.base_joints[:5], HJ.platform_joints, 0.15, 0.32, 0.01), V, "base_joints: expected an array of shape (6, 3), got shape (5, 3)")
+row("Hexapod(...)", "wrong shape platform_joints (6, 2)", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints[:, :2], 0.15, 0.32, 0.01), V, "platform_joints: expected an array of shape (6, 3), got shape (6, 2)")
+row("Hexapod(...)", "leg_min above leg_max", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, 0.4, 0.32, 0.01), V, "leg_max[0] = 0.32: must be finite")
+row("Hexapod(...)", "negative leg_min", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, -0.1, 0.32, 0.01), V, "leg_min[0] = -0.1: must be finite")
+row("Hexapod(...)", "zero leg_speed", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, 0.15, 0.32, 0.0), V, "leg_speed[0] = 0: must be finite")
+row("Hexapod(...)", "NaN leg_max", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, 0.15, NAN, 0.01), V, "leg_max[0] = nan: must be finite")
+row("Hexapod(...)", "wrong size leg_speed (5)", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, 0.15, 0.32, [0.01] * 5), V, "leg_speed: expected a number or an array of shape (6,), got shape (5,)")
+row("Hexapod(...)", "unreachable home", lambda: dispkin.Hexapod(HJ.base_joints, HJ.platform_joints, 0.15, 0.32, 0.01, home=dispkin.Pose((1, 0, 0, 0), (0, 0, 5.0))), V, "home", xfail='observed: accepted; home at z = 5 m (all legs ~5 m, range [0.15, 0.32]) is not checked against the leg ranges')
+row("Hexapod.symmetric", "zero base_radius", lambda: dispkin.Hexapod.symmetric(0.0, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01), V, "base_radius = 0")
+row("Hexapod.symmetric", "NaN height", lambda: dispkin.Hexapod.symmetric(0.15, 0.3, 0.1, 0.3, NAN, 0.1, 0.3, 0.01), V, "height = nan")
+row("Hexapod.symmetric", "negative leg_speed", lambda: dispkin.Hexapod.symmetric(0.15, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, -0.01), V, "leg_speed[0] = -0.01")
+row("Hexapod.symmetric", "+inf platform_radius", lambda: dispkin.Hexapod.symmetric(0.15, 0.3, INF, 0.3, 0.2, 0.1, 0.3, 0.01), V, "platform_radius = inf")
+row("Hexapod.symmetric", "leg_max below leg_min", lambda: dispkin.Hexapod.symmetric(0.15, 0.3, 0.1, 0.3, 0.2, 0.3, 0.1, 0.01), V, "leg_max[0] = 0.1: must be finite")
+row("Hexapod.symmetric", "negative base_gap", lambda: dispkin.Hexapod.symmetric(0.15, -0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01), V, "base_gap = -0.3")
+row("Hexapod.from_json", "truncated JSON", lambda: dispkin.Hexapod.from_json("{"), V, "description = \"<text>\": is not JSON")
+row("Hexapod.from_json", "empty text", lambda: dispkin.Hexapod.from_json(""), V, "description = \"<text>\": is not JSON")
+row("Hexapod.from_json", "not an object", lambda: dispkin.Hexapod.from_json("[1, 2]"), V, "description = \"[1,2]\": must be a JSON object")
+row("Hexapod.from_json", "missing legs", lambda: dispkin.Hexapod.from_json(without("legs")), V, "legs = \"<missing>\": required key is missing")
+row("Hexapod.from_json", "5 legs", lambda: dispkin.Hexapod.from_json(hexapod_json(legs=LEGS[:5])), V, "legs = \"[{\"")
+row("Hexapod.from_json", "string speed", lambda: dispkin.Hexapod.from_json(hexapod_json(legs=leg_changed(speed="fast"))), V, "legs[0].speed = \"fast\": must be a number")
+row("Hexapod.from_json", "negative speed", lambda: dispkin.Hexapod.from_json(hexapod_json(legs=leg_changed(speed=-1.0))), V, "leg_speed[0] = -1: must be finite")
+row("Hexapod.from_json", "min above max", lambda: dispkin.Hexapod.from_json(hexapod_json(legs=leg_changed(min=0.5))), V, "leg_max[0] = 0.32: must be finite")
+row("Hexapod.from_json", "base with 2 coordinates", lambda: dispkin.Hexapod.from_json(hexapod_json(legs=leg_changed(base=[0.1, 0.0]))), V, "legs[0].base = \"[0.1,0.0]\": must be an array of 3 numbers")
+row("Hexapod.from_json", "NaN literal", lambda: dispkin.Hexapod.from_json(hexapod_json().replace('"speed": 0.01', '"speed": NaN', 1)), V, "description = \"<text>\": is not JSON")
+row("Hexapod.from_json", "wrong format tag", lambda: dispkin.Hexapod.from_json(hexapod_json(format="urdf")), V, "format = \"urdf\"")
+row("Hexapod.from_json", "non-unit home quaternion", lambda: dispkin.Hexapod.from_json(hexapod_json(home={"quaternion_wxyz": [2, 0, 0, 0], "translation": [0, 0, 0.2]})), V, "quaternion (w, x, y, z) = (2, 0, 0, 0): must be a unit quaternion")
+row("Hexapod.from_json", "unknown top-level key", lambda: dispkin.Hexapod.from_json(hexapod_json(leg_speed=-1.0)), V, "leg_speed", xfail='observed: accepted; an unknown key (here a misplaced "leg_speed": -1) is silently ignored')
+row("Hexapod.load", "missing file", lambda: dispkin.Hexapod.load("/nonexistent/hexapod.json"), V, "path = \"/nonexistent/hexapod.json\": cannot be opened")
+row("Hexapod.load", "directory", lambda: dispkin.Hexapod.load("/"), V, "/: description = \"<text>\": is not JSON")
+row("Hexapod.load", "malformed file", lambda: dispkin.Hexapod.load(str(MALFORMED)), V, "description = \"<text>\": is not JSON")
+row("Hexapod.forward", "NaN legs", lambda: HJ.forward([NAN, 0.2, 0.2, 0.2, 0.2, 0.2]), V, "legs[0] = nan")
+row("Hexapod.forward", "wrong size legs (5)", lambda: HJ.forward([0.2] * 5), V, "legs: expected an array of shape (6,), got shape (5,)")
+row("Hexapod.forward", "out-of-range legs", lambda: HJ.forward([5.0] * 6), V, "legs = (5, 5, 5, 5, 5, 5)")
+row("Hexapod.forward", "negative legs", lambda: HJ.forward([-0.2] * 6), V, "legs[0] = -0.2")
+row("Hexapod.forward", "NaN guess", lambda: HJ.forward([0.2] * 6, guess=np.full((4, 4), NAN)), V, "matrix = (nan, nan")
+row("Hexapod.require_reachable", "unreachable pose", lambda: HJ.require_reachable(dispkin.Pose((1, 0, 0, 0), (0, 0, 5.0))), V, "leg 0 length = 5.00095177608: outside the leg's range [0.15, 0.32]")
+row("Hexapod.require_reachable", "wrong shape pose (6,)", lambda: HJ.require_reachable([0, 0, 0.2, 0, 0, 0]), V, "pose: expected an array of shape (4, 4), got shape (6,)")
+row("Hexapod.require_reachable", "NaN matrix", lambda: HJ.require_reachable(np.full((4, 4), NAN)), V, "matrix = (nan")
+row("Hexapod.inverse", "NaN matrix", lambda: HJ.inverse(np.full((4, 4), NAN)), V, "matrix = (nan")
+row("Hexapod.inverse_xyzuvw", "NaN xyzuvw", lambda: HJ.inverse_xyzuvw([NAN, 0, 0.2, 0, 0, 0]), V, "xyzuvw = (nan, 0, 0.2, 0, 0, 0)")
+row("Hexapod.inverse", "wrong shape (N, 5)", lambda: HJ.inverse(np.zeros((2, 5))), V, "pose: expected an array of shape (4, 4), got shape (2, 5)")
+row("Hexapod.check", "wrong shape pose (6,)", lambda: HJ.check([0, 0, NAN, 0, 0, 0]), V, "pose: expected an array of shape (4, 4), got shape (6,)")
+row("Hexapod.leg_jacobian", "NaN matrix", lambda: HJ.leg_jacobian(np.full((4, 4), NAN)), V, "matrix = (nan, nan")
+row("Hexapod.check_trajectory", "zero dt", lambda: HJ.check_trajectory(trajectory(), 0.0), V, "dt = 0")
+row("Hexapod.check_trajectory", "negative dt", lambda: HJ.check_trajectory(trajectory(), -0.01), V, "dt = -0.01")
+row("Hexapod.check_trajectory", "NaN dt", lambda: HJ.check_trajectory(trajectory(), NAN), V, "dt = nan")
+row("Hexapod.check_trajectory", "+inf dt", lambda: HJ.check_trajectory(trajectory(), INF), V, "dt = inf")
+row("Hexapod.add_leg_speed_group", "negative group", lambda: HJ.add_leg_speed_group(good_set(), -1), V, "group = -1")
+
+ROWS = R
+
+
+def _id(r):
+    text = f"{r['entry']}__{r['bad']}".replace("+inf", "posinf").replace("-inf", "neginf")
+    return re.sub(r"[^A-Za-z0-9]+", "_", text).strip("_")
+
+
+def _params():
+    out = []
+    for r in ROWS:
+        marks = [pytest.mark.xfail(strict=True, reason=r["xfail"])] if r["xfail"] else []
+        out.append(pytest.param(r, id=_id(r), marks=marks))
+    return out
+
+
+def test_row_ids_are_unique():
+    ids = [_id(r) for r in ROWS]
+    assert len(ids) == len(set(ids))
+
+
+@pytest.mark.parametrize("r", _params())
+def test_bad_input(r):
+    with pytest.raises(r["exc"]) as info:
+        r["call"]()
+    assert type(info.value) is r["exc"] or issubclass(type(info.value), r["exc"])
+    message = str(info.value)
+    assert r["fragment"] in message, f"{message!r} lacks {r['fragment']!r}"
+
+
+def markdown():
+    """The table as Markdown (tests/BAD_INPUT.md), generated from ROWS."""
+    lines = [
+        "# Bad-input table",
+        "",
+        "Generated by `tests/python/make_bad_input_table.py` from `tests/python/test_bad_input_table.py`",
+        "(do not edit by hand; `test_markdown_is_up_to_date` fails when it is stale). The C++ table",
+        "is `tests/cpp/test_bad_input_table.cpp`. Every row asserts the exception type and a fragment",
+        "of the message `<argument> = <value>: <reason>`. Rows marked **GAP** are strict xfails: the",
+        "entry point does not give the expected error (it accepts the input, or its message is",
+        "malformed); the observed behaviour is given. A fix makes the row fail until it is promoted.",
+        "",
+        "| # | Entry point | Bad input | Expected error | Message fragment | Status |",
+        "|---|---|---|---|---|---|",
+    ]
+    for i, r in enumerate(ROWS, 1):
+        fragment = r["fragment"].replace("|", "\\|")
+        status = "**GAP** (strict xfail), " + r["xfail"].replace("|", "\\|") if r["xfail"] else "rejected"
+        lines.append(f"| {i} | `{r['entry']}` | {r['bad']} | {r['exc'].__name__} | `{fragment}` | {status} |")
+    rejected = sum(1 for r in ROWS if not r["xfail"])
+    lines += ["", f"{len(ROWS)} rows: {rejected} rejected as expected, {len(ROWS) - rejected} gaps.", ""]
+    return "\n".join(lines)
+
+
+MARKDOWN_PATH = pathlib.Path(__file__).resolve().parents[1] / "BAD_INPUT.md"
+
+
+def test_markdown_is_up_to_date():
+    assert MARKDOWN_PATH.exists(), "run tests/python/make_bad_input_table.py"
+    assert MARKDOWN_PATH.read_text() == markdown(), "tests/BAD_INPUT.md is stale: run tests/python/make_bad_input_table.py"
