@@ -126,7 +126,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
     const double end_s = trajectory.section_s_[k] + trajectory.lengths_[k];
     Profile law = make_profile(end_s - start_s);
     const double duration = law.duration();
-    trajectory.stops_.push_back(Trajectory::Piece{law, time, time + duration, start_s});
+    trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + duration, start_s});
     time += duration;
     first = k + 1;
   }
@@ -135,11 +135,11 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
 
 TrajectorySample Trajectory::sample(double t) const noexcept {
   TrajectorySample out;
-  if (stops_.empty()) return out;
+  if (pieces_.empty()) return out;
   if (!(t > 0.0)) t = 0.0;
   // The piece running at t: the first that ends after t (the last one for t ≥ duration).
-  auto piece = std::upper_bound(stops_.begin(), stops_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
-  if (piece == stops_.end()) --piece;
+  auto piece = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
+  if (piece == pieces_.end()) --piece;
   const ProfileState law = piece->profile.state_at(t - piece->start_time);
   out.s = piece->start_s + law.s;
   out.s_dot = law.v;

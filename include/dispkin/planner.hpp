@@ -46,12 +46,12 @@ struct TrajectorySample {
 //! A planned trajectory. Sampling is noexcept and allocation-free.
 class Trajectory {
  public:
-  double duration() const noexcept { return stops_.empty() ? 0.0 : stops_.back().end_time; }
+  double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
   double length() const noexcept { return section_s_.empty() ? 0.0 : section_s_.back() + lengths_.back(); }
   std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
-  std::size_t piece_count() const noexcept { return stops_.size(); }
+  std::size_t piece_count() const noexcept { return pieces_.size(); }
 
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
@@ -82,7 +82,7 @@ class Trajectory {
     void at(double tau, Posed& pose, Twistd& twist) const noexcept;
   };
 
-  // One rest-to-rest piece: a time law over the DISP length of sections [first, last].
+  // One rest-to-rest piece: a time law over the DISP length of the sections between two corners.
   struct Piece {
     Profile profile;
     double start_time, end_time;  // in trajectory time
@@ -92,7 +92,7 @@ class Trajectory {
   std::vector<Motion> motions_;    // section k, ready to sample
   std::vector<double> lengths_;    // L_k
   std::vector<double> section_s_;  // s at the start of section k
-  std::vector<Piece> stops_;
+  std::vector<Piece> pieces_;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
