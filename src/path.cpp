@@ -4,32 +4,15 @@
 #include <algorithm>
 #include <string>
 
+#include "path_geometry.hpp"
+
 namespace dispkin {
 namespace {
 
+using detail::geometric_size;
+using detail::rotation_angle;
+
 constexpr double pi = 3.14159265358979323846;
-
-// The geometric size of a section, the weight of its share of the path parameter u: pivot
-// travel plus 0.1 m per radian of rotation (so that pure rotations get a share too).
-constexpr double metres_per_radian = 0.1;
-
-double rotation_angle(const Posed& a, const Posed& b) {
-  return quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion())).norm();
-}
-
-double geometric_size(const Section& section) {
-  return std::visit(
-      [](const auto& s) -> double {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, LinSection>) {
-          return ((s.end * s.pivot) - (s.start * s.pivot)).norm() + metres_per_radian * rotation_angle(s.start, s.end);
-        } else {
-          const double radius = ((s.start * s.pivot) - s.center).norm();
-          return std::abs(s.angle) * radius + metres_per_radian * std::abs(s.rotation_angle);
-        }
-      },
-      section);
-}
 
 void require_pose_distinct(const Posed& a, const Posed& b, const char* what) {
   if (a.is_approx(b, 1e-12)) {
@@ -74,6 +57,7 @@ Path Path::lin(const Posed& a, const Posed& b, Interpolation interpolation, cons
   require_pose_distinct(a, b, "b");
   Path path;
   path.append(LinSection{a, b, interpolation, pivot});
+  path.first_move_size_ = path.last_move_size_ = path.cumulative_.back();
   return path;
 }
 
@@ -115,10 +99,11 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
     arc.pivot = pivot;
     path.append(arc);
   }
+  path.first_move_size_ = path.last_move_size_ = path.cumulative_.back();
   return path;
 }
 
-Path& Path::then(const Path& next) {
+void Path::require_joins(const Path& next) const {
   const Posed here = end();
   const Posed there = next.start();
   const double gap = (here.translation() - there.translation()).norm();
@@ -128,7 +113,12 @@ Path& Path::then(const Path& next) {
                                          "must start where the path ends (gap " + std::to_string(gap) + " m, " +
                                              std::to_string(turn) + " rad)"));
   }
+}
+
+Path& Path::then(const Path& next) {
+  require_joins(next);
   for (const Section& s : next.sections_) append(s);
+  last_move_size_ = next.last_move_size_;
   return *this;
 }
 

@@ -10,12 +10,24 @@
 namespace dispkin {
 namespace {
 
-// Whether the path keeps its direction from section k to k + 1: the twists per unit of s at
-// the junction agree (to 1e-6 relative). Otherwise some point's velocity direction jumps there.
+// The junction rule. The path runs through the junction of sections k and k + 1 without
+// stopping when the twist per unit of s keeps its direction (to 1e-6 rad) and changes its
+// size by at most 1 %. Then every point keeps its velocity direction and its speed steps by at
+// most 1 % of ṡ — the residue of mapping s linearly onto each section of a curve whose speed
+// varies (curved sections are cut so that this stays near their `tolerance`, 10⁻³ by
+// default). Any other junction is a corner: the path stops there (a velocity direction that
+// jumps needs an unbounded acceleration at any speed above zero).
+constexpr double junction_direction_tolerance = 1e-6;
+constexpr double junction_speed_step = 1e-2;
+
 bool tangent_continuous(const Section& before, double length_before, const Section& after, double length_after) {
   const Eigen::Matrix<double, 6, 1> out = section_twist(before, 1.0).vector() / length_before;
   const Eigen::Matrix<double, 6, 1> in = section_twist(after, 0.0).vector() / length_after;
-  return (out - in).norm() <= 1e-6 * std::max(out.norm(), in.norm());
+  const double out_norm = out.norm(), in_norm = in.norm();
+  if (!(out_norm > 0.0) || !(in_norm > 0.0)) return false;
+  const double direction_change = (out / out_norm - in / in_norm).norm();
+  return direction_change <= junction_direction_tolerance &&
+         std::abs(out_norm - in_norm) <= junction_speed_step * std::max(out_norm, in_norm);
 }
 
 // The unit quaternion of a turn by `angle` about the unit axis `axis`.
@@ -46,6 +58,11 @@ Trajectory::Motion Trajectory::Motion::of(const Section& section) {
     if (m.theta > 0.0) m.w_hat = rotation / m.theta;
     return m;
   }
+  if (const auto* curve = std::get_if<CurveSection>(&section)) {
+    m.kind = Kind::curve;
+    m.curve = *curve;
+    return m;
+  }
   const auto& arc = std::get<ArcSection>(section);
   m.kind = Kind::arc;
   m.pivot = arc.pivot;
@@ -63,6 +80,11 @@ void Trajectory::Motion::at(double tau, Posed& pose, Twistd& twist) const noexce
   if (kind == Kind::screw) {
     pose = start * Posed::exp(xi * tau);
     twist = xi;
+    return;
+  }
+  if (kind == Kind::curve) {
+    pose = curve.pose(tau);
+    twist = curve.twist(tau);
     return;
   }
   const Eigen::Quaterniond q = turn(w_hat, tau * theta) * q0;

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "dispkin/curve_section.hpp"
 #include "dispkin/disp.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/metric_set.hpp"
@@ -112,7 +113,7 @@ struct ArcSection {
   }
 };
 
-using Section = std::variant<LinSection, ArcSection>;
+using Section = std::variant<LinSection, ArcSection, CurveSection>;
 
 //! The pose at τ of any section.
 inline Posed section_pose(const Section& section, double tau) noexcept {
@@ -167,8 +168,29 @@ class Path {
   static Path circ(const Posed& a, const Posed& via, const Posed& b,
                    const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero(), double tolerance = 1e-3);
 
+  //! A SPLINE move through the key poses (at least three, consecutive ones distinct): the
+  //! pivot on the natural cubic spline (C², zero curvature at both ends) with knots spaced by
+  //! the geometric size of each step (pivot chord + 0.1 m per radian), the orientation
+  //! R_i · exp(φ(v)) with φ a cubic Hermite per step whose end slopes are matched through the
+  //! right Jacobian, so the angular velocity is continuous (C¹) through every key; key slopes
+  //! by the three-point rule, ends by the natural (zero second derivative) condition.
+  //! Passes through every key pose exactly. Cut into sections as described at cut_curve.
+  static Path spline(const std::vector<Posed>& poses, const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero(),
+                     double tolerance = 1e-3);
+
   //! Append `next`, which must start where this path ends (to 1e-9 m and 1e-9 rad).
   Path& then(const Path& next);
+
+  //! Append `next` with the corner blended (the seed's boundary smoothing): the path leaves its
+  //! last move at the sub-point `before` ahead of the corner and joins `next` at the sub-point
+  //! `after` past it (both in geometric size: pivot travel + 0.1 m per radian of rotation, so a
+  //! via point that only rotates blends too), along a cubic pose curve whose pivot velocity and
+  //! angular velocity at both ends are those of the neighbours, scaled alike — the twist keeps
+  //! its direction through both joins, so the planner does not stop there. The pivot stays
+  //! within max(before, after) of the corner. Throws if a distance is not positive or exceeds
+  //! half of its neighbouring move (two blends on one move must not overlap).
+  Path& then(const Path& next, double before, double after, double tolerance = 1e-3);
+  Path& then(const Path& next, double blend) { return then(next, blend, blend); }
 
   const std::vector<Section>& sections() const noexcept { return sections_; }
   std::size_t size() const noexcept { return sections_.size(); }
@@ -185,8 +207,19 @@ class Path {
  private:
   Path() = default;
   void append(Section section);
+  //! Throws unless `next` starts where this path ends (to 1e-9 m and 1e-9 rad).
+  void require_joins(const Path& next) const;
+  //! Append the cubic pose curve R₀ exp(φ(v)), c(v), v ∈ [0, 1], cut into equal-v sections so
+  //! that within each the velocity per unit τ strays from its middle value by at most
+  //! `tolerance` of the speed (|ċ| + 0.1 m·|ω|, i.e. for objects within 0.1 m of the pivot);
+  //! the length bounds stay rigorous for any set, their slack grows with its radius.
+  void cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
+                 const Eigen::Vector3d& pivot, double tolerance);
 
   std::vector<Section> sections_;
+  // Geometric sizes of the first and of the last move, before any blend (blends may take at
+  // most half of a move, so that two blends on one move never overlap).
+  double first_move_size_ = 0.0, last_move_size_ = 0.0;
   std::vector<double> cumulative_;  // geometric size up to the end of each section
 };
 

@@ -66,7 +66,7 @@ class Trajectory {
   // (about `normal` through `center` by τφ), the orientation turned by τθ about the world
   // axis ŵ, t = c − R p. Screw sections keep T₀ and their constant twist ξ.
   struct Motion {
-    enum class Kind { line, arc, screw } kind = Kind::line;
+    enum class Kind { line, arc, screw, curve } kind = Kind::line;
     Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
     Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
     Eigen::Vector3d center = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
@@ -76,6 +76,7 @@ class Trajectory {
     Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
     Posed start;
     Twistd xi;
+    CurveSection curve;  // a curved section samples its own polynomials
 
     static Motion of(const Section& section);
     //! Pose and body twist per unit τ at τ.

@@ -8,7 +8,7 @@ from typing import Any, Optional, Sequence
 
 import numpy as np
 
-from ._core import Hexapod, MetricSet, Pose, Trajectory, max_point_speed
+from ._core import Hexapod, MetricSet, Path, Pose, Trajectory, max_point_speed
 
 
 def _axes(ax: Optional[Any]) -> Any:
@@ -65,6 +65,26 @@ def leg_lengths(
     ax.set_xlabel("time (s)")
     ax.set_ylabel("leg length (mm)")
     ax.legend(ncol=3, fontsize="small")
+    return ax
+
+
+def path_xy(
+    path: Path,
+    pivot: Sequence[float] = (0.0, 0.0, 0.0),
+    ax: Optional[Any] = None,
+    samples: int = 2000,
+    label: Optional[str] = None,
+    **style: Any,
+) -> Any:
+    """The pivot's track in the x–y plane (metres), sampled at `samples` values of u."""
+    ax = _axes(ax)
+    matrices = np.asarray(path.sample(np.linspace(0.0, 1.0, samples)))
+    p = np.asarray(pivot, dtype=float)
+    track = matrices[:, :3, :3] @ p + matrices[:, :3, 3]
+    ax.plot(track[:, 0], track[:, 1], label=label, **style)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_aspect("equal", adjustable="datalim")
     return ax
 
 

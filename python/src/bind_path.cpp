@@ -21,7 +21,22 @@ struct SectionHolder {
   Section value;
 };
 
-const char* section_kind(const SectionHolder& s) { return std::holds_alternative<LinSection>(s.value) ? "lin" : "arc"; }
+const char* section_kind(const SectionHolder& s) {
+  if (std::holds_alternative<LinSection>(s.value)) return "lin";
+  if (std::holds_alternative<ArcSection>(s.value)) return "arc";
+  return "curve";
+}
+
+// then(next), then(next, blend) or then(next, before=..., after=...).
+Path& then_blended(Path& path, const Path& next, std::optional<double> blend, std::optional<double> before,
+                   std::optional<double> after, double tolerance) {
+  if (!blend && !before && !after) return path.then(next);
+  if (blend && (before || after))
+    throw std::invalid_argument("blend: give either blend or before/after, not both");
+  if (blend) return path.then(next, *blend, *blend, tolerance);
+  if (!before || !after) throw std::invalid_argument(std::string(before ? "after" : "before") + " is missing: give both before and after");
+  return path.then(next, *before, *after, tolerance);
+}
 
 // A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices.
 py::object sample_path(const Path& path, const py::object& u) {
@@ -45,9 +60,10 @@ void bind_path(py::module_& m) {
 
   py::class_<SectionHolder>(m, "Section", R"doc(
 One section of a Path: the motion from `start` to `end` as the section parameter tau runs over
-[0, 1]. `kind` is "lin" (straight: decoupled LIN or screw, exact length) or "arc" (a piece of a
-CIRC, length a tight upper bound).)doc")
-      .def_property_readonly("kind", &section_kind, "\"lin\" or \"arc\".")
+[0, 1]. `kind` is "lin" (straight: decoupled LIN or screw, exact length), "arc" (a piece of a
+CIRC) or "curve" (a piece of a SPLINE or of a blend); arcs and curves have lengths that are tight
+upper bounds.)doc")
+      .def_property_readonly("kind", &section_kind, "\"lin\", \"arc\" or \"curve\".")
       .def_property_readonly("start", [](const SectionHolder& s) { return section_start(s.value); }, "Pose at tau = 0.")
       .def_property_readonly("end", [](const SectionHolder& s) { return section_end(s.value); }, "Pose at tau = 1.")
       .def(
@@ -89,11 +105,27 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           "from a's to b's proportionally to the arc angle (via's orientation is not used). Cut into "
           "sections whose length bound exceeds the exact speed by at most `tolerance` (relative).")
       .def_static(
+          "spline",
+          [](const std::vector<Posed>& poses, const py::object& pivot, double tolerance) {
+            return Path::spline(poses, vector3(pivot, "pivot"), tolerance);
+          },
+          py::arg("poses"), py::arg_v("pivot", origin, "(0, 0, 0)"), py::arg("tolerance") = 1e-3,
+          "A SPLINE move through the key poses (at least three): the pivot on the natural cubic spline "
+          "(C2, knots spaced by pivot travel + 0.1 m per radian), the orientation a C1 curve (continuous "
+          "angular velocity) through every key orientation. Passes through every key exactly. Cut into "
+          "sections whose velocity strays from its middle value by at most `tolerance` (relative).")
+      .def_static(
           "ptp",
           [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
           py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).")
-      .def("then", &Path::then, py::arg("next"), py::return_value_policy::reference_internal,
-           "Append `next`, which must start where this path ends; returns this path.")
+      .def("then", &then_blended, py::arg("next"), py::kw_only(), py::arg("blend") = py::none(),
+           py::arg("before") = py::none(), py::arg("after") = py::none(), py::arg("tolerance") = 1e-3,
+           py::return_value_policy::reference_internal,
+           "Append `next`, which must start where this path ends; returns this path. With `blend` (or "
+           "`before` and `after`, metres of pivot travel + 0.1 m per radian) the corner is replaced by a "
+           "smooth pose curve from the point `before` ahead of the corner to the point `after` past it, "
+           "joining both neighbours without a kink (the planner does not stop there). A blend may take "
+           "at most half of each neighbouring move.")
       .def(
           "sections",
           [](const Path& p) {

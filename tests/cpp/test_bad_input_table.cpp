@@ -221,6 +221,14 @@ std::vector<Row> rows() {
   row("Path::circ", "negative tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), -1e-3); }, IA, "tolerance = -0.001");
   row("Path::circ", "NaN tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), nan_); }, IA, "tolerance = nan");
   row("Path::circ", "NaN pivot", [] { Path::circ(A, B, C, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::spline", "two poses", [] { Path::spline({A, B}); }, IA, "poses = 2: key poses given: a SPLINE needs at least three");
+  row("Path::spline", "repeated key pose", [] { Path::spline({A, B, B, C}); }, IA, "poses[2] = (0.1, 0, 0): coincides with the key pose before it");
+  row("Path::spline", "zero tolerance", [] { Path::spline({A, B, C}, Vector3d::Zero(), 0.0); }, IA, "tolerance = 0");
+  row("Path::spline", "NaN pivot", [] { Path::spline({A, B, C}, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::then (blend)", "negative blend", [] { Path::lin(A, B).then(Path::lin(B, C), -0.01); }, IA, "before = -0.01: must be a positive distance");
+  row("Path::then (blend)", "NaN after", [] { Path::lin(A, B).then(Path::lin(B, C), 0.01, nan_); }, IA, "after = nan: must be a positive distance");
+  row("Path::then (blend)", "blend over half the next move", [] { Path::lin(A, B).then(Path::lin(B, C), 0.01, 0.08); }, IA, "after = 0.08: exceeds half of the move after the via point");
+  row("Path::then (blend)", "not joining", [] { Path::lin(A, B).then(Path::lin(C, B), 0.01); }, IA, "next = (0.1, 0.1, 0): must start where the path ends");
   row("Path::then", "discontinuous join", [] { Path p = Path::lin(A, B); p.then(Path::lin(C, A)); }, IA, "next = (0.1, 0.1, 0): must start where the path ends");
   row("Path::section_lengths", "empty set", [] { Path::lin(A, B).section_lengths(MetricSetd()); }, IA, "metric_set = \"MetricSet\": is not well-formed");
   row("Path::sample", "NaN u", [] { (void)Path::lin(A, B).sample(nan_); }, IA, "u = nan",

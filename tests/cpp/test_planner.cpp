@@ -14,11 +14,12 @@ using V = Eigen::Vector3d;
 using testing::message_of;
 using testing::Random;
 
-// A random path: a LIN (decoupled or screw), a CIRC, or a chain with a corner.
+// A random path: a LIN (decoupled or screw), a CIRC, a chain with a corner, a SPLINE, or a
+// chain of LINs blended at their via points.
 Path random_path(Random& rnd, int family) {
   const Posed a = rnd.pose(0.5);
   const V pivot = rnd.vector(0.1);
-  switch (family % 4) {
+  switch (family % 6) {
     case 0:
       return Path::lin(a, rnd.nearby(a, 0.4, 1.5), Interpolation::decoupled, pivot);
     case 1:
@@ -31,10 +32,27 @@ Path random_path(Random& rnd, int family) {
       const Posed b = with_pivot_at(rnd.rotation(), start + V(rnd.uniform(-0.3, -0.1), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
       return Path::circ(a, via, b, pivot, 1e-2);
     }
-    default: {
+    case 3: {
       const Posed b = rnd.nearby(a, 0.3, 1.0);
       Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
       path.then(Path::lin(b, rnd.nearby(b, 0.3, 1.0), Interpolation::decoupled, pivot));
+      return path;
+    }
+    case 4: {
+      std::vector<Posed> keys{a};
+      for (int k = rnd.integer(2, 4); k > 0; --k) keys.push_back(rnd.nearby(keys.back(), 0.3, 1.0));
+      return Path::spline(keys, pivot, 1e-2);
+    }
+    default: {
+      const Posed b = rnd.nearby(a, 0.3, 1.0), c = rnd.nearby(b, 0.3, 1.0), d = rnd.nearby(c, 0.3, 1.0);
+      // Blends of 10–40 % of each move's geometric size (pivot travel + 0.1 m/rad).
+      auto size = [&](const Posed& p, const Posed& q) {
+        return ((q * pivot) - (p * pivot)).norm() + 0.1 * quaternion_log(Eigen::Quaterniond(p.quaternion().conjugate() * q.quaternion())).norm();
+      };
+      const double ab = size(a, b), bc = size(b, c), cd = size(c, d);
+      Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
+      path.then(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * ab, rnd.uniform(0.1, 0.4) * bc, 1e-2)
+          .then(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * bc, rnd.uniform(0.1, 0.4) * cd, 1e-2);
       return path;
     }
   }
@@ -90,7 +108,7 @@ TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
     const Trajectory traj = plan(path, set, limits, kind);
     ASSERT_GT(traj.duration(), 0.0);
     const double worst = worst_speed_ratio(traj, set, v, 10000);
-    ASSERT_LE(worst, 1.0 + 1e-6) << "case " << i << " family " << i % 4;
+    ASSERT_LE(worst, 1.0 + 1e-6) << "case " << i << " family " << i % 6;
     ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-9)) << "case " << i;
     ASSERT_TRUE(traj.sample(0.0).pose.is_approx(path.start(), 1e-12));
   }

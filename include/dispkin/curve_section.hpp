@@ -1,0 +1,93 @@
+//! Curved sections: a cubic pose curve (the pieces of SPLINE moves and of blends at via
+//! points), cut into sections whose DISP length is a rigorous, tight upper bound.
+//!
+//! The curve runs over v ∈ [0, 1]:
+//!   pivot        c(v) = c₀ + c₁ v + c₂ v² + c₃ v³                        (world)
+//!   orientation  R(v) = R₀ · exp([φ(v)]ₓ),  φ(v) = φ₀ + φ₁ v + φ₂ v² + φ₃ v³  (body of R₀)
+//! Its body angular velocity per unit v is J_r(φ) φ′ (J_r the right Jacobian of SO(3)), so the
+//! orientation is as smooth as the polynomial φ: C¹ pieces join with continuous angular
+//! velocity when their end derivatives are matched through J_r (see spline.cpp, blend.cpp).
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/metric_set.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+
+//! A cubic polynomial in v with vector coefficients: p(v) = Σ aᵢ vⁱ.
+struct Cubic3 {
+  std::array<Eigen::Vector3d, 4> a{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                   Eigen::Vector3d::Zero()};
+
+  Eigen::Vector3d value(double v) const noexcept { return a[0] + v * (a[1] + v * (a[2] + v * a[3])); }
+  Eigen::Vector3d first(double v) const noexcept { return a[1] + v * (2.0 * a[2] + 3.0 * v * a[3]); }
+  Eigen::Vector3d second(double v) const noexcept { return 2.0 * a[2] + 6.0 * v * a[3]; }
+  Eigen::Vector3d third() const noexcept { return 6.0 * a[3]; }
+
+  //! The cubic Hermite polynomial with p(0) = p0, p′(0) = m0, p(1) = p1, p′(1) = m1.
+  static Cubic3 hermite(const Eigen::Vector3d& p0, const Eigen::Vector3d& m0, const Eigen::Vector3d& p1,
+                        const Eigen::Vector3d& m1) noexcept {
+    Cubic3 c;
+    c.a[0] = p0;
+    c.a[1] = m0;
+    c.a[2] = 3.0 * (p1 - p0) - 2.0 * m0 - m1;
+    c.a[3] = 2.0 * (p0 - p1) + m0 + m1;
+    return c;
+  }
+};
+
+//! J_r(φ) u: the right Jacobian of SO(3) at φ applied to u, J_r = I − b[φ]ₓ + c[φ]ₓ² with
+//! b = (1 − cos θ)/θ², c = (θ − sin θ)/θ³. For R(v) = R₀ exp(φ(v)), Rᵀ Ṙ = [J_r(φ) φ̇]ₓ.
+inline Eigen::Vector3d right_jacobian_times(const Eigen::Vector3d& phi, const Eigen::Vector3d& u) noexcept {
+  const double theta = phi.norm();
+  const Eigen::Vector3d pu = phi.cross(u);
+  return u - detail::coefficient_b(theta) * pu + detail::coefficient_c(theta) * phi.cross(pu);
+}
+
+//! The 3 × 3 matrix J_r(φ).
+Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept;
+
+//! One section of a cubic pose curve: the part v ∈ [v0, v1], run as τ = (v − v0)/(v1 − v0)
+//! goes over [0, 1].
+struct CurveSection {
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();  //!< R₀
+  Cubic3 position;                                          //!< c(v), world
+  Cubic3 rotation;                                          //!< φ(v), body of R₀
+  double v0 = 0.0, v1 = 1.0;
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates of the point on c(v)
+
+  double span() const noexcept { return v1 - v0; }
+
+  Posed pose(double tau) const noexcept {
+    const double v = v0 + tau * span();
+    const Eigen::Quaterniond q = (q0 * quaternion_exp(rotation.value(v))).normalized();
+    return Posed::unchecked(q, position.value(v) - q * pivot);
+  }
+
+  //! Body twist per unit τ: ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p (h = v1 − v0).
+  Twistd twist(double tau) const noexcept {
+    const double v = v0 + tau * span();
+    const Eigen::Vector3d phi = rotation.value(v);
+    const Eigen::Quaterniond q = (q0 * quaternion_exp(phi)).normalized();
+    const Eigen::Vector3d omega = span() * right_jacobian_times(phi, rotation.first(v));
+    return Twistd(q.conjugate() * (span() * position.first(v)) - omega.cross(pivot), omega);
+  }
+
+  //! An upper bound of the speed of every object of the set per unit τ (never below the
+  //! exact maximum): each group's exact speed at the middle τ = ½ plus half the largest rate
+  //! at which that speed can change along the section, from bounds of the pivot
+  //! acceleration |c̈|, the angular velocity |ω| ≤ |φ̇| (‖J_r‖ ≤ 1) and the angular acceleration
+  //! |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², g′(θ) = (θeᶿ − eᶿ + 1)/θ² (a bound of ‖dJ_r/dφ‖ from its series).
+  //! A body point at distance r from the pivot accelerates at most |c̈| + (|ω̇| + |ω|²) r; an
+  //! absolute point at distance r seen from the body at most |c̈| + |ω̇| r + |ω||ċ|.
+  //! Slack: about ½ × acceleration / speed of the section, which the cutting keeps small.
+  double length(const MetricSetd& set, std::optional<double> system_velocity) const;
+};
+
+}  // namespace dispkin

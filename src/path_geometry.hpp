@@ -1,0 +1,63 @@
+// Geometry shared by the path builders (path.cpp, spline.cpp, blend.cpp); internal.
+#pragma once
+
+#include <type_traits>
+#include <variant>
+
+#include "dispkin/path.hpp"
+
+namespace dispkin {
+namespace detail {
+
+// The geometric size of a section, the weight of its share of the path parameter u: pivot
+// travel plus 0.1 m per radian of rotation (so that pure rotations get a share too).
+constexpr double metres_per_radian = 0.1;
+
+inline double rotation_angle(const Posed& a, const Posed& b) {
+  return quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion())).norm();
+}
+
+inline double geometric_size(const Section& section) {
+  return std::visit(
+      [](const auto& s) -> double {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, LinSection>) {
+          return ((s.end * s.pivot) - (s.start * s.pivot)).norm() + metres_per_radian * rotation_angle(s.start, s.end);
+        } else if constexpr (std::is_same_v<T, CurveSection>) {
+          // The chord: sections of a curve are short, cut to a small velocity deviation.
+          const Posed a = s.pose(0.0), b = s.pose(1.0);
+          return ((b * s.pivot) - (a * s.pivot)).norm() + metres_per_radian * rotation_angle(a, b);
+        } else {
+          const double radius = ((s.start * s.pivot) - s.center).norm();
+          return std::abs(s.angle) * radius + metres_per_radian * std::abs(s.rotation_angle);
+        }
+      },
+      section);
+}
+
+//! The part τ ∈ [t0, t1] of a section, as a section of the same kind run over its own τ.
+inline Section section_part(const Section& section, double t0, double t1) {
+  return std::visit(
+      [&](const auto& s) -> Section {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, LinSection>) {
+          // A sub-piece of a line with SLERP (or of a screw) is the same motion between its ends.
+          return LinSection{s.pose(t0), s.pose(t1), s.interpolation, s.pivot};
+        } else if constexpr (std::is_same_v<T, ArcSection>) {
+          ArcSection part = s;
+          part.start = s.pose(t0);
+          part.angle = s.angle * (t1 - t0);
+          part.rotation_angle = s.rotation_angle * (t1 - t0);
+          return part;
+        } else {
+          CurveSection part = s;
+          part.v0 = s.v0 + t0 * s.span();
+          part.v1 = s.v0 + t1 * s.span();
+          return part;
+        }
+      },
+      section);
+}
+
+}  // namespace detail
+}  // namespace dispkin

@@ -1,0 +1,55 @@
+"""SPLINE moves and blends at via points from Python (issue 3)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import dispkin
+
+
+def pose(x, y, z=0.0, yaw=0.0):
+    return dispkin.Pose.from_xyzuvw([x, y, z, 0.0, 0.0, yaw])
+
+
+def test_spline_passes_through_its_keys_and_is_cut_into_curve_sections():
+    keys = [pose(0, 0), pose(0.2, 0.1, 0.05, 0.3), pose(0.4, 0.0, 0.0, 0.6), pose(0.5, 0.2, 0.1, 0.2)]
+    path = dispkin.Path.spline(keys)
+    sections = path.sections()
+    assert {s.kind for s in sections} == {"curve"}
+    assert path.start.is_approx(keys[0], 1e-12) and path.end.is_approx(keys[-1], 1e-12)
+    # Every key is the start of some section (the pieces join there).
+    for key in keys[1:-1]:
+        assert min(np.linalg.norm(s.start.translation - key.translation) for s in sections) < 1e-12
+
+
+def test_blend_keeps_the_ends_and_runs_through_without_stopping():
+    a, p1, via, p2, b = pose(0, 0), pose(0.3, 0, 0, 0.2), pose(0.45, 0.1, 0, 0.3), pose(0.3, 0.2, 0, 0.4), pose(0, 0.2, 0, 0.5)
+    path = dispkin.Path.lin(a, p1)
+    path.then(dispkin.Path.circ(p1, via, p2), blend=0.05).then(dispkin.Path.lin(p2, b), before=0.04, after=0.06)
+    assert path.start.is_approx(a, 1e-12) and path.end.is_approx(b, 1e-12)
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.05))
+    traj = dispkin.plan(path, tool, dispkin.Limits(0.2, 1.0, 10.0))
+    assert traj.piece_count == 1
+    # The corner p1 is cut off: the track passes no closer than a few mm to it.
+    track = path.sample(np.linspace(0, 1, 4000))[:, :3, 3]
+    assert np.min(np.linalg.norm(track - p1.translation, axis=1)) > 1e-3
+    assert np.max(np.linalg.norm(track - p1.translation, axis=1)) > 0.2
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0)]), "at least three"),
+        (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0), pose(1, 0)]), "poses[2]"),
+        (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0), pose(1, 1)], tolerance=math.nan), "tolerance"),
+        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.06), "half of the move"),
+        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.0), "before"),
+        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), before=0.01), "after is missing"),
+        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.01, after=0.01), "either blend"),
+    ],
+)
+def test_bad_curves_are_refused(call, message):
+    with pytest.raises(ValueError, match=message.replace("[", r"\[").replace("]", r"\]")):
+        call()
