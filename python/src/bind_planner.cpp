@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
+#include "dispkin/overlap.hpp"
 #include "dispkin/planner.hpp"
 
 namespace dispkin {
@@ -31,8 +32,8 @@ std::vector<double> times_of(const py::object& times) {
 }
 
 // Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
-template <typename Write>
-py::array_t<double> sampled(const Trajectory& traj, const py::object& times, std::vector<py::ssize_t> shape_tail,
+template <typename Sampled, typename Write>
+py::array_t<double> sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail,
                             py::ssize_t columns, Write write) {
   const std::vector<double> t = times_of(times);
   std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
@@ -41,6 +42,48 @@ py::array_t<double> sampled(const Trajectory& traj, const py::object& times, std
   double* data = out.mutable_data();
   for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
   return out;
+}
+
+// The sampling methods shared by Trajectory and OverlappedTrajectory.
+template <typename T>
+void add_sampling(py::class_<T>& cls) {
+  cls
+      .def(
+          "sample",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {4, 4}, 16, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+            });
+          },
+          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices.")
+      .def(
+          "sample_xyzuvw",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
+            });
+          },
+          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians).")
+      .def(
+          "body_twist",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+            });
+          },
+          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s.")
+      .def(
+          "path_position",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
+          },
+          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
+      .def(
+          "path_velocity",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
+          },
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.");
 }
 
 }  // namespace
@@ -63,54 +106,40 @@ void bind_planner(py::module_& m) {
                ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None")) + ")";
       });
 
-  py::class_<Trajectory>(m, "Trajectory", R"doc(
+  py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
 A planned trajectory: no point or sphere of the metric set moves faster than its limit at any
-time. Sample it at any times (seconds, clamped to [0, duration]).)doc")
-      .def_property_readonly("duration", &Trajectory::duration, "Seconds.")
+time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
+  trajectory.def_property_readonly("duration", &Trajectory::duration, "Seconds.")
       .def_property_readonly("length", &Trajectory::length, "The DISP arc length, metres.")
       .def_property_readonly("piece_count", &Trajectory::piece_count, "Rest-to-rest pieces (1 + corners).")
       .def("section_lengths", [](const Trajectory& t) {
         return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()), t.section_lengths().data());
       }, "L of every section, metres.")
-      .def(
-          "sample",
-          [](const Trajectory& traj, const py::object& times) {
-            return sampled(traj, times, {4, 4}, 16, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
-            });
-          },
-          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices.")
-      .def(
-          "sample_xyzuvw",
-          [](const Trajectory& traj, const py::object& times) {
-            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
-            });
-          },
-          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians).")
-      .def(
-          "body_twist",
-          [](const Trajectory& traj, const py::object& times) {
-            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
-            });
-          },
-          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s.")
-      .def(
-          "path_position",
-          [](const Trajectory& traj, const py::object& times) {
-            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
-          },
-          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
-      .def(
-          "path_velocity",
-          [](const Trajectory& traj, const py::object& times) {
-            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
-          },
-          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });
+
+  add_sampling(trajectory);
+
+  py::class_<OverlappedTrajectory> overlapped(m, "OverlappedTrajectory", R"doc(
+The seed's overlapped velocity method: `after` starts `overlap` seconds before `before` ends and
+the two motions add up meanwhile — P(t) = P_b(t) + P_f(t') - P_2 for the point `pivot` (body
+coordinates; the origin by default) and R(t) = R_f(t') R_2^-1 R_b(t). Overlapping the
+deceleration of one move with the acceleration of the next runs through the via point without
+stopping. No speed guarantee of its own: a point's velocity is the sum of two, so check the
+peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
+  overlapped
+      .def(py::init([](const Trajectory& before, const Trajectory& after, double overlap, const py::object& pivot) {
+             return OverlappedTrajectory(before, after, overlap, vector3(pivot, "pivot"));
+           }),
+           py::arg("before"), py::arg("after"), py::arg("overlap"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"))
+      .def_property_readonly("duration", &OverlappedTrajectory::duration, "Seconds.")
+      .def_property_readonly("overlap", &OverlappedTrajectory::overlap, "Seconds during which both moves run.")
+      .def_property_readonly("overlap_start", &OverlappedTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def("__repr__", [](const OverlappedTrajectory& o) {
+        return "OverlappedTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
+      });
+  add_sampling(overlapped);
 
   m.def(
       "plan",

@@ -27,6 +27,7 @@
 #include <dispkin/disp.hpp>
 #include <dispkin/hexapod.hpp>
 #include <dispkin/metric_set.hpp>
+#include <dispkin/overlap.hpp>
 #include <dispkin/path.hpp>
 #include <dispkin/planner.hpp>
 #include <dispkin/pose.hpp>
@@ -274,6 +275,14 @@ std::vector<Row> rows() {
   row("plan", "zero velocity", [] { plan(Path::lin(A, B), good_set(), limits(0, 1, 10)); }, IA, "velocity = 0");
   row("plan", "NaN jerk", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, nan_)); }, IA, "jerk = nan");
 
+  row("OverlappedTrajectory", "negative overlap", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
+        OverlappedTrajectory(t, plan(Path::lin(B, C), good_set(), limits(0.1, 1, 10)), -0.5); }, IA, "overlap = -0.5");
+  row("OverlappedTrajectory", "NaN overlap", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
+        OverlappedTrajectory(t, plan(Path::lin(B, C), good_set(), limits(0.1, 1, 10)), nan_); }, IA, "overlap = nan");
+  row("OverlappedTrajectory", "overlap longer than a move", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
+        OverlappedTrajectory(t, plan(Path::lin(B, C), good_set(), limits(0.1, 1, 10)), 100.0); }, IA, "overlap = 100: must be between 0 and the shorter move's duration");
+  row("OverlappedTrajectory", "moves not joining", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
+        OverlappedTrajectory(t, plan(Path::lin(C, B), good_set(), limits(0.1, 1, 10)), 0.1); }, IA, "after = (0.1, 0.1, 0): must start where `before` ends");
   // --- Hexapod ---
   row("Hexapod(...)", "NaN base joint", [] { Hexapod h = hexapod(); Hexapod::Joints b = h.base_joints(); b(0, 0) = nan_;
         Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "base_joints = (nan, -0.02604722665, 0");

@@ -20,6 +20,7 @@ std::atomic<long> eigen_assert_failures{0};
   do {                  \
     if (!(x)) ++eigen_assert_failures; \
   } while (false)
+#include "dispkin/overlap.hpp"
 #include "dispkin/planner.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/shapes.hpp"
@@ -104,11 +105,15 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
   const Posed via(Eigen::Quaterniond::Identity(), V(0.15, 0.2, 0));
   Path chain = Path::lin(a, b);
   chain.then(Path::lin(b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))));
+  Path blended = Path::lin(a, b);
+  blended.then(Path::lin(b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))), 0.05);
   const std::vector<Trajectory> trajectories = {
       plan(Path::lin(a, b), set, Limits{0.1, 0.5, 5.0}),
       plan(Path::lin(a, b, Interpolation::screw), set, Limits{0.1, 0.5, std::nullopt}, ProfileKind::trapezoid),
       plan(Path::circ(a, via, b), set, Limits{0.1, 0.5, 5.0}),
       plan(chain, set, Limits{0.1, 0.5, 5.0}),
+      plan(blended, set, Limits{0.1, 0.5, 5.0}),
+      plan(Path::spline({a, via, b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))}), set, Limits{0.1, 0.5, 5.0}),
   };
   constexpr int kTimes = 20000;
   std::vector<double> times(kTimes);
@@ -124,6 +129,25 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
     EXPECT_EQ(allocations.load(), before) << "Trajectory::sample allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
   }
+  EXPECT_TRUE(checksum >= 0.0);
+}
+
+// The overlapped velocity method samples two trajectories and composes them: no allocation.
+TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  using V = Eigen::Vector3d;
+  const Posed a, via(Eigen::Quaterniond(Eigen::AngleAxisd(0.4, V::UnitZ())), V(0.3, 0, 0));
+  const Posed b(Eigen::Quaterniond(Eigen::AngleAxisd(0.8, V::UnitZ())), V(0.3, 0.3, 0));
+  const Limits limits{0.1, 0.5, 5.0};
+  const OverlappedTrajectory o(plan(Path::lin(a, via), set, limits), plan(Path::lin(via, b), set, limits), 0.2);
+  double checksum = 0.0;
+  const long before = allocations.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (int i = 0; i < 20000; ++i) checksum += o.sample(o.duration() * (1.2 * i / 20000 - 0.1)).s_dot;
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_EQ(allocations.load(), before) << "OverlappedTrajectory::sample allocated";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum >= 0.0);
 }
 

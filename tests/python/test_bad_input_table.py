@@ -264,6 +264,11 @@ row("Trajectory.sample", "NaN time", lambda: dispkin.plan(LINE, good_set(), LIMI
 row("Trajectory.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([INF]), V, "times = inf")
 row("Trajectory.sample", "negative time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([-1.0]), V, "times = -1", xfail="observed: clamped, returns the start pose (sampling is noexcept)")
 
+row("OverlappedTrajectory", "negative overlap", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), -0.5), V, "overlap = -0.5")
+row("OverlappedTrajectory", "overlap longer than a move", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), 1e3), V, "overlap = 1000: must be between 0 and the shorter move's duration")
+row("OverlappedTrajectory", "moves not joining", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), 0.1), V, "must start where `before` ends")
+row("OverlappedTrajectory", "wrong size pivot (2)", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), 0.1, pivot=[0, 0]), V, "pivot: expected an array of shape (3,), got shape (2,)")
+
 # --- Hexapod ------------------------------------------------------------------------------
 HJ = hexapod()
 row("Hexapod(...)", "NaN base joint", lambda: dispkin.Hexapod(np.where(np.arange(18).reshape(6, 3) == 0, NAN, HJ.base_joints), HJ.platform_joints, 0.15, 0.32, 0.01), V, "base_joints = (nan, -0.02604722665, 0, 0.147721162952, 0.026")

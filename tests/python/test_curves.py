@@ -53,3 +53,24 @@ def test_blend_keeps_the_ends_and_runs_through_without_stopping():
 def test_bad_curves_are_refused(call, message):
     with pytest.raises(ValueError, match=message.replace("[", r"\[").replace("]", r"\]")):
         call()
+
+
+def test_overlapped_velocity_method_follows_the_articles_formulas():
+    a, via, b = pose(0, 0), pose(0.4, 0, 0, 0.3), pose(0.4, 0.4, 0, 0.6)
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.05))
+    limits = dispkin.Limits(0.2, 1.0)
+    before = dispkin.plan(dispkin.Path.lin(a, via), tool, limits, profile="trapezoid")
+    after = dispkin.plan(dispkin.Path.lin(via, b), tool, limits, profile="trapezoid")
+    o = dispkin.OverlappedTrajectory(before, after, 0.2)
+    assert o.duration == pytest.approx(before.duration + after.duration - 0.2, abs=1e-12)
+    t = np.linspace(o.overlap_start, before.duration, 50)
+    got = o.sample(t)
+    pb, pf = before.sample(t), after.sample(t - o.overlap_start)
+    p2 = via.matrix()
+    np.testing.assert_allclose(got[:, :3, 3], pb[:, :3, 3] + pf[:, :3, 3] - p2[:3, 3], atol=1e-12)
+    np.testing.assert_allclose(got[:, :3, :3], pf[:, :3, :3] @ p2[:3, :3].T @ pb[:, :3, :3], atol=1e-12)
+    # Through the via point without stopping.
+    assert np.min(o.path_velocity(np.linspace(0.5, o.duration - 0.5, 200))) > 0.1
+    with pytest.raises(ValueError, match="overlap = -1"):
+        dispkin.OverlappedTrajectory(before, after, -1.0)

@@ -1,0 +1,45 @@
+//! The seed's overlapped velocity method (seed 002, "Overlapped Velocity Method"): the next
+//! move starts t_ov before the previous one ends, and during the overlap the two motions add
+//! up — position P(t) = P_b(t) + P_f(t′) − P₂, orientation R(t) = R_f(t′) R₂⁻¹ R_b(t), with t′
+//! the next move's own time and (P₂, R₂) the via pose where one ends and the other starts.
+//!
+//! P is the position of the body point `pivot` (the seed's tool tip; the origin by default).
+//! The velocities add: ċ = ċ_b + ċ_f, ω = ω_f + R_f R₂⁻¹ ω_b (world). Overlapping the previous
+//! move's deceleration with the next one's acceleration lets the path run through the via
+//! point without stopping. Unlike plan(), this composition carries no speed guarantee of its
+//! own: with mirrored ramps the path speeds add up to at most the cruise speed, but a point's
+//! speed is the norm of a sum of two velocities — check it (peak_speed_ratio in the tests and
+//! plots) before using large overlaps.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "dispkin/planner.hpp"
+
+namespace dispkin {
+
+class OverlappedTrajectory {
+ public:
+  //! `before` must end where `after` starts (to 1e-9 m / 1e-9 rad); 0 ≤ overlap ≤ the shorter
+  //! duration. Throws std::invalid_argument otherwise.
+  OverlappedTrajectory(Trajectory before, Trajectory after, double overlap,
+                       const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero());
+
+  double duration() const noexcept { return before_.duration() + after_.duration() - overlap_; }
+  //! When the overlap begins (the next move starts), seconds.
+  double overlap_start() const noexcept { return before_.duration() - overlap_; }
+  double overlap() const noexcept { return overlap_; }
+
+  //! Pose and body twist at t (clamped to [0, duration]); s and ṡ, s̈ are the sums of both
+  //! moves' (the DISP path position and speed bounds add). noexcept, allocation-free.
+  TrajectorySample sample(double t) const noexcept;
+
+ private:
+  Trajectory before_, after_;
+  double overlap_;
+  Eigen::Vector3d pivot_;
+  Posed via_;                  // (P₂, R₂) as a pose
+  Eigen::Vector3d via_point_;  // P₂ = the pivot's position at the via pose
+};
+
+}  // namespace dispkin
