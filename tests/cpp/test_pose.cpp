@@ -246,3 +246,24 @@ TEST(PoseBadInput, NonFiniteXyzuvwAndPivot) {
 
 }  // namespace
 }  // namespace dispkin
+
+namespace dispkin {
+namespace {
+
+// Matrix → quaternion uses Eigen's largest-component (Shepperd) method: exact up to rounding
+// for every rotation, including turns by π and just below it, where the trace method fails.
+TEST(Pose, MatrixToQuaternionNearAHalfTurn) {
+  testing::Random rnd(120);
+  for (int i = 0; i < 10000; ++i) {
+    const Eigen::Vector3d axis = rnd.unit_vector();
+    const double angle = 3.14159265358979323846 - std::pow(10.0, -rnd.uniform(0.0, 16.0)) * (i % 7 == 0 ? 0.0 : 1.0);
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+    const Posed pose(r, Eigen::Vector3d::Zero());
+    ASSERT_LE((pose.rotation() - r).cwiseAbs().maxCoeff(), 4e-16 * 8) << "angle " << angle;
+    const Eigen::AngleAxisd back(pose.quaternion());
+    ASSERT_NEAR(back.angle(), angle, 1e-7) << "angle " << angle;
+  }
+}
+
+}  // namespace
+}  // namespace dispkin
