@@ -58,4 +58,40 @@ void sample_trajectory(benchmark::State& state) {
 }
 BENCHMARK(sample_trajectory)->Arg(0)->Arg(1)->Arg(2);
 
+// A SPLINE through five key poses, cut into about 1000 curved sections (tolerance chosen for
+// it), icosahedron set.
+std::vector<Posed> spline_keys() {
+  const auto turn = [](double a) { return Eigen::Quaterniond(Eigen::AngleAxisd(a, V(0.3, 0.2, 1.0).normalized())); };
+  return {kStart, Posed(turn(0.2), V(0.1, 0.1, 0.0)), Posed(turn(0.4), V(0.2, 0.0, 0.05)), Posed(turn(0.6), V(0.3, 0.1, 0.05)),
+          Posed(turn(0.8), V(0.4, 0.0, 0.0))};
+}
+
+void plan_spline_1000_sections(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  const auto path = dispkin::Path::spline(spline_keys(), V::Zero(), 8e-3);
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}));
+  state.counters["sections"] = static_cast<double>(path.size());
+}
+BENCHMARK(plan_spline_1000_sections)->Unit(benchmark::kMicrosecond);
+
+void build_spline_1000_sections(benchmark::State& state) {
+  const auto keys = spline_keys();
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::Path::spline(keys, V::Zero(), 8e-3));
+}
+BENCHMARK(build_spline_1000_sections)->Unit(benchmark::kMicrosecond);
+
+void sample_spline_trajectory(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  const auto traj = dispkin::plan(dispkin::Path::spline(spline_keys(), V::Zero(), 8e-3), set, dispkin::Limits{0.1, 0.5, 5.0});
+  std::vector<double> times(4096);
+  for (std::size_t i = 0; i < times.size(); ++i) times[i] = traj.duration() * static_cast<double>((i * 2654435761u) % 4096) / 4096.0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(traj.sample(times[i]));
+    i = (i + 1) & 4095;
+  }
+  state.SetLabel("SPLINE, ~1000 sections, random times");
+}
+BENCHMARK(sample_spline_trajectory);
+
 }  // namespace

@@ -50,8 +50,9 @@ double CurveSection::length(const MetricSetd& set, std::optional<double> system_
   const double omega = h * phi.first;
   const double omega_dot = h * h * (phi.second + jacobian_rate_bound(theta_max) * phi.first * phi.first);
 
-  const Posed middle = pose(0.5);
-  const Twistd twist_middle = twist(0.5);
+  Posed middle;
+  Twistd twist_middle;
+  at(0.5, middle, twist_middle);
   const Eigen::Vector3d pivot_middle = position.value(m);
 
   double best = 0.0;

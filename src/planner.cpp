@@ -83,8 +83,7 @@ void Trajectory::Motion::at(double tau, Posed& pose, Twistd& twist) const noexce
     return;
   }
   if (kind == Kind::curve) {
-    pose = curve.pose(tau);
-    twist = curve.twist(tau);
+    curve.at(tau, pose, twist);
     return;
   }
   const Eigen::Quaterniond q = turn(w_hat, tau * theta) * q0;

@@ -65,18 +65,29 @@ struct CurveSection {
   double span() const noexcept { return v1 - v0; }
 
   Posed pose(double tau) const noexcept {
-    const double v = v0 + tau * span();
-    const Eigen::Quaterniond q = (q0 * quaternion_exp(rotation.value(v))).normalized();
-    return Posed::unchecked(q, position.value(v) - q * pivot);
+    Posed p;
+    Twistd xi;
+    at(tau, p, xi);
+    return p;
   }
 
   //! Body twist per unit τ: ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p (h = v1 − v0).
   Twistd twist(double tau) const noexcept {
-    const double v = v0 + tau * span();
+    Posed p;
+    Twistd xi;
+    at(tau, p, xi);
+    return xi;
+  }
+
+  //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and of exp.
+  void at(double tau, Posed& pose_out, Twistd& twist_out) const noexcept {
+    const double h = span();
+    const double v = v0 + tau * h;
     const Eigen::Vector3d phi = rotation.value(v);
     const Eigen::Quaterniond q = (q0 * quaternion_exp(phi)).normalized();
-    const Eigen::Vector3d omega = span() * right_jacobian_times(phi, rotation.first(v));
-    return Twistd(q.conjugate() * (span() * position.first(v)) - omega.cross(pivot), omega);
+    const Eigen::Vector3d omega = h * right_jacobian_times(phi, rotation.first(v));
+    pose_out = Posed::unchecked(q, position.value(v) - q * pivot);
+    twist_out = Twistd(q.conjugate() * (h * position.first(v)) - omega.cross(pivot), omega);
   }
 
   //! An upper bound of the speed of every object of the set per unit τ (never below the
