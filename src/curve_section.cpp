@@ -57,27 +57,52 @@ double CurveSection::length(const MetricSetd& set, std::optional<double> system_
 
   double best = 0.0;
   for (const auto& g : set.groups()) {
-    // The largest distance of the group's body objects from the pivot, and of its absolute
-    // objects from the pivot anywhere on the section (at most |ċ|/2 from the middle).
-    double r_relative = 0.0, r_absolute = 0.0;
-    for (const auto& p : g.relative_points) r_relative = std::max(r_relative, (p - pivot).norm());
-    for (const auto& s : g.relative_spheres) r_relative = std::max(r_relative, (s.center - pivot).norm() + s.radius);
-    bool has_absolute = false;
-    for (const auto& p : g.absolute_points) {
-      r_absolute = std::max(r_absolute, (p - pivot_middle).norm());
-      has_absolute = true;
-    }
-    for (const auto& s : g.absolute_spheres) {
-      r_absolute = std::max(r_absolute, (s.center - pivot_middle).norm() + s.radius);
-      has_absolute = true;
-    }
-    r_absolute += 0.5 * pivot_speed;
-    double rate = pivot_acceleration + (omega_dot + omega * omega) * r_relative;
-    if (has_absolute) rate = std::max(rate, pivot_acceleration + omega_dot * r_absolute + omega * pivot_speed);
+    const double rate = detail::group_acceleration_bound(g, pivot, pivot_middle,
+                                                        {pivot_speed, pivot_acceleration, omega, omega_dot});
     const double speed = detail::group_max_speed(g, middle, twist_middle);
     best = std::max(best, g.weight(system_velocity) * (speed + 0.5 * rate));
   }
   return best;
 }
+
+double CurveSection::acceleration_bound(const MetricSetd& set) const {
+  const double h = span();
+  const double m = 0.5 * (v0 + v1);
+  const double delta = 0.5 * h;
+  const DerivativeBounds c = derivative_bounds(position, m, delta);
+  const DerivativeBounds phi = derivative_bounds(rotation, m, delta);
+  const double theta_max = rotation.value(m).norm() + phi.first * delta;
+  const detail::MotionBounds motion{h * c.first, h * h * c.second, h * phi.first,
+                                    h * h * (phi.second + jacobian_rate_bound(theta_max) * phi.first * phi.first)};
+  double best = 0.0;
+  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, position.value(m), motion));
+  return best;
+}
+
+namespace detail {
+
+double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
+                                const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
+  // The largest distance of the group's body objects from the pivot, and of its absolute
+  // objects from the pivot anywhere on the section (at most |ċ|/2 from the middle).
+  double r_relative = 0.0, r_absolute = 0.0;
+  for (const auto& p : g.relative_points) r_relative = std::max(r_relative, (p - pivot).norm());
+  for (const auto& s : g.relative_spheres) r_relative = std::max(r_relative, (s.center - pivot).norm() + s.radius);
+  bool has_absolute = false;
+  for (const auto& p : g.absolute_points) {
+    r_absolute = std::max(r_absolute, (p - pivot_middle).norm());
+    has_absolute = true;
+  }
+  for (const auto& s : g.absolute_spheres) {
+    r_absolute = std::max(r_absolute, (s.center - pivot_middle).norm() + s.radius);
+    has_absolute = true;
+  }
+  r_absolute += 0.5 * b.pivot_speed;
+  double rate = b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * r_relative;
+  if (has_absolute) rate = std::max(rate, b.pivot_acceleration + b.omega_dot * r_absolute + b.omega * b.pivot_speed);
+  return rate;
+}
+
+}  // namespace detail
 
 }  // namespace dispkin

@@ -148,6 +148,34 @@ Posed Path::sample(double u) const noexcept {
   return section_pose(sections_[k], tau);
 }
 
+namespace {
+
+double set_acceleration_bound(const MetricSetd& set, const Eigen::Vector3d& pivot, const Eigen::Vector3d& pivot_middle,
+                              const detail::MotionBounds& bounds) {
+  double best = 0.0;
+  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, bounds));
+  return best;
+}
+
+}  // namespace
+
+double LinSection::acceleration_bound(const MetricSetd& set) const {
+  const Eigen::Vector3d pivot_middle = pose(0.5) * pivot;
+  if (interpolation == Interpolation::screw) {
+    const Twistd xi = twist(0.0);
+    const double speed = (xi.linear + xi.angular.cross(pivot)).norm(), omega = xi.angular.norm();
+    return set_acceleration_bound(set, pivot, pivot_middle, {speed, omega * speed, omega, 0.0});
+  }
+  const double speed = ((end * pivot) - (start * pivot)).norm();
+  return set_acceleration_bound(set, pivot, pivot_middle, {speed, 0.0, rotation_angle(start, end), 0.0});
+}
+
+double ArcSection::acceleration_bound(const MetricSetd& set) const {
+  const double radius = ((start * pivot) - center).norm();
+  const double phi = std::abs(angle);
+  return set_acceleration_bound(set, pivot, pose(0.5) * pivot, {phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0});
+}
+
 JointPath::JointPath(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_end) : q_start_(q_start), q_end_(q_end) {
   require(q_start.size() > 0, "q_start", static_cast<long>(q_start.size()), "must have at least one joint");
   require(q_end.size() == q_start.size(), "q_end size", static_cast<long>(q_end.size()),

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dispkin/error.hpp"
+#include "dispkin/velocity_limit.hpp"
 
 namespace dispkin {
 namespace {
@@ -28,6 +29,34 @@ bool tangent_continuous(const Section& before, double length_before, const Secti
   const double direction_change = (out / out_norm - in / in_norm).norm();
   return direction_change <= junction_direction_tolerance &&
          std::abs(out_norm - in_norm) <= junction_speed_step * std::max(out_norm, in_norm);
+}
+
+// The velocity-limit curve over sections [first, last): the path curvature rule. Along a
+// section of length L, a point whose acceleration per unit τ² is at most A (the section's
+// acceleration_bound) accelerates at ṡ² A / L² from the curvature alone; keeping that within
+// the acceleration limit a gives ṡ ≤ v_lim = L √(a / A). With s̈ ≤ a on top, no point of the
+// set accelerates faster than 2a inside a section. The limit is rounded down to a staircase of
+// 10 % steps (v, 0.9 v, 0.81 v, …) so that a smoothly varying curvature gives a few long
+// segments instead of a velocity that hunts from section to section.
+std::vector<LimitedSegment> speed_limit_segments(const std::vector<Section>& sections, const std::vector<double>& lengths,
+                                                 std::size_t first, std::size_t last, const MetricSetd& set,
+                                                 const Limits& limits) {
+  constexpr double step = 0.9;
+  std::vector<LimitedSegment> segments;
+  for (std::size_t k = first; k < last; ++k) {
+    const double a = section_acceleration_bound(sections[k], set);
+    double level = limits.velocity;
+    if (a > 0.0) {
+      const double v_lim = lengths[k] * std::sqrt(limits.acceleration / a);
+      if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
+    }
+    if (!segments.empty() && segments.back().limit == level) {
+      segments.back().length += lengths[k];
+    } else {
+      segments.push_back({lengths[k], level});
+    }
+  }
+  return segments;
 }
 
 // The unit quaternion of a turn by `angle` about the unit axis `axis`.
@@ -131,24 +160,22 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
     s += trajectory.lengths_[k];
   }
 
-  auto make_profile = [&](double distance) {
-    return profile == ProfileKind::scurve
-               ? Profile::scurve(distance, limits.velocity, limits.acceleration, *limits.jerk)
-               : Profile::trapezoid(distance, limits.velocity, limits.acceleration);
-  };
-  // Rest-to-rest pieces between corners.
+  // Rest-to-rest runs between corners; within a run the velocity-limit curve.
+  const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
   double time = 0.0;
   std::size_t first = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const bool last = k + 1 == n;
     if (!last && tangent_continuous(sections[k], trajectory.lengths_[k], sections[k + 1], trajectory.lengths_[k + 1]))
       continue;
-    const double start_s = trajectory.section_s_[first];
-    const double end_s = trajectory.section_s_[k] + trajectory.lengths_[k];
-    Profile law = make_profile(end_s - start_s);
-    const double duration = law.duration();
-    trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + duration, start_s});
-    time += duration;
+    const std::vector<LimitedSegment> segments = speed_limit_segments(sections, trajectory.lengths_, first, k + 1, set, limits);
+    double start_s = trajectory.section_s_[first];
+    for (const Profile& law : velocity_limited_law(segments, limits.acceleration, jerk)) {
+      trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + law.duration(), start_s});
+      time += law.duration();
+      start_s += law.distance();
+    }
+    ++trajectory.rest_pieces_;
     first = k + 1;
   }
   return trajectory;

@@ -53,6 +53,23 @@ inline Eigen::Vector3d right_jacobian_times(const Eigen::Vector3d& phi, const Ei
 //! The 3 × 3 matrix J_r(φ).
 Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept;
 
+namespace detail {
+
+//! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
+//! |ω| and angular acceleration |ω̇|.
+struct MotionBounds {
+  double pivot_speed, pivot_acceleration, omega, omega_dot;
+};
+
+//! A bound of the acceleration (per unit τ²) of every object of the group under motions within
+//! `bounds`: a body point at distance r from the pivot accelerates at most |c̈| + (|ω̇| + |ω|²) r;
+//! an absolute point at distance r seen from the body at most |c̈| + |ω̇| r + |ω||ċ| (r from
+//! `pivot_middle`, the pivot's world position at the middle of the section, plus |ċ|/2).
+double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
+                                const Eigen::Vector3d& pivot_middle, const MotionBounds& bounds);
+
+}  // namespace detail
+
 //! One section of a cubic pose curve: the part v ∈ [v0, v1], run as τ = (v − v0)/(v1 − v0)
 //! goes over [0, 1].
 struct CurveSection {
@@ -99,6 +116,11 @@ struct CurveSection {
   //! absolute point at distance r seen from the body at most |c̈| + |ω̇| r + |ω||ċ|.
   //! Slack: about ½ × acceleration / speed of the section, which the cutting keeps small.
   double length(const MetricSetd& set, std::optional<double> system_velocity) const;
+
+  //! A bound of the acceleration of every object of the set per unit τ² (unweighted): with
+  //! L the section's length, a point accelerates at most (ṡ/L)² times this from the path's
+  //! curvature alone.
+  double acceleration_bound(const MetricSetd& set) const;
 };
 
 }  // namespace dispkin

@@ -45,6 +45,11 @@ struct LinSection {
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     return section_length(set, start, end, interpolation, pivot, system_velocity);
   }
+
+  //! A bound of every object's acceleration per unit τ² (see CurveSection::acceleration_bound):
+  //! the decoupled line has a constant pivot velocity and angular velocity; a screw's pivot
+  //! turns about the screw axis (|c̈| = |ω × ċ|).
+  double acceleration_bound(const MetricSetd& set) const;
 };
 
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
@@ -88,6 +93,10 @@ struct ArcSection {
     const double reference = section_length(set, start, reference_end, Interpolation::decoupled, pivot, system_velocity);
     return reference + (1.0 + std::abs(rotation_angle)) * deviation_bound() * max_weight(set, system_velocity);
   }
+
+  //! A bound of every object's acceleration per unit τ² (see CurveSection::acceleration_bound):
+  //! the pivot moves on its circle (|c̈| = φ²ρ), the angular velocity is constant.
+  double acceleration_bound(const MetricSetd& set) const;
 
   //! δ = 2 φ ρ sin(φ/4): how far the pivot velocity along the arc strays from its middle value.
   double deviation_bound() const noexcept {
@@ -137,6 +146,11 @@ inline Posed section_end(const Section& section) noexcept {
 inline double section_length(const Section& section, const MetricSetd& set,
                              std::optional<double> system_velocity = std::nullopt) {
   return std::visit([&](const auto& s) { return s.length(set, system_velocity); }, section);
+}
+
+//! A bound of every object's acceleration per unit τ² of any section (unweighted by groups).
+inline double section_acceleration_bound(const Section& section, const MetricSetd& set) {
+  return std::visit([&](const auto& s) { return s.acceleration_bound(set); }, section);
 }
 
 //! Geometry of a circle through three points (MATH: circumcentre), with the arc from the

@@ -51,7 +51,10 @@ class Trajectory {
   std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
-  std::size_t piece_count() const noexcept { return pieces_.size(); }
+  std::size_t piece_count() const noexcept { return rest_pieces_; }
+  //! Number of time laws: each rest-to-rest piece has one per segment of its velocity-limit
+  //! curve (plan() slows down where the path curves tightly).
+  std::size_t law_count() const noexcept { return pieces_.size(); }
 
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
@@ -83,7 +86,7 @@ class Trajectory {
     void at(double tau, Posed& pose, Twistd& twist) const noexcept;
   };
 
-  // One rest-to-rest piece: a time law over the DISP length of the sections between two corners.
+  // One time law: over a segment of constant velocity limit, within a rest-to-rest run.
   struct Piece {
     Profile profile;
     double start_time, end_time;  // in trajectory time
@@ -94,6 +97,7 @@ class Trajectory {
   std::vector<double> lengths_;    // L_k
   std::vector<double> section_s_;  // s at the start of section k
   std::vector<Piece> pieces_;
+  std::size_t rest_pieces_ = 0;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest

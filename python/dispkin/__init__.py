@@ -29,6 +29,7 @@ from ._core import (
     point_speed,
     section_length,
     sphere_speed,
+    velocity_limited_law,
     xyzuvw_for_new_pivot,
 )
 from . import shapes
@@ -60,5 +61,6 @@ __all__ = [
     "section_length",
     "shapes",
     "sphere_speed",
+    "velocity_limited_law",
     "xyzuvw_for_new_pivot",
 ]

@@ -112,6 +112,9 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
   trajectory.def_property_readonly("duration", &Trajectory::duration, "Seconds.")
       .def_property_readonly("length", &Trajectory::length, "The DISP arc length, metres.")
       .def_property_readonly("piece_count", &Trajectory::piece_count, "Rest-to-rest pieces (1 + corners).")
+      .def_property_readonly("law_count", &Trajectory::law_count,
+                             "Time laws: one per segment of each piece's velocity-limit curve (the path "
+                             "slows down where it curves tightly: speed^2 x curvature <= acceleration).")
       .def("section_lengths", [](const Trajectory& t) {
         return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()), t.section_lengths().data());
       }, "L of every section, metres.")

@@ -4,12 +4,15 @@
 #include <string>
 
 #include <pybind11/numpy.h>
+#include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
+#include "dispkin/velocity_limit.hpp"
 
 namespace dispkin {
 namespace python {
@@ -86,6 +89,24 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
            "States at `times` ((N,) seconds, finite) as an (N, 4) array of rows (s, v, a, jerk). Times "
            "outside [0, duration] give the start or end state.")
       .def("__repr__", &profile_repr);
+
+  m.def(
+      "velocity_limited_law",
+      [](const Eigen::MatrixXd& segments, double a_max, std::optional<double> j_max, double v_start, double v_end) {
+        if (segments.cols() != 2) {
+          throw std::invalid_argument("segments: expected an array of shape (N, 2) of (length, limit), got shape (" +
+                                      std::to_string(segments.rows()) + ", " + std::to_string(segments.cols()) + ")");
+        }
+        std::vector<LimitedSegment> list;
+        for (Eigen::Index i = 0; i < segments.rows(); ++i) list.push_back({segments(i, 0), segments(i, 1)});
+        return velocity_limited_law(list, a_max, j_max, v_start, v_end);
+      },
+      py::arg("segments"), py::arg("a_max"), py::arg("j_max") = py::none(), py::arg("v_start") = 0.0,
+      py::arg("v_end") = 0.0,
+      "The time-optimal chain of laws under a piecewise-constant velocity limit: `segments` is an "
+      "(N, 2) array of rows (length, limit). Returns one Profile per segment (a trapezoid without "
+      "j_max, an S-curve with it), velocities joining continuously; the boundary velocities come "
+      "from a forward and a backward pass. S-curves have zero acceleration at every segment boundary.");
 }
 
 }  // namespace python

@@ -74,3 +74,26 @@ def test_overlapped_velocity_method_follows_the_articles_formulas():
     assert np.min(o.path_velocity(np.linspace(0.5, o.duration - 0.5, 200))) > 0.1
     with pytest.raises(ValueError, match="overlap = -1"):
         dispkin.OverlappedTrajectory(before, after, -1.0)
+
+
+def test_velocity_limited_law_joins_segments_under_their_limits():
+    laws = dispkin.velocity_limited_law(np.array([[0.2, 0.5], [0.05, 0.1], [0.3, 0.4]]), a_max=1.0, j_max=20.0)
+    assert [law.kind for law in laws] == ["scurve"] * 3
+    speeds = [law.sample(np.linspace(0, law.duration, 200))[:, 1] for law in laws]
+    assert max(speeds[1]) <= 0.1 * (1 + 1e-12)
+    assert speeds[0][-1] == pytest.approx(speeds[1][0], abs=1e-9)
+    assert speeds[2][-1] == pytest.approx(0.0, abs=1e-9)
+    with pytest.raises(ValueError, match=r"segments: expected an array of shape \(N, 2\)"):
+        dispkin.velocity_limited_law(np.ones((2, 3)), 1.0)
+
+
+def test_tight_blends_slow_the_path_down():
+    a, via, b = pose(0, 0), pose(0.4, 0), pose(0.4, 0.4)
+    path = dispkin.Path.lin(a, via).then(dispkin.Path.lin(via, b), blend=0.01)
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.02))
+    traj = dispkin.plan(path, tool, dispkin.Limits(0.5, 1.0, 20.0))
+    assert traj.piece_count == 1 and traj.law_count > 1
+    t = np.linspace(0, traj.duration, 20000)
+    s, v = traj.path_position(t), traj.path_velocity(t)
+    assert np.max(v[(s > 0.39) & (s < 0.41)]) < 0.2

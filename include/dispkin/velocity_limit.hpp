@@ -1,0 +1,40 @@
+//! Time-optimal laws under a velocity-limit curve v_lim(s) (issue 4): the curve is piecewise
+//! constant — one value per segment of the path — and the law is a chain of Profiles, one per
+//! segment, whose boundary velocities come from the classic two passes: forward (how fast can
+//! it be when it gets here), backward (how fast may it be to still slow down in time), each
+//! boundary at most the smaller limit of its two segments.
+//!
+//! The change of velocity from u to w costs at least the distance
+//!   trapezoid:  |w² − u²| / (2a)
+//!   S-curve:    (u + w)/2 · T,  T = Δ/a + a/j if Δ ≥ a²/j, else 2√(Δ/j),  Δ = |w − u|
+//! (a jerk-limited change from rest acceleration to rest acceleration is symmetric in time, so
+//! its distance is the mean velocity times its duration). For the trapezoid the result is the
+//! time-optimal law under v_lim. For the S-curve every segment starts and ends with zero
+//! acceleration — time-optimal per segment, a little slower than optimal across boundaries.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "dispkin/profile.hpp"
+
+namespace dispkin {
+
+//! One piece of a piecewise-constant velocity limit: `length` of path at speed ≤ `limit`.
+struct LimitedSegment {
+  double length;  //!< > 0
+  double limit;   //!< > 0
+};
+
+//! The least distance a law needs to go from velocity u to w (both ≥ 0) under a (and j, if
+//! given), starting and ending with zero acceleration.
+double velocity_change_distance(double u, double w, double a, std::optional<double> j) noexcept;
+
+//! The time-optimal chain of laws over `segments` (see the file comment), from v_start to
+//! v_end (each at most the limit of its segment). Returns one Profile per segment, in order;
+//! their velocities join continuously. Throws std::invalid_argument for bad input (naming it)
+//! or if v_end cannot be reached (too little distance to slow down or speed up).
+std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
+                                          std::optional<double> j_max, double v_start = 0.0, double v_end = 0.0);
+
+}  // namespace dispkin

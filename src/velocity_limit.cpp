@@ -1,0 +1,72 @@
+// Time-optimal laws under a piecewise-constant velocity limit (velocity_limit.hpp).
+#include "dispkin/velocity_limit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "dispkin/error.hpp"
+
+namespace dispkin {
+namespace {
+
+// The largest w ≤ cap reachable from u within `distance` (a change up or down): bisection on
+// the monotone velocity_change_distance, shrunk by a relative 1e-9 so that the profile built
+// on it fits with room for rounding.
+double reachable(double u, double cap, double distance, double a, std::optional<double> j) {
+  if (velocity_change_distance(u, cap, a, j) <= distance * (1.0 - 1e-9)) return cap;
+  double lo = std::min(u, cap), hi = cap;
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (velocity_change_distance(u, mid, a, j) <= distance * (1.0 - 1e-9) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+double velocity_change_distance(double u, double w, double a, std::optional<double> j) noexcept {
+  const double delta = std::abs(w - u);
+  if (!j) return std::abs(w * w - u * u) / (2.0 * a);
+  const double time = delta >= a * a / *j ? delta / a + a / *j : 2.0 * std::sqrt(delta / *j);
+  return 0.5 * (u + w) * time;
+}
+
+std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
+                                          std::optional<double> j_max, double v_start, double v_end) {
+  require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
+  require_positive(a_max, "a_max");
+  if (j_max) require_positive(*j_max, "j_max");
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    require_positive(segments[i].length, "segments[" + std::to_string(i) + "].length");
+    require_positive(segments[i].limit, "segments[" + std::to_string(i) + "].limit");
+  }
+  require(std::isfinite(v_start) && v_start >= 0.0 && v_start <= segments.front().limit, "v_start", v_start,
+          "must be in [0, limit of the first segment]");
+  require(std::isfinite(v_end) && v_end >= 0.0 && v_end <= segments.back().limit, "v_end", v_end,
+          "must be in [0, limit of the last segment]");
+
+  // Boundary velocities: u[0] = v_start, u[n] = v_end, inner ones capped by both limits.
+  const std::size_t n = segments.size();
+  std::vector<double> u(n + 1);
+  u[0] = v_start;
+  u[n] = v_end;
+  for (std::size_t i = 1; i < n; ++i) u[i] = std::min(segments[i - 1].limit, segments[i].limit);
+  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], reachable(u[i + 1], u[i], segments[i].length, a_max, j_max));
+  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], reachable(u[i], u[i + 1], segments[i].length, a_max, j_max));
+  if (std::abs(u[0] - v_start) > 1e-12 * std::max(1.0, v_start) || std::abs(u[n] - v_end) > 1e-12 * std::max(1.0, v_end)) {
+    throw std::invalid_argument(describe("v_end", v_end, "cannot be reached from v_start = " + std::to_string(v_start) +
+                                                             " within the segments' length"));
+  }
+
+  std::vector<Profile> laws;
+  laws.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const LimitedSegment& g = segments[i];
+    laws.push_back(j_max ? Profile::scurve(g.length, g.limit, a_max, *j_max, u[i], u[i + 1])
+                         : Profile::trapezoid(g.length, g.limit, a_max, u[i], u[i + 1]));
+  }
+  return laws;
+}
+
+}  // namespace dispkin
