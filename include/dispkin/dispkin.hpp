@@ -13,3 +13,4 @@
 #include "dispkin/planner.hpp"
 #include "dispkin/kinematics.hpp"
 #include "dispkin/hexapod.hpp"
+#include "dispkin/frames.hpp"
