@@ -314,9 +314,43 @@ std::vector<double> Hexapod::leg_section_lengths(const Path& path, double system
   return out;
 }
 
+namespace {
+
+// Whether the path runs on smoothly from section k to k + 1: the twists per unit τ at the
+// junction point the same way (to 1e-9, tighter than the planner's 1e-6 test, so that equal
+// speeds there are accepted as tangent-continuous by the planner).
+bool same_direction(const Twistd& out, const Twistd& in) {
+  const Eigen::Matrix<double, 6, 1> a = out.vector(), b = in.vector();
+  const double na = a.norm(), nb = b.norm();
+  return na > 0.0 && nb > 0.0 && (a / na - b / nb).norm() <= 1e-9;
+}
+
+}  // namespace
+
 PlanOptions Hexapod::joint_metric(const Path& path, const Limits& limits) const {
+  const std::vector<double> needed = leg_section_lengths(path, limits.velocity);
+  const std::vector<Section>& sections = path.sections();
+  // Along a run of sections that continue one another, the planner passes the junctions at
+  // speed only if the twist per unit of s, ξ_k/L_k, is continuous: L_{k+1}/L_k = ‖ξ_{k+1}(0)‖ /
+  // ‖ξ_k(1)‖ =: c_{k+1}/c_k. So a run gets lengths λ c_k with λ = max_k needed_k / c_k: never
+  // shorter than needed, and continuous wherever the DISP lengths are (if they dominate).
   PlanOptions options;
-  options.min_section_lengths = leg_section_lengths(path, limits.velocity);
+  options.min_section_lengths.resize(needed.size());
+  std::size_t first = 0;
+  std::vector<double> scale(needed.size(), 1.0);
+  for (std::size_t k = 0; k < needed.size(); ++k) {
+    const bool run_ends = k + 1 == needed.size() ||
+                          !same_direction(section_twist(sections[k], 1.0), section_twist(sections[k + 1], 0.0));
+    if (!run_ends) {
+      scale[k + 1] = scale[k] * section_twist(sections[k + 1], 0.0).vector().norm() /
+                     section_twist(sections[k], 1.0).vector().norm();
+      continue;
+    }
+    double lambda = 0.0;
+    for (std::size_t j = first; j <= k; ++j) lambda = std::max(lambda, needed[j] / scale[j]);
+    for (std::size_t j = first; j <= k; ++j) options.min_section_lengths[j] = std::max(needed[j], lambda * scale[j]);
+    first = k + 1;
+  }
   return options;
 }
 

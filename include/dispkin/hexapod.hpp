@@ -180,10 +180,14 @@ class Hexapod : public Kinematics {
   //! non-finite system velocity or a bad tolerance.
   std::vector<double> leg_section_lengths(const Path& path, double system_velocity, double tolerance = 1e-3) const;
 
-  //! Rule (b) for plan(): PlanOptions whose min_section_lengths are
+  //! Rule (b) for plan(): PlanOptions whose min_section_lengths are at least
   //! leg_section_lengths(path, limits.velocity). plan(path, set, limits, profile,
-  //! hexapod.joint_metric(path, limits)) keeps every leg within its speed at all times, the
-  //! metric set under its own limits; each section gets the longer of its two lengths.
+  //! hexapod.joint_metric(path, limits)) keeps every leg within its speed at all times and the
+  //! metric set under its own limits; each section gets the longer of its two lengths. Along a
+  //! run of sections that continue one another (the sections of a CIRC, collinear LINs) the
+  //! lengths are raised to one common speed (λ c_k, c_k ∝ the twist per unit τ at the
+  //! junctions), so the planner passes the junctions without stopping instead of coming to
+  //! rest wherever the leg demand changes.
   PlanOptions joint_metric(const Path& path, const Limits& limits) const;
 
   // Kinematics

@@ -138,8 +138,9 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc")
       py::kw_only(), py::arg("joint_metric") = py::none(),
       "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
       "or \"trapezoid\" law. The trajectory stops at corners of the path. `joint_metric` (keyword): an "
-      "object with leg_section_lengths(path, system_velocity), e.g. a Hexapod; each section is then at least "
-      "that long, which keeps every leg within its speed (leg-speed rule (b)).");
+      "object with leg_section_lengths(path, system_velocity); each section is then at least that long. For a "
+      "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
+      "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions.");
 }
 
 }  // namespace python

@@ -447,7 +447,33 @@ TEST(HexapodJointMetric, SectionLengthsScaleWithTheSystemVelocity) {
     EXPECT_NEAR(fast[k], 2 * slow[k], 1e-15 * fast[k]);
     EXPECT_NEAR(slow[k], 0.05 * (h.leg_rate_bounds(path.sections()[k]).array() / h.leg_speed().array()).maxCoeff(), 1e-15);
   }
-  EXPECT_EQ(h.joint_metric(path, Limits{0.1, 1.0, 20.0}).min_section_lengths, fast);
+  // A single section: joint_metric's lengths are exactly the leg lengths.
+  const Path lin = Path::lin(reachable_pose(h, rnd), reachable_pose(h, rnd));
+  EXPECT_EQ(h.joint_metric(lin, Limits{0.1, 1.0, 20.0}).min_section_lengths, h.leg_section_lengths(lin, 0.1));
+}
+
+// Along a CIRC the lengths are raised to one common speed: the planner runs through the arc
+// without stopping, and the legs stay within their speed.
+TEST(HexapodJointMetric, CircIsOnePieceAndKeepsTheLegs) {
+  const Hexapod h = test_hexapod();
+  const auto shifted = [&](double x, double y) {
+    return h.home() * Posed::exp(Twistd(Eigen::Vector3d(x, y, 0.0), Eigen::Vector3d(0.0, 0.0, 0.05)));
+  };
+  const Path arc = Path::circ(shifted(0.02, 0.0), shifted(0.0, 0.02), shifted(-0.02, 0.0), Eigen::Vector3d::Zero(), 0.01);
+  ASSERT_GT(arc.size(), 5u);
+  const Limits limits{0.1, 1.0, 20.0};
+  const PlanOptions options = h.joint_metric(arc, limits);
+  const std::vector<double> needed = h.leg_section_lengths(arc, limits.velocity);
+  for (std::size_t k = 0; k < arc.size(); ++k) ASSERT_GE(options.min_section_lengths[k], needed[k]);
+  const Trajectory trajectory = plan(arc, tool_points(), limits, ProfileKind::scurve, options);
+  EXPECT_EQ(trajectory.piece_count(), 1u);
+  const TrajectoryCheck check = h.check_trajectory(trajectory, trajectory.duration() / 20000);
+  EXPECT_TRUE(check.ok());
+  EXPECT_LE(check.max_speed.maxCoeff(), h.leg_speed().maxCoeff() * (1 + 1e-9));
+  MetricSetd with_group = tool_points();
+  h.add_leg_speed_group(with_group, 1);
+  const Trajectory rule_a = plan(arc, with_group, limits);
+  std::printf("CIRC of %zu sections: rule (b) %.3f s, rule (a) %.3f s\n", arc.size(), trajectory.duration(), rule_a.duration());
 }
 
 TEST(HexapodJointMetric, PlannedTrajectoriesKeepEveryLegWithinItsSpeed) {

@@ -110,3 +110,13 @@ def test_bad_joint_metrics_are_refused():
         h.leg_rate_bounds(path, 0.0)
     with pytest.raises(TypeError):
         dispkin.plan(path, tool_points(), LIMITS, "scurve", h)  # keyword only
+
+
+def test_circ_runs_through_without_stopping():
+    h = desktop()
+    shifted = lambda x, y: h.home * dispkin.Pose.exp([x, y, 0.0, 0.0, 0.0, 0.05])  # noqa: E731
+    arc = dispkin.Path.circ(shifted(0.02, 0.0), shifted(0.0, 0.02), shifted(-0.02, 0.0), tolerance=0.01)
+    traj = dispkin.plan(arc, tool_points(), LIMITS, joint_metric=h)
+    assert traj.piece_count == 1
+    assert np.all(traj.section_lengths() >= h.leg_section_lengths(arc, LIMITS.velocity))
+    assert h.check(traj, dt=traj.duration / 20000).ok
