@@ -143,14 +143,29 @@ void Limits::validate(ProfileKind kind) const {
 }
 
 Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile) {
+  return plan(path, set, limits, profile, PlanOptions{});
+}
+
+Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+                const PlanOptions& options) {
   limits.validate(profile);
   set.require_well_formed();
   Trajectory trajectory;
   const std::vector<Section>& sections = path.sections();
+  const std::size_t n = sections.size();
+  const std::vector<double>& minimum = options.min_section_lengths;
+  require(minimum.empty() || minimum.size() == n, "min_section_lengths size", static_cast<unsigned long>(minimum.size()),
+          "must be 0 or the path's section count " + std::to_string(n));
+  for (std::size_t k = 0; k < minimum.size(); ++k) {
+    require(std::isfinite(minimum[k]) && minimum[k] >= 0.0, "min_section_lengths[" + std::to_string(k) + "]",
+            minimum[k], "must be finite and not negative");
+  }
   // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
   // under its own limit.
   trajectory.lengths_ = path.section_lengths(set, limits.velocity);
-  const std::size_t n = sections.size();
+  // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
+  // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening.
+  for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
   trajectory.motions_.reserve(n);
   for (const Section& section : sections) trajectory.motions_.push_back(Trajectory::Motion::of(section));
   trajectory.section_s_.resize(n);

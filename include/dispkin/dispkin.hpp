@@ -15,3 +15,4 @@
 #include "dispkin/overlap.hpp"
 #include "dispkin/kinematics.hpp"
 #include "dispkin/hexapod.hpp"
+#include "dispkin/frames.hpp"

@@ -25,6 +25,8 @@
 
 #include "dispkin/kinematics.hpp"
 #include "dispkin/metric_set.hpp"
+#include "dispkin/path.hpp"
+#include "dispkin/planner.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
@@ -147,6 +149,46 @@ class Hexapod : public Kinematics {
   //! leg's speed ℓ̇_i = u_i·ṗ_i never exceeds the speed of its platform joint, a trajectory
   //! that keeps the group within its speed keeps every leg within its limit.
   void add_leg_speed_group(MetricSetd& set, int group) const;
+
+  //! The patent's leg-speed rule (b), the joint-space metric: upper bounds r_i ≥ max over
+  //! τ ∈ [0, 1] of |dℓ_i/dτ| along one section (m per unit τ), dℓ_i/dτ = (leg_jacobian row i) ·
+  //! (section_twist per unit τ), exact at every τ.
+  //!
+  //! Rule (a rigorous Lipschitz bound on a uniform grid τ_k = k h, h = 1/N): with V ≥ the speed
+  //! per unit τ of every platform joint (section_length over the six joints, the section's own
+  //! guarantee) and A ≥ their acceleration per unit τ² (closed form per section kind, below),
+  //! |d²ℓ_i/dτ²| = |u_i·p̈_i + (‖ṗ_i‖² − (u_i·ṗ_i)²)/ℓ_i| ≤ M_i = A + V²/ℓ_low,i, where
+  //! ℓ_low,i = min_k ℓ_i(τ_k) − V h/2 bounds the leg from below (|dℓ_i/dτ| ≤ V). Between two
+  //! grid points |dℓ_i/dτ| then stays under (|g_k| + |g_k+1| + M_i h)/2, so
+  //!   r_i = min(V, max_k (|g_k| + |g_k+1| + M_i h)/2),   g_k = dℓ_i/dτ(τ_k).
+  //! N is chosen so that M_i h/2 ≤ `tolerance` · (the section's largest sampled demand
+  //! max_j |g_j|/leg_speed_j) · leg_speed_i: the bound then exceeds the true maximum by at most
+  //! that much. N stays within [64, 65536]; at the upper end the bound is still rigorous, only
+  //! looser than the tolerance.
+  //!
+  //! A (acceleration of the platform joints per unit τ²): decoupled LIN θ² max_j ‖p_j − pivot‖
+  //! (the pivot moves at constant velocity, the rotation is about a fixed axis); screw LIN
+  //! max_j ‖ω × (v + ω × p_j)‖ (constant body twist); arc φ² ‖c₀ − centre‖ + θ² max_j ‖p_j −
+  //! pivot‖. A section kind without a closed form here (a future spline or blend) gets r_i = V,
+  //! still an upper bound (it is rule (a) for that section), only not tight.
+  //! Throws std::invalid_argument for a tolerance outside (0, 1].
+  Legs leg_rate_bounds(const Section& section, double tolerance = 1e-3) const;
+
+  //! Minimum length per section of `path` for rule (b): a section traversed at the system
+  //! velocity v_sys in time L / v_sys moves leg i at |dℓ_i/dτ| v_sys / L, so it needs
+  //! L ≥ v_sys · max_i r_i / leg_speed_i. Throws std::invalid_argument for a non-positive or
+  //! non-finite system velocity or a bad tolerance.
+  std::vector<double> leg_section_lengths(const Path& path, double system_velocity, double tolerance = 1e-3) const;
+
+  //! Rule (b) for plan(): PlanOptions whose min_section_lengths are at least
+  //! leg_section_lengths(path, limits.velocity). plan(path, set, limits, profile,
+  //! hexapod.joint_metric(path, limits)) keeps every leg within its speed at all times and the
+  //! metric set under its own limits; each section gets the longer of its two lengths. Along a
+  //! run of sections that continue one another (the sections of a CIRC, collinear LINs) the
+  //! lengths are raised to one common speed (λ c_k, c_k ∝ the twist per unit τ at the
+  //! junctions), so the planner passes the junctions without stopping instead of coming to
+  //! rest wherever the leg demand changes.
+  PlanOptions joint_metric(const Path& path, const Limits& limits) const;
 
   // Kinematics
   int dof() const override { return 6; }

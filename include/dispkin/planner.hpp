@@ -34,6 +34,15 @@ struct Limits {
   void validate(ProfileKind kind) const;
 };
 
+//! Extra constraints for plan() beyond the metric set.
+struct PlanOptions {
+  //! Empty: none. Otherwise one length per section of the path (m, each finite and ≥ 0): section
+  //! k is planned with length max(L_k, min_section_lengths[k]). Joint-space metrics (a
+  //! hexapod's leg speeds, Hexapod::joint_metric) enter the plan this way. Lengthening a
+  //! section only slows it down, so the DISP guarantee of the set still holds.
+  std::vector<double> min_section_lengths;
+};
+
 //! What a trajectory is at one instant.
 struct TrajectorySample {
   Posed pose;          //!< the pose
@@ -62,7 +71,7 @@ class Trajectory {
   void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
 
  private:
-  friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind);
+  friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind, const PlanOptions&);
 
   // What sampling needs of a section, precomputed at planning time so that a sample costs one
   // sine/cosine pair per rotation and no logarithm: the pivot on its line (c₀ + τΔc) or arc
@@ -103,5 +112,10 @@ class Trajectory {
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
 //! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed.
 Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile = ProfileKind::scurve);
+
+//! The same with `options`; also throws std::invalid_argument when min_section_lengths has the
+//! wrong size or an entry that is negative or not finite.
+Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+                const PlanOptions& options);
 
 }  // namespace dispkin

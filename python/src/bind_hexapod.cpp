@@ -194,6 +194,25 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
            py::arg("pose"), "ValueError naming the first leg out of range.")
       .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::arg("trajectory"), py::arg("dt"),
            "Dense check every `dt` seconds: leg lengths and leg speeds (J times the body twist) against the limits.")
+      .def("leg_section_lengths",
+           [](const Hexapod& h, const Path& path, double system_velocity, double tolerance) {
+             const std::vector<double> lengths = h.leg_section_lengths(path, system_velocity, tolerance);
+             return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
+           },
+           py::arg("path"), py::arg("system_velocity"), py::arg("tolerance") = 1e-3,
+           "Leg-speed rule (b), the joint-space metric: the minimum length of every section of `path` (m, (N,)) "
+           "so that no leg exceeds its speed at path speed `system_velocity`: v_sys * max_i r_i / leg_speed_i.")
+      .def("leg_rate_bounds",
+           [](const Hexapod& h, const Path& path, double tolerance) {
+             py::array_t<double> out({static_cast<py::ssize_t>(path.size()), py::ssize_t{6}});
+             for (std::size_t k = 0; k < path.size(); ++k) {
+               Eigen::Map<Legs>(out.mutable_data() + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
+             }
+             return out;
+           },
+           py::arg("path"), py::arg("tolerance") = 1e-3,
+           "(N, 6) upper bounds r_i of max over tau of |d(leg i)/d(tau)| per section (m per unit of the section "
+           "parameter), rigorous, within `tolerance` of the section's largest leg-speed demand.")
       .def("add_leg_speed_group", &Hexapod::add_leg_speed_group, py::arg("metric_set"), py::arg("group"),
            "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
       .def("__repr__", [](const Hexapod& h) {

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
+#include "dispkin/hexapod.hpp"
 #include "dispkin/overlap.hpp"
 #include "dispkin/planner.hpp"
 
@@ -146,12 +147,32 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
 
   m.def(
       "plan",
-      [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile) {
-        return plan(path, set, limits, profile_kind(profile));
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
+         const py::object& joint_metric) {
+        const ProfileKind kind = profile_kind(profile);
+        if (joint_metric.is_none()) return plan(path, set, limits, kind);
+        if (py::isinstance<Hexapod>(joint_metric)) {
+          return plan(path, set, limits, kind, joint_metric.cast<const Hexapod&>().joint_metric(path, limits));
+        }
+        if (!py::hasattr(joint_metric, "leg_section_lengths")) {
+          throw std::invalid_argument(describe("joint_metric", std::string(py::repr(joint_metric)),
+                                               "must have a method leg_section_lengths(path, system_velocity) (a Hexapod)"));
+        }
+        const py::object lengths = joint_metric.attr("leg_section_lengths")(path, limits.velocity);
+        const std::string expected = "an array of shape (" + std::to_string(path.size()) + ",)";
+        const Array a = as_array(lengths, "joint_metric.leg_section_lengths(path, velocity)", expected);
+        if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
+        PlanOptions options;
+        options.min_section_lengths.assign(a.data(), a.data() + a.size());
+        return plan(path, set, limits, kind, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",
+      py::kw_only(), py::arg("joint_metric") = py::none(),
       "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
-      "or \"trapezoid\" law. The trajectory stops at corners of the path.");
+      "or \"trapezoid\" law. The trajectory stops at corners of the path. `joint_metric` (keyword): an "
+      "object with leg_section_lengths(path, system_velocity); each section is then at least that long. For a "
+      "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
+      "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions.");
 }
 
 }  // namespace python

@@ -17,4 +17,5 @@ PYBIND11_MODULE(_core, m) {
   dispkin::python::bind_path(m);
   dispkin::python::bind_planner(m);
   dispkin::python::bind_hexapod(m);
+  dispkin::python::bind_frames(m);
 }

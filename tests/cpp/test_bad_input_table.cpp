@@ -25,6 +25,7 @@
 
 #include <dispkin/convex_hull.hpp>
 #include <dispkin/disp.hpp>
+#include <dispkin/frames.hpp>
 #include <dispkin/hexapod.hpp>
 #include <dispkin/metric_set.hpp>
 #include <dispkin/overlap.hpp>
@@ -274,6 +275,15 @@ std::vector<Row> rows() {
   row("plan", "collinear set", [] { plan(Path::lin(A, B), collinear_set(), limits(0.1, 1, 10)); }, IA, "metric_set = \"MetricSet\": is not well-formed");
   row("plan", "zero velocity", [] { plan(Path::lin(A, B), good_set(), limits(0, 1, 10)); }, IA, "velocity = 0");
   row("plan", "NaN jerk", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, nan_)); }, IA, "jerk = nan");
+  row("plan(options)", "too many min lengths", [] { PlanOptions o; o.min_section_lengths = {0.1, 0.2};
+        plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, o); }, IA,
+      "min_section_lengths size = 2: must be 0 or the path's section count 1");
+  row("plan(options)", "negative min length", [] { PlanOptions o; o.min_section_lengths = {-0.5};
+        plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, o); }, IA, "min_section_lengths[0] = -0.5");
+  row("plan(options)", "NaN min length", [] { PlanOptions o; o.min_section_lengths = {nan_};
+        plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, o); }, IA, "min_section_lengths[0] = nan");
+  row("plan(options)", "+inf min length", [] { PlanOptions o; o.min_section_lengths = {inf_};
+        plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, o); }, IA, "min_section_lengths[0] = inf");
 
   row("OverlappedTrajectory", "negative overlap", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
         OverlappedTrajectory(t, plan(Path::lin(B, C), good_set(), limits(0.1, 1, 10)), -0.5); }, IA, "overlap = -0.5");
@@ -345,6 +355,28 @@ std::vector<Row> rows() {
   row("Hexapod::check_trajectory", "+inf dt", [] { Hexapod h = hexapod(); h.check_trajectory(plan(Path::lin(h.home(), h.home() * B), good_set(), limits(0.1, 1, 10)), inf_); }, IA,
       "dt = inf");
   row("Hexapod::add_leg_speed_group", "negative group", [] { MetricSetd s = good_set(); hexapod().add_leg_speed_group(s, -1); }, IA, "group = -1");
+  row("Hexapod::leg_rate_bounds", "zero tolerance", [] { Hexapod h = hexapod(); h.leg_rate_bounds(Path::lin(h.home(), h.home() * B).sections().front(), 0.0); }, IA,
+      "tolerance = 0: must be in (0, 1]");
+  row("Hexapod::leg_rate_bounds", "NaN tolerance", [] { Hexapod h = hexapod(); h.leg_rate_bounds(Path::lin(h.home(), h.home() * B).sections().front(), nan_); }, IA,
+      "tolerance = nan");
+  row("Hexapod::leg_rate_bounds", "tolerance above 1", [] { Hexapod h = hexapod(); h.leg_rate_bounds(Path::lin(h.home(), h.home() * B).sections().front(), 1.5); }, IA,
+      "tolerance = 1.5");
+  row("Hexapod::leg_section_lengths", "zero system_velocity", [] { Hexapod h = hexapod(); h.leg_section_lengths(Path::lin(h.home(), h.home() * B), 0.0); }, IA,
+      "system_velocity = 0");
+  row("Hexapod::leg_section_lengths", "NaN system_velocity", [] { Hexapod h = hexapod(); h.leg_section_lengths(Path::lin(h.home(), h.home() * B), nan_); }, IA,
+      "system_velocity = nan");
+  row("Hexapod::leg_section_lengths", "+inf system_velocity", [] { Hexapod h = hexapod(); h.leg_section_lengths(Path::lin(h.home(), h.home() * B), inf_); }, IA,
+      "system_velocity = inf");
+  row("Hexapod::joint_metric", "negative velocity", [] { Hexapod h = hexapod(); h.joint_metric(Path::lin(h.home(), h.home() * B), limits(-1, 1, 10)); }, IA,
+      "system_velocity = -1");
+
+  // --- WorkToolFrames ---
+  row("WorkToolFrames::add_tool_envelope", "zero radius", [] { MetricSetd s; WorkToolFrames().add_tool_envelope(s, 0.0); }, IA, "radius = 0");
+  row("WorkToolFrames::add_tool_envelope", "NaN radius", [] { MetricSetd s; WorkToolFrames().add_tool_envelope(s, nan_, Envelope::sphere); }, IA, "radius = nan");
+  row("WorkToolFrames::add_tool_envelope", "negative group", [] { MetricSetd s; WorkToolFrames().add_tool_envelope(s, 0.1, Envelope::icosahedron, -2); }, IA, "group = -2");
+  row("WorkToolFrames::add_work_envelope", "negative radius", [] { MetricSetd s; WorkToolFrames().add_work_envelope(s, -0.1); }, IA, "radius = -0.1");
+  row("WorkToolFrames::add_work_envelope", "+inf radius", [] { MetricSetd s; WorkToolFrames().add_work_envelope(s, inf_, Envelope::sphere); }, IA, "radius = inf");
+  row("WorkToolFrames::platform_pose_xyzuvw", "NaN U", [] { WorkToolFrames().platform_pose_xyzuvw(v6(0, 0, 0, nan_, 0, 0)); }, IA, "xyzuvw = (0, 0, 0, nan, 0, 0)");
   return r;
 }
 

@@ -1,5 +1,7 @@
 // The planner and MATH.md §7 oracle 4, the guarantee: along any planned trajectory, sampled
 // densely by finite differences, no point or sphere of the set moves faster than its limit.
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include <dispkin/planner.hpp>
@@ -186,6 +188,53 @@ TEST(Planner, SamplesLieOnThePath) {
       ASSERT_TRUE(now.pose.is_approx(section_pose(path.sections()[j], tau), 1e-12)) << i << " " << k;
     }
   }
+}
+
+// Minimum section lengths lengthen exactly the sections they name, and only slow the plan down.
+TEST(Planner, MinimumSectionLengthsLengthenSections) {
+  MetricSetd set;
+  set.add_sphere(V::Zero(), 0.1);
+  const Posed a, b = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0)), c = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0.2, 0));
+  Path path = Path::lin(a, b);
+  path.then(Path::lin(b, c));
+  const Limits limits{0.1, 0.5, 5.0};
+  const Trajectory plain = plan(path, set, limits);
+  PlanOptions options;
+  options.min_section_lengths = {0.1, 0.5};  // shorter than section 0 (0.3), longer than section 1 (0.2)
+  const Trajectory longer = plan(path, set, limits, ProfileKind::scurve, options);
+  EXPECT_DOUBLE_EQ(longer.section_lengths()[0], plain.section_lengths()[0]);
+  EXPECT_DOUBLE_EQ(longer.section_lengths()[1], 0.5);
+  EXPECT_NEAR(longer.duration(), Profile::scurve(0.3, 0.1, 0.5, 5.0).duration() + Profile::scurve(0.5, 0.1, 0.5, 5.0).duration(), 1e-12);
+  EXPECT_GT(longer.duration(), plain.duration());
+  // Still on the path, and the sphere is slower than the system velocity on the long section.
+  for (int k = 0; k <= 200; ++k) {
+    const double t = longer.duration() * k / 200.0, h = 1e-6;
+    const Twistd xi = (longer.sample(t).pose.inverse() * longer.sample(t + h).pose).log() * (1.0 / h);
+    ASSERT_LE(sphere_speed(xi, V::Zero(), 0.1), limits.velocity * (1 + 1e-5));
+  }
+  options.min_section_lengths.clear();
+  EXPECT_EQ(plan(path, set, limits, ProfileKind::scurve, options).duration(), plain.duration());
+}
+
+TEST(PlannerBadInput, MinimumSectionLengths) {
+  MetricSetd set;
+  set.add_sphere(V::Zero(), 0.1);
+  const Path path = Path::lin(Posed(), Posed(Eigen::Quaterniond::Identity(), V(0.1, 0, 0)));
+  const Limits limits{0.1, 1.0, 1.0};
+  PlanOptions options;
+  options.min_section_lengths = {0.1, 0.2};
+  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); })
+                .find("min_section_lengths size = 2: must be 0 or the path's section count 1"),
+            std::string::npos);
+  options.min_section_lengths = {-0.1};
+  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = -0.1"),
+            std::string::npos);
+  options.min_section_lengths = {std::nan("")};
+  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = nan"),
+            std::string::npos);
+  options.min_section_lengths = {std::numeric_limits<double>::infinity()};
+  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = inf"),
+            std::string::npos);
 }
 
 TEST(PlannerBadInput, Limits) {

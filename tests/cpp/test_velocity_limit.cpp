@@ -73,11 +73,15 @@ TEST(VelocityLimit, LawsKeepEveryLimitAndJoin) {
         const ProfileState st = p.state_at(p.duration() * m / 100.0);
         ASSERT_LE(st.v, segments[k].limit * (1 + 1e-12));
         ASSERT_LE(std::abs(st.a), a * (1 + 1e-12));
-        if (j) ASSERT_LE(std::abs(st.j), *j * (1 + 1e-12));
+        if (j) {
+          ASSERT_LE(std::abs(st.j), *j * (1 + 1e-12));
+        }
       }
       const ProfileState end = p.state_at(p.duration());
       ASSERT_NEAR(end.s, segments[k].length, 1e-9);
-      if (j) ASSERT_NEAR(end.a, 0.0, 1e-9);
+      if (j) {
+        ASSERT_NEAR(end.a, 0.0, 1e-9);
+      }
       v_before = end.v;
     }
     ASSERT_NEAR(v_before, 0.0, 1e-9);

@@ -320,6 +320,44 @@ row("Hexapod.check_trajectory", "negative dt", lambda: HJ.check_trajectory(traje
 row("Hexapod.check_trajectory", "NaN dt", lambda: HJ.check_trajectory(trajectory(), NAN), V, "dt = nan")
 row("Hexapod.check_trajectory", "+inf dt", lambda: HJ.check_trajectory(trajectory(), INF), V, "dt = inf")
 row("Hexapod.add_leg_speed_group", "negative group", lambda: HJ.add_leg_speed_group(good_set(), -1), V, "group = -1")
+HEX_LINE = dispkin.Path.lin(HJ.home, HJ.home * B)
+
+
+class _LegLengths:
+    # A stand-in joint metric returning whatever it is given.
+    def __init__(self, value):
+        self.value = value
+
+    def leg_section_lengths(self, path, system_velocity):
+        return self.value
+
+
+row("Hexapod.leg_section_lengths", "zero system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, 0.0), V, "system_velocity = 0")
+row("Hexapod.leg_section_lengths", "NaN system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, NAN), V, "system_velocity = nan")
+row("Hexapod.leg_section_lengths", "+inf system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, INF), V, "system_velocity = inf")
+row("Hexapod.leg_section_lengths", "zero tolerance", lambda: HJ.leg_section_lengths(HEX_LINE, 0.1, tolerance=0.0), V, "tolerance = 0: must be in (0, 1]")
+row("Hexapod.leg_rate_bounds", "NaN tolerance", lambda: HJ.leg_rate_bounds(HEX_LINE, NAN), V, "tolerance = nan")
+row("Hexapod.leg_rate_bounds", "tolerance above 1", lambda: HJ.leg_rate_bounds(HEX_LINE, 2.0), V, "tolerance = 2")
+row("plan", "joint_metric without the method", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=42), V, "joint_metric = \"42\": must have a method leg_section_lengths")
+row("plan", "joint_metric wrong count", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([0.1, 0.2])), V, "min_section_lengths size = 2: must be 0 or the path's section count 1")
+row("plan", "joint_metric negative length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([-0.5])), V, "min_section_lengths[0] = -0.5")
+row("plan", "joint_metric NaN length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([NAN])), V, "min_section_lengths[0] = nan")
+row("plan", "joint_metric wrong shape (1, 1)", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([[0.1]])), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,), got shape (1, 1)")
+row("plan", "joint_metric not numbers", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths("long")), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,)")
+
+# --- WorkToolFrames -----------------------------------------------------------------------
+FRAMES = dispkin.WorkToolFrames()
+row("WorkToolFrames(...)", "NaN work matrix", lambda: dispkin.WorkToolFrames(work=np.full((4, 4), NAN)), V, "matrix = (nan")
+row("WorkToolFrames(...)", "wrong shape tool (3, 3)", lambda: dispkin.WorkToolFrames(tool=np.eye(3)), V, "tool: expected an array of shape (4, 4), got shape (3, 3)")
+row("WorkToolFrames.platform_pose", "NaN matrix", lambda: FRAMES.platform_pose(np.full((4, 4), NAN)), V, "matrix = (nan")
+row("WorkToolFrames.tool_in_work", "wrong shape (6,)", lambda: FRAMES.tool_in_work([0, 0, 0.2, 0, 0, 0]), V, "platform: expected an array of shape (4, 4), got shape (6,)")
+row("WorkToolFrames.platform_pose_xyzuvw", "NaN U", lambda: FRAMES.platform_pose_xyzuvw([0, 0, 0, NAN, 0, 0]), V, "xyzuvw = (0, 0, 0, nan, 0, 0)")
+row("WorkToolFrames.platform_pose_xyzuvw", "wrong size (5)", lambda: FRAMES.platform_pose_xyzuvw([0] * 5), V, "xyzuvw: expected an array of shape (6,), got shape (5,)")
+row("WorkToolFrames.add_tool_envelope", "zero radius", lambda: FRAMES.add_tool_envelope(good_set(), 0.0), V, "radius = 0")
+row("WorkToolFrames.add_tool_envelope", "NaN radius", lambda: FRAMES.add_tool_envelope(good_set(), NAN, "sphere"), V, "radius = nan")
+row("WorkToolFrames.add_tool_envelope", "unknown envelope", lambda: FRAMES.add_tool_envelope(good_set(), 0.1, "cube"), V, "envelope = \"cube\": must be \"icosahedron\" or \"sphere\"")
+row("WorkToolFrames.add_work_envelope", "negative radius", lambda: FRAMES.add_work_envelope(good_set(), -0.1), V, "radius = -0.1")
+row("WorkToolFrames.add_work_envelope", "negative group", lambda: FRAMES.add_work_envelope(good_set(), 0.1, group=-1), V, "group = -1")
 
 ROWS = R
 
