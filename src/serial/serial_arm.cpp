@@ -1,0 +1,1 @@
+// The serial-arm plugin: URDF via urdfdom into Orocos KDL.

@@ -1,0 +1,2 @@
+// Analytic IK tests.
+#include <gtest/gtest.h>

@@ -1,0 +1,2 @@
+// Serial-arm plugin tests.
+#include <gtest/gtest.h>
