@@ -144,11 +144,14 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     // e₂e₃ keeps the component along ω₂: ω₂ · e₁⁻¹ y = ω₂ · x (subproblem 4 in −q₁); then the
     // distance to axis 2 fixes q₃ (subproblem 3) and q₂ turns it into place (subproblem 1).
     const Angles q1 = subproblem4(w2, w1, y - p1, w2.dot(x - p1));
+    out.margin.fill(q1.margin);
     if (!q1.exists) return out;
     for (int l1 = 0; l1 < 2; ++l1) {
       const double t1 = -(l1 == 0 ? q1.plus : q1.minus);
       const Eigen::Vector3d y1 = rotate(w1, -t1, y - p1) + p1;  // e₁⁻¹ y
       const Angles q3 = subproblem3(w3, x - p3, p2 - p3, (y1 - p2).norm());
+      out.margin[static_cast<std::size_t>(2 * l1)] = out.margin[static_cast<std::size_t>(2 * l1 + 1)] =
+          std::min(q1.margin, q3.margin);
       if (!q3.exists) continue;
       for (int l3 = 0; l3 < 2; ++l3) {
         const double t3 = l3 == 0 ? q3.plus : q3.minus;
@@ -163,11 +166,14 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     // e₁e₂ fix the shoulder o: ‖e₃ x − o‖ = ‖y − o‖ (subproblem 3), then subproblem 2.
     const Eigen::Vector3d& o = geometry.shoulder;
     const Angles q3 = subproblem3(w3, x - p3, o - p3, (y - o).norm());
+    out.margin.fill(q3.margin);
     if (!q3.exists) return out;
     for (int l3 = 0; l3 < 2; ++l3) {
       const double t3 = l3 == 0 ? q3.plus : q3.minus;
       const Eigen::Vector3d x3 = rotate(w3, t3, x - p3) + p3;
       const AnglePairs q12 = subproblem2(w1, w2, x3 - o, y - o);
+      out.margin[static_cast<std::size_t>(2 * l3)] = out.margin[static_cast<std::size_t>(2 * l3 + 1)] =
+          std::min(q3.margin, q12.margin);
       if (!q12.exists) continue;
       for (int l = 0; l < 2; ++l) {
         const int b = 2 * l3 + l;

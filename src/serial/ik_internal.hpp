@@ -51,6 +51,9 @@ void validate_chain(const RevoluteChain& chain);
 struct PositionSolutions {
   std::array<Eigen::Vector3d, 4> q;
   std::array<bool, 4> exists{};
+  //! How far each branch is from its end: ≥ 0 where it exists; where it does not, the most
+  //! negative tangency margin of its subproblems (the search looks for islands with it).
+  std::array<double, 4> margin{{-1.0, -1.0, -1.0, -1.0}};
 };
 PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
                                  const Eigen::Vector3d& y) noexcept;

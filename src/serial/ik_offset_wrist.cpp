@@ -37,6 +37,7 @@ struct SolutionList {
 struct Sample {
   std::array<bool, 4> exists{};
   std::array<double, 4> value{};
+  std::array<double, 4> margin{};  // of the positioning stage (PositionSolutions::margin)
 };
 
 class OffsetWristSearch {
@@ -48,6 +49,7 @@ class OffsetWristSearch {
   Sample evaluate(double theta) const {
     Sample s;
     const PositionSolutions arm = position(theta);
+    s.margin = arm.margin;
     const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], -theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
     for (std::size_t b = 0; b < 4; ++b) {
       if (!arm.exists[b]) continue;
@@ -65,6 +67,9 @@ class OffsetWristSearch {
     value = chain_.axes[3].dot(back_through_arm(arm.q[branch], v)) - cos_45_;
     return true;
   }
+
+  // The positioning margin of branch b (≥ 0 where it exists).
+  double margin(double theta, std::size_t branch) const { return position(theta).margin[branch]; }
 
   // The full q at a root θ of branch b, offered to the solution list (polish, check, dedupe).
   void offer_root(double theta, std::size_t branch, SolutionList& out) const {
@@ -132,6 +137,140 @@ double refine_root(const OffsetWristSearch& search, std::size_t branch, double a
 // The value of a near-touching candidate below which Newton on the full pose decides.
 constexpr double touch_tolerance = 1e-5;
 
+// Sub-samples between a branch's end and its first regular sample: near its end a branch
+// behaves like a square root, so roots and extrema crowd there; the spacing is graded
+// (quadratic in the index) to follow that.
+constexpr int end_samples = 12;
+
+struct Point {
+  double theta;
+  double value;
+};
+
+// Golden-section minimum of sign · f_b on [lo, hi]; false if the branch was left.
+bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double f1 = 0.0, f2 = 0.0;
+  if (!search.evaluate(x1, branch, f1) || !search.evaluate(x2, branch, f2)) return false;
+  for (int k = 0; k < 60 && hi - lo > 1e-10; ++k) {
+    if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;  // crossed zero: two roots
+    if (sign * f1 < sign * f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      if (!search.evaluate(x1, branch, f1)) return false;
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      if (!search.evaluate(x2, branch, f2)) return false;
+    }
+  }
+  best = sign * f1 < sign * f2 ? Point{x1, f1} : Point{x2, f2};
+  return true;
+}
+
+// Roots of branch b along a run of points where it exists (θ increasing, the branch defined
+// between consecutive points): sign changes, exact zeros, and sampled extrema of |f| that may
+// touch or cross zero. `ends`: the first / last point is where the branch ends.
+void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Point>& run, bool first_is_end,
+          bool last_is_end, SolutionList& out) {
+  const std::size_t n = run.size();
+  if (first_is_end && std::abs(run.front().value) <= touch_tolerance) search.offer_root(run.front().theta, b, out);
+  if (last_is_end && std::abs(run.back().value) <= touch_tolerance) search.offer_root(run.back().theta, b, out);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const Point& p0 = run[i];
+    const Point& p1 = run[i + 1];
+    if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
+    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0)
+      search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
+    if (i == 0) continue;
+    // A sampled extremum of |f| at p0 that a parabola through its neighbours brings near zero.
+    const Point& pm = run[i - 1];
+    const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+    const double fm = sign * pm.value, fc = sign * p0.value, fp = sign * p1.value;
+    if (!(fm > 0.0 && fp > 0.0 && fc <= fm && fc <= fp && fc < 4.0 * ((fm - fc) + (fp - fc)))) continue;
+    Point low;
+    if (!minimise(search, b, sign, pm.theta, p1.theta, low)) continue;
+    if (sign * low.value < 0.0) {
+      search.offer_root(refine_root(search, b, pm.theta, pm.value, low.theta, low.value), b, out);
+      search.offer_root(refine_root(search, b, low.theta, low.value, p1.theta, p1.value), b, out);
+    } else if (sign * low.value <= touch_tolerance) {
+      search.offer_root(low.theta, b, out);
+    }
+  }
+}
+
+// The end of branch b between `in` (where it exists, value f_in) and `outside`, by bisection;
+// returns the graded sub-samples from the end towards `in` (excluding `in`), end first.
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
+  double f_in = 0.0;
+  const double start = in;
+  while (std::abs(outside - in) > 1e-14) {
+    const double mid = 0.5 * (in + outside);
+    double f;
+    if (search.evaluate(mid, b, f)) {
+      in = mid;
+      f_in = f;
+    } else {
+      outside = mid;
+    }
+  }
+  std::vector<Point> points;
+  if (in == start) return points;  // the sample itself is the end (to rounding)
+  points.push_back({in, f_in});
+  for (int k = 1; k < end_samples; ++k) {
+    const double s = static_cast<double>(k) / end_samples;
+    const double theta = in + (start - in) * s * s;
+    double f;
+    if (search.evaluate(theta, b, f)) points.push_back({theta, f});
+  }
+  return points;
+}
+
+// An island: branch b absent at the samples t₋₁, t₀, t₁ but with a sampled maximum of its
+// margin at t₀ that a parabola brings near zero. Golden-section maximisation of the margin
+// finds a point of the island if there is one; the island is then sampled from both its ends.
+void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi, SolutionList& out) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double m1 = search.margin(x1, b), m2 = search.margin(x2, b);
+  const double left = lo, right = hi;
+  double inside = 0.0;
+  bool found = false;
+  for (int k = 0; k < 80 && hi - lo > 1e-13; ++k) {
+    double f;
+    if (m1 >= 0.0 && search.evaluate(x1, b, f)) { inside = x1; found = true; break; }
+    if (m2 >= 0.0 && search.evaluate(x2, b, f)) { inside = x2; found = true; break; }
+    if (m1 > m2) {
+      hi = x2;
+      x2 = x1;
+      m2 = m1;
+      x1 = hi - ratio * (hi - lo);
+      m1 = search.margin(x1, b);
+    } else {
+      lo = x1;
+      x1 = x2;
+      m1 = m2;
+      x2 = lo + ratio * (hi - lo);
+      m2 = search.margin(x2, b);
+    }
+  }
+  if (!found) return;
+  double f_inside = 0.0;
+  search.evaluate(inside, b, f_inside);
+  std::vector<Point> run = branch_end(search, b, inside, left);
+  run.push_back({inside, f_inside});
+  const std::vector<Point> back = branch_end(search, b, inside, right);
+  run.insert(run.end(), back.rbegin(), back.rend());
+  scan(search, b, run, true, true, out);
+}
+
 }  // namespace
 
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
@@ -141,91 +280,45 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
   const double step = 2.0 * pi / n;
   std::vector<Sample> table(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(-pi + j * step);
-  auto theta_of = [&](int j) { return -pi + j * step; };  // j may reach n: one turn later
+  auto at = [&](int j) -> const Sample& { return table[static_cast<std::size_t>(((j % n) + n) % n)]; };
+  auto theta_of = [&](int j) { return -pi + j * step; };  // j beyond [0, n): the next / previous turn
 
   SolutionList out;
+  std::vector<Point> run;
   for (std::size_t b = 0; b < 4; ++b) {
-    for (int j = 0; j < n; ++j) {
-      const Sample& s0 = table[static_cast<std::size_t>(j)];
-      const Sample& s1 = table[static_cast<std::size_t>((j + 1) % n)];
-      const double t0 = theta_of(j);
-      const double t1 = theta_of(j + 1);
-      if (s0.exists[b] && s0.value[b] == 0.0) search.offer_root(t0, b, out);
-      if (s0.exists[b] && s1.exists[b]) {
-        if ((s0.value[b] < 0.0) != (s1.value[b] < 0.0) && s1.value[b] != 0.0)
-          search.offer_root(refine_root(search, b, t0, s0.value[b], t1, s1.value[b]), b, out);
-      } else if (s0.exists[b] != s1.exists[b]) {
-        // The branch ends inside (t0, t1): bisect to its end, keeping the existing side.
-        double in = s0.exists[b] ? t0 : t1;
-        double outside = s0.exists[b] ? t1 : t0;
-        double f_in = s0.exists[b] ? s0.value[b] : s1.value[b];
-        const double f_start = f_in;
-        const double start = in;
-        while (std::abs(outside - in) > 1e-14) {
-          const double mid = 0.5 * (in + outside);
-          double f;
-          if (search.evaluate(mid, b, f)) {
-            in = mid;
-            f_in = f;
-          } else {
-            outside = mid;
-          }
-        }
-        if ((f_start < 0.0) != (f_in < 0.0)) {
-          search.offer_root(refine_root(search, b, start, f_start, in, f_in), b, out);
-        }
-        if (std::abs(f_in) <= touch_tolerance) search.offer_root(in, b, out);
+    int gap = -1;  // a sample where the branch does not exist
+    for (int j = 0; j < n && gap < 0; ++j)
+      if (!at(j).exists[b]) gap = j;
+    if (gap < 0) {
+      // The branch exists all the way round: one periodic run (two samples repeated past the
+      // turn so that the wrap-around interval and extremum are scanned too).
+      run.clear();
+      for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
+      scan(search, b, run, false, false, out);
+      continue;
+    }
+    // Runs of consecutive existing samples, starting after the gap, once round; islands
+    // between absent samples.
+    for (int j = gap + 1; j <= gap + n;) {
+      if (!at(j).exists[b]) {
+        const Sample& sm = at(j - 1);
+        const Sample& sp = at(j + 1);
+        const double mm = sm.margin[b], m0 = at(j).margin[b], mp = sp.margin[b];
+        if (!sm.exists[b] && !sp.exists[b] && m0 >= mm && m0 >= mp && -m0 < 4.0 * ((m0 - mm) + (m0 - mp)))
+          island(search, b, theta_of(j - 1), theta_of(j + 1), out);
+        ++j;
+        continue;
       }
-      // A sampled extremum of |f| that may touch or cross zero between t₋₁ and t₁.
-      const Sample& sm = table[static_cast<std::size_t>((j + n - 1) % n)];
-      if (sm.exists[b] && s0.exists[b] && s1.exists[b]) {
-        const double f0 = s0.value[b];
-        const double sign = f0 < 0.0 ? -1.0 : 1.0;
-        const double fm = sign * sm.value[b];
-        const double fp = sign * s1.value[b];
-        const double fc = sign * f0;
-        if (fm > 0.0 && fp > 0.0 && fc <= fm && fc <= fp && fc < 4.0 * ((fm - fc) + (fp - fc))) {
-          // Golden-section minimum of sign · f on [t₋₁, t₁].
-          double lo = t0 - step;
-          double hi = t1;
-          const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-          double x1 = hi - ratio * (hi - lo);
-          double x2 = lo + ratio * (hi - lo);
-          double f1 = 0.0, f2 = 0.0;
-          bool ok = search.evaluate(x1, b, f1) && search.evaluate(x2, b, f2);
-          for (int k = 0; ok && k < 60 && hi - lo > 1e-12; ++k) {
-            if (sign * f1 < sign * f2) {
-              hi = x2;
-              x2 = x1;
-              f2 = f1;
-              x1 = hi - ratio * (hi - lo);
-              ok = search.evaluate(x1, b, f1);
-            } else {
-              lo = x1;
-              x1 = x2;
-              f1 = f2;
-              x2 = lo + ratio * (hi - lo);
-              ok = search.evaluate(x2, b, f2);
-            }
-            if (ok && (sign * f1 <= 0.0 || sign * f2 <= 0.0)) break;  // crossed: two roots
-          }
-          if (ok) {
-            const double xm = sign * f1 < sign * f2 ? x1 : x2;
-            const double fmin = std::min(sign * f1, sign * f2);
-            if (fmin <= 0.0) {
-              const double f_xm = sign * fmin;
-              if (fmin == 0.0) {
-                search.offer_root(xm, b, out);
-              } else {
-                search.offer_root(refine_root(search, b, t0 - step, sm.value[b], xm, f_xm), b, out);
-                search.offer_root(refine_root(search, b, xm, f_xm, t1, s1.value[b]), b, out);
-              }
-            } else if (fmin <= touch_tolerance) {
-              search.offer_root(xm, b, out);
-            }
-          }
-        }
-      }
+      int last = j;
+      while (last + 1 <= gap + n && at(last + 1).exists[b]) ++last;
+      run.clear();
+      const std::vector<Point> front = branch_end(search, b, theta_of(j), theta_of(j - 1));
+      run.insert(run.end(), front.begin(), front.end());
+      for (int k = j; k <= last; ++k) run.push_back({theta_of(k), at(k).value[b]});
+      std::vector<Point> back = branch_end(search, b, theta_of(last), theta_of(last + 1));
+      run.insert(run.end(), back.rbegin(), back.rend());
+      scan(search, b, run, !front.empty(), !back.empty(), out);
+      j = last + 1;
     }
   }
   std::vector<Eigen::VectorXd> result;

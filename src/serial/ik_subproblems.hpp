@@ -47,6 +47,7 @@ struct Angles {
   double minus = 0.0;
   bool exists = false;
   bool free = false;
+  double margin = -1.0;  //!< 1 − |C|/r: ≥ 0 where solvable, its distance from the tangency
   bool single() const noexcept { return free || plus == minus; }
 };
 
@@ -64,9 +65,11 @@ inline Angles solve_harmonic(double a, double b, double c, double scale) noexcep
     // Degenerate: θ does not enter; solvable (by every θ) iff C vanishes too.
     out.exists = std::abs(c) <= 1e-10 * scale;
     out.free = out.exists;
+    out.margin = out.exists ? 0.0 : -1.0;
     return out;
   }
   double x = c / r;
+  out.margin = 1.0 - std::abs(x);
   if (std::abs(x) > 1.0 + tangency_slack) return out;
   x = std::max(-1.0, std::min(1.0, x));
   const double phi = std::atan2(b, a);
@@ -113,6 +116,7 @@ struct AnglePairs {
   std::array<double, 2> second{};  //!< θ₂ for the labels + and −
   bool exists = false;
   bool single = false;  //!< tangency: both labels hold the same pair
+  double margin = -1.0; //!< γ² (1 − (k₁·k₂)²) / ‖p‖²: ≥ 0 where solvable
 };
 
 //! Subproblem 2: (θ₁, θ₂) with R(k₁, θ₁) R(k₂, θ₂) p = q for non-parallel unit axes through a
@@ -132,6 +136,7 @@ inline AnglePairs subproblem2(const Eigen::Vector3d& k1, const Eigen::Vector3d& 
   const double length2 = 0.5 * (p.squaredNorm() + q.squaredNorm());
   const Eigen::Vector3d in_plane = alpha * k1 + beta * k2;
   double gamma2 = (length2 - in_plane.squaredNorm()) / den;
+  out.margin = gamma2 * den / (length2 + 1e-300);
   if (gamma2 < -tangency_slack * (length2 + 1e-300) / den) return out;
   out.exists = true;
   out.single = gamma2 <= 0.0;
