@@ -26,17 +26,19 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
   const PositionSolutions arm = solve_position(chain, geometry, c, g * c);
   for (std::size_t b = 0; b < 4; ++b) {
     if (!arm.exists[b]) continue;
-    const Eigen::Vector3d& t = arm.q[b];
+    const Eigen::Vector3d t = arm.angles(b);
     // R₄R₅R₆ = (R₁R₂R₃)ᵀ R_G: R₄R₅ ω₆ = R_w ω₆ (subproblem 2), then q₆ (subproblem 1).
     const Eigen::Matrix3d r123 = rotation(chain.axes[0], t(0)) * rotation(chain.axes[1], t(1)) * rotation(chain.axes[2], t(2));
     const Eigen::Matrix3d r_wrist = r123.transpose() * g_rotation;
     const AnglePairs q45 = subproblem2(w4, w5, w6, r_wrist * w6);
     if (!q45.exists) continue;
     for (std::size_t l = 0; l < (q45.single ? 1u : 2u); ++l) {
-      const Eigen::Matrix3d r45 = rotation(w4, q45.first[l]) * rotation(w5, q45.second[l]);
+      const double q4 = q45.first[l].angle();
+      const double q5 = q45.second[l].angle();
+      const Eigen::Matrix3d r45 = rotation(w4, q4) * rotation(w5, q5);
       const double q6 = subproblem1(w6, x6, r45.transpose() * r_wrist * x6);
       Vector6d q;
-      q << t, q45.first[l], q45.second[l], q6;
+      q << t, q4, q5, q6;
       offer(chain, pose, q, out);
     }
   }
@@ -62,13 +64,13 @@ void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   const Angles q1s = subproblem4(w2, w1, g * c - p1, w2.dot(c - p1));
   if (!q1s.exists) return;
   for (int l1 = 0; l1 < (q1s.single() ? 1 : 2); ++l1) {
-    const double q1 = -(l1 == 0 ? q1s.plus : q1s.minus);
+    const double q1 = -(l1 == 0 ? q1s.plus : q1s.minus).angle();
     const Eigen::Matrix3d r1 = rotation(w1, q1);
     // Orientation along ω₂: ω₂ᵀ R₅ ω₆ = (R₁ ω₂)ᵀ R_G ω₆ (subproblem 4 in q₅).
     const Angles q5s = subproblem4(w2, w5, w6, (r1 * w2).dot(g_rotation * w6));
     if (!q5s.exists) continue;
     for (int l5 = 0; l5 < (q5s.single() ? 1 : 2); ++l5) {
-      const double q5 = l5 == 0 ? q5s.plus : q5s.minus;
+      const double q5 = (l5 == 0 ? q5s.plus : q5s.minus).angle();
       // R₆ᵀ R₅ᵀ ω₂ = R_Gᵀ R₁ ω₂ (subproblem 1 in −q₆; free when R₅ᵀω₂ ∥ ω₆, then q₆ = 0).
       const double q6 = -subproblem1(w6, rotate(w5, -q5, w2), g_rotation.transpose() * (r1 * w2));
       // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄; e₄ fixes p₄, so e₂e₃ p₄ = H p₄: subproblems 3 and 1.
@@ -79,7 +81,7 @@ void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
       if (!q3s.exists) continue;
       const Eigen::Matrix3d h_rotation = h.rotation();
       for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
-        const double q3 = l3 == 0 ? q3s.plus : q3s.minus;
+        const double q3 = (l3 == 0 ? q3s.plus : q3s.minus).angle();
         const Eigen::Vector3d y3 = rotate(w3, q3, p4 - p3) + p3;
         const double q2 = subproblem1(w2, y3 - p2, y - p2);
         // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.

@@ -147,19 +147,18 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     out.margin.fill(q1.margin);
     if (!q1.exists) return out;
     for (int l1 = 0; l1 < 2; ++l1) {
-      const double t1 = -(l1 == 0 ? q1.plus : q1.minus);
-      const Eigen::Vector3d y1 = rotate(w1, -t1, y - p1) + p1;  // e₁⁻¹ y
+      const CosSin minus_q1 = l1 == 0 ? q1.plus : q1.minus;  // the subproblem's angle is −q₁
+      const Eigen::Vector3d y1 = rotate(w1, minus_q1, y - p1) + p1;  // e₁⁻¹ y
       const Angles q3 = subproblem3(w3, x - p3, p2 - p3, (y1 - p2).norm());
       out.margin[static_cast<std::size_t>(2 * l1)] = out.margin[static_cast<std::size_t>(2 * l1 + 1)] =
           std::min(q1.margin, q3.margin);
       if (!q3.exists) continue;
       for (int l3 = 0; l3 < 2; ++l3) {
-        const double t3 = l3 == 0 ? q3.plus : q3.minus;
+        const CosSin t3 = l3 == 0 ? q3.plus : q3.minus;
         const Eigen::Vector3d x3 = rotate(w3, t3, x - p3) + p3;  // e₃ x
-        const double t2 = subproblem1(w2, x3 - p2, y1 - p2);
-        const int b = 2 * l1 + l3;
-        out.q[static_cast<std::size_t>(b)] = Eigen::Vector3d(t1, t2, t3);
-        out.exists[static_cast<std::size_t>(b)] = true;
+        const auto b = static_cast<std::size_t>(2 * l1 + l3);
+        out.q[b] = {minus_q1.inverse(), subproblem1_cs(w2, x3 - p2, y1 - p2), t3};
+        out.exists[b] = true;
       }
     }
   } else if (geometry.layout == PositionLayout::intersecting_12) {
@@ -169,17 +168,16 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     out.margin.fill(q3.margin);
     if (!q3.exists) return out;
     for (int l3 = 0; l3 < 2; ++l3) {
-      const double t3 = l3 == 0 ? q3.plus : q3.minus;
+      const CosSin t3 = l3 == 0 ? q3.plus : q3.minus;
       const Eigen::Vector3d x3 = rotate(w3, t3, x - p3) + p3;
       const AnglePairs q12 = subproblem2(w1, w2, x3 - o, y - o);
       out.margin[static_cast<std::size_t>(2 * l3)] = out.margin[static_cast<std::size_t>(2 * l3 + 1)] =
           std::min(q3.margin, q12.margin);
       if (!q12.exists) continue;
       for (int l = 0; l < 2; ++l) {
-        const int b = 2 * l3 + l;
-        out.q[static_cast<std::size_t>(b)] = Eigen::Vector3d(q12.first[static_cast<std::size_t>(l)],
-                                                             q12.second[static_cast<std::size_t>(l)], t3);
-        out.exists[static_cast<std::size_t>(b)] = true;
+        const auto b = static_cast<std::size_t>(2 * l3 + l);
+        out.q[b] = {q12.first[static_cast<std::size_t>(l)], q12.second[static_cast<std::size_t>(l)], t3};
+        out.exists[b] = true;
       }
     }
   }

@@ -49,7 +49,10 @@ void validate_chain(const RevoluteChain& chain);
 //! The positioning stage: (q₁, q₂, q₃) with e₁e₂e₃ x = y, up to four, labelled by
 //! branch = 2 · (first label) + (second label); `exists[branch]` says which are defined.
 struct PositionSolutions {
-  std::array<Eigen::Vector3d, 4> q;
+  std::array<std::array<CosSin, 3>, 4> q;  //!< (q₁, q₂, q₃) of each branch
+  Eigen::Vector3d angles(std::size_t branch) const {
+    return {q[branch][0].angle(), q[branch][1].angle(), q[branch][2].angle()};
+  }
   std::array<bool, 4> exists{};
   //! How far each branch is from its end: ≥ 0 where it exists; where it does not, the most
   //! negative tangency margin of its subproblems (the search looks for islands with it).

@@ -48,9 +48,10 @@ class OffsetWristSearch {
 
   Sample evaluate(double theta) const {
     Sample s;
-    const PositionSolutions arm = position(theta);
+    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
+    const PositionSolutions arm = position(minus_theta);
     s.margin = arm.margin;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], -theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
+    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
     for (std::size_t b = 0; b < 4; ++b) {
       if (!arm.exists[b]) continue;
       s.exists[b] = true;
@@ -61,21 +62,24 @@ class OffsetWristSearch {
 
   // One branch only (refinement).
   bool evaluate(double theta, std::size_t branch, double& value) const {
-    const PositionSolutions arm = position(theta);
+    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
+    const PositionSolutions arm = position(minus_theta);
     if (!arm.exists[branch]) return false;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], -theta, chain_.axes[4]);
+    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);
     value = chain_.axes[3].dot(back_through_arm(arm.q[branch], v)) - cos_45_;
     return true;
   }
 
   // The positioning margin of branch b (≥ 0 where it exists).
-  double margin(double theta, std::size_t branch) const { return position(theta).margin[branch]; }
+  double margin(double theta, std::size_t branch) const {
+    return position({std::cos(theta), -std::sin(theta)}).margin[branch];
+  }
 
   // The full q at a root θ of branch b, offered to the solution list (polish, check, dedupe).
   void offer_root(double theta, std::size_t branch, SolutionList& out) const {
-    const PositionSolutions arm = position(theta);
+    const PositionSolutions arm = position({std::cos(theta), -std::sin(theta)});
     if (!arm.exists[branch]) return;
-    const Eigen::Vector3d& t = arm.q[branch];
+    const Eigen::Vector3d t = arm.angles(branch);
     const Eigen::Matrix3d r_rem = (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) *
                                    rotation(chain_.axes[2], t(2)))
                                       .transpose() *
@@ -91,15 +95,17 @@ class OffsetWristSearch {
   }
 
  private:
-  PositionSolutions position(double theta) const {
+  // The positioning stage for q₆ = θ, given cos θ and −sin θ.
+  PositionSolutions position(const CosSin& minus_theta) const {
     const Eigen::Vector3d& p6 = chain_.points[5];
-    const Eigen::Vector3d w_target = g_ * (rotate(chain_.axes[5], -theta, geometry_.point_45 - p6) + p6);
+    const Eigen::Vector3d w_target = g_ * (rotate(chain_.axes[5], minus_theta, geometry_.point_45 - p6) + p6);
     return solve_position(chain_, geometry_, geometry_.point_45, w_target);
   }
 
   // (R₁R₂R₃)ᵀ v.
-  Eigen::Vector3d back_through_arm(const Eigen::Vector3d& t, const Eigen::Vector3d& v) const {
-    return rotate(chain_.axes[2], -t(2), rotate(chain_.axes[1], -t(1), rotate(chain_.axes[0], -t(0), v)));
+  Eigen::Vector3d back_through_arm(const std::array<CosSin, 3>& t, const Eigen::Vector3d& v) const {
+    return rotate(chain_.axes[2], t[2].inverse(),
+                  rotate(chain_.axes[1], t[1].inverse(), rotate(chain_.axes[0], t[0].inverse(), v)));
   }
 
   const RevoluteChain& chain_;

@@ -24,6 +24,22 @@ inline double wrap_angle(double a) noexcept {
   return a;
 }
 
+//! An angle as its cosine and sine: the search evaluates thousands of subproblem chains, and
+//! composing these needs no trigonometric function (only the final joint values do).
+struct CosSin {
+  double c = 1.0;
+  double s = 0.0;
+  double angle() const noexcept { return std::atan2(s, c); }
+  CosSin inverse() const noexcept { return {c, -s}; }
+  bool operator==(const CosSin& o) const noexcept { return c == o.c && s == o.s; }
+};
+
+//! R(k, θ) p for a unit axis k, θ given by its cosine and sine.
+inline Eigen::Vector3d rotate(const Eigen::Vector3d& k, const CosSin& r, const Eigen::Vector3d& p) noexcept {
+  const double kp = k.dot(p);
+  return kp * k + r.c * (p - kp * k) + r.s * k.cross(p);
+}
+
 //! R(k, θ) p for a unit axis k.
 inline Eigen::Vector3d rotate(const Eigen::Vector3d& k, double angle, const Eigen::Vector3d& p) noexcept {
   const double kp = k.dot(p);
@@ -40,11 +56,11 @@ inline Eigen::Matrix3d rotation(const Eigen::Vector3d& k, double angle) noexcept
 }
 
 //! The (at most two) angles of a scalar subproblem, labelled: `plus` = φ + acos, `minus` =
-//! φ − acos. At a tangency both labels hold the same angle (one solution). `free`: every
+//! φ − acos (as cosine and sine; .angle() gives the value). At a tangency both labels hold the same angle (one solution). `free`: every
 //! angle solves it (the geometry is degenerate there); `plus` = `minus` = 0 represents them.
 struct Angles {
-  double plus = 0.0;
-  double minus = 0.0;
+  CosSin plus;
+  CosSin minus;
   bool exists = false;
   bool free = false;
   double margin = -1.0;  //!< 1 − |C|/r: ≥ 0 where solvable, its distance from the tangency
@@ -72,23 +88,30 @@ inline Angles solve_harmonic(double a, double b, double c, double scale) noexcep
   out.margin = 1.0 - std::abs(x);
   if (std::abs(x) > 1.0 + tangency_slack) return out;
   x = std::max(-1.0, std::min(1.0, x));
-  const double phi = std::atan2(b, a);
-  const double d = std::acos(x);
+  // φ = atan2(B, A), d = acos(x): cos(φ ± d) and sin(φ ± d) by the addition formulas.
+  const double cp = a / r, sp = b / r;
+  const double sd = std::sqrt(std::max(0.0, 1.0 - x * x));
   out.exists = true;
-  out.plus = phi + d;
-  out.minus = phi - d;
+  out.plus = {cp * x - sp * sd, sp * x + cp * sd};
+  out.minus = {cp * x + sp * sd, sp * x - cp * sd};
   return out;
 }
 
-//! Subproblem 1: the θ with R(k, θ) p = q (least squares in the plane normal to k).
-//! If p or q lies on the axis θ is free; 0 is returned.
-inline double subproblem1(const Eigen::Vector3d& k, const Eigen::Vector3d& p, const Eigen::Vector3d& q) noexcept {
+//! Subproblem 1: the θ with R(k, θ) p = q (least squares in the plane normal to k), as
+//! cosine and sine. If p or q lies on the axis θ is free; 0 is returned.
+inline CosSin subproblem1_cs(const Eigen::Vector3d& k, const Eigen::Vector3d& p, const Eigen::Vector3d& q) noexcept {
   const Eigen::Vector3d pp = p - k.dot(p) * k;
   const Eigen::Vector3d qp = q - k.dot(q) * k;
   const double sine = k.dot(pp.cross(qp));
   const double cosine = pp.dot(qp);
-  if (std::abs(sine) + std::abs(cosine) <= 1e-300) return 0.0;
-  return std::atan2(sine, cosine);
+  const double h = std::hypot(sine, cosine);
+  if (!(h > 1e-300)) return {};
+  return {cosine / h, sine / h};
+}
+
+//! Subproblem 1 as an angle.
+inline double subproblem1(const Eigen::Vector3d& k, const Eigen::Vector3d& p, const Eigen::Vector3d& q) noexcept {
+  return subproblem1_cs(k, p, q).angle();
 }
 
 //! Subproblem 3 (distance): θ with ‖R(k, θ) u − v‖ = δ, u and v relative to a point on the axis.
@@ -112,8 +135,8 @@ inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, co
 
 //! Subproblem 2's two solutions (θ₁, θ₂) labelled by the sign of the out-of-plane component.
 struct AnglePairs {
-  std::array<double, 2> first{};   //!< θ₁ for the labels + and −
-  std::array<double, 2> second{};  //!< θ₂ for the labels + and −
+  std::array<CosSin, 2> first{};   //!< θ₁ for the labels + and −
+  std::array<CosSin, 2> second{};  //!< θ₂ for the labels + and −
   bool exists = false;
   bool single = false;  //!< tangency: both labels hold the same pair
   double margin = -1.0; //!< γ² (1 − (k₁·k₂)²) / ‖p‖²: ≥ 0 where solvable
@@ -143,8 +166,8 @@ inline AnglePairs subproblem2(const Eigen::Vector3d& k1, const Eigen::Vector3d& 
   const double gamma = std::sqrt(std::max(0.0, gamma2));
   for (int label = 0; label < 2; ++label) {
     const Eigen::Vector3d x = in_plane + (label == 0 ? gamma : -gamma) * n;
-    out.second[label] = subproblem1(k2, p, x);
-    out.first[label] = subproblem1(k1, x, q);
+    out.second[label] = subproblem1_cs(k2, p, x);
+    out.first[label] = subproblem1_cs(k1, x, q);
   }
   return out;
 }
