@@ -13,3 +13,6 @@
 #include "dispkin/planner.hpp"
 #include "dispkin/kinematics.hpp"
 #include "dispkin/hexapod.hpp"
+#if defined(DISPKIN_HAS_SERIAL)  // set by dispkin::dispkin when the serial-arm plugin is built
+#include "dispkin/serial/serial_arm.hpp"
+#endif

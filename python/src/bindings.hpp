@@ -14,6 +14,7 @@ void bind_profile(pybind11::module_& m);     // bind_profile.cpp: Profile (trape
 void bind_path(pybind11::module_& m);        // bind_path.cpp: Path, Section, JointPath
 void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory
 void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, WorkspaceCheck, LegViolation
+void bind_serial(pybind11::module_& m);      // bind_serial.cpp: SerialArm, JointLimits, InverseResult (if built)
 
 }  // namespace python
 }  // namespace dispkin
