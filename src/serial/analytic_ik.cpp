@@ -12,7 +12,7 @@ namespace serial {
 namespace detail {
 void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                              IkSolutionSet& out);
-void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                             IkSolutionSet& out);
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
                                                  const Posed& pose, int samples);
@@ -71,7 +71,15 @@ void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& 
   if (family == IkFamily::spherical_wrist) {
     detail::spherical_wrist_inverse(chain, g, pose, out);
   } else if (family == IkFamily::three_parallel) {
-    detail::three_parallel_inverse(chain, g, pose, out);
+    const bool near_singular = detail::three_parallel_inverse(chain, g, pose, out);
+    // Within ~1e-8 rad of the wrist singularity the closed form's q₅ (a tangency of
+    // subproblem 4, so known only to √ε) can leave Newton short of 1e-10 when the elbow is also
+    // near stretched. The UR layout also fits the offset-wrist search, which parametrises by
+    // q₆ directly: it is the fallback there (and the only case that allocates).
+    if (out.count == 0 && near_singular && *g.why_not_offset == '\0') {
+      for (const Eigen::VectorXd& q : detail::offset_wrist_search(chain, g, pose, OffsetWristOptions{}.samples))
+        out.push(q);
+    }
   } else {
     throw std::invalid_argument(describe("family", to_string(family),
                                          "has no closed form; the allocation-free overload takes spherical_wrist "

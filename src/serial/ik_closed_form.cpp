@@ -44,8 +44,9 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
   }
 }
 
-void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                             IkSolutionSet& out) {
+  bool near_singular = false;
   const Posed g = pose * chain.tip_at_zero.inverse();
   const Eigen::Matrix3d g_rotation = g.rotation();
   const Eigen::Vector3d& w1 = chain.axes[0];
@@ -62,7 +63,7 @@ void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   const Eigen::Vector3d x4 = normal_to(w4);
   // e₂e₃e₄ keep the component along ω₂, e₅e₆ fix c = axes 5 ∩ 6: ω₂ · e₁⁻¹ G c = ω₂ · c.
   const Angles q1s = subproblem4(w2, w1, g * c - p1, w2.dot(c - p1));
-  if (!q1s.exists) return;
+  if (!q1s.exists) return false;
   for (int l1 = 0; l1 < (q1s.single() ? 1 : 2); ++l1) {
     const double q1 = -(l1 == 0 ? q1s.plus : q1s.minus).angle();
     const Eigen::Matrix3d r1 = rotation(w1, q1);
@@ -71,28 +72,64 @@ void three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
     if (!q5s.exists) continue;
     for (int l5 = 0; l5 < (q5s.single() ? 1 : 2); ++l5) {
       const double q5 = (l5 == 0 ? q5s.plus : q5s.minus).angle();
-      // R₆ᵀ R₅ᵀ ω₂ = R_Gᵀ R₁ ω₂ (subproblem 1 in −q₆; free when R₅ᵀω₂ ∥ ω₆, then q₆ = 0).
-      const double q6 = -subproblem1(w6, rotate(w5, -q5, w2), g_rotation.transpose() * (r1 * w2));
-      // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄; e₄ fixes p₄, so e₂e₃ p₄ = H p₄: subproblems 3 and 1.
-      const Posed h = rotation_about_line(w1, p1, -q1) * g * rotation_about_line(w6, chain.points[5], -q6) *
-                      rotation_about_line(w5, chain.points[4], -q5);
-      const Eigen::Vector3d y = h * p4;
-      const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
-      if (!q3s.exists) continue;
-      const Eigen::Matrix3d h_rotation = h.rotation();
-      for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
-        const double q3 = (l3 == 0 ? q3s.plus : q3s.minus).angle();
-        const Eigen::Vector3d y3 = rotate(w3, q3, p4 - p3) + p3;
-        const double q2 = subproblem1(w2, y3 - p2, y - p2);
-        // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
-        const Eigen::Matrix3d r4 = rotation(w3, -q3) * rotation(w2, -q2) * h_rotation;
-        const double q4 = subproblem1(w4, x4, r4 * x4);
-        Vector6d q;
-        q << q1, q2, q3, q4, q5, q6;
-        offer(chain, pose, q, out);
+      // R₆ᵀ R₅ᵀ ω₂ = R_Gᵀ R₁ ω₂ (subproblem 1 in −q₆).
+      const Eigen::Vector3d u = rotate(w5, -q5, w2);
+      const double q6 = -subproblem1(w6, u, g_rotation.transpose() * (r1 * w2));
+      // Wrist singularity (R₅ᵀω₂ ∥ ω₆: axes 2, 3, 4, 6 parallel): q₆ and q₂ + q₃ + q₄ share one
+      // planar motion, so q₆ is (nearly) free, but only an interval of q₆ leaves the elbow in
+      // reach — a tiny one near the stretched elbow. Besides subproblem 1's value, take the q₆
+      // that puts the elbow distance ‖H p₄ − p₂‖ mid-way in the range both the elbow (q₃) and
+      // the circle of q₆ allow (subproblem 3 in −q₆); Newton then settles each on the pose.
+      std::array<double, 3> q6_candidates{{q6, 0.0, 0.0}};
+      std::size_t q6_count = 1;
+      if (u.cross(w6).norm() < 1e-6) {
+        near_singular = true;
+        const Posed a = rotation_about_line(w1, p1, -q1) * g;
+        const Eigen::Vector3d& p6 = chain.points[5];
+        const Eigen::Vector3d u6 = rotation_about_line(w5, chain.points[4], -q5) * p4 - p6;
+        const Eigen::Vector3d v6 = a.inverse() * p2 - p6;
+        // ‖R(k, θ) u − v‖² ranges over base ± 2 ‖u⊥‖ ‖v⊥‖.
+        auto range = [](const Eigen::Vector3d& k, const Eigen::Vector3d& uu, const Eigen::Vector3d& vv) {
+          const double base = uu.squaredNorm() + vv.squaredNorm() - 2.0 * k.dot(uu) * k.dot(vv);
+          const double spread = 2.0 * (uu - k.dot(uu) * k).norm() * (vv - k.dot(vv) * k).norm();
+          return std::array<double, 2>{{base - spread, base + spread}};
+        };
+        const auto elbow = range(w3, p4 - p3, p2 - p3);
+        const auto circle = range(w6, u6, v6);
+        const double lo = std::max(elbow[0], circle[0]);
+        const double hi = std::min(elbow[1], circle[1]);
+        if (lo <= hi) {
+          const Angles minus_q6 = subproblem3(w6, u6, v6, std::sqrt(std::max(0.0, 0.5 * (lo + hi))));
+          if (minus_q6.exists) {
+            q6_candidates[q6_count++] = -minus_q6.plus.angle();
+            q6_candidates[q6_count++] = -minus_q6.minus.angle();
+          }
+        }
+      }
+      for (std::size_t k6 = 0; k6 < q6_count; ++k6) {
+        const double q6k = q6_candidates[k6];
+        // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄; e₄ fixes p₄, so e₂e₃ p₄ = H p₄: subproblems 3 and 1.
+        const Posed h = rotation_about_line(w1, p1, -q1) * g * rotation_about_line(w6, chain.points[5], -q6k) *
+                        rotation_about_line(w5, chain.points[4], -q5);
+        const Eigen::Vector3d y = h * p4;
+        const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
+        if (!q3s.exists) continue;
+        const Eigen::Matrix3d h_rotation = h.rotation();
+        for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
+          const double q3 = (l3 == 0 ? q3s.plus : q3s.minus).angle();
+          const Eigen::Vector3d y3 = rotate(w3, q3, p4 - p3) + p3;
+          const double q2 = subproblem1(w2, y3 - p2, y - p2);
+          // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
+          const Eigen::Matrix3d r4 = rotation(w3, -q3) * rotation(w2, -q2) * h_rotation;
+          const double q4 = subproblem1(w4, x4, r4 * x4);
+          Vector6d q;
+          q << q1, q2, q3, q4, q5, q6k;
+          offer(chain, pose, q, out);
+        }
       }
     }
   }
+  return near_singular;
 }
 
 }  // namespace detail

@@ -123,17 +123,18 @@ Configuration SerialArm::configuration(const Eigen::VectorXd& q) const {
   // Axis i at q is axis i at 0 moved by joints 1 … i−1.
   Eigen::Vector3d w[6], p[6];
   Posed t;
-  Posed t4;
+  Posed t4;  // joints 1 … 4: moves both reference points (joint 5 turns about the line of one)
   for (int i = 0; i < 6; ++i) {
     w[i] = t.quaternion() * c.axes[static_cast<std::size_t>(i)];
     p[i] = t * c.points[static_cast<std::size_t>(i)];
     t = t * rotation_about_line(c.axes[static_cast<std::size_t>(i)], c.points[static_cast<std::size_t>(i)], q(i));
     if (i == 3) t4 = t;
   }
-  const Eigen::Vector3d wrist = t4 * model_->wrist_point;
+  const Eigen::Vector3d s = t4 * model_->shoulder_point;
+  const Eigen::Vector3d e = t4 * model_->elbow_point;
   Configuration out;
-  out.shoulder = sign_of((wrist - p[0]).dot(w[1].cross(w[0])));
-  out.elbow = sign_of(w[2].dot((p[2] - p[1]).cross(wrist - p[2])));
+  out.shoulder = sign_of((s - p[0]).dot(w[1].cross(w[0])));
+  out.elbow = sign_of(w[2].dot((p[2] - p[1]).cross(e - p[2])));
   out.wrist = sign_of(w[4].dot(w[3].cross(w[5])));
   return out;
 }

@@ -28,7 +28,10 @@ struct SerialArm::Model {
   std::vector<BodyInertia> inertias;     // per joint, in its child link's frame
   RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
   IkFamily family = IkFamily::general;
-  Eigen::Vector3d wrist_point = Eigen::Vector3d::Zero();  // base coordinates at q = 0 (Configuration)
+  // Configuration flags, base coordinates at q = 0: the point of axis 4 nearest to axis 5
+  // and the point of axis 5 nearest to axis 6 (both the wrist centre of a spherical wrist).
+  Eigen::Vector3d elbow_point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d shoulder_point = Eigen::Vector3d::Zero();
 };
 
 // KDL ↔ dispkin conversions.

@@ -278,10 +278,11 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
 
   model->revolute = revolute_chain_of(model->chain);
   model->family = recognise(model->revolute);
-  // The wrist point of configuration(): on axis 5, nearest to axis 4.
-  if (n >= 5) {
+  // The reference points of configuration() (6R arms).
+  if (n == 6) {
     const RevoluteChain& c = model->revolute;
-    model->wrist_point = nearest_point_on_line(c.points[3], c.axes[3], c.points[4], c.axes[4]);
+    model->elbow_point = nearest_point_on_line(c.points[4], c.axes[4], c.points[3], c.axes[3]);
+    model->shoulder_point = nearest_point_on_line(c.points[5], c.axes[5], c.points[4], c.axes[4]);
   }
   return SerialArm(std::move(model));
 }

@@ -11,10 +11,14 @@
 //! (no DH conversion) and ends with a Newton polish on the full pose and a check by forward
 //! kinematics: a returned solution always reproduces the pose to ik_pose_tolerance.
 //!
-//! Singular poses, where a joint is free (wrist q₅ with axes 4 and 6 aligned, the wrist centre
-//! on axis 1, UR's axes 2 and 6 aligned): the free joint is set to 0 in the positioning stage
-//! (for the wrist: q₄ = 0, q₆ takes the rest; for the shoulder: q₁ = 0) and the remaining joints
-//! are solved for it, so the returned set represents the continuum by one member per branch.
+//! Singular poses, where a joint is free, return a representative set (never an empty one):
+//! - spherical wrist, axes 4 and 6 aligned (q₅ = 0): q₄ = 0 and q₆ takes the whole turn;
+//! - spherical wrist, wrist centre on axis 1: q₁ = 0;
+//! - three parallel, axes 2, 3, 4, 6 parallel (UR, q₅ = 0): the q₆ (two of them) that puts the
+//!   elbow mid-way in its reachable range, q₂…q₄ solved for it.
+//! Near a singularity the joints it couples are determined only to ≈ 1e-16 / |sin q₅| rad.
+//! Within ~1e-6 rad of the UR wrist singularity, if the closed form's candidates do not polish
+//! to 1e-10, the offset-wrist search (which fits the UR layout) is run as a fallback.
 #pragma once
 
 #include <array>
@@ -64,13 +68,14 @@ std::vector<Eigen::VectorXd> analytic_inverse(const RevoluteChain& chain, IkFami
 
 //! The closed forms (spherical_wrist, three_parallel) without heap allocation: the solutions
 //! are written into `out` (its previous content is discarded). For the real-time path; the
-//! same checks and results as analytic_inverse. Throws std::invalid_argument for another
+//! same checks and results as analytic_inverse. (Exception: the near-singular UR fallback
+//! above allocates its search table.) Throws std::invalid_argument for another
 //! family or a chain that does not fit (only then does it allocate, for the message).
 void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose, IkSolutionSet& out);
 
 //! Settings of the offset-wrist search (MATH.md §8).
 struct OffsetWristOptions {
-  int samples = 720;  //!< samples of the circle parameter q₆ over one turn (≥ 16)
+  int samples = 360;  //!< samples of the circle parameter q₆ over one turn (≥ 16)
 };
 
 //! The offset-wrist search with explicit settings (analytic_inverse uses the defaults).
