@@ -294,6 +294,37 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndIncludeTheTwoPiCopies) {
   }
 }
 
+TEST(SerialArmChoice, FlagsTellTheAnalyticSolutionsApart) {
+  // UR (three parallel axes) and a spherical wrist: the solutions of one pose (without 2π
+  // copies) have pairwise different (shoulder, elbow, wrist) flags, so the flags of q pick q.
+  const SerialArm kr6 = SerialArm::from_urdf_file(urdf_dir + "arm_kr6_like_dh.urdf", "base_link", "flange");
+  EXPECT_EQ(kr6.family(), IkFamily::spherical_wrist);
+  InverseOptions plain;
+  plain.offer_equivalents = false;
+  for (const SerialArm& arm : {ur5e(), kr6}) {
+    Random random(610);
+    int checked = 0;
+    for (int k = 0; k < dispkin::testing::case_count(500); ++k) {
+      const Eigen::VectorXd q = random_q(random, arm);
+      const Configuration c = arm.configuration(q);
+      if (c.shoulder == 0 || c.elbow == 0 || c.wrist == 0) continue;  // on a boundary (singular)
+      const InverseResult result = arm.inverse_solutions(arm.forward(q), plain);
+      ASSERT_TRUE(result.complete);
+      for (std::size_t a = 0; a < result.solutions.size(); ++a)
+        for (std::size_t b = a + 1; b < result.solutions.size(); ++b)
+          EXPECT_NE(arm.configuration(result.solutions[a]), arm.configuration(result.solutions[b]))
+              << arm.robot_name() << " q = " << q.transpose();
+      const std::vector<Eigen::VectorXd> picked = with_configuration(arm, result.solutions, c);
+      ASSERT_EQ(picked.size(), 1u) << arm.robot_name() << " q = " << q.transpose();
+      // Without copies a joint may come back as another 2π-equivalent value than q's.
+      for (int i = 0; i < arm.dof(); ++i)
+        EXPECT_LE(std::abs(std::remainder(picked[0](i) - q(i), 2 * pi)), 1e-9) << arm.robot_name() << " joint " << i;
+      ++checked;
+    }
+    EXPECT_GT(checked, 0);
+  }
+}
+
 TEST(SerialArmChoice, NearestConfigurationAndFollow) {
   const SerialArm arm = ur5e();
   const std::vector<Eigen::VectorXd> set{Eigen::VectorXd::Constant(6, 0.0), Eigen::VectorXd::Constant(6, 1.0),

@@ -47,12 +47,14 @@ struct BodyInertia {
 
 //! Shoulder / elbow / wrist configuration of a 6R arm, each +1 or −1 (0: on the boundary between
 //! the two, within 1e-9). With ωᵢ the current axis and pᵢ a point on axis i (base coordinates at
-//! q) and w the wrist point (the point of axis 5 nearest to axis 4; the wrist centre of a
-//! spherical wrist):
-//! - shoulder = sign((w − p₁) · (ω₂ × ω₁)): which side of the plane through axis 1 spanned by
+//! q), s the point of axis 5 nearest to axis 6 and e the point of axis 4 nearest to axis 5 (both
+//! the wrist centre of a spherical wrist; for a UR the 5–6 and 4–5 axis crossings):
+//! - shoulder = sign((s − p₁) · (ω₂ × ω₁)): which side of the plane through axis 1 spanned by
 //!   ω₁ and ω₂ the wrist is on ("front" / "back" for an industrial arm, "left" / "right" for a UR);
-//! - elbow    = sign(ω₃ · ((p₃ − p₂) × (w − p₃))): which way the arm bends at joint 3;
+//! - elbow    = sign(ω₃ · ((p₃ − p₂) × (e − p₃))): which way the arm bends at joint 3;
 //! - wrist    = sign(ω₅ · (ω₄ × ω₆)): the wrist flip (sin q₅ up to a sign fixed by the chain).
+//! For the spherical-wrist and UR families the (up to 8) analytic solutions of a pose have
+//! pairwise different flags, so the flags pick one.
 struct Configuration {
   int shoulder = 0;
   int elbow = 0;
