@@ -78,7 +78,7 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
 //! then ≤ ik_pose_tolerance, and not if it repeats a kept one (all joints within
 //! ik_duplicate_tolerance mod 2π). `Store` has size(), operator[] and push(q).
 template <typename Store>
-void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, Store& store, double polish_above = 1e-13) {
+void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, Store& store, double polish_above = 4e-15) {
   for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
   PoseError e = pose_error(chain, q, target);
   if (e.worst() > polish_above) e = polish(chain, target, q, 30);

@@ -67,7 +67,7 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
     if (e.worst() < best_error.worst()) {
       best = q;
       best_error = e;
-    } else if (iteration > 3) {
+    } else if (iteration >= 1) {
       break;  // no progress: rounding reached, or no solution near the start
     }
   }

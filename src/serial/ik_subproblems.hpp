@@ -19,8 +19,11 @@ constexpr double pi = 3.14159265358979323846;
 
 //! The angle a mod 2π in (−π, π].
 inline double wrap_angle(double a) noexcept {
-  a = std::remainder(a, 2.0 * pi);
-  if (a <= -pi) a += 2.0 * pi;
+  if (a > pi || a <= -pi) {  // (std::remainder is several times slower than this on glibc)
+    a -= 2.0 * pi * std::floor((a + pi) / (2.0 * pi));
+    if (a <= -pi) a += 2.0 * pi;
+    if (a > pi) a -= 2.0 * pi;
+  }
   return a;
 }
 
@@ -76,7 +79,7 @@ constexpr double tangency_slack = 1e-9;
 //! tell a degenerate A = B = 0 from a small one).
 inline Angles solve_harmonic(double a, double b, double c, double scale) noexcept {
   Angles out;
-  const double r = std::hypot(a, b);
+  const double r = std::sqrt(a * a + b * b);
   if (r <= 1e-13 * scale) {
     // Degenerate: θ does not enter; solvable (by every θ) iff C vanishes too.
     out.exists = std::abs(c) <= 1e-10 * scale;
@@ -104,7 +107,7 @@ inline CosSin subproblem1_cs(const Eigen::Vector3d& k, const Eigen::Vector3d& p,
   const Eigen::Vector3d qp = q - k.dot(q) * k;
   const double sine = k.dot(pp.cross(qp));
   const double cosine = pp.dot(qp);
-  const double h = std::hypot(sine, cosine);
+  const double h = std::sqrt(sine * sine + cosine * cosine);
   if (!(h > 1e-300)) return {};
   return {cosine / h, sine / h};
 }
