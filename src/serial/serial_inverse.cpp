@@ -38,9 +38,13 @@ double wrap(double q) {
   return r;
 }
 
+// The same solution up to 2π in any joint.
 bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorXd& q) {
-  for (const Eigen::VectorXd& f : found)
-    if ((f - q).cwiseAbs().maxCoeff() <= duplicate_tolerance) return true;
+  for (const Eigen::VectorXd& f : found) {
+    bool same = true;
+    for (Eigen::Index i = 0; i < q.size() && same; ++i) same = std::abs(std::remainder(f(i) - q(i), two_pi)) <= duplicate_tolerance;
+    if (same) return true;
+  }
   return false;
 }
 
@@ -114,6 +118,7 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     result.complete = false;
   }
 
+  std::vector<Eigen::VectorXd> representatives;
   for (Eigen::VectorXd q : raw) {
     if (q.size() != n || !q.allFinite()) continue;
     // Into the limits by ±2π where possible: the smallest equivalent value ≥ lower.
@@ -134,6 +139,13 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
       }
     }
     if (!inside && !options.keep_outside_limits) continue;
+    // Every solution is checked by forward kinematics; one that misses by a little (an analytic
+    // root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
+    if (!forward(q).is_approx(pose, inverse_tolerance) && !polish(*this, pose, q)) continue;
+    // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
+    // the copies of different representatives are then different too.
+    if (is_duplicate(representatives, q)) continue;
+    representatives.push_back(q);
     // The 2π-equivalent values inside the limits: every combination.
     std::vector<Eigen::VectorXd> variants{q};
     if (inside && options.offer_equivalents) {
@@ -150,12 +162,9 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
       }
     }
     for (Eigen::VectorXd& candidate : variants) {
-      if (is_duplicate(result.solutions, candidate)) continue;
-      // Every solution is checked by forward kinematics; one that misses by a little (an
-      // analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a
-      // solution. Polishing may move it out of the limits by rounding only.
-      if (!forward(candidate).is_approx(pose, inverse_tolerance) && !polish(*this, pose, candidate)) continue;
-      if (is_duplicate(result.solutions, candidate)) continue;
+      if (&candidate != &variants.front() && !forward(candidate).is_approx(pose, inverse_tolerance) &&
+          !polish(*this, pose, candidate))
+        continue;
       result.solutions.push_back(candidate);
       result.within_limits.push_back(inside);
     }

@@ -17,6 +17,7 @@
 //!   (through fixed joints) that is not on the path, e.g. a tool flange after the tip. Subtrees
 //!   attached through movable joints (gripper fingers) are left out. The base link's inertia
 //!   does not matter (it does not move).
+//! - <mimic> tags are ignored: every revolute / continuous joint on the path is a coordinate of q.
 //!
 //! The analytic IK works on chain(), a RevoluteChain taken from the KDL chain at q = 0: the
 //! joint axes and a point on each in base coordinates, and the tip pose.
@@ -116,8 +117,9 @@ class SerialArm : public Kinematics {
   //! All IK solutions: the analytic family of chain() when there is one (complete), else the
   //! numeric fallback (KDL ChainIkSolverPos_LMA from random starts inside the limits, within
   //! options.max_attempts and options.time_budget; not complete). Joint values are brought
-  //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates
-  //! (all joints within 1e-7) are removed. An unreachable pose gives no solutions.
+  //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates (equal
+  //! up to 2π, every joint within 1e-7) are removed. An unreachable pose gives none. For a
+  //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
   InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
 
   //! The geometric Jacobian J(q) (6 × dof, KDL ChainJntToJacSolver): rows (v, ω), the linear
