@@ -1,5 +1,5 @@
-"""SerialArm from Python on real robot descriptions (the `example-robot-data` package: UR5 and
-Franka Panda URDFs), checked against an independent model: pinocchio (`pin`) forward
+"""SerialArm from Python on real robot descriptions (the `example-robot-data` package: UR5,
+Franka Panda and Kinova Jaco2 j2s6s200 URDFs), checked against an independent model: pinocchio (`pin`) forward
 kinematics and RNEA torques on random states."""
 
 import importlib.metadata
@@ -44,6 +44,22 @@ def panda_urdf_without_fingers():
     return ET.tostring(root, encoding="unicode")
 
 
+def kinova_urdf():
+    return (robots_dir() / "kinova_description" / "robots" / "kinova.urdf").read_text()
+
+
+def to_pinocchio_q(model, q):
+    """pinocchio's configuration of joint values q: a continuous joint is (cos q, sin q)."""
+    out = pin.neutral(model)
+    for j, value in zip(range(1, model.njoints), q):
+        joint = model.joints[j]
+        if joint.nq == 2:
+            out[joint.idx_q : joint.idx_q + 2] = (np.cos(value), np.sin(value))
+        else:
+            out[joint.idx_q] = value
+    return out
+
+
 def pinocchio_model(urdf_text):
     model = pin.buildModelFromXML(urdf_text)
     return model, model.createData()
@@ -59,6 +75,7 @@ def random_q(rng, arm, n):
 ROBOTS = {
     "ur5": (ur5_urdf, "world", "tool0"),
     "panda": (panda_urdf_without_fingers, "panda_link0", "panda_hand"),
+    "kinova": (kinova_urdf, "base", "j2s6s200_end_effector"),  # continuous joints 1, 4, 6
 }
 
 
@@ -78,7 +95,7 @@ def test_forward_matches_pinocchio(robot):
     frame = model.getFrameId(tip)
     worst = 0.0
     for q in random_q(np.random.default_rng(SEED), arm, COUNT):
-        pin.framesForwardKinematics(model, data, q)
+        pin.framesForwardKinematics(model, data, to_pinocchio_q(model, q))
         worst = max(worst, np.abs(arm.forward(q).matrix() - data.oMf[frame].homogeneous).max())
     assert worst <= 1e-9, name
 
@@ -93,7 +110,7 @@ def test_torques_match_pinocchio_rnea(robot):
         qd = rng.uniform(-2.0, 2.0, arm.dof)
         qdd = rng.uniform(-5.0, 5.0, arm.dof)
         tau = arm.torques(q, qd, qdd)
-        worst = max(worst, np.abs(tau - pin.rnea(model, data, q, qd, qdd)).max())
+        worst = max(worst, np.abs(tau - pin.rnea(model, data, to_pinocchio_q(model, q), qd, qdd)).max())
         assert np.array_equal(arm.static_torques(q), arm.torques(q, np.zeros(arm.dof), np.zeros(arm.dof)))
     assert worst <= 1e-9, name
 
@@ -102,7 +119,7 @@ def test_jacobian_matches_pinocchio(robot):
     name, arm, model, data, tip = robot
     frame = model.getFrameId(tip)
     for q in random_q(np.random.default_rng(SEED + 2), arm, 20):
-        pin.computeJointJacobians(model, data, q)
+        pin.computeJointJacobians(model, data, to_pinocchio_q(model, q))
         pin.updateFramePlacements(model, data)
         # LOCAL_WORLD_ALIGNED: tip-origin velocity and angular velocity in base axes.
         j = pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
@@ -128,6 +145,25 @@ def test_ur5_inverse_is_complete_and_contains_q():
         for s in solutions:
             assert arm.forward(s).is_approx(pose, 1e-10)
         assert np.array_equal(arm.nearest(solutions, q + 1e-3), solutions[int(np.argmin([np.linalg.norm(s - q - 1e-3) for s in solutions]))])
+
+
+def test_kinova_jaco2_spherical_wrist_with_continuous_joints():
+    arm = dispkin.SerialArm.from_urdf(kinova_urdf(), "base", "j2s6s200_end_effector")
+    assert arm.family == "spherical_wrist"
+    limits = arm.joint_limits
+    continuous = ~np.isfinite(limits.lower)
+    assert list(continuous) == [True, False, False, True, False, True]
+    for q in random_q(np.random.default_rng(SEED + 5), arm, 50):
+        pose = arm.forward(q)
+        result = arm.inverse_solutions(pose)
+        assert result.complete
+        assert min(np.abs(s - q).max() for s in result.solutions) <= 1e-9
+        for s in result.solutions:
+            assert arm.forward(s).is_approx(pose, 1e-10)
+            # continuous joints come back in (-pi, pi], limited ones inside their limits
+            assert np.all(np.abs(s[continuous]) <= np.pi)
+            assert np.all(s[~continuous] >= limits.lower[~continuous] - 1e-10)
+            assert np.all(s[~continuous] <= limits.upper[~continuous] + 1e-10)
 
 
 def test_panda_numeric_fallback_reports_incomplete():
