@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -405,6 +407,36 @@ TEST(SerialArmErrors, BadUrdfFilesAreRefusedWithTheirReason) {
     const std::string message = message_of([&] { SerialArm::from_urdf_file(urdf_dir + c.file, c.base, c.tip); });
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.file << ": " << message;
   }
+}
+
+TEST(SerialArmErrors, DamagedUrdfTextIsRefusedOrLoadedNeverACrash) {
+  // Every prefix of a good URDF (a file cut off anywhere), and the file with one character
+  // replaced at many places: either it still describes the arm or loading throws
+  // std::invalid_argument — no other exception, no crash.
+  std::ifstream in(urdf_dir + "arm_ur5e_dh.urdf");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(text.size(), 1000u);
+  int refused = 0;
+  int loaded = 0;
+  const auto attempt = [&](const std::string& xml) {
+    try {
+      const SerialArm arm = SerialArm::from_urdf_string(xml, "base_link", "tool0");
+      EXPECT_EQ(arm.dof(), 6);
+      ++loaded;
+    } catch (const std::invalid_argument&) {
+      ++refused;
+    }
+  };
+  for (std::size_t cut = 0; cut < text.size(); cut += 7) attempt(text.substr(0, cut));
+  Random random(611);
+  const char garbage[] = {'<', '>', '"', '/', 'x', '-', '9', ' ', '\0'};
+  for (int k = 0; k < 300; ++k) {
+    std::string damaged = text;
+    damaged[static_cast<std::size_t>(random.integer(0, static_cast<int>(text.size()) - 1))] = garbage[random.integer(0, 8)];
+    attempt(damaged);
+  }
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(loaded, 0);
 }
 
 TEST(SerialArmErrors, BadLinksAndArguments) {
