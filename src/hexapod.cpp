@@ -363,7 +363,7 @@ std::vector<Eigen::VectorXd> Hexapod::inverse(const Posed& pose) const {
   return {Eigen::VectorXd(leg_lengths(pose))};
 }
 
-JointLimits Hexapod::joint_limits() const { return {leg_min_, leg_max_, leg_speed_}; }
+JointLimits Hexapod::joint_limits() const { return {leg_min_, leg_max_, leg_speed_, Eigen::VectorXd()}; }
 
 std::vector<std::string> Hexapod::joint_names() const {
   return {"leg1", "leg2", "leg3", "leg4", "leg5", "leg6"};

@@ -16,3 +16,6 @@
 #include "dispkin/kinematics.hpp"
 #include "dispkin/hexapod.hpp"
 #include "dispkin/frames.hpp"
+#if defined(DISPKIN_HAS_SERIAL)  // set by dispkin::dispkin when the serial-arm plugin is built
+#include "dispkin/serial/serial_arm.hpp"
+#endif

@@ -13,11 +13,12 @@
 
 namespace dispkin {
 
-//! Joint-space limits, one entry per joint (all vectors of size dof()).
+//! Joint-space limits, one entry per joint (vectors of size dof(); `effort` may be empty).
 struct JointLimits {
   Eigen::VectorXd lower;     //!< smallest joint position (m or rad)
   Eigen::VectorXd upper;     //!< largest joint position, > lower
   Eigen::VectorXd velocity;  //!< largest joint speed (m/s or rad/s), > 0
+  Eigen::VectorXd effort;    //!< largest joint force / torque (N or N·m), > 0; empty if the machine states none
 };
 
 //! Forward and inverse kinematics plus joint limits of one machine.

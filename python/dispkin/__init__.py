@@ -35,6 +35,11 @@ from ._core import (
 )
 from . import shapes
 
+# The serial-arm plugin (URDF via urdfdom into Orocos KDL) is there when the build has it
+# (CMake option DISPKIN_BUILD_SERIAL, on by default).
+if hasattr(_core, "SerialArm"):
+    from ._core import InverseResult, JointLimits, SerialArm
+
 #: The library version, the one set in CMakeLists.txt (``project(dispkin VERSION ...)``).
 __version__: str = _core.__version__
 
@@ -66,3 +71,5 @@ __all__ = [
     "velocity_limited_law",
     "xyzuvw_for_new_pivot",
 ]
+if hasattr(_core, "SerialArm"):
+    __all__ += ["InverseResult", "JointLimits", "SerialArm"]

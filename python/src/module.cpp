@@ -18,4 +18,7 @@ PYBIND11_MODULE(_core, m) {
   dispkin::python::bind_planner(m);
   dispkin::python::bind_hexapod(m);
   dispkin::python::bind_frames(m);
+#if defined(DISPKIN_HAS_SERIAL)
+  dispkin::python::bind_serial(m);
+#endif
 }

@@ -34,6 +34,9 @@
 #include <dispkin/pose.hpp>
 #include <dispkin/profile.hpp>
 #include <dispkin/shapes.hpp>
+#if defined(DISPKIN_HAS_SERIAL)
+#include <dispkin/serial/serial_arm.hpp>
+#endif
 
 namespace {
 
@@ -377,6 +380,51 @@ std::vector<Row> rows() {
   row("WorkToolFrames::add_work_envelope", "negative radius", [] { MetricSetd s; WorkToolFrames().add_work_envelope(s, -0.1); }, IA, "radius = -0.1");
   row("WorkToolFrames::add_work_envelope", "+inf radius", [] { MetricSetd s; WorkToolFrames().add_work_envelope(s, inf_, Envelope::sphere); }, IA, "radius = inf");
   row("WorkToolFrames::platform_pose_xyzuvw", "NaN U", [] { WorkToolFrames().platform_pose_xyzuvw(v6(0, 0, 0, nan_, 0, 0)); }, IA, "xyzuvw = (0, 0, 0, nan, 0, 0)");
+#if defined(DISPKIN_HAS_SERIAL)
+  // --- SerialArm (tests/data/urdf/arm_*.urdf) ---
+  using serial::SerialArm;
+  static const std::string urdf = std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/";
+  const auto arm = [] { return SerialArm::from_urdf_file(urdf + "arm_planar_two_link.urdf", "base", "link2"); };
+  const Eigen::Vector2d q0 = Eigen::Vector2d::Zero();
+  row("SerialArm::from_urdf_file", "missing file", [] { SerialArm::from_urdf_file("/nonexistent/arm.urdf", "a", "b"); }, IA,
+      "path = \"/nonexistent/arm.urdf\": cannot be opened");
+  row("SerialArm::from_urdf_file", "not XML", [] { SerialArm::from_urdf_file(urdf + "arm_bad_not_xml.urdf", "base", "l1"); }, IA,
+      "URDF: not a valid robot description");
+  row("SerialArm::from_urdf_file", "unknown base link", [] { SerialArm::from_urdf_file(urdf + "arm_planar_two_link.urdf", "nowhere", "link2"); }, IA,
+      "base_link = \"nowhere\": is not a link of robot \"planar_two_link\"");
+  row("SerialArm::from_urdf_file", "unknown tip link", [] { SerialArm::from_urdf_file(urdf + "arm_planar_two_link.urdf", "base", "nowhere"); }, IA,
+      "tip_link = \"nowhere\": is not a link");
+  row("SerialArm::from_urdf_file", "base not an ancestor", [] { SerialArm::from_urdf_file(urdf + "arm_planar_two_link.urdf", "link2", "link1"); }, IA,
+      "base_link = \"link2\": is not an ancestor of tip_link \"link1\"");
+  row("SerialArm::from_urdf_file", "prismatic joint on the path", [] { SerialArm::from_urdf_file(urdf + "arm_bad_prismatic.urdf", "base", "l2"); }, IA,
+      "joint \"slide\" between \"l1\" and \"l2\": only revolute, continuous and fixed joints");
+  row("SerialArm::from_urdf_file", "lower above upper", [] { SerialArm::from_urdf_file(urdf + "arm_bad_limits.urdf", "base", "l1"); }, IA,
+      "joint \"j1\" limit (lower, upper) = (1, -1): needs lower < upper");
+  row("SerialArm::from_urdf_file", "zero axis", [] { SerialArm::from_urdf_file(urdf + "arm_bad_zero_axis.urdf", "base", "l1"); }, IA,
+      "joint \"j1\" axis = (0, 0, 0): must not be zero");
+  row("SerialArm::from_urdf_file", "negative mass", [] { SerialArm::from_urdf_file(urdf + "arm_bad_negative_mass.urdf", "base", "l1"); }, IA,
+      "link \"l1\" inertial mass = -1");
+  row("SerialArm::from_urdf_string", "empty text", [] { SerialArm::from_urdf_string("", "base", "link2"); }, IA, "URDF: not a valid robot description");
+  row("SerialArm::from_urdf_string", "empty base link", [] { SerialArm::from_urdf_string("<robot/>", "", "link2"); }, IA, "base_link = \"\": must name a link");
+  row("SerialArm::from_urdf_string", "tip equal to base", [] { SerialArm::from_urdf_string("<robot/>", "a", "a"); }, IA, "tip_link = \"a\": must differ from base_link");
+  row("SerialArm::forward", "wrong size q (3)", [arm] { arm().forward(Eigen::Vector3d::Zero()); }, IA, "q = (0, 0, 0): expected 2 joint values, got 3");
+  row("SerialArm::forward", "NaN q", [arm] { arm().forward(Eigen::Vector2d(0, nan_)); }, IA, "q = (0, nan): must be finite");
+  row("SerialArm::jacobian", "+inf q", [arm] { arm().jacobian(Eigen::Vector2d(inf_, 0)); }, IA, "q = (inf, 0): must be finite");
+  row("SerialArm::torques", "wrong size qd (1)", [arm, q0] { arm().torques(q0, Eigen::VectorXd::Zero(1), q0); }, IA, "qd = (0): expected 2 joint values, got 1");
+  row("SerialArm::torques", "NaN qdd", [arm, q0] { arm().torques(q0, q0, Eigen::Vector2d(nan_, 0)); }, IA, "qdd = (nan, 0): must be finite");
+  row("SerialArm::static_torques", "empty q", [arm] { arm().static_torques(Eigen::VectorXd()); }, IA, "q = (): expected 2 joint values, got 0");
+  row("SerialArm::set_gravity", "NaN gravity", [arm] { SerialArm a = arm(); a.set_gravity(Vector3d(0, 0, nan_)); }, IA, "gravity = (0, 0, nan): must be finite");
+  row("SerialArm::inverse_solutions", "zero max_attempts", [arm] { serial::InverseOptions o; o.max_attempts = 0; arm().inverse_solutions(Posed(), o); }, IA,
+      "max_attempts = 0: must be greater than zero");
+  row("SerialArm::inverse_solutions", "negative time_budget", [arm] { serial::InverseOptions o; o.time_budget = -1; arm().inverse_solutions(Posed(), o); }, IA,
+      "time_budget = -1: must be finite and greater than zero");
+  row("SerialArm::configuration", "not a 6R arm", [arm, q0] { arm().configuration(q0); }, IA, "dof = 2: configuration flags are defined for 6R arms");
+  row("serial::nearest", "no solutions", [] { serial::nearest({}, Eigen::VectorXd::Zero(6)); }, IA, "solutions = 0: must not be empty");
+  row("serial::nearest", "wrong size q_ref", [] { serial::nearest({Eigen::VectorXd::Zero(6)}, Eigen::VectorXd::Zero(2)); }, IA,
+      "q_ref = (0, 0): expected 6 joint values like the solutions, got 2");
+  row("serial::follow", "unreachable pose", [arm, q0] { serial::follow(arm(), {Posed(Quaterniond::Identity(), Vector3d(5, 0, 0))}, q0); }, RT,
+      "poses[0] translation = (5, 0, 0): has no inverse-kinematics solution");
+#endif
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -24,6 +25,10 @@ std::atomic<long> eigen_assert_failures{0};
 #include "dispkin/planner.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/shapes.hpp"
+#ifdef DISPKIN_HAS_SERIAL
+#include "dispkin/serial/analytic_ik.hpp"
+#include "serial_test_chains.hpp"
+#endif
 
 namespace {
 std::atomic<long> allocations{0};
@@ -150,6 +155,42 @@ TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum >= 0.0);
 }
+#ifdef DISPKIN_HAS_SERIAL
+// The closed-form IK families write into a fixed IkSolutionSet: no allocation at all (checks,
+// subproblems, Newton polish, de-duplication), over random poses of every closed-form robot
+// including wrist-singular ones (q5 = 0 exactly).
+TEST(Realtime, ClosedFormInverseKinematicsDoesNotAllocate) {
+  const std::vector<testing::NamedChain> robots = {{"kuka_kr6_r900", testing::kuka_kr6_r900()},
+                                                   {"abb_irb120", testing::abb_irb120()},
+                                                   {"abb_irb6640", testing::abb_irb6640()},
+                                                   {"ur5", testing::ur5()},
+                                                   {"ur10e", testing::ur10e()}};
+  std::mt19937_64 engine(20261122);
+  std::uniform_real_distribution<double> angle(-3.14159, 3.14159);
+  for (const auto& robot : robots) {
+    const serial::IkFamily family = serial::recognise(robot.chain);
+    std::vector<Posed> poses;
+    for (int n = 0; n < 500; ++n) {
+      Eigen::VectorXd q(6);
+      for (int i = 0; i < 6; ++i) q(i) = angle(engine);
+      if (n % 10 == 0) q(4) = 0.0;
+      poses.push_back(serial::forward(robot.chain, q));
+    }
+    serial::IkSolutionSet set;
+    int total = 0;
+    const long before = allocations.load();
+    Eigen::internal::set_is_malloc_allowed(false);
+    for (const Posed& pose : poses) {
+      serial::analytic_inverse(robot.chain, family, pose, set);
+      total += set.count;
+    }
+    Eigen::internal::set_is_malloc_allowed(true);
+    EXPECT_EQ(allocations.load(), before) << robot.name << ": analytic_inverse (IkSolutionSet) allocated";
+    EXPECT_EQ(eigen_assert_failures.load(), 0) << robot.name << ": Eigen allocated during analytic_inverse";
+    EXPECT_GE(total, 500) << robot.name;  // every pose is reachable: at least one solution each
+  }
+}
+#endif
 
 }  // namespace
 }  // namespace dispkin

@@ -15,7 +15,10 @@ def test_readme_has_a_python_quick_start():
 
 
 def test_readme_python_blocks_run():
+    namespaces = []
     for block in python_blocks():
         namespace: dict = {}
         exec(compile(block, str(README), "exec"), namespace)  # noqa: S102 - our own documentation
-    assert "traj" in namespace and namespace["traj"].duration > 0
+        namespaces.append(namespace)
+    # The quick start (the first block) plans a trajectory; later blocks (serial arms) run too.
+    assert "traj" in namespaces[0] and namespaces[0]["traj"].duration > 0

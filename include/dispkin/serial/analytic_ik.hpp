@@ -6,8 +6,22 @@
 //! - offset_wrist:    a 6R chain of neither kind whose IK is the one-dimensional search of
 //!                    seed 003 (Kinova Jaco2 j2n6s300);
 //! - general:         no analytic method applies (the caller uses the numeric fallback).
+//!
+//! Every solver is built from the Paden–Kahan subproblems in product-of-exponentials form
+//! (no DH conversion) and ends with a Newton polish on the full pose and a check by forward
+//! kinematics: a returned solution always reproduces the pose to ik_pose_tolerance.
+//!
+//! Singular poses, where a joint is free, return a representative set (never an empty one):
+//! - spherical wrist, axes 4 and 6 aligned (q₅ = 0): q₄ = 0 and q₆ takes the whole turn;
+//! - spherical wrist, wrist centre on axis 1: q₁ = 0;
+//! - three parallel, axes 2, 3, 4, 6 parallel (UR, q₅ = 0): the q₆ (two of them) that puts the
+//!   elbow mid-way in its reachable range, q₂…q₄ solved for it.
+//! Near a singularity the joints it couples are determined only to ≈ 1e-16 / |sin q₅| rad.
+//! Within ~1e-6 rad of the UR wrist singularity, if the closed form's candidates do not polish
+//! to 1e-10, the offset-wrist search (which fits the UR layout) is run as a fallback.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,6 +35,26 @@ namespace serial {
 
 enum class IkFamily { spherical_wrist, three_parallel, offset_wrist, general };
 
+//! Every returned solution reproduces the pose to this: position error (m) and rotation
+//! error (rad) both ≤ 1e-10.
+constexpr double ik_pose_tolerance = 1e-10;
+
+//! Two solutions whose joints all agree to this (rad, modulo 2π) are one solution.
+constexpr double ik_duplicate_tolerance = 1e-7;
+
+//! Up to eight solutions without heap allocation (the closed-form families have at most 8).
+struct IkSolutionSet {
+  std::array<Eigen::Matrix<double, 6, 1>, 8> q;  //!< q[0 .. count−1], each joint in (−π, π]
+  int count = 0;                                  //!< number of solutions held
+
+  int size() const noexcept { return count; }
+  const Eigen::Matrix<double, 6, 1>& operator[](int i) const noexcept { return q[static_cast<std::size_t>(i)]; }
+  //! Appends q (ignored when the set is full: a 6R closed form never has a ninth).
+  void push(const Eigen::Matrix<double, 6, 1>& solution) noexcept {
+    if (count < 8) q[static_cast<std::size_t>(count++)] = solution;
+  }
+};
+
 //! "spherical_wrist", "three_parallel", "offset_wrist", "general".
 std::string to_string(IkFamily family);
 
@@ -31,6 +65,22 @@ IkFamily recognise(const RevoluteChain& chain, double tolerance = 1e-9);
 //! by the closed form or search of `family`. No joint limits are applied here. Throws
 //! std::invalid_argument if the family does not fit the chain or is `general`.
 std::vector<Eigen::VectorXd> analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose);
+
+//! The closed forms (spherical_wrist, three_parallel) without heap allocation: the solutions
+//! are written into `out` (its previous content is discarded). For the real-time path; the
+//! same checks and results as analytic_inverse. (Exception: the near-singular UR fallback
+//! above allocates its search table.) Throws std::invalid_argument for another
+//! family or a chain that does not fit (only then does it allocate, for the message).
+void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose, IkSolutionSet& out);
+
+//! Settings of the offset-wrist search (MATH.md §8).
+struct OffsetWristOptions {
+  int samples = 360;  //!< samples of the circle parameter q₆ over one turn (≥ 16)
+};
+
+//! The offset-wrist search with explicit settings (analytic_inverse uses the defaults).
+std::vector<Eigen::VectorXd> offset_wrist_inverse(const RevoluteChain& chain, const Posed& pose,
+                                                  const OffsetWristOptions& options);
 
 }  // namespace serial
 }  // namespace dispkin

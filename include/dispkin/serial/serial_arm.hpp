@@ -1,0 +1,179 @@
+//! The serial-arm plugin: a chain of revolute joints read from a URDF (urdfdom), held as an
+//! Orocos KDL chain for forward kinematics, the Jacobian and the dynamics, and solved for all
+//! inverse-kinematics solutions by the analytic families of analytic_ik.hpp (or by a numeric
+//! search when no family fits).
+//!
+//! Loading rules (from_urdf_file / from_urdf_string):
+//! - the chain is the path of joints from `base_link` down to `tip_link`; `base_link` must be an
+//!   ancestor of `tip_link` in the URDF tree;
+//! - revolute and continuous joints are the arm's joints (q, in the order base → tip); fixed
+//!   joints are folded into the chain (their transform and their child link's inertia stay);
+//!   prismatic, planar and floating joints on the path are refused;
+//! - position limits: a revolute joint's <limit lower upper> (lower < upper required); a
+//!   continuous joint gets (−∞, +∞);
+//! - velocity and effort limits: the <limit> values; a missing or zero value means "not stated"
+//!   and becomes +∞;
+//! - inertia: each moving body is the joint's child link plus every link rigidly attached to it
+//!   (through fixed joints) that is not on the path, e.g. a tool flange after the tip. Subtrees
+//!   attached through movable joints (gripper fingers) are left out. The base link's inertia
+//!   does not matter (it does not move).
+//! - <mimic> tags are ignored: every revolute / continuous joint on the path is a coordinate of q.
+//!
+//! The analytic IK works on chain(), a RevoluteChain taken from the KDL chain at q = 0: the
+//! joint axes and a point on each in base coordinates, and the tip pose.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dispkin/kinematics.hpp"
+#include "dispkin/pose.hpp"
+#include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/revolute_chain.hpp"
+
+namespace dispkin {
+namespace serial {
+
+//! The mass properties of one moving body of the chain (the child link of a joint plus what is
+//! rigidly attached to it), in the frame of that link.
+struct BodyInertia {
+  double mass = 0.0;                                     //!< kg
+  Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  //!< m, link frame
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();     //!< about the centre of mass, link axes (kg·m²)
+};
+
+//! Shoulder / elbow / wrist configuration of a 6R arm, each +1 or −1 (0: on the boundary between
+//! the two, within 1e-9). With ωᵢ the current axis and pᵢ a point on axis i (base coordinates at
+//! q), s the point of axis 5 nearest to axis 6 and e the point of axis 4 nearest to axis 5 (both
+//! the wrist centre of a spherical wrist; for a UR the 5–6 and 4–5 axis crossings):
+//! - shoulder = sign((s − p₁) · (ω₂ × ω₁)): which side of the plane through axis 1 spanned by
+//!   ω₁ and ω₂ the wrist is on ("front" / "back" for an industrial arm, "left" / "right" for a UR);
+//! - elbow    = sign(ω₃ · ((p₃ − p₂) × (e − p₃))): which way the arm bends at joint 3;
+//! - wrist    = sign(ω₅ · (ω₄ × ω₆)): the wrist flip (sin q₅ up to a sign fixed by the chain).
+//! For the spherical-wrist and UR families the (up to 8) analytic solutions of a pose have
+//! pairwise different flags, so the flags pick one.
+struct Configuration {
+  int shoulder = 0;
+  int elbow = 0;
+  int wrist = 0;
+  bool operator==(const Configuration& o) const noexcept {
+    return shoulder == o.shoulder && elbow == o.elbow && wrist == o.wrist;
+  }
+  bool operator!=(const Configuration& o) const noexcept { return !(*this == o); }
+};
+
+//! How inverse() searches and what it returns.
+struct InverseOptions {
+  bool keep_outside_limits = false;  //!< also return solutions outside the position limits (flagged)
+  bool offer_equivalents = true;     //!< add q ± 2πk for joints whose range exceeds 2π
+  // Numeric fallback (family general) only:
+  int max_attempts = 64;             //!< random restarts of the KDL solver, > 0
+  double time_budget = 0.05;         //!< s of wall-clock time for the restarts, > 0
+  unsigned seed = 1;                 //!< of the restart generator: results are reproducible
+};
+
+//! What inverse_solutions() found.
+struct InverseResult {
+  std::vector<Eigen::VectorXd> solutions;  //!< each reproduces the pose to ≤ 1e-10 (forward())
+  std::vector<bool> within_limits;         //!< per solution; all true unless keep_outside_limits
+  bool complete = false;                   //!< true: every solution (analytic); false: what a search found
+  IkFamily family = IkFamily::general;     //!< the method used
+};
+
+//! The pose tolerance every returned IK solution meets: rotation-matrix entries and
+//! translation (m), as Pose::is_approx.
+constexpr double inverse_tolerance = 1e-10;
+
+//! A serial arm of revolute joints between a base link and a tip link of a URDF.
+//!
+//! Immutable after loading except for gravity; copies share the chain.
+class SerialArm : public Kinematics {
+ public:
+  //! Reads a URDF file. Throws std::invalid_argument naming the file, the link or the joint
+  //! when the file cannot be read, is not a URDF, a link is missing, `base_link` is not an
+  //! ancestor of `tip_link`, a joint on the path is of an unsupported type or has bad limits.
+  static SerialArm from_urdf_file(const std::string& path, const std::string& base_link, const std::string& tip_link);
+  //! The same from URDF text.
+  static SerialArm from_urdf_string(const std::string& xml, const std::string& base_link, const std::string& tip_link);
+
+  const std::string& robot_name() const noexcept;  //!< the URDF's <robot name>
+  const std::string& base_link() const noexcept;
+  const std::string& tip_link() const noexcept;
+
+  // Kinematics
+  int dof() const override;
+  //! The tip pose in base coordinates (KDL ChainFkSolverPos_recursive). Throws for a q of
+  //! the wrong size or with non-finite values; q outside the limits is allowed.
+  Posed forward(const Eigen::VectorXd& q) const override;
+  //! inverse_solutions(pose).solutions with default options.
+  std::vector<Eigen::VectorXd> inverse(const Posed& pose) const override;
+  JointLimits joint_limits() const override;
+  std::vector<std::string> joint_names() const override;
+
+  //! All IK solutions: the analytic family of chain() when there is one (complete), else the
+  //! numeric fallback (KDL ChainIkSolverPos_LMA from random starts inside the limits, within
+  //! options.max_attempts and options.time_budget; not complete). Joint values are brought
+  //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates (equal
+  //! up to 2π, every joint within 1e-7) are removed. An unreachable pose gives none. For a
+  //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
+  InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
+
+  //! The geometric Jacobian J(q) (6 × dof, KDL ChainJntToJacSolver): rows (v, ω), the linear
+  //! velocity of the tip frame's origin and the angular velocity, both in base coordinates,
+  //! for q̇: (v, ω) = J q̇.
+  Eigen::MatrixXd jacobian(const Eigen::VectorXd& q) const;
+  //! The body Jacobian: the same twist in tip coordinates, the (v, ω) of dispkin::Twist.
+  Eigen::MatrixXd body_jacobian(const Eigen::VectorXd& q) const;
+
+  //! Joint torques τ = M(q) q̈ + C(q, q̇) q̇ + g(q) (N·m) by KDL's recursive Newton–Euler
+  //! (ChainIdSolver_RNE), no external wrenches.
+  Eigen::VectorXd torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const;
+  //! The static part g(q) = torques(q, 0, 0): what holding the arm still costs.
+  Eigen::VectorXd static_torques(const Eigen::VectorXd& q) const;
+
+  //! Gravitational acceleration in base coordinates (m/s²), default (0, 0, −9.81).
+  const Eigen::Vector3d& gravity() const noexcept { return gravity_; }
+  void set_gravity(const Eigen::Vector3d& gravity);
+
+  //! The moving bodies' mass properties, one per joint (order of q).
+  std::vector<BodyInertia> inertias() const;
+
+  //! The chain in product-of-exponentials form (axes and points at q = 0, base coordinates),
+  //! for the analytic IK. forward(chain(), q) equals forward(q) to rounding.
+  const RevoluteChain& chain() const noexcept;
+  //! The analytic family recognised for chain().
+  IkFamily family() const noexcept;
+
+  //! The shoulder / elbow / wrist flags of q (see Configuration); needs dof() == 6.
+  Configuration configuration(const Eigen::VectorXd& q) const;
+
+ private:
+  struct Model;
+  explicit SerialArm(std::shared_ptr<const Model> model);
+  void require_joint_vector(const Eigen::VectorXd& q, const char* name) const;
+
+  std::shared_ptr<const Model> model_;
+  Eigen::Vector3d gravity_{0.0, 0.0, -9.81};
+};
+
+//! The solution closest to q_ref (Euclidean distance in joint space, no wrapping: 2π-equivalent
+//! values are separate solutions). Throws std::invalid_argument if `solutions` is empty or
+//! sizes differ.
+Eigen::VectorXd nearest(const std::vector<Eigen::VectorXd>& solutions, const Eigen::VectorXd& q_ref);
+
+//! The solutions of `arm` whose configuration() equals `wanted`, in their order.
+std::vector<Eigen::VectorXd> with_configuration(const SerialArm& arm, const std::vector<Eigen::VectorXd>& solutions,
+                                                const Configuration& wanted);
+
+//! Continuity along a path: for each pose in turn the solution nearest to the previous one,
+//! starting from q_start. Throws std::runtime_error naming the index of a pose without a
+//! solution.
+std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
+                                    const InverseOptions& options = {});
+
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,196 @@
+// Python binding of dispkin/serial/serial_arm.hpp: SerialArm, JointLimits, InverseResult.
+// Joint vectors are (n,) arrays; a Jacobian is (6, n); poses are Pose or (4, 4) arrays.
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/serial/serial_arm.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+using serial::InverseOptions;
+using serial::InverseResult;
+using serial::SerialArm;
+
+// A Pose or a (4, 4) matrix.
+Posed pose_of(const py::handle& obj, const std::string& name) {
+  if (py::isinstance<Posed>(obj)) return obj.cast<Posed>();
+  return Posed::from_matrix(matrix4(obj, name));
+}
+
+// A joint vector: shape (n,); its length is checked by the C++ call, which knows n.
+Eigen::VectorXd joint_vector(const py::handle& obj, const std::string& name) {
+  const std::string expected = "an array of shape (n,)";
+  const Array a = as_array(obj, name, expected);
+  if (a.ndim() != 1) wrong_shape(name, expected, a);
+  return Eigen::Map<const Eigen::VectorXd>(a.data(), a.shape(0));
+}
+
+py::array_t<double> to_vector_array(const Eigen::VectorXd& v) {
+  py::array_t<double> out(py::ssize_t{v.size()});
+  Eigen::Map<Eigen::VectorXd>(out.mutable_data(), v.size()) = v;
+  return out;
+}
+
+py::list to_list(const std::vector<Eigen::VectorXd>& solutions) {
+  py::list out;
+  for (const Eigen::VectorXd& q : solutions) out.append(to_vector_array(q));
+  return out;
+}
+
+std::vector<Eigen::VectorXd> joint_vectors(const py::handle& obj, const std::string& name) {
+  std::vector<Eigen::VectorXd> out;
+  if (py::isinstance<py::array>(obj)) {
+    const Array a = as_array(obj, name, "an array of shape (N, n)");
+    if (a.ndim() != 2) wrong_shape(name, "an array of shape (N, n) or a list of (n,) arrays", a);
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+      out.push_back(Eigen::Map<const Eigen::VectorXd>(a.data() + i * a.shape(1), a.shape(1)));
+    return out;
+  }
+  if (!py::isinstance<py::sequence>(obj)) throw py::value_error(name + ": expected a list of (n,) arrays");
+  std::size_t k = 0;
+  for (const py::handle item : obj.cast<py::sequence>())
+    out.push_back(joint_vector(item, name + "[" + std::to_string(k++) + "]"));
+  return out;
+}
+
+InverseOptions options_of(bool keep_outside_limits, bool offer_equivalents, int max_attempts, double time_budget,
+                          unsigned seed) {
+  InverseOptions o;
+  o.keep_outside_limits = keep_outside_limits;
+  o.offer_equivalents = offer_equivalents;
+  o.max_attempts = max_attempts;
+  o.time_budget = time_budget;
+  o.seed = seed;
+  return o;
+}
+
+// from_urdf: text that starts with '<' (after blanks) is the XML itself, anything else a path.
+SerialArm from_urdf(const std::string& path_or_string, const std::string& base_link, const std::string& tip_link) {
+  const auto first = path_or_string.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && path_or_string[first] == '<')
+    return SerialArm::from_urdf_string(path_or_string, base_link, tip_link);
+  return SerialArm::from_urdf_file(path_or_string, base_link, tip_link);
+}
+
+}  // namespace
+
+void bind_serial(py::module_& m) {
+  py::class_<JointLimits>(m, "JointLimits", "Joint-space limits, one entry per joint ((n,) arrays).")
+      .def_property_readonly("lower", [](const JointLimits& l) { return to_vector_array(l.lower); },
+                             "smallest joint positions (rad); -inf for a continuous joint")
+      .def_property_readonly("upper", [](const JointLimits& l) { return to_vector_array(l.upper); },
+                             "largest joint positions (rad); +inf for a continuous joint")
+      .def_property_readonly("velocity", [](const JointLimits& l) { return to_vector_array(l.velocity); },
+                             "largest joint speeds (rad/s); +inf where the URDF states none")
+      .def_property_readonly("effort", [](const JointLimits& l) { return to_vector_array(l.effort); },
+                             "largest joint torques (N m); +inf where the URDF states none (empty for a hexapod)")
+      .def("__repr__", [](const JointLimits& l) {
+        return "JointLimits(lower=" + tuple_repr(l.lower) + ", upper=" + tuple_repr(l.upper) +
+               ", velocity=" + tuple_repr(l.velocity) + ", effort=" + tuple_repr(l.effort) + ")";
+      });
+
+  py::class_<InverseResult>(m, "InverseResult", "What SerialArm.inverse_solutions found.")
+      .def_property_readonly("solutions", [](const InverseResult& r) { return to_list(r.solutions); },
+                             "list of (n,) joint vectors, each reproducing the pose to 1e-10")
+      .def_readonly("within_limits", &InverseResult::within_limits,
+                    "per solution: inside the position limits (all True unless keep_outside_limits)")
+      .def_readonly("complete", &InverseResult::complete,
+                    "True: every solution (analytic family); False: what the numeric search found")
+      .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
+                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'");
+
+  py::class_<SerialArm>(m, "SerialArm", R"doc(
+A serial arm of revolute joints between two links of a URDF (urdfdom into an Orocos KDL chain).
+Fixed joints are folded in, continuous joints have infinite position limits, prismatic, planar
+and floating joints on the path are refused. Units: metres, radians, seconds, kilograms, N m.)doc")
+      .def_static("from_urdf", &from_urdf, py::arg("path_or_string"), py::arg("base_link"), py::arg("tip_link"),
+                  "From a URDF file, or URDF text when the string starts with '<'. ValueError naming the file, "
+                  "link or joint for malformed URDF, unknown links, base not an ancestor of tip, unsupported joints.")
+      .def_property_readonly("robot_name", &SerialArm::robot_name, "the URDF's <robot name>")
+      .def_property_readonly("base_link", &SerialArm::base_link, "the link the chain starts from")
+      .def_property_readonly("tip_link", &SerialArm::tip_link, "the link whose pose forward() gives")
+      .def_property_readonly("dof", &SerialArm::dof, "number of joints n")
+      .def_property_readonly("joint_names", &SerialArm::joint_names, "the joints in the order of q (base to tip)")
+      .def_property_readonly("joint_limits", &SerialArm::joint_limits, "position, velocity and effort limits (JointLimits)")
+      .def_property_readonly("family", [](const SerialArm& a) { return serial::to_string(a.family()); },
+                             "the analytic IK family recognised from the joint axes: 'spherical_wrist', "
+                             "'three_parallel', 'offset_wrist' or 'general' (numeric fallback)")
+      .def_property("gravity", [](const SerialArm& a) { return to_array(a.gravity()); },
+                    [](SerialArm& a, const py::object& g) { a.set_gravity(vector3(g, "gravity")); },
+                    "(3,) gravitational acceleration in base coordinates (m/s^2), default (0, 0, -9.81)")
+      .def("forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); }, py::arg("q"),
+           "The tip pose in base coordinates for joint positions q (n,).")
+      .def("inverse", [](const SerialArm& a, const py::object& pose) { return to_list(a.inverse(pose_of(pose, "pose"))); },
+           py::arg("pose"),
+           "All joint vectors (list of (n,) arrays) inside the limits whose forward() is `pose` (a Pose or (4, 4)) "
+           "to 1e-10, 2pi-equivalent values included; empty when unreachable.")
+      .def("inverse_solutions",
+           [](const SerialArm& a, const py::object& pose, bool keep, bool equivalents, int attempts, double budget,
+              unsigned seed) {
+             return a.inverse_solutions(pose_of(pose, "pose"), options_of(keep, equivalents, attempts, budget, seed));
+           },
+           py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = true,
+           py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u,
+           "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
+           "2pi copies on or off; for the numeric fallback the restarts, time budget (s) and seed.")
+      .def("jacobian",
+           [](const SerialArm& a, const py::object& q) {
+             return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.jacobian(joint_vector(q, "q")));
+           },
+           py::arg("q"),
+           "(6, n) geometric Jacobian: rows (v, w), the velocity of the tip frame's origin and the angular "
+           "velocity, both in base coordinates.")
+      .def("body_jacobian",
+           [](const SerialArm& a, const py::object& q) {
+             return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.body_jacobian(joint_vector(q, "q")));
+           },
+           py::arg("q"), "(6, n) body Jacobian: the same twist (v, w) in tip coordinates (Pose.log convention).")
+      .def("torques",
+           [](const SerialArm& a, const py::object& q, const py::object& qd, const py::object& qdd) {
+             return to_vector_array(a.torques(joint_vector(q, "q"), joint_vector(qd, "qd"), joint_vector(qdd, "qdd")));
+           },
+           py::arg("q"), py::arg("qd"), py::arg("qdd"),
+           "(n,) joint torques M(q) qdd + C(q, qd) qd + g(q) (N m), recursive Newton-Euler (KDL).")
+      .def("static_torques", [](const SerialArm& a, const py::object& q) { return to_vector_array(a.static_torques(joint_vector(q, "q"))); },
+           py::arg("q"), "(n,) gravity torques g(q) = torques(q, 0, 0) (N m).")
+      .def("configuration",
+           [](const SerialArm& a, const py::object& q) {
+             const serial::Configuration c = a.configuration(joint_vector(q, "q"));
+             return py::make_tuple(c.shoulder, c.elbow, c.wrist);
+           },
+           py::arg("q"),
+           "(shoulder, elbow, wrist) flags of a 6R arm, each +1, -1 or 0 on the boundary (signs of "
+           "(w - p1).(w2 x w1), w3.((p3 - p2) x (w - p3)), w5.(w4 x w6); see serial_arm.hpp).")
+      .def_static("nearest",
+                  [](const py::object& solutions, const py::object& q_ref) {
+                    return to_vector_array(serial::nearest(joint_vectors(solutions, "solutions"), joint_vector(q_ref, "q_ref")));
+                  },
+                  py::arg("solutions"), py::arg("q_ref"), "The solution closest to q_ref (Euclidean, no wrapping).")
+      .def("follow",
+           [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start) {
+             const std::vector<Eigen::VectorXd> path = serial::follow(a, poses, joint_vector(q_start, "q_start"));
+             py::array_t<double> out({static_cast<py::ssize_t>(path.size()), static_cast<py::ssize_t>(a.dof())});
+             for (std::size_t k = 0; k < path.size(); ++k)
+               Eigen::Map<Eigen::VectorXd>(out.mutable_data() + k * static_cast<std::size_t>(a.dof()), a.dof()) = path[k];
+             return out;
+           },
+           py::arg("poses"), py::arg("q_start"),
+           "(N, n) joint path: for each pose the solution nearest to the previous one, from q_start. "
+           "RuntimeError naming the first pose without a solution.")
+      .def("__repr__", [](const SerialArm& a) {
+        return "SerialArm(robot='" + a.robot_name() + "', base_link='" + a.base_link() + "', tip_link='" +
+               a.tip_link() + "', dof=" + std::to_string(a.dof()) + ", family='" + serial::to_string(a.family()) + "')";
+      });
+}
+
+}  // namespace python
+}  // namespace dispkin

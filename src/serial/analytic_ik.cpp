@@ -1,0 +1,110 @@
+// Analytic inverse kinematics of 6R chains (see include/dispkin/serial/analytic_ik.hpp): the
+// entry points, which check the chain, recognise or check its family and run its solver.
+#include "dispkin/serial/analytic_ik.hpp"
+
+#include <stdexcept>
+
+#include "dispkin/error.hpp"
+#include "ik_internal.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace detail {
+void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                             IkSolutionSet& out);
+bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                            IkSolutionSet& out);
+std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                                 const Posed& pose, int samples);
+}  // namespace detail
+
+namespace {
+
+// The geometric tolerance of the solvers' family checks (metres, radians): chains written
+// from DH tables or URDFs are exact to rounding; a family that fits only to 1e-9 still gives
+// exact solutions because every candidate is polished on the true chain.
+constexpr double family_tolerance = 1e-9;
+
+// Throws unless `family` fits the chain (and is not general).
+void require_family(const detail::ChainGeometry& g, IkFamily family) {
+  const char* why = "";
+  switch (family) {
+    case IkFamily::spherical_wrist: why = g.why_not_spherical; break;
+    case IkFamily::three_parallel: why = g.why_not_three_parallel; break;
+    case IkFamily::offset_wrist: why = g.why_not_offset; break;
+    case IkFamily::general: why = "no analytic solver for the general family (use a numeric solver)"; break;
+  }
+  if (*why != '\0')
+    throw std::invalid_argument(describe("family", to_string(family), std::string("does not fit the chain: ") + why));
+}
+
+}  // namespace
+
+std::string to_string(IkFamily family) {
+  switch (family) {
+    case IkFamily::spherical_wrist: return "spherical_wrist";
+    case IkFamily::three_parallel: return "three_parallel";
+    case IkFamily::offset_wrist: return "offset_wrist";
+    case IkFamily::general: return "general";
+  }
+  return "unknown";
+}
+
+IkFamily recognise(const RevoluteChain& chain, double tolerance) {
+  require(std::isfinite(tolerance) && tolerance > 0.0, "tolerance", tolerance, "must be finite and positive");
+  if (chain.dof() != 6) {
+    // Only 6R chains have an analytic family; other lengths are still checked for sanity.
+    if (chain.axes.size() != chain.points.size())
+      throw std::invalid_argument(describe("chain.points", static_cast<long>(chain.points.size()),
+                                           "expected one point per axis (" + std::to_string(chain.axes.size()) + ")"));
+    return IkFamily::general;
+  }
+  detail::validate_chain(chain);
+  return detail::analyse(chain, tolerance).family;
+}
+
+void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose, IkSolutionSet& out) {
+  out.count = 0;
+  detail::validate_chain(chain);
+  const detail::ChainGeometry g = detail::analyse(chain, family_tolerance);
+  require_family(g, family);
+  if (family == IkFamily::spherical_wrist) {
+    detail::spherical_wrist_inverse(chain, g, pose, out);
+  } else if (family == IkFamily::three_parallel) {
+    const bool near_singular = detail::three_parallel_inverse(chain, g, pose, out);
+    // Within ~1e-8 rad of the wrist singularity the closed form's q₅ (a tangency of
+    // subproblem 4, so known only to √ε) can leave Newton short of 1e-10 when the elbow is also
+    // near stretched. The UR layout also fits the offset-wrist search, which parametrises by
+    // q₆ directly: it is the fallback there (and the only case that allocates).
+    if (out.count == 0 && near_singular && *g.why_not_offset == '\0') {
+      for (const Eigen::VectorXd& q : detail::offset_wrist_search(chain, g, pose, OffsetWristOptions{}.samples))
+        out.push(q);
+    }
+  } else {
+    throw std::invalid_argument(describe("family", to_string(family),
+                                         "has no closed form; the allocation-free overload takes spherical_wrist "
+                                         "or three_parallel"));
+  }
+}
+
+std::vector<Eigen::VectorXd> offset_wrist_inverse(const RevoluteChain& chain, const Posed& pose,
+                                                  const OffsetWristOptions& options) {
+  require(options.samples >= 16, "options.samples", options.samples, "must be at least 16");
+  detail::validate_chain(chain);
+  const detail::ChainGeometry g = detail::analyse(chain, family_tolerance);
+  require_family(g, IkFamily::offset_wrist);
+  return detail::offset_wrist_search(chain, g, pose, options.samples);
+}
+
+std::vector<Eigen::VectorXd> analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose) {
+  if (family == IkFamily::offset_wrist) return offset_wrist_inverse(chain, pose, OffsetWristOptions{});
+  IkSolutionSet set;
+  analytic_inverse(chain, family, pose, set);
+  std::vector<Eigen::VectorXd> out;
+  out.reserve(static_cast<std::size_t>(set.count));
+  for (int i = 0; i < set.count; ++i) out.emplace_back(set.q[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,96 @@
+// Shared pieces of the analytic IK solvers (internal): the chain's special geometry, the
+// three-joint positioning stage, the Newton polish on the full pose, and a de-duplicating
+// solution set.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "dispkin/pose.hpp"
+#include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/revolute_chain.hpp"
+#include "ik_subproblems.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace detail {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+//! How the first three joints place a point: axes 2 ∥ 3 (an arm plane; q₁ by subproblem 4)
+//! or axes 1, 2 meeting (a shoulder point; q₁, q₂ by subproblem 2).
+enum class PositionLayout { none, parallel_23, intersecting_12 };
+
+//! What the solvers need to know about a 6R chain's axes (base frame, q = 0).
+struct ChainGeometry {
+  PositionLayout layout = PositionLayout::none;
+  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();  //!< axes 1 ∩ 2 (intersecting_12)
+  bool wrist_meets = false;                            //!< axes 4, 5, 6 meet in one point
+  Eigen::Vector3d wrist_centre = Eigen::Vector3d::Zero();
+  bool axes_45_meet = false;                           //!< axes 4 and 5 meet (offset wrist)
+  Eigen::Vector3d point_45 = Eigen::Vector3d::Zero();
+  bool three_parallel = false;                         //!< axes 2 ∥ 3 ∥ 4, axes 5 ∩ 6 (UR)
+  Eigen::Vector3d point_56 = Eigen::Vector3d::Zero();
+  IkFamily family = IkFamily::general;                 //!< the recognised family
+  // Why a family does not fit (static strings: analysing a chain must not allocate).
+  const char* why_not_spherical = "";
+  const char* why_not_three_parallel = "";
+  const char* why_not_offset = "";
+};
+
+//! Checks the chain (6 joints, finite unit axes and points; throws naming the argument) and
+//! works out its geometry with `tolerance` (metres for distances, radians for angles).
+ChainGeometry analyse(const RevoluteChain& chain, double tolerance);
+
+//! Throws std::invalid_argument (naming `chain.axes[i]` etc.) unless the chain is well formed.
+void validate_chain(const RevoluteChain& chain);
+
+//! The positioning stage: (q₁, q₂, q₃) with e₁e₂e₃ x = y, up to four, labelled by
+//! branch = 2 · (first label) + (second label); `exists[branch]` says which are defined.
+struct PositionSolutions {
+  std::array<std::array<CosSin, 3>, 4> q;  //!< (q₁, q₂, q₃) of each branch
+  Eigen::Vector3d angles(std::size_t branch) const {
+    return {q[branch][0].angle(), q[branch][1].angle(), q[branch][2].angle()};
+  }
+  std::array<bool, 4> exists{};
+  //! How far each branch is from its end: ≥ 0 where it exists; where it does not, the most
+  //! negative tangency margin of its subproblems (the search looks for islands with it).
+  std::array<double, 4> margin{{-1.0, -1.0, -1.0, -1.0}};
+};
+PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                                 const Eigen::Vector3d& y) noexcept;
+
+//! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
+struct PoseError {
+  double position = 0.0;
+  double rotation = 0.0;
+  double worst() const noexcept { return position > rotation ? position : rotation; }
+};
+PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept;
+
+//! Newton's method on the full 6-D pose error with the analytic space Jacobian of the
+//! product of exponentials (minimum-norm steps, so it also converges at singular q).
+//! Returns the final error; q is updated in place and wrapped to (−π, π].
+PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept;
+
+//! Accept a candidate: polish it if its error exceeds `polish_above`, keep it if the error is
+//! then ≤ ik_pose_tolerance, and not if it repeats a kept one (all joints within
+//! ik_duplicate_tolerance mod 2π). `Store` has size(), operator[] and push(q).
+template <typename Store>
+void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, Store& store, double polish_above = 4e-15) {
+  for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
+  PoseError e = pose_error(chain, q, target);
+  if (e.worst() > polish_above) e = polish(chain, target, q, 30);
+  if (!(e.worst() <= ik_pose_tolerance)) return;
+  for (int s = 0; s < store.size(); ++s) {
+    double gap = 0.0;
+    for (int i = 0; i < 6; ++i) gap = std::max(gap, std::abs(wrap_angle(q(i) - store[s](i))));
+    if (gap <= ik_duplicate_tolerance) return;
+  }
+  store.push(q);
+}
+
+}  // namespace detail
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,338 @@
+// The offset-wrist search (seed 003, MATH.md §8), made robust.
+//
+// Axes 4 and 5 meet in a point w off axis 6, so as q₆ turns, w moves on a circle about axis 6
+// (the patent's circle; q₆ is its parameter). For each q₆ = θ:
+//   G' = G e₆⁻¹(θ),  e₁e₂e₃ w = G' w           (positioning stage: up to 4 branches),
+//   R₄R₅ = R_rem = (R₁R₂R₃)ᵀ R_G'              (two joints for a whole rotation),
+// which is solvable iff the angle between axes 4 and 5 is kept (the patent's "fixed link
+// angle"): f_b(θ) = ω₄ · R_rem ω₅ − ω₄ · ω₅ = 0 on branch b. Each branch is continuous where it
+// exists (its subproblem labels are fixed), and two branches meet where a subproblem reaches
+// its tangency, so:
+//   - sign changes between samples of one branch bracket roots;
+//   - a branch ending between samples is followed to its end by bisection; a sign change up to
+//     the end, or a value there near zero, gives a root (the partner branch, which ends at the
+//     same point with the same value, checks its own side);
+//   - a sampled local extremum of |f_b| that may touch zero is refined (golden section); if it
+//     crosses zero, it brackets two roots, if it touches, it is a candidate itself.
+// Every root becomes a full q (q₄, q₅ by subproblem 1), is polished by Newton on the full pose
+// and kept only if forward kinematics reproduces the pose to 1e-10.
+#include <stdexcept>
+
+#include "dispkin/error.hpp"
+#include "ik_internal.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace detail {
+namespace {
+
+struct SolutionList {
+  std::vector<Vector6d> q;
+  int size() const { return static_cast<int>(q.size()); }
+  const Vector6d& operator[](int i) const { return q[static_cast<std::size_t>(i)]; }
+  void push(const Vector6d& x) { q.push_back(x); }
+};
+
+// f_b(θ) on the four branches.
+struct Sample {
+  std::array<bool, 4> exists{};
+  std::array<double, 4> value{};
+  std::array<double, 4> margin{};  // of the positioning stage (PositionSolutions::margin)
+};
+
+class OffsetWristSearch {
+ public:
+  OffsetWristSearch(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose)
+      : chain_(chain), geometry_(geometry), pose_(pose), g_(pose * chain.tip_at_zero.inverse()),
+        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {}
+
+  Sample evaluate(double theta) const {
+    Sample s;
+    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
+    const PositionSolutions arm = position(minus_theta);
+    s.margin = arm.margin;
+    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
+    for (std::size_t b = 0; b < 4; ++b) {
+      if (!arm.exists[b]) continue;
+      s.exists[b] = true;
+      s.value[b] = chain_.axes[3].dot(back_through_arm(arm.q[b], v)) - cos_45_;
+    }
+    return s;
+  }
+
+  // One branch only (refinement).
+  bool evaluate(double theta, std::size_t branch, double& value) const {
+    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
+    const PositionSolutions arm = position(minus_theta);
+    if (!arm.exists[branch]) return false;
+    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);
+    value = chain_.axes[3].dot(back_through_arm(arm.q[branch], v)) - cos_45_;
+    return true;
+  }
+
+  // The positioning margin of branch b (≥ 0 where it exists).
+  double margin(double theta, std::size_t branch) const {
+    return position({std::cos(theta), -std::sin(theta)}).margin[branch];
+  }
+
+  // The full q at a root θ of branch b, offered to the solution list (polish, check, dedupe).
+  void offer_root(double theta, std::size_t branch, SolutionList& out) const {
+    const PositionSolutions arm = position({std::cos(theta), -std::sin(theta)});
+    if (!arm.exists[branch]) return;
+    const Eigen::Vector3d t = arm.angles(branch);
+    const Eigen::Matrix3d r_rem = (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) *
+                                   rotation(chain_.axes[2], t(2)))
+                                      .transpose() *
+                                  g_rotation_ * rotation(chain_.axes[5], -theta);
+    const Eigen::Vector3d& w4 = chain_.axes[3];
+    const Eigen::Vector3d& w5 = chain_.axes[4];
+    const double q4 = subproblem1(w4, w5, r_rem * w5);
+    const Eigen::Vector3d x5 = w5.cross(std::abs(w5.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).normalized();
+    const double q5 = subproblem1(w5, x5, rotation(w4, -q4) * r_rem * x5);
+    Vector6d q;
+    q << t, q4, q5, theta;
+    offer(chain_, pose_, q, out);
+  }
+
+ private:
+  // The positioning stage for q₆ = θ, given cos θ and −sin θ.
+  PositionSolutions position(const CosSin& minus_theta) const {
+    const Eigen::Vector3d& p6 = chain_.points[5];
+    const Eigen::Vector3d w_target = g_ * (rotate(chain_.axes[5], minus_theta, geometry_.point_45 - p6) + p6);
+    return solve_position(chain_, geometry_, geometry_.point_45, w_target);
+  }
+
+  // (R₁R₂R₃)ᵀ v.
+  Eigen::Vector3d back_through_arm(const std::array<CosSin, 3>& t, const Eigen::Vector3d& v) const {
+    return rotate(chain_.axes[2], t[2].inverse(),
+                  rotate(chain_.axes[1], t[1].inverse(), rotate(chain_.axes[0], t[0].inverse(), v)));
+  }
+
+  const RevoluteChain& chain_;
+  const ChainGeometry& geometry_;
+  const Posed& pose_;
+  Posed g_;
+  Eigen::Matrix3d g_rotation_;
+  double cos_45_;
+};
+
+// Illinois regula falsi on [a, b] with f(a) f(b) < 0.
+double refine_root(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
+  int side = 0;
+  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-14; ++iteration) {
+    double c = (a * fb - b * fa) / (fb - fa);
+    if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
+    double fc;
+    if (!search.evaluate(c, branch, fc)) return c;  // left the branch (rounding at its end)
+    if (fc == 0.0) return c;
+    if ((fc < 0.0) == (fb < 0.0)) {
+      b = c;
+      fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = c;
+      fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  return std::abs(fa) < std::abs(fb) ? a : b;
+}
+
+// The value of a near-touching candidate below which Newton on the full pose decides.
+constexpr double touch_tolerance = 1e-5;
+
+// Sub-samples between a branch's end and its first regular sample: near its end a branch
+// behaves like a square root, so roots and extrema crowd there; the spacing is graded
+// (quadratic in the index) to follow that.
+constexpr int end_samples = 12;
+
+struct Point {
+  double theta;
+  double value;
+};
+
+// Golden-section minimum of sign · f_b on [lo, hi]; false if the branch was left.
+bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double f1 = 0.0, f2 = 0.0;
+  if (!search.evaluate(x1, branch, f1) || !search.evaluate(x2, branch, f2)) return false;
+  for (int k = 0; k < 60 && hi - lo > 1e-10; ++k) {
+    if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;  // crossed zero: two roots
+    if (sign * f1 < sign * f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      if (!search.evaluate(x1, branch, f1)) return false;
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      if (!search.evaluate(x2, branch, f2)) return false;
+    }
+  }
+  best = sign * f1 < sign * f2 ? Point{x1, f1} : Point{x2, f2};
+  return true;
+}
+
+// Roots of branch b along a run of points where it exists (θ increasing, the branch defined
+// between consecutive points): sign changes, exact zeros, and sampled extrema of |f| that may
+// touch or cross zero. `ends`: the first / last point is where the branch ends.
+void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Point>& run, bool first_is_end,
+          bool last_is_end, SolutionList& out) {
+  const std::size_t n = run.size();
+  if (first_is_end && std::abs(run.front().value) <= touch_tolerance) search.offer_root(run.front().theta, b, out);
+  if (last_is_end && std::abs(run.back().value) <= touch_tolerance) search.offer_root(run.back().theta, b, out);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const Point& p0 = run[i];
+    const Point& p1 = run[i + 1];
+    if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
+    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0)
+      search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
+    if (i == 0) continue;
+    // A sampled extremum of |f| at p0 that a parabola through its neighbours brings near zero.
+    const Point& pm = run[i - 1];
+    const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+    const double fm = sign * pm.value, fc = sign * p0.value, fp = sign * p1.value;
+    if (!(fm > 0.0 && fp > 0.0 && fc <= fm && fc <= fp && fc < 4.0 * ((fm - fc) + (fp - fc)))) continue;
+    Point low;
+    if (!minimise(search, b, sign, pm.theta, p1.theta, low)) continue;
+    if (sign * low.value < 0.0) {
+      search.offer_root(refine_root(search, b, pm.theta, pm.value, low.theta, low.value), b, out);
+      search.offer_root(refine_root(search, b, low.theta, low.value, p1.theta, p1.value), b, out);
+    } else if (sign * low.value <= touch_tolerance) {
+      search.offer_root(low.theta, b, out);
+    }
+  }
+}
+
+// The end of branch b between `in` (where it exists, value f_in) and `outside`, by bisection;
+// returns the graded sub-samples from the end towards `in` (excluding `in`), end first.
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
+  double f_in = 0.0;
+  const double start = in;
+  while (std::abs(outside - in) > 1e-14) {
+    const double mid = 0.5 * (in + outside);
+    double f;
+    if (search.evaluate(mid, b, f)) {
+      in = mid;
+      f_in = f;
+    } else {
+      outside = mid;
+    }
+  }
+  std::vector<Point> points;
+  if (in == start) return points;  // the sample itself is the end (to rounding)
+  points.push_back({in, f_in});
+  for (int k = 1; k < end_samples; ++k) {
+    const double s = static_cast<double>(k) / end_samples;
+    const double theta = in + (start - in) * s * s;
+    double f;
+    if (search.evaluate(theta, b, f)) points.push_back({theta, f});
+  }
+  return points;
+}
+
+// An island: branch b absent at the samples t₋₁, t₀, t₁ but with a sampled maximum of its
+// margin at t₀ that a parabola brings near zero. Golden-section maximisation of the margin
+// finds a point of the island if there is one; the island is then sampled from both its ends.
+void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi, SolutionList& out) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double m1 = search.margin(x1, b), m2 = search.margin(x2, b);
+  const double left = lo, right = hi;
+  double inside = 0.0;
+  bool found = false;
+  for (int k = 0; k < 80 && hi - lo > 1e-13; ++k) {
+    double f;
+    if (m1 >= 0.0 && search.evaluate(x1, b, f)) { inside = x1; found = true; break; }
+    if (m2 >= 0.0 && search.evaluate(x2, b, f)) { inside = x2; found = true; break; }
+    if (m1 > m2) {
+      hi = x2;
+      x2 = x1;
+      m2 = m1;
+      x1 = hi - ratio * (hi - lo);
+      m1 = search.margin(x1, b);
+    } else {
+      lo = x1;
+      x1 = x2;
+      m1 = m2;
+      x2 = lo + ratio * (hi - lo);
+      m2 = search.margin(x2, b);
+    }
+  }
+  if (!found) return;
+  double f_inside = 0.0;
+  search.evaluate(inside, b, f_inside);
+  std::vector<Point> run = branch_end(search, b, inside, left);
+  run.push_back({inside, f_inside});
+  const std::vector<Point> back = branch_end(search, b, inside, right);
+  run.insert(run.end(), back.rbegin(), back.rend());
+  scan(search, b, run, true, true, out);
+}
+
+}  // namespace
+
+std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                                 const Posed& pose, int samples) {
+  const OffsetWristSearch search(chain, geometry, pose);
+  const int n = samples;
+  const double step = 2.0 * pi / n;
+  std::vector<Sample> table(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(-pi + j * step);
+  auto at = [&](int j) -> const Sample& { return table[static_cast<std::size_t>(((j % n) + n) % n)]; };
+  auto theta_of = [&](int j) { return -pi + j * step; };  // j beyond [0, n): the next / previous turn
+
+  SolutionList out;
+  std::vector<Point> run;
+  for (std::size_t b = 0; b < 4; ++b) {
+    int gap = -1;  // a sample where the branch does not exist
+    for (int j = 0; j < n && gap < 0; ++j)
+      if (!at(j).exists[b]) gap = j;
+    if (gap < 0) {
+      // The branch exists all the way round: one periodic run (two samples repeated past the
+      // turn so that the wrap-around interval and extremum are scanned too).
+      run.clear();
+      for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
+      scan(search, b, run, false, false, out);
+      continue;
+    }
+    // Runs of consecutive existing samples, starting after the gap, once round; islands
+    // between absent samples.
+    for (int j = gap + 1; j <= gap + n;) {
+      if (!at(j).exists[b]) {
+        const Sample& sm = at(j - 1);
+        const Sample& sp = at(j + 1);
+        const double mm = sm.margin[b], m0 = at(j).margin[b], mp = sp.margin[b];
+        if (!sm.exists[b] && !sp.exists[b] && m0 >= mm && m0 >= mp && -m0 < 4.0 * ((m0 - mm) + (m0 - mp)))
+          island(search, b, theta_of(j - 1), theta_of(j + 1), out);
+        ++j;
+        continue;
+      }
+      int last = j;
+      while (last + 1 <= gap + n && at(last + 1).exists[b]) ++last;
+      run.clear();
+      const std::vector<Point> front = branch_end(search, b, theta_of(j), theta_of(j - 1));
+      run.insert(run.end(), front.begin(), front.end());
+      for (int k = j; k <= last; ++k) run.push_back({theta_of(k), at(k).value[b]});
+      std::vector<Point> back = branch_end(search, b, theta_of(last), theta_of(last + 1));
+      run.insert(run.end(), back.rbegin(), back.rend());
+      scan(search, b, run, !front.empty(), !back.empty(), out);
+      j = last + 1;
+    }
+  }
+  std::vector<Eigen::VectorXd> result;
+  result.reserve(out.q.size());
+  for (const Vector6d& q : out.q) result.emplace_back(q);
+  return result;
+}
+
+}  // namespace detail
+}  // namespace serial
+}  // namespace dispkin

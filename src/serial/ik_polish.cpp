@@ -1,0 +1,80 @@
+// Newton's method on the full pose error, the last step of every analytic IK solver: it
+// removes the rounding a chain of subproblems accumulates near singular configurations and
+// turns a refined root of the offset-wrist search into an exact solution.
+#include <Eigen/QR>
+
+#include "ik_internal.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace detail {
+namespace {
+
+// The rotation angle (rad) of a unit quaternion, stable near 0.
+double angle_of(const Eigen::Quaterniond& q) { return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w())); }
+
+// T(q) = e₁ ⋯ e₆ M, with the space-frame joint axes ωᵢ' and points pᵢ' at q on the way.
+Posed forward_with_axes(const RevoluteChain& chain, const Vector6d& q, Eigen::Matrix<double, 3, 6>& w,
+                        Eigen::Matrix<double, 3, 6>& p) {
+  Posed t;
+  for (int i = 0; i < 6; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    w.col(i) = t.quaternion() * chain.axes[k];
+    p.col(i) = t * chain.points[k];
+    t = t * rotation_about_line(chain.axes[k], chain.points[k], q(i));
+  }
+  return t * chain.tip_at_zero;
+}
+
+}  // namespace
+
+PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept {
+  Posed t;
+  for (int i = 0; i < 6; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    t = t * rotation_about_line(chain.axes[k], chain.points[k], q(i));
+  }
+  t = t * chain.tip_at_zero;
+  PoseError e;
+  e.position = (t.translation() - target.translation()).norm();
+  e.rotation = angle_of(target.quaternion().conjugate() * t.quaternion());
+  return e;
+}
+
+PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept {
+  Eigen::Matrix<double, 3, 6> w, p;
+  Eigen::Matrix<double, 6, 6> jacobian;
+  Eigen::Matrix<double, 6, 1> residual;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, 6, 6>> solver;
+  Vector6d best = q;
+  PoseError best_error = pose_error(chain, q, target);
+  for (int iteration = 0; iteration < max_iterations && best_error.worst() > 1e-15; ++iteration) {
+    const Posed t = forward_with_axes(chain, q, w, p);
+    // Space-frame error: the tool origin must move by Δt, the frame turn by the rotation vector
+    // of R_target Rᵀ; joint i moves the origin by ωᵢ' × (t − pᵢ') and turns it about ωᵢ'.
+    residual.head<3>() = target.translation() - t.translation();
+    residual.tail<3>() = quaternion_log(Eigen::Quaterniond(target.quaternion() * t.quaternion().conjugate()));
+    for (int i = 0; i < 6; ++i) {
+      jacobian.block<3, 1>(0, i) = w.col(i).cross(t.translation() - p.col(i));
+      jacobian.block<3, 1>(3, i) = w.col(i);
+    }
+    // Minimum-norm least squares: at a singular q the free combination is left alone.
+    solver.setThreshold(1e-10);
+    solver.compute(jacobian);
+    q += solver.solve(residual);
+    for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
+    const PoseError e = pose_error(chain, q, target);
+    if (e.worst() < best_error.worst()) {
+      best = q;
+      best_error = e;
+    } else if (iteration >= 1) {
+      break;  // no progress: rounding reached, or no solution near the start
+    }
+  }
+  q = best;
+  return best_error;
+}
+
+}  // namespace detail
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,143 @@
+// The serial-arm plugin: forward kinematics, Jacobians and dynamics through Orocos KDL, and the
+// product-of-exponentials view of the chain that the analytic IK works on.
+#include "dispkin/serial/serial_arm.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <Eigen/Geometry>
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainidsolver_recursive_newton_euler.hpp>
+#include <kdl/chainjnttojacsolver.hpp>
+#include <kdl/jacobian.hpp>
+#include <kdl/jntarray.hpp>
+
+#include "dispkin/error.hpp"
+#include "serial_arm_model.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace {
+
+KDL::JntArray to_jnt_array(const Eigen::VectorXd& q) {
+  KDL::JntArray out(static_cast<unsigned>(q.size()));
+  out.data = q;
+  return out;
+}
+
+int sign_of(double x) { return x > 1e-9 ? 1 : (x < -1e-9 ? -1 : 0); }
+
+}  // namespace
+
+RevoluteChain revolute_chain_of(const KDL::Chain& chain) {
+  RevoluteChain out;
+  KDL::Frame t = KDL::Frame::Identity();  // base → the current segment's root, at q = 0
+  for (unsigned s = 0; s < chain.getNrOfSegments(); ++s) {
+    const KDL::Segment& seg = chain.getSegment(s);
+    const KDL::Joint& joint = seg.getJoint();
+    if (joint.getType() != KDL::Joint::Fixed) {
+      if (joint.getType() != KDL::Joint::RotAxis)
+        throw std::logic_error("revolute_chain_of: joint \"" + joint.getName() + "\" is not a rotation about an axis");
+      out.axes.push_back(to_eigen(t.M * joint.JointAxis()).normalized());
+      out.points.push_back(to_eigen(t * joint.JointOrigin()));
+    }
+    t = t * seg.pose(0.0);
+  }
+  out.tip_at_zero = to_pose(t);
+  return out;
+}
+
+SerialArm::SerialArm(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
+
+const std::string& SerialArm::robot_name() const noexcept { return model_->robot_name; }
+const std::string& SerialArm::base_link() const noexcept { return model_->base_link; }
+const std::string& SerialArm::tip_link() const noexcept { return model_->tip_link; }
+int SerialArm::dof() const { return static_cast<int>(model_->joint_names.size()); }
+JointLimits SerialArm::joint_limits() const { return model_->limits; }
+std::vector<std::string> SerialArm::joint_names() const { return model_->joint_names; }
+std::vector<BodyInertia> SerialArm::inertias() const { return model_->inertias; }
+const RevoluteChain& SerialArm::chain() const noexcept { return model_->revolute; }
+IkFamily SerialArm::family() const noexcept { return model_->family; }
+
+void SerialArm::require_joint_vector(const Eigen::VectorXd& q, const char* name) const {
+  if (q.size() != dof())
+    throw std::invalid_argument(describe(name, q, "expected " + std::to_string(dof()) + " joint values, got " +
+                                                      std::to_string(q.size())));
+  require_finite(q, name);
+}
+
+Posed SerialArm::forward(const Eigen::VectorXd& q) const {
+  require_joint_vector(q, "q");
+  KDL::ChainFkSolverPos_recursive solver(model_->chain);
+  KDL::Frame tip;
+  if (solver.JntToCart(to_jnt_array(q), tip) < 0) throw std::runtime_error("forward: KDL ChainFkSolverPos_recursive failed");
+  return to_pose(tip);
+}
+
+Eigen::MatrixXd SerialArm::jacobian(const Eigen::VectorXd& q) const {
+  require_joint_vector(q, "q");
+  KDL::ChainJntToJacSolver solver(model_->chain);
+  KDL::Jacobian j(static_cast<unsigned>(dof()));
+  if (solver.JntToJac(to_jnt_array(q), j) < 0) throw std::runtime_error("jacobian: KDL ChainJntToJacSolver failed");
+  return j.data;
+}
+
+Eigen::MatrixXd SerialArm::body_jacobian(const Eigen::VectorXd& q) const {
+  const Eigen::MatrixXd j = jacobian(q);
+  const Eigen::Matrix3d rt = forward(q).rotation().transpose();
+  Eigen::MatrixXd out(6, dof());
+  out.topRows<3>() = rt * j.topRows<3>();
+  out.bottomRows<3>() = rt * j.bottomRows<3>();
+  return out;
+}
+
+void SerialArm::set_gravity(const Eigen::Vector3d& gravity) {
+  require_finite(gravity, "gravity");
+  gravity_ = gravity;
+}
+
+Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const {
+  require_joint_vector(q, "q");
+  require_joint_vector(qd, "qd");
+  require_joint_vector(qdd, "qdd");
+  KDL::ChainIdSolver_RNE solver(model_->chain, KDL::Vector(gravity_.x(), gravity_.y(), gravity_.z()));
+  const KDL::Wrenches no_external(model_->chain.getNrOfSegments(), KDL::Wrench::Zero());
+  KDL::JntArray tau(static_cast<unsigned>(dof()));
+  if (solver.CartToJnt(to_jnt_array(q), to_jnt_array(qd), to_jnt_array(qdd), no_external, tau) < 0)
+    throw std::runtime_error("torques: KDL ChainIdSolver_RNE failed");
+  return tau.data;
+}
+
+Eigen::VectorXd SerialArm::static_torques(const Eigen::VectorXd& q) const {
+  require_joint_vector(q, "q");
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dof());
+  return torques(q, zero, zero);
+}
+
+Configuration SerialArm::configuration(const Eigen::VectorXd& q) const {
+  require(dof() == 6, "dof", dof(), "configuration flags are defined for 6R arms");
+  require_joint_vector(q, "q");
+  const RevoluteChain& c = model_->revolute;
+  // Axis i at q is axis i at 0 moved by joints 1 … i−1.
+  Eigen::Vector3d w[6], p[6];
+  Posed t;
+  Posed t4;  // joints 1 … 4: moves both reference points (joint 5 turns about the line of one)
+  for (int i = 0; i < 6; ++i) {
+    w[i] = t.quaternion() * c.axes[static_cast<std::size_t>(i)];
+    p[i] = t * c.points[static_cast<std::size_t>(i)];
+    t = t * rotation_about_line(c.axes[static_cast<std::size_t>(i)], c.points[static_cast<std::size_t>(i)], q(i));
+    if (i == 3) t4 = t;
+  }
+  const Eigen::Vector3d s = t4 * model_->shoulder_point;
+  const Eigen::Vector3d e = t4 * model_->elbow_point;
+  Configuration out;
+  out.shoulder = sign_of((s - p[0]).dot(w[1].cross(w[0])));
+  out.elbow = sign_of(w[2].dot((p[2] - p[1]).cross(e - p[2])));
+  out.wrist = sign_of(w[4].dot(w[3].cross(w[5])));
+  return out;
+}
+
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,59 @@
+// The data behind a SerialArm (private to src/serial: keeps KDL and urdfdom out of the public
+// headers). Built once by the URDF loader, then shared read-only by every copy of the arm.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <kdl/chain.hpp>
+#include <kdl/frames.hpp>
+
+#include "dispkin/kinematics.hpp"
+#include "dispkin/pose.hpp"
+#include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/revolute_chain.hpp"
+#include "dispkin/serial/serial_arm.hpp"
+
+namespace dispkin {
+namespace serial {
+
+struct SerialArm::Model {
+  std::string robot_name;
+  std::string base_link;
+  std::string tip_link;
+  KDL::Chain chain;                     // fixed segments included; one movable joint per q entry
+  std::vector<std::string> joint_names;  // order of q
+  JointLimits limits;                    // lower/upper ±∞ for continuous joints, velocity/effort +∞ if unstated
+  std::vector<BodyInertia> inertias;     // per joint, in its child link's frame
+  RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
+  IkFamily family = IkFamily::general;
+  // Configuration flags, base coordinates at q = 0: the point of axis 4 nearest to axis 5
+  // and the point of axis 5 nearest to axis 6 (both the wrist centre of a spherical wrist).
+  Eigen::Vector3d elbow_point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d shoulder_point = Eigen::Vector3d::Zero();
+};
+
+// KDL ↔ dispkin conversions.
+inline Posed to_pose(const KDL::Frame& f) {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = f.M(i, j);
+  Eigen::Quaterniond q(r);
+  q.normalize();
+  return Posed::unchecked(q, Eigen::Vector3d(f.p.x(), f.p.y(), f.p.z()));
+}
+
+inline KDL::Frame to_frame(const Posed& pose) {
+  const Eigen::Quaterniond& q = pose.quaternion();
+  const Eigen::Vector3d& t = pose.translation();
+  return KDL::Frame(KDL::Rotation::Quaternion(q.x(), q.y(), q.z(), q.w()), KDL::Vector(t.x(), t.y(), t.z()));
+}
+
+inline Eigen::Vector3d to_eigen(const KDL::Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+
+// The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.
+RevoluteChain revolute_chain_of(const KDL::Chain& chain);
+
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,209 @@
+"""SerialArm from Python on real robot descriptions (the `example-robot-data` package: UR5,
+Franka Panda and Kinova Jaco2 j2s6s200 URDFs), checked against an independent model: pinocchio (`pin`) forward
+kinematics and RNEA torques on random states."""
+
+import importlib.metadata
+import pathlib
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import dispkin
+
+pin = pytest.importorskip("pinocchio")
+
+DATA = pathlib.Path(__file__).resolve().parents[1] / "data" / "urdf"
+SEED = 20261122
+COUNT = 200
+
+
+def robots_dir():
+    """example-robot-data (a cmeel package, no Python module) installs its URDFs under
+    cmeel.prefix/share/example-robot-data/robots."""
+    try:
+        dist = importlib.metadata.distribution("example-robot-data")
+    except importlib.metadata.PackageNotFoundError:
+        pytest.skip("example-robot-data is not installed")
+    return pathlib.Path(dist.locate_file("cmeel.prefix/share/example-robot-data/robots"))
+
+
+def ur5_urdf():
+    return (robots_dir() / "ur_description" / "urdf" / "ur5_robot.urdf").read_text()
+
+
+def panda_urdf_without_fingers():
+    """panda.urdf without its two prismatic fingers: SerialArm leaves subtrees on movable joints
+    out of the dynamics, pinocchio would lock them in; without them both describe the same arm."""
+    root = ET.fromstring((robots_dir() / "panda_description" / "urdf" / "panda.urdf").read_text())
+    for joint in list(root.findall("joint")):
+        if joint.get("type") == "prismatic":
+            child = joint.find("child").get("link")
+            root.remove(joint)
+            root.remove(next(l for l in root.findall("link") if l.get("name") == child))
+    return ET.tostring(root, encoding="unicode")
+
+
+def kinova_urdf():
+    return (robots_dir() / "kinova_description" / "robots" / "kinova.urdf").read_text()
+
+
+def to_pinocchio_q(model, q):
+    """pinocchio's configuration of joint values q: a continuous joint is (cos q, sin q)."""
+    out = pin.neutral(model)
+    for j, value in zip(range(1, model.njoints), q):
+        joint = model.joints[j]
+        if joint.nq == 2:
+            out[joint.idx_q : joint.idx_q + 2] = (np.cos(value), np.sin(value))
+        else:
+            out[joint.idx_q] = value
+    return out
+
+
+def pinocchio_model(urdf_text):
+    model = pin.buildModelFromXML(urdf_text)
+    return model, model.createData()
+
+
+def random_q(rng, arm, n):
+    limits = arm.joint_limits
+    lo = np.where(np.isfinite(limits.lower), limits.lower, -np.pi)
+    hi = np.where(np.isfinite(limits.upper), limits.upper, np.pi)
+    return rng.uniform(lo, hi, size=(n, arm.dof))
+
+
+ROBOTS = {
+    "ur5": (ur5_urdf, "world", "tool0"),
+    "panda": (panda_urdf_without_fingers, "panda_link0", "panda_hand"),
+    "kinova": (kinova_urdf, "base", "j2s6s200_end_effector"),  # continuous joints 1, 4, 6
+}
+
+
+@pytest.fixture(params=sorted(ROBOTS))
+def robot(request):
+    text_of, base, tip = ROBOTS[request.param]
+    text = text_of()
+    arm = dispkin.SerialArm.from_urdf(text, base, tip)
+    model, data = pinocchio_model(text)
+    # The same joints in the same order (pinocchio orders them depth first, as the chain is).
+    assert [model.names[i] for i in range(1, model.njoints)] == arm.joint_names
+    return request.param, arm, model, data, tip
+
+
+def test_forward_matches_pinocchio(robot):
+    name, arm, model, data, tip = robot
+    frame = model.getFrameId(tip)
+    worst = 0.0
+    for q in random_q(np.random.default_rng(SEED), arm, COUNT):
+        pin.framesForwardKinematics(model, data, to_pinocchio_q(model, q))
+        worst = max(worst, np.abs(arm.forward(q).matrix() - data.oMf[frame].homogeneous).max())
+    assert worst <= 1e-9, name
+
+
+def test_torques_match_pinocchio_rnea(robot):
+    name, arm, model, data, _ = robot
+    assert np.array_equal(arm.gravity, [0.0, 0.0, -9.81])
+    assert np.allclose(model.gravity.linear, arm.gravity)
+    rng = np.random.default_rng(SEED + 1)
+    worst = 0.0
+    for q in random_q(rng, arm, COUNT):
+        qd = rng.uniform(-2.0, 2.0, arm.dof)
+        qdd = rng.uniform(-5.0, 5.0, arm.dof)
+        tau = arm.torques(q, qd, qdd)
+        worst = max(worst, np.abs(tau - pin.rnea(model, data, to_pinocchio_q(model, q), qd, qdd)).max())
+        assert np.array_equal(arm.static_torques(q), arm.torques(q, np.zeros(arm.dof), np.zeros(arm.dof)))
+    assert worst <= 1e-9, name
+
+
+def test_jacobian_matches_pinocchio(robot):
+    name, arm, model, data, tip = robot
+    frame = model.getFrameId(tip)
+    for q in random_q(np.random.default_rng(SEED + 2), arm, 20):
+        pin.computeJointJacobians(model, data, to_pinocchio_q(model, q))
+        pin.updateFramePlacements(model, data)
+        # LOCAL_WORLD_ALIGNED: tip-origin velocity and angular velocity in base axes.
+        j = pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
+        assert arm.jacobian(q).shape == (6, arm.dof)
+        assert np.abs(arm.jacobian(q) - j).max() <= 1e-9, name
+        assert np.abs(arm.body_jacobian(q) - pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL)).max() <= 1e-9
+
+
+def test_ur5_inverse_is_complete_and_contains_q():
+    arm = dispkin.SerialArm.from_urdf(ur5_urdf(), "base_link", "tool0")
+    assert arm.family == "three_parallel"
+    assert arm.dof == 6
+    assert arm.joint_names[0] == "shoulder_pan_joint"
+    rng = np.random.default_rng(SEED + 3)
+    for q in random_q(rng, arm, 50):
+        pose = arm.forward(q)
+        result = arm.inverse_solutions(pose)
+        assert result.complete and result.family == "three_parallel"
+        assert all(result.within_limits)
+        solutions = arm.inverse(pose)
+        assert all(s.shape == (6,) for s in solutions)
+        assert min(np.abs(s - q).max() for s in solutions) <= 1e-9
+        for s in solutions:
+            assert arm.forward(s).is_approx(pose, 1e-10)
+        assert np.array_equal(arm.nearest(solutions, q + 1e-3), solutions[int(np.argmin([np.linalg.norm(s - q - 1e-3) for s in solutions]))])
+
+
+def test_kinova_jaco2_spherical_wrist_with_continuous_joints():
+    arm = dispkin.SerialArm.from_urdf(kinova_urdf(), "base", "j2s6s200_end_effector")
+    assert arm.family == "spherical_wrist"
+    limits = arm.joint_limits
+    continuous = ~np.isfinite(limits.lower)
+    assert list(continuous) == [True, False, False, True, False, True]
+    for q in random_q(np.random.default_rng(SEED + 5), arm, 50):
+        pose = arm.forward(q)
+        result = arm.inverse_solutions(pose)
+        assert result.complete
+        assert min(np.abs(s - q).max() for s in result.solutions) <= 1e-9
+        for s in result.solutions:
+            assert arm.forward(s).is_approx(pose, 1e-10)
+            # continuous joints come back in (-pi, pi], limited ones inside their limits
+            assert np.all(np.abs(s[continuous]) <= np.pi)
+            assert np.all(s[~continuous] >= limits.lower[~continuous] - 1e-10)
+            assert np.all(s[~continuous] <= limits.upper[~continuous] + 1e-10)
+
+
+def test_panda_numeric_fallback_reports_incomplete():
+    arm = dispkin.SerialArm.from_urdf(panda_urdf_without_fingers(), "panda_link0", "panda_hand")
+    assert arm.family == "general" and arm.dof == 7
+    q = random_q(np.random.default_rng(SEED + 4), arm, 1)[0]
+    pose = arm.forward(q)
+    result = arm.inverse_solutions(pose, max_attempts=20, time_budget=1.0)
+    assert not result.complete
+    assert result.solutions, "a reachable pose of a redundant arm gave no solution"
+    limits = arm.joint_limits
+    for s in result.solutions:
+        assert arm.forward(s).is_approx(pose, 1e-10)
+        assert np.all(s >= limits.lower - 1e-10) and np.all(s <= limits.upper + 1e-10)
+
+
+def test_limits_and_the_planar_arm_from_a_file():
+    arm = dispkin.SerialArm.from_urdf(str(DATA / "arm_planar_two_link.urdf"), "base", "payload")
+    limits = arm.joint_limits
+    assert np.array_equal(limits.lower, [-3.0, -np.inf])
+    assert np.array_equal(limits.upper, [3.0, np.inf])
+    assert np.array_equal(limits.velocity, [2.0, 3.0])
+    assert np.array_equal(limits.effort, [100.0, 50.0])
+    assert arm.family == "general"
+    q = np.array([0.4, -1.1])
+    solutions = arm.inverse(arm.forward(q))
+    assert len(solutions) == 1 and np.abs(solutions[0] - q).max() <= 1e-9
+    path = arm.follow([arm.forward(q + 0.01 * k) for k in range(5)], q)
+    assert path.shape == (5, 2) and np.abs(path - (q + 0.01 * np.arange(5)[:, None])).max() <= 1e-9
+    # The XML text itself works too (a string starting with '<').
+    same = dispkin.SerialArm.from_urdf((DATA / "arm_planar_two_link.urdf").read_text(), "base", "payload")
+    assert same.forward(q).is_approx(arm.forward(q), 0.0)
+    assert "planar_two_link" in repr(arm)
+
+
+def test_configuration_flags_of_ur5():
+    arm = dispkin.SerialArm.from_urdf(ur5_urdf(), "base_link", "tool0")
+    q = np.array([0.3, -1.0, 1.2, -0.5, 0.8, 0.1])
+    flags = arm.configuration(q)
+    assert all(f in (-1, 1) for f in flags)
+    flipped = q.copy()
+    flipped[4] = -q[4]
+    assert arm.configuration(flipped)[2] == -flags[2]
