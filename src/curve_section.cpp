@@ -37,19 +37,8 @@ Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept {
 
 double CurveSection::length(const MetricSetd& set, std::optional<double> system_velocity) const {
   set.require_well_formed();
-  const double h = span();
   const double m = 0.5 * (v0 + v1);
-  const double delta = 0.5 * h;
-
-  // Per unit τ: velocities scale with h, accelerations with h².
-  const DerivativeBounds c = derivative_bounds(position, m, delta);
-  const DerivativeBounds phi = derivative_bounds(rotation, m, delta);
-  const double theta_max = rotation.value(m).norm() + phi.first * delta;
-  const double pivot_speed = h * c.first;
-  const double pivot_acceleration = h * h * c.second;
-  const double omega = h * phi.first;
-  const double omega_dot = h * h * (phi.second + jacobian_rate_bound(theta_max) * phi.first * phi.first);
-
+  const detail::MotionBounds motion = motion_bounds();
   Posed middle;
   Twistd twist_middle;
   at(0.5, middle, twist_middle);
@@ -57,25 +46,29 @@ double CurveSection::length(const MetricSetd& set, std::optional<double> system_
 
   double best = 0.0;
   for (const auto& g : set.groups()) {
-    const double rate = detail::group_acceleration_bound(g, pivot, pivot_middle,
-                                                        {pivot_speed, pivot_acceleration, omega, omega_dot});
+    const double rate = detail::group_acceleration_bound(g, pivot, pivot_middle, motion);
     const double speed = detail::group_max_speed(g, middle, twist_middle);
     best = std::max(best, g.weight(system_velocity) * (speed + 0.5 * rate));
   }
   return best;
 }
 
-double CurveSection::acceleration_bound(const MetricSetd& set) const {
+detail::MotionBounds CurveSection::motion_bounds() const {
   const double h = span();
   const double m = 0.5 * (v0 + v1);
   const double delta = 0.5 * h;
   const DerivativeBounds c = derivative_bounds(position, m, delta);
   const DerivativeBounds phi = derivative_bounds(rotation, m, delta);
   const double theta_max = rotation.value(m).norm() + phi.first * delta;
-  const detail::MotionBounds motion{h * c.first, h * h * c.second, h * phi.first,
-                                    h * h * (phi.second + jacobian_rate_bound(theta_max) * phi.first * phi.first)};
+  return {h * c.first, h * h * c.second, h * phi.first,
+          h * h * (phi.second + jacobian_rate_bound(theta_max) * phi.first * phi.first)};
+}
+
+double CurveSection::acceleration_bound(const MetricSetd& set) const {
+  const detail::MotionBounds motion = motion_bounds();
+  const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
   double best = 0.0;
-  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, position.value(m), motion));
+  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
   return best;
 }
 

@@ -232,7 +232,9 @@ double joint_acceleration_bound(const Section& section, const Hexapod::Joints& p
           const double radius = (s.start * s.pivot - s.center).norm();
           return s.angle * s.angle * radius + s.rotation_angle * s.rotation_angle * reach(s.pivot);
         } else {
-          return std::numeric_limits<double>::infinity();
+          // A curved section (SPLINE, blend): ‖p̈‖ ≤ |c̈| + (|ω̇| + |ω|²) ρ from its motion bounds.
+          const detail::MotionBounds b = s.motion_bounds();
+          return b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * reach(s.pivot);
         }
       },
       section);

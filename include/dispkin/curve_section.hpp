@@ -121,6 +121,9 @@ struct CurveSection {
   //! L the section's length, a point accelerates at most (ṡ/L)² times this from the path's
   //! curvature alone.
   double acceleration_bound(const MetricSetd& set) const;
+
+  //! Bounds over the section of |ċ|, |c̈|, |ω| ≤ |φ̇| and |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², per unit τ.
+  detail::MotionBounds motion_bounds() const;
 };
 
 }  // namespace dispkin

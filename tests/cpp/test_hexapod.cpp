@@ -372,8 +372,9 @@ MetricSetd tool_points() {
 // screw LIN, CIRC.
 Path random_hexapod_path(const Hexapod& h, Random& rnd, int family) {
   const Posed a = reachable_pose(h, rnd), b = reachable_pose(h, rnd);
-  if (family % 3 == 0) return Path::lin(a, b, Interpolation::decoupled, rnd.vector(0.1));
-  if (family % 3 == 1) return Path::lin(a, b, Interpolation::screw);
+  if (family % 4 == 0) return Path::lin(a, b, Interpolation::decoupled, rnd.vector(0.1));
+  if (family % 4 == 1) return Path::lin(a, b, Interpolation::screw);
+  if (family % 4 == 3) return Path::spline({a, reachable_pose(h, rnd), b}, rnd.vector(0.05), 1e-2);
   const Posed via = h.home() * Posed::exp(Twistd(rnd.vector(0.02), Eigen::Vector3d::Zero()));
   return Path::circ(a, Posed(a.quaternion(), via.translation()), b, rnd.vector(0.05), 0.05);
 }
