@@ -196,6 +196,21 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   return trajectory;
 }
 
+std::vector<double> Trajectory::characteristic_times() const {
+  std::vector<double> times{0.0};
+  for (const Piece& piece : pieces_) {
+    const Profile& law = piece.profile;
+    for (int i = 0; i < law.phase_count(); ++i) {
+      const double begin = law.phase_start_time(i), end = law.phase_start_time(i + 1);
+      times.push_back(piece.start_time + 0.5 * (begin + end));
+      times.push_back(piece.start_time + end);
+    }
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
 TrajectorySample Trajectory::sample(double t) const noexcept {
   TrajectorySample out;
   if (pieces_.empty()) return out;

@@ -18,4 +18,5 @@
 #include "dispkin/frames.hpp"
 #if defined(DISPKIN_HAS_SERIAL)  // set by dispkin::dispkin when the serial-arm plugin is built
 #include "dispkin/serial/serial_arm.hpp"
+#include "dispkin/retiming.hpp"
 #endif

@@ -65,6 +65,11 @@ class Trajectory {
   //! curve (plan() slows down where the path curves tightly).
   std::size_t law_count() const noexcept { return pieces_.size(); }
 
+  //! Every phase boundary and phase middle of every time law, sorted, from 0 to duration():
+  //! the instants where velocity or acceleration peak or change their course (the seed's
+  //! P0, P1, P12, P2, P3 for each law). Planning side; allocates.
+  std::vector<double> characteristic_times() const;
+
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
   //! out[i] = sample(times[i]).
