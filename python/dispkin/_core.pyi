@@ -1,7 +1,7 @@
 # Type stubs of the compiled module dispkin._core (python/src/*.cpp). Arrays are float64
 # numpy arrays; anything numpy can read as numbers of the right shape is accepted.
 import types
-from typing import List, Optional, Protocol, Sequence, Tuple, Union, overload
+from typing import Dict, List, Optional, Protocol, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -392,3 +392,54 @@ class SerialArm:
     @staticmethod
     def nearest(solutions: Union[Sequence[_ArrayLike], _ArrayLike], q_ref: _ArrayLike) -> _Array: ...
     def follow(self, poses: Sequence[Pose], q_start: _ArrayLike) -> _Array: ...
+
+class JointLimitReport:
+    @property
+    def velocity_factor(self) -> float: ...
+    @property
+    def acceleration_factor(self) -> float: ...
+    @property
+    def velocity_joint(self) -> int: ...
+    @property
+    def torque_joint(self) -> int: ...
+    @property
+    def position_excess(self) -> float: ...
+    @property
+    def position_joint(self) -> int: ...
+    @property
+    def velocity_time(self) -> float: ...
+    @property
+    def torque_time(self) -> float: ...
+    @property
+    def within_limits(self) -> bool: ...
+    @property
+    def samples(self) -> Dict[str, _Array]: ...
+
+class RetimeResult:
+    @property
+    def trajectory(self) -> Trajectory: ...
+    @property
+    def limits(self) -> Limits: ...
+    @property
+    def iterations(self) -> int: ...
+    @property
+    def report(self) -> JointLimitReport: ...
+
+def check_joint_limits(
+    trajectory: Trajectory,
+    robot: SerialArm,
+    q_start: _ArrayLike,
+    samples_between: int = 10,
+    difference_step: float = 1e-4,
+) -> JointLimitReport: ...
+def retime(
+    path: Path,
+    metric_set: MetricSet,
+    limits: Limits,
+    robot: SerialArm,
+    q_start: _ArrayLike,
+    profile: str = "scurve",
+    method: str = "scaling",
+    samples_between: int = 10,
+    max_iterations: int = 20,
+) -> RetimeResult: ...

@@ -16,6 +16,7 @@ void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, 
 void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, WorkspaceCheck, LegViolation
 void bind_frames(pybind11::module_& m);      // bind_frames.cpp: WorkToolFrames
 void bind_serial(pybind11::module_& m);      // bind_serial.cpp: SerialArm, JointLimits, InverseResult (if built)
+void bind_retiming(pybind11::module_& m);    // bind_retiming.cpp: check_joint_limits, retime (if built)
 
 }  // namespace python
 }  // namespace dispkin

@@ -20,5 +20,6 @@ PYBIND11_MODULE(_core, m) {
   dispkin::python::bind_frames(m);
 #if defined(DISPKIN_HAS_SERIAL)
   dispkin::python::bind_serial(m);
+  dispkin::python::bind_retiming(m);
 #endif
 }

@@ -35,6 +35,7 @@
 #include <dispkin/profile.hpp>
 #include <dispkin/shapes.hpp>
 #if defined(DISPKIN_HAS_SERIAL)
+#include <dispkin/retiming.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 #endif
 
@@ -424,6 +425,23 @@ std::vector<Row> rows() {
       "q_ref = (0, 0): expected 6 joint values like the solutions, got 2");
   row("serial::follow", "unreachable pose", [arm, q0] { serial::follow(arm(), {Posed(Quaterniond::Identity(), Vector3d(5, 0, 0))}, q0); }, RT,
       "poses[0] translation = (5, 0, 0): has no inverse-kinematics solution");
+  // --- check_joint_limits / retime_by_scaling ---
+  const auto ur5e = [] { return SerialArm::from_urdf_file(urdf + "arm_ur5e_dh.urdf", "base_link", "tool0"); };
+  const auto q_ur = [] { return (Eigen::VectorXd(6) << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2).finished(); };
+  const auto ur_path = [ur5e, q_ur] {
+    const Posed a = ur5e().forward(q_ur());
+    return Path::lin(a, Posed(a.quaternion(), a.translation() + Vector3d(0.05, 0, 0)));
+  };
+  row("check_joint_limits", "negative samples_between", [=] { JointCheckOptions o; o.samples_between = -1;
+        check_joint_limits(plan(ur_path(), good_set(), limits(0.1, 1, 10)), ur5e(), q_ur(), o); }, IA, "samples_between = -1");
+  row("check_joint_limits", "zero difference_step", [=] { JointCheckOptions o; o.difference_step = 0.0;
+        check_joint_limits(plan(ur_path(), good_set(), limits(0.1, 1, 10)), ur5e(), q_ur(), o); }, IA, "difference_step = 0");
+  row("check_joint_limits", "q_start of the wrong size", [=] {
+        check_joint_limits(plan(ur_path(), good_set(), limits(0.1, 1, 10)), ur5e(), Eigen::VectorXd::Zero(5)); }, IA, "q_start size = 5");
+  row("check_joint_limits", "NaN q_start", [=] {
+        check_joint_limits(plan(ur_path(), good_set(), limits(0.1, 1, 10)), ur5e(), Eigen::VectorXd::Constant(6, nan_)); }, IA, "q_start = (nan");
+  row("retime_by_scaling", "zero max_iterations", [=] {
+        retime_by_scaling(ur_path(), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, ur5e(), q_ur(), {}, 0); }, IA, "max_iterations = 0");
 #endif
   return r;
 }

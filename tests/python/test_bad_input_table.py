@@ -394,6 +394,30 @@ row("SerialArm.nearest", "no solutions", lambda: dispkin.SerialArm.nearest([], [
 row("SerialArm.nearest", "wrong size q_ref", lambda: dispkin.SerialArm.nearest([np.zeros(6)], [0, 0]), V, "q_ref = (0, 0): expected 6 joint values like the solutions, got 2")
 row("SerialArm.follow", "unreachable pose", lambda: arm().follow([dispkin.Pose((1, 0, 0, 0), (5, 0, 0))], [0, 0]), RuntimeError, "poses[0] translation = (5, 0, 0): has no inverse-kinematics solution")
 
+# --- check_joint_limits / retime (UR5e) ---------------------------------------------------
+def ur5e():
+    return dispkin.SerialArm.from_urdf(str(URDF / "arm_ur5e_dh.urdf"), "base_link", "tool0")
+
+
+Q_UR = [0.3, -1.2, 1.5, -1.9, -1.57, 0.2]
+
+
+def ur_path():
+    a = ur5e().forward(Q_UR)
+    return dispkin.Path.lin(a, dispkin.Pose(a.quaternion, a.translation + np.array([0.05, 0, 0])))
+
+
+def ur_trajectory():
+    return dispkin.plan(ur_path(), good_set(), LIMITS)
+
+
+row("check_joint_limits", "negative samples_between", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), Q_UR, samples_between=-1), V, "samples_between = -1")
+row("check_joint_limits", "q_start of the wrong size", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), Q_UR[:5]), V, "q_start size = 5")
+row("check_joint_limits", "NaN q_start", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), [NAN] * 6), V, "q_start = (nan")
+row("retime", "unknown method", lambda: dispkin.retime(ur_path(), good_set(), LIMITS, ur5e(), Q_UR, method="optimal"), V, "method = \"optimal\"")
+row("retime", "unknown profile", lambda: dispkin.retime(ur_path(), good_set(), LIMITS, ur5e(), Q_UR, profile="sine"), V, "profile = \"sine\"")
+row("retime", "zero max_iterations", lambda: dispkin.retime(ur_path(), good_set(), LIMITS, ur5e(), Q_UR, max_iterations=0), V, "max_iterations = 0")
+
 ROWS = R
 
 

@@ -1,0 +1,125 @@
+// Python binding of dispkin/retiming.hpp: check_joint_limits, retime (serial arms).
+#include <string>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/retiming.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+// Per-sample arrays of a report: (N,) times and s, (N, dof) for the joint quantities.
+py::dict report_arrays(const JointLimitReport& r) {
+  const auto n = static_cast<Eigen::Index>(r.samples.size());
+  const Eigen::Index dof = n > 0 ? r.samples.front().q.size() : 0;
+  Eigen::VectorXd time(n), s(n);
+  Eigen::MatrixXd q(n, dof), qd(n, dof), qdd(n, dof), tau_static(n, dof), tau_dynamic(n, dof);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const JointSample& x = r.samples[static_cast<std::size_t>(k)];
+    time(k) = x.time;
+    s(k) = x.s;
+    q.row(k) = x.q.transpose();
+    qd.row(k) = x.qd.transpose();
+    qdd.row(k) = x.qdd.transpose();
+    tau_static.row(k) = x.static_torque.transpose();
+    tau_dynamic.row(k) = x.dynamic_torque.transpose();
+  }
+  py::dict d;
+  d["time"] = time;
+  d["s"] = s;
+  d["q"] = q;
+  d["qd"] = qd;
+  d["qdd"] = qdd;
+  d["static_torque"] = tau_static;
+  d["dynamic_torque"] = tau_dynamic;
+  return d;
+}
+
+JointCheckOptions check_options(int samples_between, double difference_step) {
+  JointCheckOptions o;
+  o.samples_between = samples_between;
+  o.difference_step = difference_step;
+  return o;
+}
+
+}  // namespace
+
+void bind_retiming(py::module_& m) {
+  py::class_<JointLimitReport>(m, "JointLimitReport", R"doc(
+What check_joint_limits found along a trajectory: the seed's factors FVEL = max |qd_i| / qd_max_i
+and FACC = max |tau_dyn_i| / (tau_max_i - |tau_static_i|) (each <= 1 when the limits hold), where
+they are reached, the largest excursion of q outside its position range, and the per-sample
+arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque).)doc")
+      .def_readonly("velocity_factor", &JointLimitReport::velocity_factor, "FVEL.")
+      .def_readonly("acceleration_factor", &JointLimitReport::acceleration_factor, "FACC.")
+      .def_readonly("velocity_joint", &JointLimitReport::velocity_joint, "Joint index where FVEL is reached (-1: none).")
+      .def_readonly("torque_joint", &JointLimitReport::torque_joint, "Joint index where FACC is reached (-1: none).")
+      .def_readonly("position_excess", &JointLimitReport::position_excess, "Largest excursion outside [lower, upper] (rad).")
+      .def_readonly("position_joint", &JointLimitReport::position_joint, "Joint index of that excursion (-1: none).")
+      .def_property_readonly("velocity_time", [](const JointLimitReport& r) {
+        return r.samples.empty() ? 0.0 : r.samples[r.velocity_sample].time;
+      }, "Time (s) where FVEL is reached.")
+      .def_property_readonly("torque_time", [](const JointLimitReport& r) {
+        return r.samples.empty() ? 0.0 : r.samples[r.torque_sample].time;
+      }, "Time (s) where FACC is reached.")
+      .def_property_readonly("within_limits", &JointLimitReport::within_limits, "FVEL <= 1, FACC <= 1, no position excursion.")
+      .def_property_readonly("samples", &report_arrays, "Per-sample arrays (dict).")
+      .def("__repr__", [](const JointLimitReport& r) {
+        return "JointLimitReport(velocity_factor=" + float_repr(r.velocity_factor) +
+               ", acceleration_factor=" + float_repr(r.acceleration_factor) + ", samples=" + std::to_string(r.samples.size()) + ")";
+      });
+
+  m.def(
+      "check_joint_limits",
+      [](const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start, int samples_between,
+         double difference_step) {
+        return check_joint_limits(trajectory, arm, q_start, check_options(samples_between, difference_step));
+      },
+      py::arg("trajectory"), py::arg("robot"), py::arg("q_start"), py::arg("samples_between") = 10,
+      py::arg("difference_step") = 1e-4,
+      "Follow the planned trajectory (poses of the robot's tip link) through the robot's IK, on the branch "
+      "continuous from q_start, at every characteristic point of its time laws and `samples_between` "
+      "points between them: joint positions, velocities (Jacobian), accelerations and torques (static and "
+      "dynamic). Returns a JointLimitReport. RuntimeError naming the time and path position where a pose has "
+      "no IK solution, the arm is singular, or the static torque alone exceeds a joint's effort limit.");
+
+  py::class_<RetimeResult>(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.")
+      .def_readonly("trajectory", &RetimeResult::trajectory)
+      .def_readonly("limits", &RetimeResult::limits)
+      .def_readonly("iterations", &RetimeResult::iterations)
+      .def_readonly("report", &RetimeResult::report);
+
+  m.def(
+      "retime",
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& arm,
+         const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
+         int max_iterations) {
+        if (method != "scaling") {
+          throw std::invalid_argument(describe("method", method, "must be \"scaling\" (the seed's loop; a time-optimal re-timing is not available yet)"));
+        }
+        ProfileKind kind;
+        if (profile == "scurve") {
+          kind = ProfileKind::scurve;
+        } else if (profile == "trapezoid") {
+          kind = ProfileKind::trapezoid;
+        } else {
+          throw std::invalid_argument(describe("profile", profile, "must be \"scurve\" or \"trapezoid\""));
+        }
+        return retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4), max_iterations);
+      },
+      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::arg("q_start"),
+      py::arg("profile") = "scurve", py::arg("method") = "scaling", py::arg("samples_between") = 10,
+      py::arg("max_iterations") = 20,
+      "The seed's re-timing loop: plan, check_joint_limits, divide the velocity limit by FVEL and the "
+      "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample. RuntimeError if a "
+      "position limit is violated, a static torque exceeds its limit, or it does not converge.");
+}
+
+}  // namespace python
+}  // namespace dispkin
