@@ -33,6 +33,17 @@ std::string message_of(F&& f) {
   return "<no exception>";
 }
 
+//! The message of the std::runtime_error that `f` throws, or "<no exception>".
+template <typename F>
+std::string runtime_message_of(F&& f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "<no exception>";
+}
+
 class Random {
  public:
   explicit Random(unsigned long salt) : engine_(env_or("DISPKIN_TEST_SEED", 20261122UL) * 7919UL + salt) {}

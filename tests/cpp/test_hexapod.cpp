@@ -18,6 +18,7 @@ namespace dispkin {
 namespace {
 
 using testing::message_of;
+using testing::runtime_message_of;
 using testing::Random;
 using Legs = Hexapod::Legs;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
@@ -25,17 +26,6 @@ constexpr double pi = 3.14159265358979323846;
 
 // A desktop hexapod: base radius 150 mm, platform radius 100 mm, joints in pairs 20° apart.
 Hexapod test_hexapod() { return Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01); }
-
-// The message of the std::runtime_error that `f` throws, or "<no exception>".
-template <typename F>
-std::string runtime_message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "<no exception>";
-}
 
 // A random pose around home whose legs are all in range.
 Posed reachable_pose(const Hexapod& h, Random& rnd) {

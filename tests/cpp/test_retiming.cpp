@@ -10,18 +10,8 @@ namespace dispkin {
 namespace {
 
 using testing::message_of;
+using testing::runtime_message_of;
 using V = Eigen::Vector3d;
-
-// The message of the std::runtime_error that `f` throws, or "<no exception>".
-template <typename F>
-std::string runtime_message_of(F&& f) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "<no exception>";
-}
 
 serial::SerialArm ur5e() {
   return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link",
