@@ -180,7 +180,9 @@ def run_check(job_file: str, out: TextIO) -> int:
         rule += ["joint metric (rule b)"] if job.joint_metric else []
         print(f"  leg speed held by: {', '.join(rule) or 'nothing (only the metric set)'}", file=out)
     if job.frames is not None:
-        print(f"  frames: work {np.round(job.frames.work.to_xyzuvw(), 6).tolist()}, tool {np.round(job.frames.tool.to_xyzuvw(), 6).tolist()} (XYZUVW, m and rad)", file=out)
+        work, tool = job.frames.work.to_xyzuvw(), job.frames.tool.to_xyzuvw()
+        work[3:], tool[3:] = np.degrees(work[3:]), np.degrees(tool[3:])
+        print(f"  frames: work {np.round(work, 6).tolist()}, tool {np.round(tool, 6).tolist()} (XYZUVW, m and degrees)", file=out)
     print(f"  pivot {job.pivot.tolist()} m (platform/flange coordinates)", file=out)
     for group in ms.groups:
         limit = ms.group_speed(group)
@@ -188,12 +190,13 @@ def run_check(job_file: str, out: TextIO) -> int:
               f"absolute points, {len(ms.spheres(group))} sphere(s), limit "
               f"{(str(limit) + ' m/s') if limit is not None else 'the system velocity'}", file=out)
     lengths = job.path.section_lengths(ms, job.limits.velocity)
-    print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP lengths "
-          f"{', '.join(f'{x:.6f}' for x in lengths)} m", file=out)
+    print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
+          f"at the system velocity", file=out)
     for i, move in enumerate(job.moves):
         blend = f", blend {move.blend:g} m" if move.blend else ""
-        end = np.round(move.path.end.to_xyzuvw(), 6).tolist()
-        print(f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {end} (m, rad)", file=out)
+        end = move.path.end.to_xyzuvw()
+        end[3:] = np.degrees(end[3:])
+        print(f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {np.round(end, 6).tolist()} (m, degrees)", file=out)
     lim = job.limits
     jerk = f", j = {lim.jerk:g} m/s³" if lim.jerk is not None else ""
     print(f"  limits: v = {lim.velocity:g} m/s, a = {lim.acceleration:g} m/s²{jerk}, profile {job.profile}", file=out)

@@ -391,8 +391,11 @@ class _Builder:
                 self.call(at + ("absolute",), metric_set.add_absolute, entry["absolute"], group)
             else:
                 self.shape(metric_set, entry, at, group)
+        populated = set(metric_set.groups)  # set_group_speed adds the group even without points
         groups_seen = set()
         for i, g in enumerate(m.get("groups", [])):
+            if g["group"] not in populated:
+                raise self.fail(("metric_set", "groups", i, "group"), f"{g['group']}: no points belong to this group")
             if g["group"] in groups_seen:
                 raise self.fail(("metric_set", "groups", i, "group"), f"{g['group']}: group given twice")
             groups_seen.add(g["group"])
@@ -407,10 +410,6 @@ class _Builder:
             job["leg_speed_group"] = leg_group
         if metric_set.point_count == 0 and metric_set.sphere_count == 0:
             raise self.fail(("metric_set",), "the metric set has no points: give metric_set.points (or a hexapod leg_speed_group)")
-        for group in m.get("groups", []):
-            if group["group"] not in metric_set.groups:
-                i = m["groups"].index(group)
-                raise self.fail(("metric_set", "groups", i, "group"), f"{group['group']}: no points belong to this group")
         self.call(("metric_set",), metric_set.require_well_formed)
         return metric_set
 

@@ -39,7 +39,7 @@ BAD_JOBS = {
     "bad_no_start.yaml": ("(job)", 1, "missing required key `start`"),
     "bad_group_without_points.yaml": ("metric_set.groups[0].group", 5, "no points belong to this group"),
     "bad_degenerate_circ.yaml": ("moves[0].circ", 6, ""),
-    "bad_hexapod_two_sources.yaml": ("machine.hexapod", 3, "expected exactly one of `file` | `description` | `symmetric`"),
+    "bad_hexapod_two_sources.yaml": ("machine.hexapod", 2, "expected exactly one of `file` | `description` | `symmetric`"),
     "bad_output_path.yaml": ("output.csv", 9, "a file name, not a path"),
     "bad_not_a_mapping.yaml": ("(job)", 1, "a job is a mapping"),
 }
