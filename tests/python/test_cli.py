@@ -95,3 +95,19 @@ def test_python_dash_m_dispkin_help():
     assert result.returncode == 0 and "--moves" in result.stdout and "--seed" in result.stdout
     result = subprocess.run([sys.executable, "-m", "dispkin", "--version"], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0 and result.stdout.strip() == f"dispkin {dispkin.__version__}"
+
+
+def test_job_commands_document_every_option():
+    for command, options in (("check", ["JOB.yaml"]), ("plan", ["JOB.yaml", "--outdir", "--plot", "OUTDIR"])):
+        result = subprocess.run([sys.executable, "-m", "dispkin", command, "--help"], capture_output=True, text=True, timeout=60)
+        assert result.returncode == 0
+        for option in options:
+            assert option in result.stdout, (command, option)
+    result = subprocess.run([sys.executable, "-m", "dispkin", "--help"], capture_output=True, text=True, timeout=60)
+    assert "check" in result.stdout and "plan" in result.stdout
+
+
+def test_plan_of_a_missing_job_file_fails_cleanly(capsys, tmp_path):
+    assert cli.main(["plan", str(tmp_path / "nope.yaml")]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("dispkin plan: ") and "nope.yaml: cannot read the job file" in err

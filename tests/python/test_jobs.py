@@ -1,0 +1,247 @@
+"""Job files: valid ones round-trip through `dispkin plan` (CSV / JSON parse back and agree with
+the Python API on the same job), invalid ones give errors that name the key and its line."""
+
+import csv
+import json
+import math
+import pathlib
+import re
+
+import numpy as np
+import pytest
+
+import dispkin
+from dispkin import cli, jobs
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+EXAMPLE_JOBS = sorted((ROOT / "examples" / "jobs").glob("*.yaml"))
+BAD = ROOT / "tests" / "data" / "jobs"
+
+# bad job -> (key path the message names, line of that key, a fragment of the reason)
+BAD_JOBS = {
+    "bad_yaml_syntax.yaml": ("(job)", 4, "not valid YAML"),
+    "bad_unknown_key.yaml": ("limits.velocty", 11, "unknown key"),
+    "bad_missing_limits.yaml": ("(job)", 1, "missing required key `limits`"),
+    "bad_xyzuvw_length.yaml": ("moves[1].lin.to.xyzuvw", 8, "expected at least 6 item(s), got 5"),
+    "bad_negative_velocity.yaml": ("limits.velocity", 8, "-0.1 is less than or equal to the minimum of 0"),
+    "bad_nan_pose.yaml": ("moves[0].lin.to.xyzuvw[1]", 6, "nan: must be finite"),
+    "bad_two_move_kinds.yaml": ("moves[0]", 6, "expected exactly one of `lin` | `circ` | `spline` | `ptp`"),
+    "bad_ptp.yaml": ("moves[1].ptp", 7, "PTP moves are not supported"),
+    "bad_unknown_shape.yaml": ("metric_set.points[0].shape", 3, "'dodecahedron' is not one of"),
+    "bad_shape_missing_radius.yaml": ("metric_set.points[0]", 3, "missing required key `radius`"),
+    "bad_quaternion_not_unit.yaml": ("moves[0].lin.to.quaternion", 8, "must be a unit quaternion"),
+    "bad_missing_urdf.yaml": ("machine.serial_arm.urdf", 3, "does not exist"),
+    "bad_q_start_size.yaml": ("machine.serial_arm.q_start", 6, "expected 6 joint values"),
+    "bad_scurve_without_jerk.yaml": ("limits", 7, "needs a jerk limit"),
+    "bad_blend_first_move.yaml": ("moves[0].blend", 7, "no previous move"),
+    "bad_blend_too_long.yaml": ("moves[1].blend", 8, "blend"),
+    "bad_duplicate_key.yaml": ("limits", 8, "duplicate key"),
+    "bad_no_start.yaml": ("(job)", 1, "missing required key `start`"),
+    "bad_group_without_points.yaml": ("metric_set.groups[0].group", 5, "no points belong to this group"),
+    "bad_degenerate_circ.yaml": ("moves[0].circ", 6, ""),
+    "bad_hexapod_two_sources.yaml": ("machine.hexapod", 2, "expected exactly one of `file` | `description` | `symmetric`"),
+    "bad_output_path.yaml": ("output.csv", 9, "a file name, not a path"),
+    "bad_not_a_mapping.yaml": ("(job)", 1, "a job is a mapping"),
+}
+
+
+def test_the_corpus_is_complete():
+    assert sorted(p.name for p in BAD.glob("bad_*.yaml")) == sorted(BAD_JOBS)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_JOBS))
+def test_bad_job_gives_a_pointed_error(name):
+    key_path, line, reason = BAD_JOBS[name]
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(BAD / name)
+    first = str(info.value).splitlines()[0]
+    assert first.startswith(f"{BAD / name}:{line}:"), first
+    assert f": {key_path}: " in first or (key_path == "(job)" and "not valid YAML" in first), first
+    assert reason in first, first
+    assert info.value.line == line
+    assert isinstance(info.value, ValueError)
+
+
+@pytest.mark.parametrize("name", sorted(BAD_JOBS))
+def test_cli_check_rejects_bad_job(name, capsys):
+    assert cli.main(["check", str(BAD / name)]) == 1
+    captured = capsys.readouterr()
+    assert captured.err.startswith(f"dispkin check: {BAD / name}:{BAD_JOBS[name][1]}:")
+    assert not captured.out
+
+
+def test_every_schema_violation_is_reported(tmp_path):
+    job = tmp_path / "two.yaml"
+    job.write_text((BAD / "bad_unknown_key.yaml").read_text().replace("acceleration: 1.0", "acceleration: 0"))
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(job)
+    lines = str(info.value).splitlines()
+    assert len(lines) == 2
+    assert ":9:" in lines[0] and "limits.acceleration" in lines[0]
+    assert ":11:" in lines[1] and "limits.velocty" in lines[1]
+
+
+def test_schema_is_shipped_and_valid():
+    import jsonschema
+
+    schema = jobs.load_schema()
+    jsonschema.Draft202012Validator.check_schema(schema)
+    assert jobs.SCHEMA_PATH.parent == pathlib.Path(dispkin.__file__).parent
+    assert "DEGREES" in schema["$defs"]["pose"]["description"]
+
+
+def test_yaml_floats_with_exponent_are_numbers(tmp_path):
+    job = tmp_path / "exp.yaml"
+    job.write_text((EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml").read_text().replace("acceleration: 1.0", "acceleration: 1e0"))
+    assert jobs.load_job(job).limits.acceleration == 1.0
+
+
+# --- valid jobs ------------------------------------------------------------------------------
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array(rows[1:], dtype=float)
+
+
+@pytest.mark.parametrize("job_file", EXAMPLE_JOBS, ids=lambda p: p.name)
+def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
+    assert cli.main(["check", str(job_file)]) == 0
+    assert "valid job" in capsys.readouterr().out
+    assert cli.main(["plan", str(job_file), "-o", str(tmp_path / "out"), "--plot"]) == 0
+    printed = capsys.readouterr().out
+    job = jobs.load_job(job_file)
+    out = tmp_path / "out"
+    header, table = read_csv(out / job.outputs["csv"])
+    document = json.loads((out / job.outputs["json"]).read_text())
+    # The same job through the Python API.
+    traj = dispkin.plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=job.hexapod if job.joint_metric else None)
+    t = table[:, 0]
+    assert t[0] == 0.0 and t[-1] == pytest.approx(traj.duration, rel=1e-15)
+    np.testing.assert_allclose(np.diff(t)[:-1], job.sample_period, rtol=1e-9)
+    assert document["summary"]["duration"] == pytest.approx(traj.duration, rel=1e-15)
+    assert f"duration {traj.duration:.4f} s" in printed
+    # ROS JointTrajectory fields.
+    assert document["joint_names"] == job.joint_names
+    assert len(document["points"]) == len(t)
+    for k in (0, len(t) // 2, len(t) - 1):
+        point = document["points"][k]
+        assert set(point) == {"positions", "velocities", "accelerations", "effort", "time_from_start"}
+        stamp = point["time_from_start"]
+        assert stamp["sec"] + stamp["nanosec"] * 1e-9 == pytest.approx(t[k], abs=1e-9)
+        assert 0 <= stamp["nanosec"] < 1_000_000_000
+    # Poses: the API's poses (tool in work with frames), XYZUVW in metres and degrees.
+    poses = traj.sample(t)
+    if job.frames is not None:
+        expected = np.array([job.frames.xyzuvw(dispkin.Pose.from_matrix(m)) for m in poses])
+    else:
+        expected = np.array([dispkin.Pose.from_matrix(m).to_xyzuvw() for m in poses])
+    expected[:, 3:] = np.degrees(expected[:, 3:])
+    pose_columns = [header.index(c) for c in jobs.POSE_COLUMNS]
+    np.testing.assert_allclose(table[:, pose_columns], expected, atol=1e-12)
+    np.testing.assert_allclose(document["poses_xyzuvw"], expected, atol=1e-12)
+    # The fastest point never exceeds its group's limit, and the path velocity matches.
+    twists = traj.body_twist(t)
+    fastest = [dispkin.max_point_speed(job.metric_set, dispkin.Pose.from_matrix(m), xi, job.limits.velocity) for m, xi in zip(poses, twists)]
+    assert max(fastest) <= job.limits.velocity * (1 + 1e-6)
+    np.testing.assert_allclose(table[:, header.index("path_velocity_mps")], traj.path_velocity(t), atol=1e-15)
+    for group, g in document["summary"]["groups"].items():
+        assert g["peak_speed"] <= g["limit"] * (1 + 1e-6)
+    # Joints: positions agree with the machine's own inverse kinematics.
+    if job.hexapod is not None:
+        legs = job.hexapod.inverse(poses)
+        np.testing.assert_allclose(table[:, [header.index(f"{n}.position") for n in job.joint_names]], legs, atol=1e-15)
+        np.testing.assert_allclose([p["positions"] for p in document["points"]], legs, atol=1e-15)
+        assert document["summary"]["legs"]["within_limits"]
+    elif job.arm is not None:
+        q = np.array([p["positions"] for p in document["points"]])
+        for qk, m in zip(q, poses):
+            np.testing.assert_allclose(job.arm.forward(qk).matrix(), m, atol=1e-9)
+        np.testing.assert_allclose(q[0], job.q_start, atol=1e-9)
+        np.testing.assert_allclose(table[:, [header.index(f"{n}.position") for n in job.joint_names]], q, atol=1e-15)
+    else:
+        assert document["joint_names"] == [] and document["points"][0]["positions"] == []
+    png = out / (pathlib.Path(job.outputs["csv"]).stem + ".png")
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def finite_difference(values, t):
+    return np.gradient(values, t, axis=0)
+
+
+@pytest.mark.parametrize("name", ["hexapod_scan.yaml", "ur5e_lin_move.yaml"])
+def test_joint_velocities_and_accelerations_are_the_derivatives(name):
+    job = jobs.load_job(ROOT / "examples" / "jobs" / name)
+    traj = jobs.plan_job(job)
+    samples = jobs.sample_job(job, traj, period=1e-3)
+    inner = slice(2, -2)
+    np.testing.assert_allclose(samples.velocities[inner], finite_difference(samples.positions, samples.time)[inner],
+                               atol=1e-4 * np.abs(samples.velocities).max())
+    np.testing.assert_allclose(samples.accelerations[inner], finite_difference(samples.velocities, samples.time)[inner],
+                               atol=2e-2 * np.abs(samples.accelerations).max())
+
+
+def test_ur_job_is_the_python_example_move():
+    job = jobs.load_job(ROOT / "examples" / "jobs" / "ur5e_lin_move.yaml")
+    arm = job.arm
+    start = arm.forward(job.q_start)
+    goal = dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])
+    assert job.path.start.is_approx(start, 1e-12) and job.path.end.is_approx(goal, 1e-12)
+    samples = jobs.sample_job(job, jobs.plan_job(job))
+    torques = [arm.torques(q, qd, qdd) for q, qd, qdd in zip(samples.positions, samples.velocities, samples.accelerations)]
+    np.testing.assert_allclose(samples.effort, torques, rtol=1e-12, atol=1e-12)
+
+
+def test_hexapod_from_file_and_inline_description_match_symmetric(tmp_path):
+    scan = (ROOT / "examples" / "jobs" / "hexapod_scan.yaml").read_text()
+    reference = jobs.load_job(ROOT / "examples" / "jobs" / "hexapod_scan.yaml")
+    reference.hexapod.save(str(tmp_path / "hexapod.json"))
+    symmetric = re.search(r"    symmetric:.*?leg_speed: 0.01}\n", scan, flags=re.S).group(0)
+    (tmp_path / "from_file.yaml").write_text(scan.replace(symmetric, "    file: hexapod.json\n"))
+    description = json.loads(reference.hexapod.to_json())
+    (tmp_path / "inline.yaml").write_text(scan.replace(symmetric, f"    description: {json.dumps(description)}\n"))
+    expected = jobs.plan_job(reference).duration
+    for name in ("from_file.yaml", "inline.yaml"):
+        job = jobs.load_job(tmp_path / name)
+        np.testing.assert_array_equal(job.hexapod.base_joints, reference.hexapod.base_joints)
+        assert jobs.plan_job(job).duration == pytest.approx(expected, rel=1e-15)
+
+
+def test_blend_removes_the_stops_and_matches_the_api():
+    job = jobs.load_job(ROOT / "examples" / "jobs" / "blended_tool_move.yaml")
+    def pose(x, y, yaw):
+        return dispkin.Pose.from_xyzuvw([x, y, 0, 0, 0, math.radians(yaw)])
+    path = dispkin.Path.lin(pose(0, 0, 0), pose(0.3, 0, 10))
+    path.then(dispkin.Path.circ(pose(0.3, 0, 10), pose(0.45, 0.1, 20), pose(0.3, 0.2, 30)), blend=0.03)
+    path.then(dispkin.Path.lin(pose(0.3, 0.2, 30), pose(0, 0.2, 40)), blend=0.03)
+    api = dispkin.plan(path, job.metric_set, job.limits)
+    traj = jobs.plan_job(job)
+    assert traj.piece_count == 1 and [m.kind for m in job.moves] == ["lin", "circ", "lin"]
+    assert traj.duration == pytest.approx(api.duration, rel=1e-12)
+
+
+def test_time_from_start_carries_nanoseconds():
+    assert jobs.time_from_start(1.9999999999) == {"sec": 2, "nanosec": 0}
+    assert jobs.time_from_start(0.25) == {"sec": 0, "nanosec": 250_000_000}
+
+
+def test_sample_times_end_exactly_at_the_duration():
+    np.testing.assert_allclose(jobs.sample_times(1.0, 0.25), [0, 0.25, 0.5, 0.75, 1.0])
+    assert jobs.sample_times(1.1, 0.25)[-1] == 1.1 and len(jobs.sample_times(1.1, 0.25)) == 6
+
+
+def test_readme_minimal_job_runs_as_documented(tmp_path, capsys, monkeypatch):
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    block = re.search(r"```yaml\n(.*?)```", readme, flags=re.S).group(1)
+    (tmp_path / "lin.yaml").write_text(block)
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["check", "lin.yaml"]) == 0
+    assert cli.main(["plan", "lin.yaml", "-o", "out", "--plot"]) == 0
+    for name in ("lin.csv", "lin.json", "lin.summary.txt", "lin.png"):
+        assert (tmp_path / "out" / name).stat().st_size > 0
+    # The error quoted in the README is the one the code gives.
+    quoted = re.search(r"`lin\.yaml:11:3: (limits\.velocty: unknown key \(allowed here: [^)]*\))`", readme.replace("\n", " "))
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(BAD / "bad_unknown_key.yaml")
+    assert str(info.value).endswith(":11:3: " + quoted.group(1))
