@@ -17,14 +17,17 @@ namespace {
 void check_law(const dispkin::Profile& p, double v_max, double a_max, dispkin::fuzz::Input& in) {
   using dispkin::fuzz::check_finite;
   using dispkin::fuzz::finding;
-  check_finite(p.duration(), "Profile::duration");
-  check_finite(p.peak_velocity(), "Profile::peak_velocity");
+  if (!std::isfinite(p.duration()) || !std::isfinite(p.peak_velocity())) {
+    dispkin::fuzz::non_finite("Profile::duration / peak_velocity");
+    return;
+  }
   const double t_end = p.duration();
   for (const double t : {0.0, 0.1 * t_end, 0.5 * t_end, 0.9 * t_end, t_end, in.number()}) {
     const dispkin::ProfileState x = p.state_at(t);
-    check_finite(x.s, "Profile state s");
-    check_finite(x.v, "Profile state v");
-    check_finite(x.a, "Profile state a");
+    if (!std::isfinite(x.s) || !std::isfinite(x.v) || !std::isfinite(x.a)) {
+      dispkin::fuzz::non_finite("Profile state (s, v, a)");
+      return;
+    }
     const double slack = 1e-9;
     if (x.v < -slack * v_max || x.v > v_max * (1 + slack)) finding("Profile velocity outside [0, v_max]");
     if (std::abs(x.a) > a_max * (1 + slack)) finding("Profile acceleration above a_max");
