@@ -148,6 +148,10 @@ inline void non_finite(const char* what) {
   if (detail::inputs_in_range() || detail::strict()) finding(what);
 }
 
+//! A relative bound (ṡ ≤ v_max to 1e-9, ...) broken: counted like a non-finite output, since
+//! at magnitudes outside the range rounding alone can break a relative bound.
+inline void out_of_bound(const char* what) { non_finite(what); }
+
 //! A finite output of a call that did not throw.
 inline void check_finite(double x, const char* what) {
   if (!std::isfinite(x)) non_finite(what);
