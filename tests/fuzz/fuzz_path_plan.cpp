@@ -67,6 +67,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     }
     for (const double u : {0.0, 0.5, 1.0, in.number()}) check_finite(path.sample(u), "Path::sample");
+    // A fine tolerance legitimately cuts a move into up to 10^5 sections per piece (10^6 for a
+    // CIRC); planning those takes seconds, which would stall the fuzzer. Such paths are built
+    // and sampled above, only planned when short.
+    if (path.size() > 2000) return;
 
     // The set: a fixed well-formed tool, sometimes with fuzzed extra objects and group limits.
     dispkin::MetricSetd set;
