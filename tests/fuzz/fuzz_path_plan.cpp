@@ -17,6 +17,15 @@ namespace {
 using dispkin::Path;
 using dispkin::Posed;
 
+// The cutting tolerance of a CIRC / SPLINE / blend: fuzzed (bad values must be refused), but
+// a valid one below 1e-4 is raised to 1e-4: finer ones cut a move into up to 10^5 sections per
+// piece, and building those takes seconds per input, which would stall the fuzzer.
+double tolerance(dispkin::fuzz::Input& in) {
+  if (!in.flag()) return 1e-3;
+  const double t = in.number();
+  return t > 0.0 && t < 1e-4 ? 1e-4 : t;
+}
+
 // One move starting at `start` (or a fuzzed pose).
 Path move(dispkin::fuzz::Input& in, const std::optional<Posed>& start) {
   const Posed a = start && in.below(8) != 0 ? *start : in.pose();
@@ -30,14 +39,14 @@ Path move(dispkin::fuzz::Input& in, const std::optional<Posed>& start) {
       const Posed via = in.pose();
       const Posed b = in.pose();
       const Eigen::Vector3d pivot = in.flag() ? in.vector3() : Eigen::Vector3d::Zero();
-      return Path::circ(a, via, b, pivot, in.flag() ? in.number() : 1e-3);
+      return Path::circ(a, via, b, pivot, tolerance(in));
     }
     default: {
       std::vector<Posed> keys{a};
       const int n = 2 + in.below(4);
       for (int i = 0; i < n; ++i) keys.push_back(in.pose());
       const Eigen::Vector3d pivot = in.flag() ? in.vector3() : Eigen::Vector3d::Zero();
-      return Path::spline(keys, pivot, in.flag() ? in.number() : 1e-3);
+      return Path::spline(keys, pivot, tolerance(in));
     }
   }
 }
@@ -61,15 +70,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           break;
         default: {
           const double before = in.number(), after = in.number();
-          path.then(next, before, after, in.flag() ? in.number() : 1e-3);
+          path.then(next, before, after, tolerance(in));
           break;
         }
       }
     }
     for (const double u : {0.0, 0.5, 1.0, in.number()}) check_finite(path.sample(u), "Path::sample");
-    // A fine tolerance legitimately cuts a move into up to 10^5 sections per piece (10^6 for a
-    // CIRC); planning those takes seconds, which would stall the fuzzer. Such paths are built
-    // and sampled above, only planned when short.
+    // Long paths (many moves at tolerance 1e-4) are built and sampled, planned only when short:
+    // planning thousands of sections takes too long per input.
     if (path.size() > 2000) return;
 
     // The set: a fixed well-formed tool, sometimes with fuzzed extra objects and group limits.
