@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python test test-cpp test-python demo bench sanitize clean
+.PHONY: all deps build python test test-cpp test-python demo bench sanitize fuzz clean
 
 all: build
 
@@ -50,6 +50,19 @@ sanitize: deps
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  DISPKIN_TEST_COUNT=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
+
+# libFuzzer targets (tests/fuzz, clang from Debian via scripts/install-fuzz-deps.sh, which only
+# this target calls): built with ASan + UBSan in FUZZ_BUILD, each run for FUZZ_SECONDS from its
+# seed corpus (scripts/run-fuzzers.sh; FUZZERS selects targets). Any finding fails.
+FUZZ_BUILD ?= build/fuzz
+FUZZ_SECONDS ?= 60
+FUZZERS ?=
+fuzz: deps
+	@scripts/install-fuzz-deps.sh
+	cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+	  -DDISPKIN_BUILD_FUZZERS=ON -DDISPKIN_BUILD_TESTS=OFF -DDISPKIN_BUILD_EXAMPLES=OFF -DDISPKIN_BUILD_BENCHMARKS=OFF
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
+	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) scripts/run-fuzzers.sh $(FUZZERS)
 
 bench: build
 	$(BUILD)/benchmarks/dispkin_benchmarks --benchmark_min_time=0.2

@@ -436,7 +436,7 @@ Hexapod Hexapod::from_json(const std::string& text) {
   json d;
   try {
     d = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
     throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
   }
   const json& format = member(d, "format", "");

@@ -2,6 +2,8 @@
 #include "dispkin/path.hpp"
 
 #include <algorithm>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "path_geometry.hpp"
@@ -77,6 +79,14 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
   auto slack = [&](double n) { return (2.0 + total_rotation / n) * 2.0 * std::sin(circle.angle / (4.0 * n)); };
   double n = std::max(1.0, std::ceil(circle.angle / tolerance));
   while (slack(n) > tolerance) n = std::ceil(n * 1.05);
+  // A tolerance far below what a section bound needs would ask for more sections than memory
+  // holds (1e-12 on a half circle: 3e12, beyond int as well).
+  constexpr double max_sections = 1e6;
+  if (!(n <= max_sections)) {
+    std::ostringstream why;
+    why << "is too fine for this arc: it needs " << n << " sections, at most " << max_sections << " are made";
+    throw std::invalid_argument(describe("tolerance", tolerance, why.str()));
+  }
   const int count = static_cast<int>(n);
 
   // Each section starts at the exact point of the whole arc (no accumulated rounding).

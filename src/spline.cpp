@@ -48,7 +48,10 @@ Eigen::MatrixX3d natural_spline_slopes(const Eigen::MatrixX3d& p, const Eigen::V
   Eigen::SparseMatrix<double> a(n, n);
   a.setFromTriplets(entries.begin(), entries.end());
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(a);
-  // Diagonally dominant for positive spacings: the factorisation cannot fail.
+  // Diagonally dominant for positive spacings: the factorisation fails only when the sums of
+  // spacings overflow, and then solve() must not be called (it reads past its buffers).
+  require(lu.info() == Eigen::Success, "knot spacings", h,
+          "are beyond the range of double precision: the spline system cannot be solved");
   return lu.solve(rhs);
 }
 
@@ -103,6 +106,10 @@ Path Path::spline(const std::vector<Posed>& poses, const Eigen::Vector3d& pivot,
   for (Eigen::Index i = 0; i + 1 < n; ++i) {
     r[i] = quaternion_log(Eigen::Quaterniond(poses[i].quaternion().conjugate() * poses[i + 1].quaternion()));
     h(i) = (p.row(i + 1) - p.row(i)).norm() + metres_per_radian * r[i].norm();
+    if (!std::isfinite(h(i))) {
+      throw std::invalid_argument(describe("poses[" + std::to_string(i + 1) + "]", poses[i + 1].translation(),
+                                           "is too far from the key pose before it: their distance overflows"));
+    }
     if (!(h(i) > 1e-12)) {
       throw std::invalid_argument(describe("poses[" + std::to_string(i + 1) + "]", poses[i + 1].translation(),
                                            "coincides with the key pose before it"));

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -197,11 +198,15 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
   const urdf::LinkConstSharedPtr tip = urdf->getLink(tip_link);
   require(tip != nullptr, "tip_link", tip_link, "is not a link of robot \"" + urdf->getName() + "\"");
 
-  // The path tip → base through the parent joints, then reversed.
+  // The path tip → base through the parent joints, then reversed. urdfdom accepts a joint
+  // whose parent is its own child (or a longer cycle), so the walk stops at a repeated link.
   std::vector<urdf::LinkConstSharedPtr> path{tip};
+  std::set<std::string> visited{tip_link};
   while (path.back()->name != base_link) {
     const urdf::LinkConstSharedPtr parent = path.back()->getParent();
     require(parent != nullptr, "base_link", base_link, "is not an ancestor of tip_link \"" + tip_link + "\"");
+    require(visited.insert(parent->name).second, "link", parent->name,
+            "is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"" + tip_link + "\"");
     path.push_back(parent);
   }
   std::reverse(path.begin(), path.end());

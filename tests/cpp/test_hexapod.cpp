@@ -618,6 +618,14 @@ TEST(HexapodJson, TextThatIsNotJsonIsRefused) {
   EXPECT_NE(message_of([&] { Hexapod::from_json("{\"legs\": [1, 2"); }).find("is not JSON"), std::string::npos);
 }
 
+// Found by fuzzing (tests/fuzz/fuzz_hexapod_json): nlohmann/json reports a number beyond the
+// double range as out_of_range, not parse_error; it escaped as a foreign exception type.
+TEST(HexapodJson, NumberBeyondDoubleRangeIsRefused) {
+  const std::string m = message_of([&] { Hexapod::from_json(edited("\"speed\": 0.01", "\"speed\": 1e999")); });
+  EXPECT_NE(m.find("description = \"<text>\": is not JSON"), std::string::npos) << m;
+  EXPECT_NE(m.find("1e999"), std::string::npos) << m;
+}
+
 TEST(HexapodJson, BadGeometryInAFileIsNamedWithThePath) {
   const std::string path = temp_path("bad_speed.json");
   write(path, edited("\"speed\": 0.01", "\"speed\": -0.01"));

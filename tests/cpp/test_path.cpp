@@ -45,6 +45,16 @@ TEST(Path, LinPassesThroughItsEnds) {
   }
 }
 
+// Found by fuzzing (tests/fuzz/fuzz_path_plan): a tolerance of 1e-12 asked for 3e12 sections,
+// converted to int out of range (undefined behaviour) and would have exhausted memory.
+TEST(Path, CircWithATooFineToleranceIsRefused) {
+  const Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  const Posed a(q, V(1, 0, 0)), via(q, V(0, 1, 0)), b(q, V(-1, 0, 0));
+  const std::string m = message_of([&] { Path::circ(a, via, b, V::Zero(), 1e-12); });
+  EXPECT_EQ(m.rfind("tolerance = 1e-12: is too fine for this arc: it needs ", 0), 0u) << m;
+  EXPECT_EQ(Path::circ(a, via, b, V::Zero(), 1e-5).size(), 314160u);  // a fine tolerance still works
+}
+
 TEST(Path, CircleThroughThreePoints) {
   Random rnd(102);
   const int n = testing::case_count(10000);

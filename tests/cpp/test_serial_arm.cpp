@@ -482,6 +482,18 @@ TEST(SerialArmErrors, DamagedUrdfTextIsRefusedOrLoadedNeverACrash) {
   EXPECT_GT(loaded, 0);
 }
 
+// Found by fuzzing (tests/fuzz/fuzz_urdf): urdfdom accepts a joint whose parent is its own
+// child, and the walk from the tip towards the base then never ended (memory grew until killed).
+TEST(SerialArmErrors, JointCycleIsRefused) {
+  const std::string xml = R"(<robot name="loop">
+  <link name="base_link"/> <link name="l1"/> <link name="l2"/>
+  <joint name="j1" type="continuous"><parent link="base_link"/><child link="l1"/><axis xyz="0 0 1"/></joint>
+  <joint name="j2" type="continuous"><parent link="l2"/><child link="l2"/><axis xyz="0 0 1"/></joint>
+</robot>)";
+  EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(xml, "base_link", "l2"); }),
+            "link = \"l2\": is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"l2\"");
+}
+
 TEST(SerialArmErrors, BadLinksAndArguments) {
   const std::string file = urdf_dir + "arm_planar_two_link.urdf";
   EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "nowhere", "link2"); }).find("base_link = \"nowhere\""),
