@@ -16,13 +16,6 @@ namespace {
 
 using detail::metres_per_radian;
 
-// Rate bound g′(θ) of the right Jacobian (curve_section.cpp states why); here only to size
-// sections, so the closed form with its small-angle series suffices.
-double jacobian_rate(double theta) {
-  if (theta < 1e-3) return 0.5 + theta / 3.0;
-  return (theta * std::exp(theta) - std::exp(theta) + 1.0) / (theta * theta);
-}
-
 // Slopes mᵢ of the natural cubic spline through the points pᵢ at knots spaced hᵢ:
 //   hᵢ mᵢ₋₁ + 2(hᵢ₋₁ + hᵢ) mᵢ + hᵢ₋₁ mᵢ₊₁ = 3(hᵢ Δᵢ₋₁ + hᵢ₋₁ Δᵢ),  Δᵢ = (pᵢ₊₁ − pᵢ)/hᵢ,
 // and p″ = 0 at both ends: 2m₀ + m₁ = 3Δ₀, mₙ₋₂ + 2mₙ₋₁ = 3Δₙ₋₂. Tridiagonal, solved by
@@ -69,7 +62,7 @@ void Path::cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const
     const double w = rotation.first(v).norm();
     const double speed = position.first(v).norm() + metres_per_radian * w;
     const double rate = position.second(v).norm() +
-                        metres_per_radian * (rotation.second(v).norm() + (jacobian_rate(rotation.value(v).norm()) + 1.0) * w * w);
+                        metres_per_radian * (rotation.second(v).norm() + (detail::jacobian_rate_bound(rotation.value(v).norm()) + 1.0) * w * w);
     min_speed = std::min(min_speed, speed);
     max_speed = std::max(max_speed, speed);
     max_rate = std::max(max_rate, rate);
