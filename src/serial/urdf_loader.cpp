@@ -60,7 +60,18 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& message
   }
   console_bridge::restorePreviousOutputHandler();
   messages = capture.messages;
-  return model;
+  if (!model) return model;
+  // urdfdom links own their children (shared_ptr) and point to their parent weakly, so a URDF
+  // whose joints form a cycle — which urdfdom accepts, and which we refuse below — leaves a
+  // ring of links that own each other and are never freed. The handle we return cuts every
+  // child list when it is released, which frees any such ring.
+  return urdf::ModelInterfaceSharedPtr(model.get(), [owner = model](urdf::ModelInterface*) mutable {
+    for (auto& named_link : owner->links_) {
+      named_link.second->child_links.clear();
+      named_link.second->child_joints.clear();
+    }
+    owner.reset();
+  });
 }
 
 std::string joint_label(const urdf::Joint& joint) { return "joint \"" + joint.name + "\""; }
