@@ -179,18 +179,25 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
   double time = 0.0;
   std::size_t first = 0;
+  trajectory.rest_s_.push_back(0.0);
   for (std::size_t k = 0; k < n; ++k) {
     const bool last = k + 1 == n;
     if (!last && tangent_continuous(sections[k], trajectory.lengths_[k], sections[k + 1], trajectory.lengths_[k + 1]))
       continue;
     const std::vector<LimitedSegment> segments = speed_limit_segments(sections, trajectory.lengths_, first, k + 1, set, limits);
     double start_s = trajectory.section_s_[first];
+    double span_s = start_s;
+    for (const LimitedSegment& segment : segments) {
+      trajectory.speed_limits_.push_back({span_s, segment.length, segment.limit});
+      span_s += segment.length;
+    }
     for (const Profile& law : velocity_limited_law(segments, limits.acceleration, jerk)) {
       trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + law.duration(), start_s});
       time += law.duration();
       start_s += law.distance();
     }
     ++trajectory.rest_pieces_;
+    trajectory.rest_s_.push_back(start_s);
     first = k + 1;
   }
   return trajectory;
@@ -222,14 +229,20 @@ TrajectorySample Trajectory::sample(double t) const noexcept {
   out.s = piece->start_s + law.s;
   out.s_dot = law.v;
   out.s_ddot = law.a;
+  path_state(out.s, out.pose, out.body_twist);
+  out.body_twist = out.body_twist * out.s_dot;
+  return out;
+}
+
+void Trajectory::path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept {
+  if (motions_.empty()) return;
   // The section holding s, and τ within it.
-  auto next = std::upper_bound(section_s_.begin(), section_s_.end(), out.s);
+  auto next = std::upper_bound(section_s_.begin(), section_s_.end(), s);
   std::size_t k = next == section_s_.begin() ? 0 : static_cast<std::size_t>(next - section_s_.begin()) - 1;
   k = std::min(k, motions_.size() - 1);
-  const double tau = std::clamp((out.s - section_s_[k]) / lengths_[k], 0.0, 1.0);
-  motions_[k].at(tau, out.pose, out.body_twist);
-  out.body_twist = out.body_twist * (out.s_dot / lengths_[k]);
-  return out;
+  const double tau = std::clamp((s - section_s_[k]) / lengths_[k], 0.0, 1.0);
+  motions_[k].at(tau, pose, twist_per_s);
+  twist_per_s = twist_per_s * (1.0 / lengths_[k]);
 }
 
 void Trajectory::sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept {

@@ -10,22 +10,24 @@
 #include <Eigen/LU>
 
 #include "dispkin/error.hpp"
+#include "joint_following.hpp"
 
 namespace dispkin {
-namespace {
-
-constexpr double two_pi = 6.28318530717958647692;
+namespace detail {
 
 std::string where(double t, double s) {
   std::ostringstream out;
-  out << "t = " << t << " s (path position s = " << s << " m)";
+  if (std::isnan(t)) {
+    out << "path position s = " << s << " m";
+  } else {
+    out << "t = " << t << " s (path position s = " << s << " m)";
+  }
   return out.str();
 }
 
-// The IK solution nearest to q_ref, each joint first moved by a multiple of 2π to the value
-// nearest to q_ref's (branch continuity for joints whose range exceeds one turn).
 Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
                                     double t, double s) {
+  constexpr double two_pi = 6.28318530717958647692;
   serial::InverseOptions options;
   options.offer_equivalents = false;
   options.keep_outside_limits = true;  // reported as a position excursion, not hidden
@@ -44,10 +46,8 @@ Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& p
   return best;
 }
 
-// q̇ from the body twist: J_b(q) q̇ = ξ_b, refused near a singularity (the joint speeds there
-// are unbounded: slowing down uniformly cannot help).
-Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t,
-                               double s) {
+Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                               double t, double s) {
   const Eigen::MatrixXd j = arm.body_jacobian(q);
   if (j.cols() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(j.cols()), "must be 6 to invert the Jacobian"));
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(j);
@@ -57,7 +57,11 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
   return lu.solve(body.vector());
 }
 
-}  // namespace
+}  // namespace detail
+
+using detail::continuous_solution;
+using detail::joint_velocity;
+using detail::where;
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options) {

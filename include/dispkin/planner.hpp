@@ -22,6 +22,10 @@
 
 namespace dispkin {
 
+namespace detail {
+struct TrajectoryAccess;
+}  // namespace detail
+
 //! System limits in the DISP metric: velocity (m/s), acceleration (m/s²), jerk (m/s³, for the
 //! S-curve). Each must be finite and positive.
 struct Limits {
@@ -70,6 +74,21 @@ class Trajectory {
   //! P0, P1, P12, P2, P3 for each law). Planning side; allocates.
   std::vector<double> characteristic_times() const;
 
+  //! One span of the velocity-limit curve the trajectory was planned under: ṡ ≤ `limit` (m/s)
+  //! for s in [start_s, start_s + length).
+  struct SpeedLimit {
+    double start_s, length, limit;
+  };
+  //! The velocity-limit curve (system velocity, lowered where the path curves tightly), in
+  //! order of s; together with rest_positions() what any re-timing must keep to.
+  const std::vector<SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
+  //! The path positions s where the trajectory is at rest: 0, every corner, length().
+  const std::vector<double>& rest_positions() const noexcept { return rest_s_; }
+
+  //! The pose at path position s (clamped to [0, length()]) and its body twist per unit of s
+  //! (the body twist at ṡ = 1 m/s).
+  void path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept;
+
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
   //! out[i] = sample(times[i]).
@@ -77,6 +96,7 @@ class Trajectory {
 
  private:
   friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind, const PlanOptions&);
+  friend struct detail::TrajectoryAccess;  // re-timing: the same path under new time laws
 
   // What sampling needs of a section, precomputed at planning time so that a sample costs one
   // sine/cosine pair per rotation and no logarithm: the pivot on its line (c₀ + τΔc) or arc
@@ -112,6 +132,8 @@ class Trajectory {
   std::vector<double> section_s_;  // s at the start of section k
   std::vector<Piece> pieces_;
   std::size_t rest_pieces_ = 0;
+  std::vector<SpeedLimit> speed_limits_;
+  std::vector<double> rest_s_;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest

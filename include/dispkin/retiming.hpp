@@ -12,6 +12,10 @@
 //! limit by FACC, re-plan, repeat until both are ≤ 1 — and fail (never report success) if that
 //! does not happen within the iteration budget.
 //!
+//! retime_optimal goes beyond the seed: the fastest path parameterisation that keeps the DISP
+//! limits and the joint velocity, acceleration and torque limits at once, slowing down only
+//! where a limit binds (reachability analysis over a grid of s, as in TOPP-RA).
+//!
 //! The planned poses are the arm's tip (tip_link) poses in its base frame.
 #pragma once
 
@@ -79,5 +83,52 @@ struct RetimeResult {
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options = {}, int max_iterations = 20);
+
+//! Options of retime_optimal.
+struct OptimalRetimeOptions {
+  //! Grid intervals over the whole path (≥ 2; each rest-to-rest run gets a share proportional
+  //! to its length, at least 2). Limits are imposed at both ends of every interval.
+  int grid_intervals = 100;
+  //! Joint acceleration limits q̈maxᵢ (rad/s² or m/s², each > 0, +∞ for none); empty: none
+  //! (URDF states none; MoveIt's joint_limits.yaml does).
+  Eigen::VectorXd joint_acceleration;
+  //! Keep |τᵢ| ≤ the effort limit where the arm states one.
+  bool torque_limits = true;
+  //! Step of the central differences for q″(s), as a fraction of the run's grid interval, > 0.
+  double difference_step = 1e-3;
+  //! The dense check of the result: samples between its characteristic points (≥ 0).
+  int check_samples_between = 3;
+  //! Re-solves with tightened limits when the dense check finds an overshoot between grid
+  //! points (≥ 0); if the last one still overshoots, retime_optimal throws.
+  int max_refinements = 6;
+};
+
+//! What retime_optimal produced.
+struct OptimalRetimeResult {
+  //! The re-timed trajectory: the same path, one constant-acceleration law per grid interval.
+  Trajectory trajectory;
+  //! The dense check of `trajectory` (check_joint_limits at check_samples_between).
+  JointLimitReport report;
+  //! Largest |q̇ᵢ|/q̇maxᵢ, |q̈ᵢ|/q̈maxᵢ and |τᵢ|/τmaxᵢ at the checked samples (each ≤ 1; 0 where no
+  //! limit applies). τ is the whole torque, static plus dynamic.
+  double velocity_ratio = 0.0, acceleration_ratio = 0.0, torque_ratio = 0.0;
+  //! The fraction by which the joint limits were tightened on the grid so that they hold between
+  //! grid points too (0: not needed), and the re-solves that took.
+  double margin = 0.0;
+  int refinements = 0;
+  //! The grid positions s (m) and ṡ there (m/s).
+  std::vector<double> grid_s, grid_speed;
+};
+
+//! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
+//! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the
+//! arm's joint velocity limits, `options.joint_acceleration` and the effort limits, followed
+//! from q_start. Time laws are piecewise-constant s̈ (no jerk limit: limits.jerk must be
+//! unset). Throws std::invalid_argument for bad options/limits, std::runtime_error where the
+//! path has no IK solution or is singular, where the static torque reaches a limit, where a
+//! joint leaves its position range, or if the dense check still fails after max_refinements.
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options = {});
 
 }  // namespace dispkin

@@ -1,0 +1,28 @@
+// Following a Cartesian trajectory with a serial arm's joints (internal; retiming.cpp and
+// optimal_retiming.cpp).
+#pragma once
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "dispkin/pose.hpp"
+#include "dispkin/serial/serial_arm.hpp"
+
+namespace dispkin::detail {
+
+//! "t = … s (path position s = … m)" for messages; only the path position when t is NaN.
+std::string where(double t, double s);
+
+//! The IK solution nearest to q_ref, each joint first moved by a multiple of 2π to the value
+//! nearest to q_ref's (branch continuity for joints whose range exceeds one turn). Throws
+//! std::runtime_error naming the place (where(t, s)) if the pose has no solution.
+Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
+                                    double t, double s);
+
+//! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
+//! joint speeds there are unbounded: slowing down cannot help).
+Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                               double t, double s);
+
+}  // namespace dispkin::detail

@@ -1,0 +1,233 @@
+// Time-optimal re-timing under DISP and joint limits (issue 7, item 3).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include <dispkin/retiming.hpp>
+#include <dispkin/shapes.hpp>
+
+#include "random_cases.hpp"
+#include "reachability.hpp"
+
+namespace dispkin {
+namespace {
+
+using testing::message_of;
+using testing::runtime_message_of;
+using V = Eigen::Vector3d;
+
+// A double integrator: |s̈| ≤ a, ṡ ≤ v. The reachability passes must give the trapezoid: on a
+// grid whose points hit both switching positions the same duration to rounding.
+TEST(Reachability, ConstantLimitsGiveTheTrapezoid) {
+  const double a = 2.0, v = 1.0, length = 2.0;  // accelerate over [0, 0.25], cruise, brake over [1.75, 2]
+  const int n = 80;                             // Δ = 0.025: the switching positions are grid points
+  std::vector<detail::GridInterval> intervals;
+  for (int i = 0; i < n; ++i) intervals.push_back({length / n, detail::ConvexPolygon(a, v * v)});
+  const detail::Parameterisation p = detail::fastest_parameterisation(intervals, 0.0, 0.0);
+  ASSERT_EQ(p.infeasible_interval, -1);
+  double time = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v0 = std::sqrt(p.x[i]), v1 = std::sqrt(p.x[i + 1]);
+    time += 2.0 * (length / n) / (v0 + v1);
+    ASSERT_LE(std::abs(p.u[i]), a * (1 + 1e-12));
+    ASSERT_LE(p.x[i + 1], v * v * (1 + 1e-12));
+  }
+  EXPECT_NEAR(time, Profile::trapezoid(length, v, a).duration(), 1e-12);
+  EXPECT_NEAR(p.x[n / 2], v * v, 1e-12);
+}
+
+// A speed limit that dips in the middle (x ≤ 0.09 on one interval): the law slows down only
+// there, and no limit is crossed; an admissible set that excludes rest is reported.
+TEST(Reachability, SlowsDownOnlyWhereALimitBinds) {
+  const int n = 40;
+  std::vector<detail::GridInterval> intervals;
+  for (int i = 0; i < n; ++i) {
+    intervals.push_back({0.05, detail::ConvexPolygon(1.0, 1.0)});
+    if (i == 20) intervals.back().admissible.clip({0.0, 1.0, 0.09});
+  }
+  const detail::Parameterisation p = detail::fastest_parameterisation(intervals, 0.0, 0.0);
+  ASSERT_EQ(p.infeasible_interval, -1);
+  EXPECT_LE(p.x[20], 0.09 + 1e-12);
+  EXPECT_NEAR(p.x[20], 0.09, 1e-12);
+  EXPECT_NEAR(p.x[10], 1.0, 1e-12);  // full speed away from the dip
+  EXPECT_NEAR(p.x[30], 1.0, 1e-12);
+  for (int i = 0; i < n; ++i) EXPECT_LE(std::abs(p.u[i]), 1.0 + 1e-12);
+
+  std::vector<detail::GridInterval> blocked{{0.1, detail::ConvexPolygon(1.0, 1.0)}, {0.1, detail::ConvexPolygon(1.0, 1.0)}};
+  blocked[1].admissible.clip({0.0, -1.0, -0.5});  // x ≥ 0.5: it could never stop at the end
+  EXPECT_EQ(detail::fastest_parameterisation(blocked, 0.0, 0.0).infeasible_interval, 1);
+}
+
+serial::SerialArm ur5e() {
+  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link",
+                                           "tool0");
+}
+
+MetricSetd tool() {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.05, V(0, 0, 0.1)));
+  return set;
+}
+
+struct Move {
+  Eigen::VectorXd q_start;
+  Path path;
+};
+
+Move lin_move(const serial::SerialArm& arm) {
+  Eigen::VectorXd q(6);
+  q << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
+  const Posed a = arm.forward(q);
+  const Posed b = Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V(0.25, -0.1, -0.1)) * a;
+  return {q, Path::lin(a, Posed(b.quaternion(), a.translation() + V(0.25, -0.1, -0.1)))};
+}
+
+// Two LINs with a corner: two rest-to-rest runs.
+Move corner_move(const serial::SerialArm& arm) {
+  const Move m = lin_move(arm);
+  const Posed a = arm.forward(m.q_start);
+  const Posed b = section_end(m.path.sections().back());
+  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(-0.4, V::UnitX())) * b.quaternion(), b.translation() + V(-0.1, 0.2, 0.15));
+  return {m.q_start, Path::lin(a, b).then(Path::lin(b, c))};
+}
+
+struct Ratios {
+  double velocity = 0, acceleration = 0, torque = 0;
+};
+
+// The joint limits measured on a dense check (samples_between per characteristic interval).
+Ratios dense_ratios(const Trajectory& traj, const serial::SerialArm& arm, const Eigen::VectorXd& q,
+                    const Eigen::VectorXd& acceleration, int samples_between) {
+  JointCheckOptions options;
+  options.samples_between = samples_between;
+  const JointLimitReport r = check_joint_limits(traj, arm, q, options);
+  const JointLimits limits = arm.joint_limits();
+  Ratios out;
+  for (const JointSample& s : r.samples) {
+    const Eigen::VectorXd torque = s.static_torque + s.dynamic_torque;
+    out.velocity = std::max(out.velocity, (s.qd.cwiseAbs().array() / limits.velocity.array()).maxCoeff());
+    if (acceleration.size()) out.acceleration = std::max(out.acceleration, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
+    out.torque = std::max(out.torque, (torque.cwiseAbs().array() / limits.effort.array()).maxCoeff());
+  }
+  return out;
+}
+
+// The DISP side: ṡ never above the plan's velocity-limit curve, |s̈| ≤ a, rests kept.
+void expect_disp_limits(const Trajectory& traj, const Limits& limits) {
+  const std::vector<Trajectory::SpeedLimit>& spans = traj.speed_limits();
+  const int n = 20000;
+  for (int i = 0; i <= n; ++i) {
+    const TrajectorySample s = traj.sample(traj.duration() * i / n);
+    double cap = limits.velocity;
+    for (const Trajectory::SpeedLimit& span : spans) {
+      if (s.s >= span.start_s - 1e-12 && s.s <= span.start_s + span.length + 1e-12) cap = std::min(cap, span.limit);
+    }
+    ASSERT_LE(s.s_dot, cap * (1 + 1e-12)) << "s = " << s.s;
+    ASSERT_LE(std::abs(s.s_ddot), limits.acceleration * (1 + 1e-8)) << "s = " << s.s;
+  }
+  for (const double rest : traj.rest_positions()) {
+    // Find the time at that rest: ṡ must be 0 there.
+    double lo = 0, hi = traj.duration();
+    for (int k = 0; k < 200; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (traj.sample(mid).s < rest ? lo : hi) = mid;
+    }
+    EXPECT_LE(traj.sample(hi).s_dot, 1e-6 * limits.velocity) << "rest at s = " << rest;
+  }
+}
+
+TEST(OptimalRetiming, KeepsEveryLimitDenselyAndIsNeverSlowerThanScaling) {
+  const serial::SerialArm arm = ur5e();
+  const MetricSetd set = tool();
+  Eigen::VectorXd acceleration(6);
+  acceleration << 8, 8, 8, 12, 12, 12;
+  for (const Move& m : {lin_move(arm), corner_move(arm)}) {
+    // One move held back by joint speeds, one by torques and joint accelerations.
+    for (const Limits& fast : {Limits{6.0, 100.0, std::nullopt}, Limits{1.5, 400.0, std::nullopt}}) {
+      // With joint acceleration limits, and with velocity and torque limits only (the UR5e's
+      // URDF states no accelerations).
+      for (const Eigen::VectorXd& joint_acceleration : {acceleration, Eigen::VectorXd()}) {
+        OptimalRetimeOptions options;
+        options.joint_acceleration = joint_acceleration;
+        const OptimalRetimeResult r = retime_optimal(m.path, set, fast, arm, m.q_start, options);
+        const Ratios dense = dense_ratios(r.trajectory, arm, m.q_start, joint_acceleration, 20);
+        std::printf("optimal: %.4f s, margin %.2e after %d refinements; dense ratios v %.6f a %.6f tau %.6f\n",
+                    r.trajectory.duration(), r.margin, r.refinements, dense.velocity, dense.acceleration, dense.torque);
+        EXPECT_LE(dense.velocity, 1.0);
+        EXPECT_LE(dense.acceleration, 1.0);
+        EXPECT_LE(dense.torque, 1.0);
+        // Some limit binds (the re-timing is not needlessly slow).
+        EXPECT_GT(std::max({dense.velocity, dense.acceleration, dense.torque}), 0.97);
+        expect_disp_limits(r.trajectory, fast);
+        EXPECT_EQ(r.trajectory.piece_count(), m.path.size() == 1 ? 1u : 2u);
+        if (joint_acceleration.size()) continue;
+        // The seed's scaling of the whole move keeps the same limits (velocity and torque).
+        const RetimeResult scaled = retime_by_scaling(m.path, set, fast, ProfileKind::trapezoid, arm, m.q_start);
+        std::printf("  optimal %.4f s vs scaling %.4f s\n", r.trajectory.duration(), scaled.trajectory.duration());
+        EXPECT_LE(r.trajectory.duration(), scaled.trajectory.duration());
+      }
+    }
+  }
+}
+
+TEST(OptimalRetiming, AlreadyFeasibleMovesKeepTheDispTiming) {
+  // Slow DISP limits: no joint limit binds, so the optimum is the DISP trapezoid itself (up to
+  // the grid: the switching points fall between grid points).
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  const Limits slow{0.05, 0.2, std::nullopt};
+  OptimalRetimeOptions options;
+  options.grid_intervals = 400;
+  const OptimalRetimeResult r = retime_optimal(m.path, tool(), slow, arm, m.q_start, options);
+  const double planned = plan(m.path, tool(), slow, ProfileKind::trapezoid).duration();
+  EXPECT_GE(r.trajectory.duration(), planned * (1 - 1e-9));
+  EXPECT_LE(r.trajectory.duration(), planned * 1.01);
+  EXPECT_EQ(r.refinements, 0);
+}
+
+TEST(OptimalRetiming, StaticOverloadIsAnErrorNotATrajectory) {
+  // A heavy payload (a strong gravity field is the same): the UR5e's URDF efforts cannot hold it.
+  std::string xml;
+  {
+    std::ifstream in(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf");
+    xml.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::size_t at = xml.find("<mass value=\"", xml.find("wrist_3_link"));
+  ASSERT_NE(at, std::string::npos);
+  xml.replace(at, xml.find('"', at + 13) - at + 1, "<mass value=\"400.0\"");
+  const serial::SerialArm heavy = serial::SerialArm::from_urdf_string(xml, "base_link", "tool0");
+  const Move m = lin_move(heavy);
+  EXPECT_NE(runtime_message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, std::nullopt}, heavy, m.q_start); })
+                .find("no speed makes this path feasible"),
+            std::string::npos);
+}
+
+TEST(OptimalRetiming, BadOptionsAreNamed) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  const Limits limits{0.2, 1.0, std::nullopt};
+  auto message = [&](auto change) {
+    OptimalRetimeOptions o;
+    change(o);
+    return message_of([&] { retime_optimal(m.path, tool(), limits, arm, m.q_start, o); });
+  };
+  EXPECT_NE(message([](auto& o) { o.grid_intervals = 1; }).find("grid_intervals = 1"), std::string::npos);
+  EXPECT_NE(message([](auto& o) { o.difference_step = 0; }).find("difference_step"), std::string::npos);
+  EXPECT_NE(message([](auto& o) { o.check_samples_between = -2; }).find("check_samples_between = -2"), std::string::npos);
+  EXPECT_NE(message([](auto& o) { o.max_refinements = -1; }).find("max_refinements = -1"), std::string::npos);
+  EXPECT_NE(message([](auto& o) { o.joint_acceleration = Eigen::VectorXd::Ones(3); }).find("joint_acceleration size = 3"),
+            std::string::npos);
+  EXPECT_NE(message([](auto& o) {
+              o.joint_acceleration = Eigen::VectorXd::Ones(6);
+              o.joint_acceleration(2) = std::nan("");
+            }).find("joint_acceleration[2]"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, 10.0}, arm, m.q_start); }).find("jerk"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), limits, arm, Eigen::VectorXd::Zero(4)); }).find("q_start size = 4"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace dispkin
