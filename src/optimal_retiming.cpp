@@ -10,6 +10,16 @@
 // coefficients vary smoothly, so a limit can be exceeded there by O(Δ²): the result is checked
 // densely, and if it overshoots the joint limits are tightened on the grid by the overshoot
 // and the grid re-solved.
+//
+// The parameter. The planner maps DISP arc length s linearly onto each section (τ = (s − s_k)/L_k),
+// so through a tangent junction the pose derivative per unit s steps by up to 1 % (the junction
+// rule): harmless for point speeds, but a step in q̇ at speed is an impulse in q̈ and in the
+// torques. The re-timing therefore works in a parameter σ in which the pose derivative is
+// continuous: each section gets a σ-length ℓ_k with ℓ_{k+1}/ℓ_k = |ξ_{k+1}(0)| / |ξ_k(1)| (the
+// twists per unit τ on both sides of the junction, parallel by the junction rule). Point
+// speeds are then σ̇ L_k/ℓ_k, so the DISP limits become σ̇ ≤ v_lim ℓ_k/L_k and |σ̈| ≤ a ℓ_k/L_k
+// per section, and the result goes back to s section by section (ṡ = σ̇ L_k/ℓ_k: the time law
+// in s steps at junctions exactly where the section lengths do, and the motion is smooth).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -41,36 +51,129 @@ struct TrajectoryAccess {
     out.rest_pieces_ = runs;
     return out;
   }
+  static const std::vector<double>& section_starts(const Trajectory& t) { return t.section_s_; }
+  // Pose and body twist per unit τ of section k at τ.
+  static void section_state(const Trajectory& t, std::size_t k, double tau, Posed& pose, Twistd& per_tau) {
+    t.motions_[k].at(tau, pose, per_tau);
+  }
 };
 
 }  // namespace detail
 namespace {
 
 using detail::HalfPlane;
+using detail::TrajectoryAccess;
 
-// What the limits need of the joint path at one grid position.
-struct GridPoint {
-  double s;
-  Eigen::VectorXd q, q1, q2;  // q, q′, q″
-  Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·s̈ + torque_x·ṡ² + gravity
+// The planned path by the smooth parameter σ (see the file comment), with each section's DISP
+// limits expressed in σ.
+class SmoothParameter {
+ public:
+  SmoothParameter(const Trajectory& planned, double acceleration) : planned_(planned) {
+    const std::vector<double>& lengths = planned.section_lengths();
+    const std::vector<double>& starts = TrajectoryAccess::section_starts(planned);
+    const std::vector<double>& rests = planned.rest_positions();
+    const std::size_t n = lengths.size();
+    ell_.resize(n);
+    sigma_start_.resize(n + 1);
+    speed_.resize(n);
+    acceleration_.resize(n);
+    sigma_start_[0] = 0.0;
+    Posed pose;
+    Twistd out, in;
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool run_start = std::binary_search(rests.begin(), rests.end(), starts[k]);
+      ell_[k] = lengths[k];
+      if (k > 0 && !run_start && lengths[k] > 0.0) {
+        TrajectoryAccess::section_state(planned, k - 1, 1.0, pose, out);
+        TrajectoryAccess::section_state(planned, k, 0.0, pose, in);
+        const double n_out = out.vector().norm(), n_in = in.vector().norm();
+        if (n_out > 0.0 && n_in > 0.0 && ell_[k - 1] > 0.0) ell_[k] = ell_[k - 1] * n_in / n_out;
+      }
+      sigma_start_[k + 1] = sigma_start_[k] + ell_[k];
+      // The DISP velocity limit of the section: the span of the plan's curve that holds it.
+      double cap = std::numeric_limits<double>::infinity();
+      const double middle = starts[k] + 0.5 * lengths[k];
+      for (const Trajectory::SpeedLimit& span : planned.speed_limits()) {
+        if (span.start_s <= middle && middle <= span.start_s + span.length) cap = std::min(cap, span.limit);
+      }
+      const double ratio = lengths[k] > 0.0 ? ell_[k] / lengths[k] : 1.0;  // σ per unit s
+      speed_[k] = cap * ratio;
+      acceleration_[k] = acceleration * ratio;
+    }
+    for (const double rest : rests) rest_sigma_.push_back(sigma_at(rest));
+  }
+
+  double length() const noexcept { return sigma_start_.back(); }
+  const std::vector<double>& rests() const noexcept { return rest_sigma_; }
+  std::size_t sections() const noexcept { return ell_.size(); }
+  double start(std::size_t k) const noexcept { return sigma_start_[k]; }
+  double ell(std::size_t k) const noexcept { return ell_[k]; }
+  // ds/dσ on section k.
+  double s_per_sigma(std::size_t k) const noexcept {
+    return ell_[k] > 0.0 ? planned_.section_lengths()[k] / ell_[k] : 1.0;
+  }
+
+  // The section holding σ (the later one at a junction).
+  std::size_t section_at(double sigma) const noexcept {
+    const auto next = std::upper_bound(sigma_start_.begin(), sigma_start_.end() - 1, sigma);
+    const std::size_t k = next == sigma_start_.begin() ? 0 : static_cast<std::size_t>(next - sigma_start_.begin()) - 1;
+    return std::min(k, ell_.size() - 1);
+  }
+
+  // Pose and body twist per unit σ.
+  void state(double sigma, Posed& pose, Twistd& per_sigma) const {
+    const std::size_t k = section_at(sigma);
+    const double tau = ell_[k] > 0.0 ? std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0) : 0.0;
+    TrajectoryAccess::section_state(planned_, k, tau, pose, per_sigma);
+    per_sigma = per_sigma * (ell_[k] > 0.0 ? 1.0 / ell_[k] : 0.0);
+  }
+
+  // The DISP limits in σ over [σ0, σ1]: the lowest of the sections it touches.
+  void limits_over(double sigma0, double sigma1, double& speed, double& acceleration) const noexcept {
+    speed = acceleration = std::numeric_limits<double>::infinity();
+    for (std::size_t k = section_at(sigma0); k < ell_.size() && sigma_start_[k] < sigma1; ++k) {
+      speed = std::min(speed, speed_[k]);
+      acceleration = std::min(acceleration, acceleration_[k]);
+    }
+  }
+
+ private:
+  double sigma_at(double s) const noexcept {
+    const std::vector<double>& starts = TrajectoryAccess::section_starts(planned_);
+    const auto next = std::upper_bound(starts.begin(), starts.end(), s);
+    std::size_t k = next == starts.begin() ? 0 : static_cast<std::size_t>(next - starts.begin()) - 1;
+    k = std::min(k, ell_.size() - 1);
+    const double length = planned_.section_lengths()[k];
+    return sigma_start_[k] + (length > 0.0 ? (s - starts[k]) / length * ell_[k] : 0.0);
+  }
+
+  const Trajectory& planned_;
+  std::vector<double> ell_, sigma_start_, speed_, acceleration_, rest_sigma_;
 };
 
-// The joint path at s, with q″ by central differences of q′ inside [s_lo, s_hi] (one-sided at
-// its ends: a run's ends are rests, where the path may turn a corner).
-GridPoint grid_point(const Trajectory& planned, const serial::SerialArm& arm, double s, double h, double s_lo,
-                     double s_hi, const Eigen::VectorXd& q_ref) {
+// What the limits need of the joint path at one grid position σ.
+struct GridPoint {
+  double sigma;
+  Eigen::VectorXd q, q1, q2;                    // q, dq/dσ, d²q/dσ²
+  Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity
+};
+
+// The joint path at σ, with d²q/dσ² by central differences inside [lo, hi] (one-sided at its
+// ends: a run's ends are rests, where the path may turn a corner).
+GridPoint grid_point(const SmoothParameter& path, const serial::SerialArm& arm, double sigma, double h, double lo,
+                     double hi, const Eigen::VectorXd& q_ref) {
   constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
   auto joint_path = [&](double at, const Eigen::VectorXd& reference, Eigen::VectorXd& q, Eigen::VectorXd& q1) {
     Posed pose;
-    Twistd per_s;
-    planned.path_state(at, pose, per_s);
+    Twistd per_sigma;
+    path.state(at, pose, per_sigma);
     q = detail::continuous_solution(arm, pose, reference, no_time, at);
-    q1 = detail::joint_velocity(arm, q, per_s, no_time, at);
+    q1 = detail::joint_velocity(arm, q, per_sigma, no_time, at);
   };
   GridPoint p;
-  p.s = s;
-  joint_path(s, q_ref, p.q, p.q1);
-  const double before = std::max(s_lo, s - h), after = std::min(s_hi, s + h);
+  p.sigma = sigma;
+  joint_path(sigma, q_ref, p.q, p.q1);
+  const double before = std::max(lo, sigma - h), after = std::min(hi, sigma + h);
   Eigen::VectorXd q_before, q1_before, q_after, q1_after;
   joint_path(before, p.q, q_before, q1_before);
   joint_path(after, p.q, q_after, q1_after);
@@ -82,11 +185,12 @@ GridPoint grid_point(const Trajectory& planned, const serial::SerialArm& arm, do
   return p;
 }
 
-// The joint limits at one grid point as half-planes in (u, x), each limit multiplied by `scale`.
+// The joint limits (+∞ where none).
 struct JointBounds {
-  Eigen::VectorXd velocity, acceleration, effort;  // +∞ where none
+  Eigen::VectorXd velocity, acceleration, effort;
 };
 
+// The joint limits at one grid point as half-planes in (u, x), each limit multiplied by `scale`.
 void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, std::vector<HalfPlane>& out) {
   for (Eigen::Index k = 0; k < p.q.size(); ++k) {
     if (std::isfinite(bounds.velocity(k))) {
@@ -104,15 +208,6 @@ void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, 
       out.push_back({-p.torque_u(k), -p.torque_x(k), t + p.gravity(k)});
     }
   }
-}
-
-// The lowest DISP speed limit over [s0, s1].
-double speed_cap(const Trajectory& planned, double s0, double s1) {
-  double cap = std::numeric_limits<double>::infinity();
-  for (const Trajectory::SpeedLimit& span : planned.speed_limits()) {
-    if (span.start_s < s1 && span.start_s + span.length > s0) cap = std::min(cap, span.limit);
-  }
-  return cap;
 }
 
 std::string interval_text(double s0, double s1) {
@@ -143,15 +238,20 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   }
 
   const Trajectory planned = plan(path, set, limits, ProfileKind::trapezoid);
+  const SmoothParameter smooth(planned, limits.acceleration);
   const JointLimits joint = arm.joint_limits();
   constexpr double none = std::numeric_limits<double>::infinity();
   JointBounds bounds{joint.velocity, acceleration.size() ? acceleration : Eigen::VectorXd::Constant(dof, none),
                      Eigen::VectorXd::Constant(dof, none)};
   if (options.torque_limits && joint.effort.size() == dof) bounds.effort = joint.effort;
+  // Path position s of a σ, for messages and the result.
+  auto s_of = [&](double sigma) {
+    const std::size_t k = smooth.section_at(sigma);
+    return TrajectoryAccess::section_starts(planned)[k] + (sigma - smooth.start(k)) * smooth.s_per_sigma(k);
+  };
 
-  // The grid: each rest-to-rest run of the plan gets its share of the intervals.
-  const std::vector<double>& rests = planned.rest_positions();
-  const double total = planned.length();
+  // The grid: each rest-to-rest run gets its share of the intervals.
+  const std::vector<double>& rests = smooth.rests();
   struct Run {
     std::size_t first, count;  // grid points [first, first + count]
   };
@@ -159,14 +259,14 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   std::vector<GridPoint> grid;
   Eigen::VectorXd q_ref = q_start;
   for (std::size_t r = 0; r + 1 < rests.size(); ++r) {
-    const double s0 = rests[r], s1 = rests[r + 1];
-    if (!(s1 > s0)) continue;
-    const auto count = static_cast<std::size_t>(std::max(2.0, std::round(options.grid_intervals * (s1 - s0) / total)));
-    const double h = options.difference_step * (s1 - s0) / static_cast<double>(count);
+    const double lo = rests[r], hi = rests[r + 1];
+    if (!(hi > lo)) continue;
+    const auto count = static_cast<std::size_t>(std::max(2.0, std::round(options.grid_intervals * (hi - lo) / smooth.length())));
+    const double h = options.difference_step * (hi - lo) / static_cast<double>(count);
     runs.push_back({grid.size(), count});
     for (std::size_t i = 0; i <= count; ++i) {
-      const double s = i == count ? s1 : s0 + (s1 - s0) * static_cast<double>(i) / static_cast<double>(count);
-      grid.push_back(grid_point(planned, arm, s, h, s0, s1, q_ref));
+      const double sigma = i == count ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(count);
+      grid.push_back(grid_point(smooth, arm, sigma, h, lo, hi, q_ref));
       q_ref = grid.back().q;
     }
   }
@@ -176,7 +276,7 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
       if (std::abs(p.gravity(k)) >= bounds.effort(k)) {
         std::ostringstream message;
         message << "joint " << arm.joint_names()[static_cast<std::size_t>(k)] << ": the static torque "
-                << std::abs(p.gravity(k)) << " N·m at " << detail::where(std::nan(""), p.s)
+                << std::abs(p.gravity(k)) << " N·m at " << detail::where(std::nan(""), s_of(p.sigma))
                 << " reaches its effort limit " << bounds.effort(k) << " N·m: no speed makes this path feasible";
         throw std::runtime_error(message.str());
       }
@@ -195,10 +295,11 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
       intervals.reserve(run.count);
       for (std::size_t i = run.first; i < run.first + run.count; ++i) {
         const GridPoint &p = grid[i], &p_next = grid[i + 1];
-        const double delta = p_next.s - p.s;
-        const double cap = speed_cap(planned, p.s, p_next.s);
-        detail::GridInterval interval{delta, detail::ConvexPolygon(limits.acceleration, cap * cap)};
-        interval.admissible.clip({2.0 * delta, 1.0, cap * cap});  // x_{i+1} ≤ cap² as well
+        const double delta = p_next.sigma - p.sigma;
+        double speed, accel;
+        smooth.limits_over(p.sigma, p_next.sigma, speed, accel);
+        detail::GridInterval interval{delta, detail::ConvexPolygon(accel, speed * speed)};
+        interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
         at_start.clear();
         at_end.clear();
         append_limits(p, bounds, scale, at_start);
@@ -211,26 +312,46 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
       if (fastest.infeasible_interval >= 0) {
         const std::size_t i = run.first + static_cast<std::size_t>(fastest.infeasible_interval);
         throw std::runtime_error("no speed keeps every joint limit on the path interval " +
-                                 interval_text(grid[i].s, grid[i + 1].s) + " while still reaching the next rest");
+                                 interval_text(s_of(grid[i].sigma), s_of(grid[i + 1].sigma)) +
+                                 " while still reaching the next rest");
       }
+      // Back to s: constant σ̈ over each grid interval, cut where sections begin (ṡ = σ̇ ds/dσ).
       for (std::size_t i = 0; i < run.count; ++i) {
-        const double s0 = grid[run.first + i].s, delta = grid[run.first + i + 1].s - s0;
-        const double v0 = std::sqrt(fastest.x[i]), v1 = std::sqrt(fastest.x[i + 1]);
-        if (!(v0 + v1 > 0.0)) {
+        const double sigma0 = grid[run.first + i].sigma, sigma1 = grid[run.first + i + 1].sigma;
+        const double x0 = fastest.x[i], u = fastest.u[i];
+        if (!(fastest.x[i] + fastest.x[i + 1] > 0.0)) {
           throw std::runtime_error("the joint limits allow no motion on the path interval " +
-                                   interval_text(s0, s0 + delta));
+                                   interval_text(s_of(sigma0), s_of(sigma1)));
         }
-        // Constant s̈ over the interval: the trapezoid between v0 and v1 whose acceleration just
-        // covers Δ (a hair above, so that rounding cannot make the law infeasible).
-        const double a = std::max(std::abs(v1 * v1 - v0 * v0) / (2.0 * delta) * (1.0 + 1e-9), 1e-12 * limits.acceleration);
-        laws.push_back(Profile::trapezoid(delta, std::max(v0, v1), a, v0, v1));
-        result.grid_s.push_back(s0);
-        result.grid_speed.push_back(v0);
+        result.grid_s.push_back(s_of(sigma0));
+        result.grid_speed.push_back(std::sqrt(x0) * smooth.s_per_sigma(smooth.section_at(sigma0)));
+        for (double a = sigma0; a < sigma1;) {
+          const std::size_t k = smooth.section_at(a);
+          double b = k + 1 < smooth.sections() ? std::min(sigma1, smooth.start(k + 1)) : sigma1;
+          if (!(b > a)) break;
+          // A section boundary within rounding of the interval's end: one piece to the end (a
+          // piece of 1e-15 m would only test the rounding of the trapezoid's feasibility check).
+          if (sigma1 - b <= 1e-9 * (sigma1 - sigma0)) b = sigma1;
+          if (b - a <= 1e-9 * (sigma1 - sigma0)) {  // the same at the interval's start
+            a = b;
+            continue;
+          }
+          const double r = smooth.s_per_sigma(k);
+          const double v0 = r * std::sqrt(std::max(0.0, x0 + 2.0 * u * (a - sigma0)));
+          const double v1 = r * std::sqrt(std::max(0.0, x0 + 2.0 * u * (b - sigma0)));
+          const double distance = r * (b - a);
+          // The trapezoid between v0 and v1 whose acceleration just covers the distance (a hair
+          // above, so that rounding cannot make the law infeasible).
+          const double acc = std::max(std::abs(v1 * v1 - v0 * v0) / (2.0 * distance) * (1.0 + 1e-9), 1e-12 * limits.acceleration);
+          laws.push_back(Profile::trapezoid(distance, std::max(v0, v1), acc, v0, v1));
+          a = b;
+        }
       }
-      result.grid_s.push_back(grid[run.first + run.count].s);
-      result.grid_speed.push_back(std::sqrt(fastest.x.back()));
+      const double end = grid[run.first + run.count].sigma;
+      result.grid_s.push_back(s_of(end));
+      result.grid_speed.push_back(std::sqrt(fastest.x.back()) * smooth.s_per_sigma(smooth.section_at(end)));
     }
-    result.trajectory = detail::TrajectoryAccess::with_laws(planned, laws, runs.size());
+    result.trajectory = TrajectoryAccess::with_laws(planned, laws, runs.size());
 
     // The dense check, with the whole torque against the effort limit.
     JointCheckOptions check;

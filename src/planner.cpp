@@ -197,7 +197,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
       start_s += law.distance();
     }
     ++trajectory.rest_pieces_;
-    trajectory.rest_s_.push_back(start_s);
+    trajectory.rest_s_.push_back(last ? trajectory.section_s_[k] + trajectory.lengths_[k] : trajectory.section_s_[k + 1]);
     first = k + 1;
   }
   return trajectory;

@@ -1,4 +1,5 @@
 // Python binding of dispkin/retiming.hpp: check_joint_limits, retime (serial arms).
+#include <optional>
 #include <string>
 
 #include <pybind11/eigen.h>
@@ -95,14 +96,31 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque)
       .def_readonly("iterations", &RetimeResult::iterations)
       .def_readonly("report", &RetimeResult::report);
 
+  py::class_<OptimalRetimeResult>(m, "OptimalRetimeResult", R"doc(
+What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
+grid interval), the dense check of it (`report`), the largest joint velocity, acceleration and
+torque ratios found by that check (each <= 1; torque = static + dynamic against the effort limit),
+the fraction by which the limits were tightened on the grid so that they also hold between grid
+points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc")
+      .def_readonly("trajectory", &OptimalRetimeResult::trajectory)
+      .def_readonly("report", &OptimalRetimeResult::report)
+      .def_readonly("velocity_ratio", &OptimalRetimeResult::velocity_ratio, "max |qd_i| / qd_max_i at the checked samples.")
+      .def_readonly("acceleration_ratio", &OptimalRetimeResult::acceleration_ratio,
+                    "max |qdd_i| / qdd_max_i at the checked samples (0 without acceleration limits).")
+      .def_readonly("torque_ratio", &OptimalRetimeResult::torque_ratio,
+                    "max |tau_i| / tau_max_i at the checked samples (0 without effort limits).")
+      .def_readonly("margin", &OptimalRetimeResult::margin, "Fraction by which the grid limits were tightened.")
+      .def_readonly("refinements", &OptimalRetimeResult::refinements, "Grid re-solves after a dense check overshoot.")
+      .def_property_readonly("grid_s", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_s.size()), r.grid_s.data()); }, "Grid positions s (m), (N+1,).")
+      .def_property_readonly("grid_speed", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_speed.size()), r.grid_speed.data()); },
+                             "Path speed at the grid positions (m/s), (N+1,).");
+
   m.def(
       "retime",
       [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& arm,
          const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
-         int max_iterations) {
-        if (method != "scaling") {
-          throw std::invalid_argument(describe("method", method, "must be \"scaling\" (the seed's loop; a time-optimal re-timing is not available yet)"));
-        }
+         int max_iterations, int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration,
+         bool torque_limits) -> py::object {
         ProfileKind kind;
         if (profile == "scurve") {
           kind = ProfileKind::scurve;
@@ -111,14 +129,37 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque)
         } else {
           throw std::invalid_argument(describe("profile", profile, "must be \"scurve\" or \"trapezoid\""));
         }
-        return retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4), max_iterations);
+        if (method == "scaling") {
+          return py::cast(retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
+                                            max_iterations));
+        }
+        if (method != "optimal") throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
+        if (kind != ProfileKind::trapezoid) {
+          throw std::invalid_argument(describe("profile", profile,
+                                               "must be \"trapezoid\" with method \"optimal\" (its laws are piecewise-constant "
+                                               "acceleration; a jerk-limited optimal re-timing is not available)"));
+        }
+        OptimalRetimeOptions options;
+        options.grid_intervals = grid_intervals;
+        if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
+        options.torque_limits = torque_limits;
+        options.check_samples_between = samples_between;
+        options.max_refinements = max_iterations;
+        return py::cast(retime_optimal(path, set, limits, arm, q_start, options));
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::arg("q_start"),
       py::arg("profile") = "scurve", py::arg("method") = "scaling", py::arg("samples_between") = 10,
-      py::arg("max_iterations") = 20,
-      "The seed's re-timing loop: plan, check_joint_limits, divide the velocity limit by FVEL and the "
-      "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample. RuntimeError if a "
-      "position limit is violated, a static torque exceeds its limit, or it does not converge.");
+      py::arg("max_iterations") = 20, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
+      py::arg("torque_limits") = true,
+      "Re-time `path` so that the robot keeps its joint limits.\n\n"
+      "method=\"scaling\" (the seed's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
+      "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
+      "method=\"optimal\" (profile=\"trapezoid\", limits without jerk): the fastest parameterisation under the "
+      "DISP limits and the joint velocity limits, `joint_acceleration` ((dof,) array, optional) and the effort "
+      "limits (if `torque_limits`) at once, over `grid_intervals` intervals of s, checked at `samples_between` "
+      "points between characteristic points and re-solved with tightened limits up to `max_iterations` times "
+      "if that check finds an overshoot; returns an OptimalRetimeResult.\n"
+      "RuntimeError if a position limit is violated, a static torque exceeds its limit, or it does not converge.");
 }
 
 }  // namespace python

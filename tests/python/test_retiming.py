@@ -40,5 +40,5 @@ def test_retime_by_scaling_converges_within_the_limits():
     assert result.report.within_limits and result.iterations >= 2
     dense = dispkin.check_joint_limits(result.trajectory, arm, q, samples_between=200)
     assert dense.acceleration_factor <= 1.01 and dense.velocity_factor <= 1.001
-    with pytest.raises(ValueError, match='method = "optimal"'):
-        dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0, 1e5), arm, q, method="optimal")
+    with pytest.raises(ValueError, match='method = "fastest"'):
+        dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0, 1e5), arm, q, method="fastest")

@@ -1,0 +1,95 @@
+"""Time-optimal re-timing (issue 7, item 3) against TOPP-RA (`toppra` from PyPI) on the same
+joint path and the same joint constraints."""
+
+import pathlib
+
+import numpy as np
+import pytest
+
+import dispkin
+
+pytestmark = pytest.mark.skipif(not hasattr(dispkin, "SerialArm"), reason="built without the serial-arm plugin")
+toppra = pytest.importorskip("toppra")
+import toppra.algorithm  # noqa: E402
+import toppra.constraint  # noqa: E402
+
+URDF = pathlib.Path(__file__).resolve().parents[1] / "data" / "urdf" / "arm_ur5e_dh.urdf"
+Q0 = np.array([0.3, -1.2, 1.5, -1.9, -1.57, 0.2])
+# DISP limits high enough not to bind: the comparison is about the joint constraints.
+FREE = dispkin.Limits(50.0, 5000.0)
+ACCELERATION = np.array([8.0, 8.0, 8.0, 12.0, 12.0, 12.0])
+
+
+def arm_and_path(kind):
+    arm = dispkin.SerialArm.from_urdf(str(URDF), "base_link", "tool0")
+    a = arm.forward(Q0)
+    turned = dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, 0.5]) * a
+    b = dispkin.Pose(turned.quaternion, a.translation + np.array([0.25, -0.1, -0.1]))
+    if kind == "lin":
+        path = dispkin.Path.lin(a, b)
+    else:
+        via = dispkin.Pose(a.quaternion, a.translation + np.array([0.15, 0.05, -0.02]))
+        path = dispkin.Path.circ(a, via, b)
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.05, [0, 0, 0.1]))
+    return arm, path, tool
+
+
+def joint_path(arm, path, tool):
+    """The joint path q(s) dispkin follows, sampled densely in s (for toppra's spline)."""
+    traj = dispkin.plan(path, tool, dispkin.Limits(0.1, 1.0), profile="trapezoid")
+    samples = dispkin.check_joint_limits(traj, arm, Q0, samples_between=20).samples
+    s, keep = np.unique(samples["s"], return_index=True)
+    return s, samples["q"][keep]
+
+
+def toppra_duration(arm, s, q, grid, with_torque):
+    limits = arm.joint_limits
+    spline = toppra.SplineInterpolator(s, q)
+    constraints = [toppra.constraint.JointVelocityConstraint(np.column_stack([-limits.velocity, limits.velocity]))]
+    if not with_torque:
+        constraints.append(toppra.constraint.JointAccelerationConstraint(np.column_stack([-ACCELERATION, ACCELERATION])))
+    else:
+        constraints.append(
+            toppra.constraint.JointTorqueConstraint(
+                lambda qq, qd, qdd: arm.torques(qq, qd, qdd),
+                np.column_stack([-limits.effort, limits.effort]),
+                np.zeros(6),
+            )
+        )
+    instance = toppra.algorithm.TOPPRA(constraints, spline, gridpoints=np.linspace(s[0], s[-1], grid + 1),
+                                       parametrizer="ParametrizeConstAccel")
+    return instance.compute_trajectory(0, 0).duration
+
+
+@pytest.mark.parametrize("kind", ["lin", "circ"])
+@pytest.mark.parametrize("with_torque", [False, True])
+def test_duration_within_two_percent_of_toppra(kind, with_torque):
+    arm, path, tool = arm_and_path(kind)
+    s, q = joint_path(arm, path, tool)
+    # Joint velocities with joint accelerations, or joint velocities with torques.
+    ours = dispkin.retime(path, tool, FREE, arm, Q0, profile="trapezoid", method="optimal",
+                          joint_acceleration=None if with_torque else ACCELERATION, torque_limits=with_torque)
+    theirs = toppra_duration(arm, s, q, 100, with_torque)
+    print(f"{kind} torque={with_torque}: dispkin {ours.trajectory.duration:.5f} s, toppra {theirs:.5f} s")
+    assert abs(ours.trajectory.duration - theirs) <= 0.02 * theirs
+    assert ours.velocity_ratio <= 1.0 and ours.acceleration_ratio <= 1.0 and ours.torque_ratio <= 1.0
+    assert max(ours.velocity_ratio, ours.acceleration_ratio, ours.torque_ratio) > 0.97
+
+
+def test_optimal_is_never_slower_than_scaling_and_keeps_limits_densely():
+    arm, path, tool = arm_and_path("lin")
+    fast = dispkin.Limits(1.5, 400.0)
+    optimal = dispkin.retime(path, tool, fast, arm, Q0, profile="trapezoid", method="optimal")
+    scaled = dispkin.retime(path, tool, fast, arm, Q0, profile="trapezoid", method="scaling")
+    assert isinstance(optimal, dispkin.OptimalRetimeResult) and isinstance(scaled, dispkin.RetimeResult)
+    assert optimal.trajectory.duration <= scaled.trajectory.duration
+    dense = dispkin.check_joint_limits(optimal.trajectory, arm, Q0, samples_between=30)
+    limits = arm.joint_limits
+    assert np.all(np.abs(dense.samples["qd"]) <= limits.velocity)
+    torque = dense.samples["static_torque"] + dense.samples["dynamic_torque"]
+    assert np.all(np.abs(torque) <= limits.effort)
+    assert optimal.grid_s.shape == optimal.grid_speed.shape and optimal.grid_speed[0] == 0.0
+    # The path speed never exceeds the DISP system velocity.
+    t = np.linspace(0, optimal.trajectory.duration, 2001)
+    assert np.all(optimal.trajectory.path_velocity(t) <= fast.velocity * (1 + 1e-12))
