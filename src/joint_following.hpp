@@ -20,6 +20,11 @@ std::string where(double t, double s);
 Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
                                     double t, double s);
 
+//! The same solution found faster when the pose is near forward(q_ref): Newton's method from
+//! q_ref, falling back to continuous_solution when it does not converge close by.
+Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
+                                 double s);
+
 //! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
 //! joint speeds there are unbounded: slowing down cannot help).
 Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,

@@ -167,7 +167,7 @@ GridPoint grid_point(const SmoothParameter& path, const serial::SerialArm& arm, 
     Posed pose;
     Twistd per_sigma;
     path.state(at, pose, per_sigma);
-    q = detail::continuous_solution(arm, pose, reference, no_time, at);
+    q = detail::tracked_solution(arm, pose, reference, no_time, at);
     q1 = detail::joint_velocity(arm, q, per_sigma, no_time, at);
   };
   GridPoint p;
@@ -284,7 +284,10 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   }
 
   OptimalRetimeResult result;
-  double scale = 1.0 - 1e-9;  // rounding headroom: the grid solution sits exactly on its limits
+  // The grid solution sits exactly on its limits, and between grid points the coefficients
+  // move by O(Δ²): 0.1 % headroom from the start spares the re-solve and re-check in most cases
+  // (measured: first-pass overshoots of 2–3·10⁻⁴ on 100-interval grids of UR5e moves).
+  double scale = 1.0 - 1e-3;
   std::vector<HalfPlane> at_start, at_end;
   for (int refinement = 0;; ++refinement) {
     std::vector<Profile> laws;

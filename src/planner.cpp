@@ -214,7 +214,10 @@ std::vector<double> Trajectory::characteristic_times() const {
     }
   }
   std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  // Phases of vanishing length (a cruise over 10⁻⁹ of a law's distance, left by rounding) add
+  // instants that coincide within 10⁻⁹ of the duration: one of each is kept.
+  const double same = 1e-9 * duration();
+  times.erase(std::unique(times.begin(), times.end(), [same](double a, double b) { return b - a <= same; }), times.end());
   return times;
 }
 

@@ -46,6 +46,32 @@ Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& p
   return best;
 }
 
+Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
+                                 double s) {
+  // Newton's method on the body-frame pose error from q_ref. Along a trajectory consecutive
+  // poses are close, so it converges quadratically in two or three steps to the solution on
+  // q_ref's branch — a third of the cost of enumerating every analytic solution. Anything
+  // unusual (no convergence, a near-singular Jacobian, a step of more than 0.3 rad, where a
+  // different branch may have been reached) falls back to the analytic nearest solution.
+  constexpr double tolerance = 1e-13, largest_step = 0.3;
+  Eigen::VectorXd q = q_ref;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    const Eigen::Matrix<double, 6, 1> error = (arm.forward(q).inverse() * pose).log().vector();
+    if (error.lpNorm<Eigen::Infinity>() <= tolerance) {
+      if ((q - q_ref).lpNorm<Eigen::Infinity>() <= largest_step) return q;
+      break;
+    }
+    const Eigen::MatrixXd j = arm.body_jacobian(q);
+    if (j.cols() != 6) break;
+    const Eigen::Matrix<double, 6, 6> j6 = j;
+    const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> lu(j6);
+    if (!(std::abs(lu.determinant()) > 1e-9)) break;
+    q += lu.solve(error);
+    if (!q.allFinite()) break;
+  }
+  return continuous_solution(arm, pose, q_ref, t, s);
+}
+
 Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                                double t, double s) {
   const Eigen::MatrixXd j = arm.body_jacobian(q);
@@ -59,7 +85,7 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
 
 }  // namespace detail
 
-using detail::continuous_solution;
+using detail::tracked_solution;
 using detail::joint_velocity;
 using detail::where;
 
@@ -90,14 +116,14 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     JointSample sample;
     sample.time = t;
     sample.s = here.s;
-    sample.q = continuous_solution(arm, here.pose, q_prev, t, here.s);
+    sample.q = tracked_solution(arm, here.pose, q_prev, t, here.s);
     sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
     // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t_after > t_before) {
       const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
-      const Eigen::VectorXd q_before = continuous_solution(arm, before.pose, sample.q, t_before, before.s);
-      const Eigen::VectorXd q_after = continuous_solution(arm, after.pose, sample.q, t_after, after.s);
+      const Eigen::VectorXd q_before = tracked_solution(arm, before.pose, sample.q, t_before, before.s);
+      const Eigen::VectorXd q_after = tracked_solution(arm, after.pose, sample.q, t_after, after.s);
       sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
                     joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
                    (t_after - t_before);

@@ -186,6 +186,26 @@ TEST(OptimalRetiming, AlreadyFeasibleMovesKeepTheDispTiming) {
   EXPECT_EQ(r.refinements, 0);
 }
 
+// A coarse grid overshoots between its points by more than the standing 0.1 % headroom: the
+// dense check sees it, the limits are tightened and the grid re-solved until it holds — or,
+// without refinements allowed, it is an error, never a trajectory that breaks a limit.
+TEST(OptimalRetiming, CoarseGridsAreRefinedUntilTheDenseCheckHolds) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = corner_move(arm);
+  const Limits fast{1.5, 400.0, std::nullopt};
+  OptimalRetimeOptions options;
+  options.grid_intervals = 6;
+  const OptimalRetimeResult r = retime_optimal(m.path, tool(), fast, arm, m.q_start, options);
+  EXPECT_GE(r.refinements, 1);
+  EXPECT_GT(r.margin, 1e-3);
+  const Ratios dense = dense_ratios(r.trajectory, arm, m.q_start, Eigen::VectorXd(), options.check_samples_between);
+  EXPECT_LE(std::max(dense.velocity, dense.torque), 1.0);
+  options.max_refinements = 0;
+  EXPECT_NE(runtime_message_of([&] { retime_optimal(m.path, tool(), fast, arm, m.q_start, options); })
+                .find("the dense check still finds a joint limit exceeded"),
+            std::string::npos);
+}
+
 TEST(OptimalRetiming, StaticOverloadIsAnErrorNotATrajectory) {
   // A heavy payload (a strong gravity field is the same): the UR5e's URDF efforts cannot hold it.
   std::string xml;
