@@ -21,9 +21,10 @@ Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& p
                                     double t, double s);
 
 //! The same solution found faster when the pose is near forward(q_ref): Newton's method from
-//! q_ref, falling back to continuous_solution when it does not converge close by.
+//! `guess` (q_ref if null), falling back to continuous_solution when it does not converge
+//! within 0.3 rad of q_ref.
 Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
-                                 double s);
+                                 double s, const Eigen::VectorXd* guess = nullptr);
 
 //! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
 //! joint speeds there are unbounded: slowing down cannot help).

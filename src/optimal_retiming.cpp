@@ -163,20 +163,23 @@ struct GridPoint {
 GridPoint grid_point(const SmoothParameter& path, const serial::SerialArm& arm, double sigma, double h, double lo,
                      double hi, const Eigen::VectorXd& q_ref) {
   constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
-  auto joint_path = [&](double at, const Eigen::VectorXd& reference, Eigen::VectorXd& q, Eigen::VectorXd& q1) {
+  auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* guess, Eigen::VectorXd& q,
+                        Eigen::VectorXd& q1) {
     Posed pose;
     Twistd per_sigma;
     path.state(at, pose, per_sigma);
-    q = detail::tracked_solution(arm, pose, reference, no_time, at);
+    q = detail::tracked_solution(arm, pose, reference, no_time, at, guess);
     q1 = detail::joint_velocity(arm, q, per_sigma, no_time, at);
   };
   GridPoint p;
   p.sigma = sigma;
-  joint_path(sigma, q_ref, p.q, p.q1);
+  joint_path(sigma, q_ref, nullptr, p.q, p.q1);
   const double before = std::max(lo, sigma - h), after = std::min(hi, sigma + h);
+  // Predicted to first order, so that Newton needs a single step.
+  const Eigen::VectorXd guess_before = p.q - (sigma - before) * p.q1, guess_after = p.q + (after - sigma) * p.q1;
   Eigen::VectorXd q_before, q1_before, q_after, q1_after;
-  joint_path(before, p.q, q_before, q1_before);
-  joint_path(after, p.q, q_after, q1_after);
+  joint_path(before, p.q, &guess_before, q_before, q1_before);
+  joint_path(after, p.q, &guess_after, q_after, q1_after);
   p.q2 = (q1_after - q1_before) / (after - before);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.q.size());
   p.gravity = arm.static_torques(p.q);

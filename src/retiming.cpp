@@ -47,14 +47,14 @@ Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& p
 }
 
 Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
-                                 double s) {
+                                 double s, const Eigen::VectorXd* guess) {
   // Newton's method on the body-frame pose error from q_ref. Along a trajectory consecutive
   // poses are close, so it converges quadratically in two or three steps to the solution on
   // q_ref's branch — a third of the cost of enumerating every analytic solution. Anything
   // unusual (no convergence, a near-singular Jacobian, a step of more than 0.3 rad, where a
   // different branch may have been reached) falls back to the analytic nearest solution.
   constexpr double tolerance = 1e-13, largest_step = 0.3;
-  Eigen::VectorXd q = q_ref;
+  Eigen::VectorXd q = guess ? *guess : q_ref;
   for (int iteration = 0; iteration < 6; ++iteration) {
     const Eigen::Matrix<double, 6, 1> error = (arm.forward(q).inverse() * pose).log().vector();
     if (error.lpNorm<Eigen::Infinity>() <= tolerance) {
@@ -122,8 +122,11 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t_after > t_before) {
       const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
-      const Eigen::VectorXd q_before = tracked_solution(arm, before.pose, sample.q, t_before, before.s);
-      const Eigen::VectorXd q_after = tracked_solution(arm, after.pose, sample.q, t_after, after.s);
+      // Predicted to first order, so that Newton needs a single step.
+      const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
+      const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
+      const Eigen::VectorXd q_before = tracked_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
+      const Eigen::VectorXd q_after = tracked_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
       sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
                     joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
                    (t_after - t_before);

@@ -1,0 +1,67 @@
+// Joint-limit check and both re-timing methods on a 6-axis arm move (issue 7): example 05's
+// UR5e LIN (350 mm, 30° turn) requested at 3 m/s and 400 m/s² for a tool ball, which the
+// joints cannot follow. The optimal re-timing is timed whole (plan, joint path and torque
+// coefficients on the grid, reachability passes, dense check) and with its check reduced to
+// the characteristic points; benchmarks/retime_vs_toppra.py compares with toppra.
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include <dispkin/retiming.hpp>
+#include <dispkin/shapes.hpp>
+
+namespace {
+
+using V = Eigen::Vector3d;
+
+struct Move {
+  dispkin::serial::SerialArm arm;
+  Eigen::VectorXd q_start;
+  dispkin::Path path;
+  dispkin::MetricSetd tool;
+};
+
+const Move& move() {
+  static const Move m = [] {
+    auto arm = dispkin::serial::SerialArm::from_urdf_file(
+        std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
+    Eigen::VectorXd q(6);
+    q << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
+    const dispkin::Posed a = arm.forward(q);
+    const Eigen::Quaterniond turned = Eigen::Quaterniond(Eigen::AngleAxisd(0.5235987755982988, V::UnitZ())) * a.quaternion();
+    dispkin::MetricSetd tool;
+    tool.add_relative(dispkin::shapes::icosahedron(0.05, V(0, 0, 0.1)));
+    return Move{arm, q, dispkin::Path::lin(a, dispkin::Posed(turned, a.translation() + V(0.25, -0.2, -0.15))), tool};
+  }();
+  return m;
+}
+
+const dispkin::Limits fast{3.0, 400.0, std::nullopt};
+
+void BM_RetimeCheckJointLimits(benchmark::State& state) {
+  const Move& m = move();
+  const dispkin::Trajectory t = dispkin::plan(m.path, m.tool, fast, dispkin::ProfileKind::trapezoid);
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::check_joint_limits(t, m.arm, m.q_start));
+}
+BENCHMARK(BM_RetimeCheckJointLimits)->Unit(benchmark::kMillisecond);
+
+void BM_RetimeScaling(benchmark::State& state) {
+  const Move& m = move();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        dispkin::retime_by_scaling(m.path, m.tool, fast, dispkin::ProfileKind::trapezoid, m.arm, m.q_start));
+  }
+}
+BENCHMARK(BM_RetimeScaling)->Unit(benchmark::kMillisecond);
+
+// Argument: check_samples_between (the dense check's density).
+void BM_RetimeOptimal(benchmark::State& state) {
+  const Move& m = move();
+  dispkin::OptimalRetimeOptions options;
+  options.grid_intervals = 100;
+  options.check_samples_between = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::retime_optimal(m.path, m.tool, fast, m.arm, m.q_start, options));
+}
+BENCHMARK(BM_RetimeOptimal)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
+
+}  // namespace
