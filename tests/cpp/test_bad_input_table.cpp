@@ -442,6 +442,22 @@ std::vector<Row> rows() {
         check_joint_limits(plan(ur_path(), good_set(), limits(0.1, 1, 10)), ur5e(), Eigen::VectorXd::Constant(6, nan_)); }, IA, "q_start = (nan");
   row("retime_by_scaling", "zero max_iterations", [=] {
         retime_by_scaling(ur_path(), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, ur5e(), q_ur(), {}, 0); }, IA, "max_iterations = 0");
+  // --- retime_optimal ---
+  const auto optimal = [=](const OptimalRetimeOptions& o) { retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), q_ur(), o); };
+  row("retime_optimal", "one grid interval", [=] { OptimalRetimeOptions o; o.grid_intervals = 1; optimal(o); }, IA, "grid_intervals = 1");
+  row("retime_optimal", "NaN difference_step", [=] { OptimalRetimeOptions o; o.difference_step = nan_; optimal(o); }, IA, "difference_step = nan");
+  row("retime_optimal", "negative check_samples_between", [=] { OptimalRetimeOptions o; o.check_samples_between = -1; optimal(o); }, IA,
+      "check_samples_between = -1");
+  row("retime_optimal", "negative max_refinements", [=] { OptimalRetimeOptions o; o.max_refinements = -1; optimal(o); }, IA,
+      "max_refinements = -1");
+  row("retime_optimal", "joint_acceleration of the wrong size", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(2); optimal(o); }, IA,
+      "joint_acceleration size = 2");
+  row("retime_optimal", "zero joint acceleration", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(6); o.joint_acceleration(4) = 0; optimal(o); }, IA,
+      "joint_acceleration[4] = 0");
+  row("retime_optimal", "jerk limit given", [=] {
+        retime_optimal(ur_path(), good_set(), limits(0.1, 1, 10), ur5e(), q_ur()); }, IA, "jerk = 10");
+  row("retime_optimal", "q_start of the wrong size", [=] {
+        retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), Eigen::VectorXd::Zero(5)); }, IA, "q_start size = 5");
 #endif
   return r;
 }
