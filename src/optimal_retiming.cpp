@@ -155,21 +155,104 @@ class SmoothParameter {
 struct GridPoint {
   double sigma;
   Eigen::VectorXd q, q1, q2;                    // q, dq/dσ, d²q/dσ²
-  Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity
+  Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity (empty: no dynamics)
+};
+
+// The joint limits (+∞ where none).
+struct JointBounds {
+  Eigen::VectorXd velocity, acceleration, effort;
+};
+
+// What the re-timing needs of a machine: its joints along the path, their limits, the torque
+// coefficients where it has a dynamics model, and the dense check of a timed result.
+class JointModel {
+ public:
+  virtual ~JointModel() = default;
+  virtual int dof() const = 0;
+  virtual std::string joint_name(int k) const = 0;
+  virtual const char* position_unit() const = 0;
+  // q on the branch of q_ref (Newton from `guess` where that applies) and q′ = dq/dσ.
+  virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref,
+                      const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
+  // Fills p.gravity, p.torque_u, p.torque_x (left empty without a dynamics model).
+  virtual void torque_coefficients(GridPoint& p) const = 0;
+  virtual JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const = 0;
+  virtual JointBounds bounds(const OptimalRetimeOptions& options) const = 0;
+};
+
+class SerialModel final : public JointModel {
+ public:
+  explicit SerialModel(const serial::SerialArm& arm) : arm_(arm) {}
+  int dof() const override { return arm_.dof(); }
+  std::string joint_name(int k) const override { return arm_.joint_names()[static_cast<std::size_t>(k)]; }
+  const char* position_unit() const override { return "rad"; }
+  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
+              double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
+    constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
+    q = detail::tracked_solution(arm_, pose, q_ref, no_time, s, guess);
+    q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
+  }
+  void torque_coefficients(GridPoint& p) const override {
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.q.size());
+    p.gravity = arm_.static_torques(p.q);
+    p.torque_u = arm_.torques(p.q, zero, p.q1) - p.gravity;
+    p.torque_x = arm_.torques(p.q, p.q1, p.q2) - p.gravity;
+  }
+  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const override {
+    JointCheckOptions options;
+    options.samples_between = samples_between;
+    return check_joint_limits(trajectory, arm_, q_start, options);
+  }
+  JointBounds bounds(const OptimalRetimeOptions& options) const override {
+    const JointLimits joint = arm_.joint_limits();
+    const int n = dof();
+    JointBounds b{joint.velocity, options.joint_acceleration.size() ? options.joint_acceleration : none(n), none(n)};
+    if (options.torque_limits && joint.effort.size() == n) b.effort = joint.effort;
+    return b;
+  }
+  static Eigen::VectorXd none(int n) { return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity()); }
+
+ private:
+  const serial::SerialArm& arm_;
+};
+
+// A hexapod: the legs are the joints (ℓ = IK, ℓ′ = J_leg ξ′), no dynamics model.
+class HexapodModel final : public JointModel {
+ public:
+  explicit HexapodModel(const Hexapod& hexapod) : hexapod_(hexapod) {}
+  int dof() const override { return 6; }
+  std::string joint_name(int k) const override { return "leg " + std::to_string(k + 1); }
+  const char* position_unit() const override { return "m"; }
+  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd&, const Eigen::VectorXd*, double,
+              Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
+    q = hexapod_.leg_lengths(pose);
+    q1 = hexapod_.leg_jacobian(pose) * per_sigma.vector();
+  }
+  void torque_coefficients(GridPoint&) const override {}
+  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd&, int samples_between) const override {
+    JointCheckOptions options;
+    options.samples_between = samples_between;
+    return check_joint_limits(trajectory, hexapod_, options);
+  }
+  JointBounds bounds(const OptimalRetimeOptions& options) const override {
+    return {hexapod_.leg_speed(), options.joint_acceleration.size() ? options.joint_acceleration : SerialModel::none(6),
+            SerialModel::none(6)};
+  }
+
+ private:
+  const Hexapod& hexapod_;
 };
 
 // The joint path at σ, with d²q/dσ² by central differences inside [lo, hi] (one-sided at its
 // ends: a run's ends are rests, where the path may turn a corner).
-GridPoint grid_point(const SmoothParameter& path, const serial::SerialArm& arm, double sigma, double h, double lo,
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo,
                      double hi, const Eigen::VectorXd& q_ref) {
-  constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
   auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* guess, Eigen::VectorXd& q,
                         Eigen::VectorXd& q1) {
     Posed pose;
     Twistd per_sigma;
     path.state(at, pose, per_sigma);
-    q = detail::tracked_solution(arm, pose, reference, no_time, at, guess);
-    q1 = detail::joint_velocity(arm, q, per_sigma, no_time, at);
+    model.joints(pose, per_sigma, reference, guess, at, q, q1);
   };
   GridPoint p;
   p.sigma = sigma;
@@ -181,17 +264,9 @@ GridPoint grid_point(const SmoothParameter& path, const serial::SerialArm& arm, 
   joint_path(before, p.q, &guess_before, q_before, q1_before);
   joint_path(after, p.q, &guess_after, q_after, q1_after);
   p.q2 = (q1_after - q1_before) / (after - before);
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.q.size());
-  p.gravity = arm.static_torques(p.q);
-  p.torque_u = arm.torques(p.q, zero, p.q1) - p.gravity;
-  p.torque_x = arm.torques(p.q, p.q1, p.q2) - p.gravity;
+  model.torque_coefficients(p);
   return p;
 }
-
-// The joint limits (+∞ where none).
-struct JointBounds {
-  Eigen::VectorXd velocity, acceleration, effort;
-};
 
 // The joint limits at one grid point as half-planes in (u, x), each limit multiplied by `scale`.
 void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, std::vector<HalfPlane>& out) {
@@ -205,7 +280,7 @@ void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, 
       out.push_back({p.q1(k), p.q2(k), a});
       out.push_back({-p.q1(k), -p.q2(k), a});
     }
-    if (std::isfinite(bounds.effort(k))) {
+    if (std::isfinite(bounds.effort(k)) && p.gravity.size()) {
       const double t = scale * bounds.effort(k);
       out.push_back({p.torque_u(k), p.torque_x(k), t - p.gravity(k)});
       out.push_back({-p.torque_u(k), -p.torque_x(k), t + p.gravity(k)});
@@ -219,34 +294,25 @@ std::string interval_text(double s0, double s1) {
   return out.str();
 }
 
-}  // namespace
-
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
-                                   const OptimalRetimeOptions& options) {
+// The fastest timing of `path` for `model` (see the file comment); options already checked.
+OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
   require(options.grid_intervals >= 2, "grid_intervals", static_cast<long>(options.grid_intervals), "must be ≥ 2");
   require_positive(options.difference_step, "difference_step");
   require(options.check_samples_between >= 0, "check_samples_between",
           static_cast<long>(options.check_samples_between), "must be ≥ 0");
   require(options.max_refinements >= 0, "max_refinements", static_cast<long>(options.max_refinements), "must be ≥ 0");
-  const int dof = arm.dof();
-  require(q_start.size() == dof, "q_start size", static_cast<long>(q_start.size()),
-          "must equal the arm's dof " + std::to_string(dof));
-  require_finite(q_start, "q_start");
+  const int dof = model.dof();
   const Eigen::VectorXd& acceleration = options.joint_acceleration;
   require(acceleration.size() == 0 || acceleration.size() == dof, "joint_acceleration size",
-          static_cast<long>(acceleration.size()), "must be 0 or the arm's dof " + std::to_string(dof));
+          static_cast<long>(acceleration.size()), "must be 0 or the machine's dof " + std::to_string(dof));
   for (Eigen::Index k = 0; k < acceleration.size(); ++k) {
     require(acceleration(k) > 0.0, "joint_acceleration[" + std::to_string(k) + "]", acceleration(k), "must be > 0");
   }
 
   const Trajectory planned = plan(path, set, limits, ProfileKind::trapezoid);
   const SmoothParameter smooth(planned, limits.acceleration);
-  const JointLimits joint = arm.joint_limits();
-  constexpr double none = std::numeric_limits<double>::infinity();
-  JointBounds bounds{joint.velocity, acceleration.size() ? acceleration : Eigen::VectorXd::Constant(dof, none),
-                     Eigen::VectorXd::Constant(dof, none)};
-  if (options.torque_limits && joint.effort.size() == dof) bounds.effort = joint.effort;
+  const JointBounds bounds = model.bounds(options);
   // Path position s of a σ, for messages and the result.
   auto s_of = [&](double sigma) {
     const std::size_t k = smooth.section_at(sigma);
@@ -269,16 +335,16 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
     runs.push_back({grid.size(), count});
     for (std::size_t i = 0; i <= count; ++i) {
       const double sigma = i == count ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(count);
-      grid.push_back(grid_point(smooth, arm, sigma, h, lo, hi, q_ref));
+      grid.push_back(grid_point(smooth, model, sigma, h, lo, hi, q_ref));
       q_ref = grid.back().q;
     }
   }
   // Holding still must be possible everywhere (the seed's "cannot be reached by slowing down").
   for (const GridPoint& p : grid) {
-    for (int k = 0; k < dof; ++k) {
+    for (Eigen::Index k = 0; k < p.gravity.size(); ++k) {
       if (std::abs(p.gravity(k)) >= bounds.effort(k)) {
         std::ostringstream message;
-        message << "joint " << arm.joint_names()[static_cast<std::size_t>(k)] << ": the static torque "
+        message << "joint " << model.joint_name(static_cast<int>(k)) << ": the static torque "
                 << std::abs(p.gravity(k)) << " N·m at " << detail::where(std::nan(""), s_of(p.sigma))
                 << " reaches its effort limit " << bounds.effort(k) << " N·m: no speed makes this path feasible";
         throw std::runtime_error(message.str());
@@ -360,22 +426,23 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
     result.trajectory = TrajectoryAccess::with_laws(planned, laws, runs.size());
 
     // The dense check, with the whole torque against the effort limit.
-    JointCheckOptions check;
-    check.samples_between = options.check_samples_between;
-    result.report = check_joint_limits(result.trajectory, arm, q_start, check);
+    result.report = model.check(result.trajectory, q_start, options.check_samples_between);
     if (result.report.position_excess > 0.0) {
       const JointSample& at = result.report.samples[result.report.position_sample];
-      throw std::runtime_error("joint " + arm.joint_names()[static_cast<std::size_t>(result.report.position_joint)] +
+      throw std::runtime_error("joint " + model.joint_name(result.report.position_joint) +
                                " leaves its position range by " + std::to_string(result.report.position_excess) +
-                               " rad at " + detail::where(at.time, at.s) + ": slowing down cannot help");
+                               " " + model.position_unit() + " at " + detail::where(at.time, at.s) +
+                               ": slowing down cannot help");
     }
     result.velocity_ratio = result.acceleration_ratio = result.torque_ratio = 0.0;
     for (const JointSample& sample : result.report.samples) {
-      const Eigen::VectorXd torque = sample.static_torque + sample.dynamic_torque;
       for (int k = 0; k < dof; ++k) {
         result.velocity_ratio = std::max(result.velocity_ratio, std::abs(sample.qd(k)) / bounds.velocity(k));
         result.acceleration_ratio = std::max(result.acceleration_ratio, std::abs(sample.qdd(k)) / bounds.acceleration(k));
-        result.torque_ratio = std::max(result.torque_ratio, std::abs(torque(k)) / bounds.effort(k));
+        if (sample.static_torque.size() == dof) {
+          const double torque = sample.static_torque(k) + sample.dynamic_torque(k);
+          result.torque_ratio = std::max(result.torque_ratio, std::abs(torque) / bounds.effort(k));
+        }
       }
     }
     const double worst = std::max({result.velocity_ratio, result.acceleration_ratio, result.torque_ratio});
@@ -390,6 +457,22 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
     // Tighten by the overshoot found, with a little to spare.
     scale *= (1.0 - 1e-3) / worst;
   }
+}
+
+}  // namespace
+
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options) {
+  require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
+          "must equal the arm's dof " + std::to_string(arm.dof()));
+  require_finite(q_start, "q_start");
+  return fastest_timing(path, set, limits, SerialModel(arm), q_start, options);
+}
+
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
+                                   const OptimalRetimeOptions& options) {
+  return fastest_timing(path, set, limits, HexapodModel(hexapod), hexapod.leg_lengths(hexapod.home()), options);
 }
 
 }  // namespace dispkin

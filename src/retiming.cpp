@@ -175,6 +175,52 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
   return report;
 }
 
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
+                                    const JointCheckOptions& options) {
+  require(options.samples_between >= 0, "samples_between", static_cast<long>(options.samples_between), "must be ≥ 0");
+  require_positive(options.difference_step, "difference_step");
+  const std::vector<double> marks = trajectory.characteristic_times();
+  const double duration = trajectory.duration(), h = options.difference_step;
+  auto leg_speeds = [&](const TrajectorySample& at) -> Eigen::VectorXd {
+    return hexapod.leg_jacobian(at.pose) * at.body_twist.vector();
+  };
+  JointLimitReport report;
+  for (std::size_t m = 0; m < marks.size(); ++m) {
+    const int between = m + 1 < marks.size() ? options.samples_between : 0;
+    for (int i = 0; i <= between; ++i) {
+      const double t = m + 1 < marks.size() ? marks[m] + (marks[m + 1] - marks[m]) * i / (between + 1) : marks[m];
+      const TrajectorySample here = trajectory.sample(t);
+      JointSample sample;
+      sample.time = t;
+      sample.s = here.s;
+      sample.q = hexapod.leg_lengths(here.pose);
+      sample.qd = leg_speeds(here);
+      const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
+      sample.qdd = t_after > t_before
+                       ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
+                                         (t_after - t_before))
+                       : Eigen::VectorXd::Zero(6);
+      const std::size_t index = report.samples.size();
+      for (int k = 0; k < 6; ++k) {
+        const double excess = std::max(hexapod.leg_min()(k) - sample.q(k), sample.q(k) - hexapod.leg_max()(k));
+        if (excess > report.position_excess) {
+          report.position_excess = excess;
+          report.position_joint = k;
+          report.position_sample = index;
+        }
+        const double f = std::abs(sample.qd(k)) / hexapod.leg_speed()(k);
+        if (f > report.velocity_factor) {
+          report.velocity_factor = f;
+          report.velocity_joint = k;
+          report.velocity_sample = index;
+        }
+      }
+      report.samples.push_back(std::move(sample));
+    }
+  }
+  return report;
+}
+
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options, int max_iterations) {

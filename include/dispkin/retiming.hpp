@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "dispkin/hexapod.hpp"
 #include "dispkin/planner.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
@@ -67,6 +68,13 @@ struct JointLimitReport {
 //! alone exceeds a joint's effort limit (the seed's "cannot be reached by slowing down").
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
+
+//! The same for a hexapod, whose legs are its joints: q = the leg lengths (its inverse kinematics,
+//! unique), q̇ = J_leg ξ_b, q̈ by central differences; velocity_factor against leg_speed(),
+//! position_excess against [leg_min, leg_max]. No dynamics model: the torques stay empty and
+//! acceleration_factor 0. Throws std::invalid_argument for bad options.
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
+                                    const JointCheckOptions& options = {});
 
 //! The result of the seed's re-timing loop.
 struct RetimeResult {
@@ -129,6 +137,11 @@ struct OptimalRetimeResult {
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
                                    const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options = {});
+
+//! The same for a hexapod: the legs are the joints (leg_speed() and options.joint_acceleration
+//! as their limits; no torques), and a leg that leaves its length range is an error naming it.
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
                                    const OptimalRetimeOptions& options = {});
 
 }  // namespace dispkin

@@ -445,6 +445,7 @@ class OptimalRetimeResult:
     @property
     def grid_speed(self) -> _Array: ...
 
+@overload
 def check_joint_limits(
     trajectory: Trajectory,
     robot: SerialArm,
@@ -452,6 +453,14 @@ def check_joint_limits(
     samples_between: int = 10,
     difference_step: float = 1e-4,
 ) -> JointLimitReport: ...
+@overload
+def check_joint_limits(
+    trajectory: Trajectory,
+    robot: Hexapod,
+    samples_between: int = 10,
+    difference_step: float = 1e-4,
+) -> JointLimitReport: ...
+@overload
 def retime(
     path: Path,
     metric_set: MetricSet,
@@ -466,3 +475,17 @@ def retime(
     joint_acceleration: Optional[_ArrayLike] = None,
     torque_limits: bool = True,
 ) -> Union[RetimeResult, OptimalRetimeResult]: ...
+@overload
+def retime(
+    path: Path,
+    metric_set: MetricSet,
+    limits: Limits,
+    robot: Hexapod,
+    *,
+    profile: str = "trapezoid",
+    method: str = "optimal",
+    samples_between: int = 3,
+    max_iterations: int = 6,
+    grid_intervals: int = 100,
+    joint_acceleration: Optional[_ArrayLike] = None,
+) -> OptimalRetimeResult: ...

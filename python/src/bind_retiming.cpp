@@ -19,8 +19,10 @@ namespace {
 py::dict report_arrays(const JointLimitReport& r) {
   const auto n = static_cast<Eigen::Index>(r.samples.size());
   const Eigen::Index dof = n > 0 ? r.samples.front().q.size() : 0;
+  // A machine without a dynamics model (a hexapod) has no torques: (N, 0) arrays.
+  const Eigen::Index torques = n > 0 ? r.samples.front().static_torque.size() : 0;
   Eigen::VectorXd time(n), s(n);
-  Eigen::MatrixXd q(n, dof), qd(n, dof), qdd(n, dof), tau_static(n, dof), tau_dynamic(n, dof);
+  Eigen::MatrixXd q(n, dof), qd(n, dof), qdd(n, dof), tau_static(n, torques), tau_dynamic(n, torques);
   for (Eigen::Index k = 0; k < n; ++k) {
     const JointSample& x = r.samples[static_cast<std::size_t>(k)];
     time(k) = x.time;
@@ -28,8 +30,10 @@ py::dict report_arrays(const JointLimitReport& r) {
     q.row(k) = x.q.transpose();
     qd.row(k) = x.qd.transpose();
     qdd.row(k) = x.qdd.transpose();
-    tau_static.row(k) = x.static_torque.transpose();
-    tau_dynamic.row(k) = x.dynamic_torque.transpose();
+    if (torques > 0) {
+      tau_static.row(k) = x.static_torque.transpose();
+      tau_dynamic.row(k) = x.dynamic_torque.transpose();
+    }
   }
   py::dict d;
   d["time"] = time;
@@ -56,7 +60,8 @@ void bind_retiming(py::module_& m) {
 What check_joint_limits found along a trajectory: the seed's factors FVEL = max |qd_i| / qd_max_i
 and FACC = max |tau_dyn_i| / (tau_max_i - |tau_static_i|) (each <= 1 when the limits hold), where
 they are reached, the largest excursion of q outside its position range, and the per-sample
-arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque).)doc")
+arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque; the torques are
+(N, 0) arrays for a machine without a dynamics model, a hexapod).)doc")
       .def_readonly("velocity_factor", &JointLimitReport::velocity_factor, "FVEL.")
       .def_readonly("acceleration_factor", &JointLimitReport::acceleration_factor, "FACC.")
       .def_readonly("velocity_joint", &JointLimitReport::velocity_joint, "Joint index where FVEL is reached (-1: none).")
@@ -89,6 +94,16 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque)
       "points between them: joint positions, velocities (Jacobian), accelerations and torques (static and "
       "dynamic). Returns a JointLimitReport. RuntimeError naming the time and path position where a pose has "
       "no IK solution, the arm is singular, or the static torque alone exceeds a joint's effort limit.");
+
+  m.def(
+      "check_joint_limits",
+      [](const Trajectory& trajectory, const Hexapod& hexapod, int samples_between, double difference_step) {
+        return check_joint_limits(trajectory, hexapod, check_options(samples_between, difference_step));
+      },
+      py::arg("trajectory"), py::arg("robot"), py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
+      "The same for a Hexapod, whose legs are its joints: q = leg lengths, qd = leg Jacobian times the body "
+      "twist, qdd by central differences; velocity_factor against leg_speed, position_excess against the leg "
+      "range. No dynamics model: torques stay empty and acceleration_factor 0.");
 
   py::class_<RetimeResult>(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.")
       .def_readonly("trajectory", &RetimeResult::trajectory)
@@ -160,6 +175,33 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       "points between characteristic points and re-solved with tightened limits up to `max_iterations` times "
       "if that check finds an overshoot; returns an OptimalRetimeResult.\n"
       "RuntimeError if a position limit is violated, a static torque exceeds its limit, or it does not converge.");
+
+  m.def(
+      "retime",
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod, const std::string& profile,
+         const std::string& method, int samples_between, int max_iterations, int grid_intervals,
+         const std::optional<Eigen::VectorXd>& joint_acceleration) {
+        if (method != "optimal") {
+          throw std::invalid_argument(describe("method", method, "must be \"optimal\" for a Hexapod (its leg speeds enter "
+                                                                 "plan() through Hexapod.joint_metric; no scaling loop)"));
+        }
+        if (profile != "trapezoid") {
+          throw std::invalid_argument(describe("profile", profile,
+                                               "must be \"trapezoid\" with method \"optimal\" (piecewise-constant acceleration)"));
+        }
+        OptimalRetimeOptions options;
+        options.grid_intervals = grid_intervals;
+        if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
+        options.check_samples_between = samples_between;
+        options.max_refinements = max_iterations;
+        return retime_optimal(path, set, limits, hexapod, options);
+      },
+      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::kw_only(),
+      py::arg("profile") = "trapezoid", py::arg("method") = "optimal", py::arg("samples_between") = 3,
+      py::arg("max_iterations") = 6, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
+      "The optimal re-timing for a Hexapod: the fastest timing that keeps the DISP limits, every leg within its "
+      "speed (leg_speed) and, if given, `joint_acceleration` ((6,) leg accelerations, m/s^2); returns an "
+      "OptimalRetimeResult. RuntimeError if a leg leaves its length range on the way.");
 }
 
 }  // namespace python

@@ -456,6 +456,14 @@ std::vector<Row> rows() {
       "joint_acceleration[4] = 0");
   row("retime_optimal", "jerk limit given", [=] {
         retime_optimal(ur_path(), good_set(), limits(0.1, 1, 10), ur5e(), q_ur()); }, IA, "jerk = 10");
+  row("retime_optimal", "hexapod, leg accelerations of the wrong size", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(3);
+        const Hexapod h = hexapod();
+        retime_optimal(Path::lin(h.home(), h.home() * Posed(Quaterniond::Identity(), Vector3d(0.01, 0, 0))), good_set(), limits(0.1, 1, std::nullopt), h, o); },
+      IA, "joint_acceleration size = 3");
+  row("check_joint_limits", "hexapod, zero difference_step", [=] { JointCheckOptions o; o.difference_step = 0.0;
+        const Hexapod h = hexapod();
+        check_joint_limits(plan(Path::lin(h.home(), h.home() * Posed(Quaterniond::Identity(), Vector3d(0.01, 0, 0))), good_set(), limits(0.1, 1, 10)), h, o); },
+      IA, "difference_step = 0");
   row("retime_optimal", "q_start of the wrong size", [=] {
         retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), Eigen::VectorXd::Zero(5)); }, IA, "q_start size = 5");
 #endif

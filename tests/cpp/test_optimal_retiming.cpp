@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include <dispkin/hexapod.hpp>
 #include <dispkin/retiming.hpp>
 #include <dispkin/shapes.hpp>
 
@@ -171,6 +172,29 @@ TEST(OptimalRetiming, KeepsEveryLimitDenselyAndIsNeverSlowerThanScaling) {
   }
 }
 
+// The industrial arm of the serial tests (KR6-like, spherical wrist, efforts 100 / 30 N·m).
+TEST(OptimalRetiming, SphericalWristArmKeepsEveryLimitDensely) {
+  const serial::SerialArm arm = serial::SerialArm::from_urdf_file(
+      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_kr6_like_dh.urdf", "base_link", "flange");
+  Eigen::VectorXd q(6);
+  q << 0.2, -1.2, 1.9, 0.3, 0.8, -0.4;
+  const Posed a = arm.forward(q);
+  const Posed b(Eigen::Quaterniond(Eigen::AngleAxisd(0.6, V(1, 1, 0).normalized())) * a.quaternion(),
+                a.translation() + V(-0.15, 0.25, 0.1));
+  const Path path = Path::lin(a, b);
+  const Limits fast{4.0, 300.0, std::nullopt};
+  const OptimalRetimeResult r = retime_optimal(path, tool(), fast, arm, q);
+  const Ratios dense = dense_ratios(r.trajectory, arm, q, Eigen::VectorXd(), 20);
+  const RetimeResult scaled = retime_by_scaling(path, tool(), fast, ProfileKind::trapezoid, arm, q);
+  std::printf("KR6-like: optimal %.4f s (dense v %.6f tau %.6f) vs scaling %.4f s\n", r.trajectory.duration(),
+              dense.velocity, dense.torque, scaled.trajectory.duration());
+  EXPECT_LE(dense.velocity, 1.0);
+  EXPECT_LE(dense.torque, 1.0);
+  EXPECT_GT(std::max(dense.velocity, dense.torque), 0.97);
+  EXPECT_LE(r.trajectory.duration(), scaled.trajectory.duration());
+  expect_disp_limits(r.trajectory, fast);
+}
+
 TEST(OptimalRetiming, AlreadyFeasibleMovesKeepTheDispTiming) {
   // Slow DISP limits: no joint limit binds, so the optimum is the DISP trapezoid itself (up to
   // the grid: the switching points fall between grid points).
@@ -220,6 +244,48 @@ TEST(OptimalRetiming, StaticOverloadIsAnErrorNotATrajectory) {
   const Move m = lin_move(heavy);
   EXPECT_NE(runtime_message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, std::nullopt}, heavy, m.q_start); })
                 .find("no speed makes this path feasible"),
+            std::string::npos);
+}
+
+// A hexapod: the legs are the joints. A fast move that the joint metric (issue 5) slows down as
+// a whole is re-timed to leg speeds ≤ their limits at every checked instant, and is faster.
+TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
+  constexpr double pi = 3.14159265358979323846;
+  const Hexapod h = Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.03, V(0, 0, 0.02)));
+  const Posed a = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.15, V::UnitX())), V(-0.02, 0.01, -0.01));
+  const Posed b = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
+  const Path path = Path::lin(a, b).then(Path::lin(b, h.home()));
+  const Limits fast{0.2, 2.0, std::nullopt};
+  Eigen::VectorXd leg_acceleration = Eigen::VectorXd::Constant(6, 1e-3);
+  for (const Eigen::VectorXd& acceleration : {Eigen::VectorXd(), leg_acceleration}) {
+    OptimalRetimeOptions options;
+    options.joint_acceleration = acceleration;
+    const OptimalRetimeResult r = retime_optimal(path, set, fast, h, options);
+    JointCheckOptions dense;
+    dense.samples_between = 20;
+    const JointLimitReport check = check_joint_limits(r.trajectory, h, dense);
+    double acceleration_ratio = 0.0;
+    for (const JointSample& s : check.samples) {
+      if (acceleration.size()) acceleration_ratio = std::max(acceleration_ratio, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
+    }
+    std::printf("hexapod: %.4f s, dense leg speed / limit %.6f, leg acceleration / limit %.6f\n", r.trajectory.duration(),
+                check.velocity_factor, acceleration_ratio);
+    EXPECT_LE(check.velocity_factor, 1.0);
+    EXPECT_LE(acceleration_ratio, 1.0);
+    EXPECT_GT(std::max(check.velocity_factor, acceleration_ratio), 0.97);
+    EXPECT_EQ(check.position_excess, 0.0);
+    expect_disp_limits(r.trajectory, fast);
+    if (acceleration.size()) continue;
+    // Against issue 5's rule (b): the joint metric lengthens whole sections.
+    const Trajectory metric = plan(path, set, fast, ProfileKind::trapezoid, h.joint_metric(path, fast));
+    std::printf("  optimal %.4f s vs joint metric %.4f s\n", r.trajectory.duration(), metric.duration());
+    EXPECT_LE(r.trajectory.duration(), metric.duration());
+  }
+  // A leg that leaves its range on the way is named.
+  const Posed far = h.home() * Posed(Eigen::Quaterniond::Identity(), V(0.0, 0.0, 0.2));
+  EXPECT_NE(runtime_message_of([&] { retime_optimal(Path::lin(h.home(), far), set, fast, h); }).find("leaves its position range"),
             std::string::npos);
 }
 

@@ -335,6 +335,9 @@ class _LegLengths:
 
 row("Hexapod.leg_section_lengths", "zero system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, 0.0), V, "system_velocity = 0")
 row("Hexapod.leg_section_lengths", "NaN system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, NAN), V, "system_velocity = nan")
+row("check_joint_limits", "hexapod, negative samples_between", lambda: dispkin.check_joint_limits(dispkin.plan(HEX_LINE, good_set(), LIMITS), HJ, samples_between=-1), V, "samples_between = -1")
+row("retime", "hexapod, scaling method", lambda: dispkin.retime(HEX_LINE, good_set(), TRAPEZOID_LIMITS, HJ, method="scaling"), V, "method = \"scaling\"")
+row("retime", "hexapod, joint_acceleration of wrong size", lambda: dispkin.retime(HEX_LINE, good_set(), TRAPEZOID_LIMITS, HJ, joint_acceleration=[1.0]), V, "joint_acceleration size = 1")
 row("Hexapod.leg_section_lengths", "+inf system_velocity", lambda: HJ.leg_section_lengths(HEX_LINE, INF), V, "system_velocity = inf")
 row("Hexapod.leg_section_lengths", "zero tolerance", lambda: HJ.leg_section_lengths(HEX_LINE, 0.1, tolerance=0.0), V, "tolerance = 0: must be in (0, 1]")
 row("Hexapod.leg_rate_bounds", "NaN tolerance", lambda: HJ.leg_rate_bounds(HEX_LINE, NAN), V, "tolerance = nan")

@@ -93,3 +93,21 @@ def test_optimal_is_never_slower_than_scaling_and_keeps_limits_densely():
     # The path speed never exceeds the DISP system velocity.
     t = np.linspace(0, optimal.trajectory.duration, 2001)
     assert np.all(optimal.trajectory.path_velocity(t) <= fast.velocity * (1 + 1e-12))
+
+
+def test_hexapod_legs_are_the_joints():
+    h = dispkin.Hexapod.symmetric(0.15, np.radians(20), 0.10, np.radians(20), 0.20, 0.15, 0.32, 0.01)
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.03, [0, 0, 0.02]))
+    a = h.home * dispkin.Pose.from_xyzuvw([-0.02, 0.01, -0.01, np.radians(8), 0, 0])
+    b = h.home * dispkin.Pose.from_xyzuvw([0.03, -0.02, 0.02, 0, np.radians(-10), 0])
+    path = dispkin.Path.lin(a, b)
+    fast = dispkin.Limits(0.2, 2.0)
+    result = dispkin.retime(path, tool, fast, h)
+    dense = dispkin.check_joint_limits(result.trajectory, h, samples_between=20)
+    assert dense.velocity_factor <= 1.0 < dense.velocity_factor + 0.03
+    assert np.all(np.abs(dense.samples["qd"]) <= h.leg_speed)
+    metric = dispkin.plan(path, tool, fast, profile="trapezoid", joint_metric=h)
+    assert result.trajectory.duration <= metric.duration
+    with pytest.raises(ValueError, match='method = "scaling"'):
+        dispkin.retime(path, tool, fast, h, method="scaling")
