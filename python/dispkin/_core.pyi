@@ -367,6 +367,13 @@ class SerialArm:
     def joint_names(self) -> List[str]: ...
     @property
     def joint_limits(self) -> JointLimits: ...
+    def with_joint_limits(
+        self,
+        lower: Optional[_ArrayLike] = None,
+        upper: Optional[_ArrayLike] = None,
+        velocity: Optional[_ArrayLike] = None,
+        effort: Optional[_ArrayLike] = None,
+    ) -> SerialArm: ...
     @property
     def family(self) -> str: ...
     @property

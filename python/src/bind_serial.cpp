@@ -1,5 +1,6 @@
 // Python binding of dispkin/serial/serial_arm.hpp: SerialArm, JointLimits, InverseResult.
 // Joint vectors are (n,) arrays; a Jacobian is (6, n); poses are Pose or (4, 4) arrays.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,22 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
       .def_property_readonly("dof", &SerialArm::dof, "number of joints n")
       .def_property_readonly("joint_names", &SerialArm::joint_names, "the joints in the order of q (base to tip)")
       .def_property_readonly("joint_limits", &SerialArm::joint_limits, "position, velocity and effort limits (JointLimits)")
+      .def(
+          "with_joint_limits",
+          [](const SerialArm& a, const std::optional<Eigen::VectorXd>& lower, const std::optional<Eigen::VectorXd>& upper,
+             const std::optional<Eigen::VectorXd>& velocity, const std::optional<Eigen::VectorXd>& effort) {
+            JointLimits l = a.joint_limits();
+            if (lower) l.lower = *lower;
+            if (upper) l.upper = *upper;
+            if (velocity) l.velocity = *velocity;
+            if (effort) l.effort = *effort;
+            return a.with_joint_limits(l);
+          },
+          py::arg("lower") = py::none(), py::arg("upper") = py::none(), py::arg("velocity") = py::none(),
+          py::arg("effort") = py::none(),
+          "The same arm with some joint limits replaced ((dof,) arrays; None keeps the URDF's): lower < upper "
+          "(+-inf for continuous joints), velocity > 0 and effort > 0 (inf: none). MoveIt's joint_limits.yaml "
+          "overrides a URDF this way (dispkin.limits_files.apply_moveit_joint_limits).")
       .def_property_readonly("family", [](const SerialArm& a) { return serial::to_string(a.family()); },
                              "the analytic IK family recognised from the joint axes: 'spherical_wrist', "
                              "'three_parallel', 'offset_wrist' or 'general' (numeric fallback)")

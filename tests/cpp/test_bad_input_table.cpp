@@ -464,6 +464,10 @@ std::vector<Row> rows() {
         const Hexapod h = hexapod();
         check_joint_limits(plan(Path::lin(h.home(), h.home() * Posed(Quaterniond::Identity(), Vector3d(0.01, 0, 0))), good_set(), limits(0.1, 1, 10)), h, o); },
       IA, "difference_step = 0");
+  row("SerialArm::with_joint_limits", "effort of the wrong size", [=] { JointLimits l = ur5e().joint_limits(); l.effort = Eigen::VectorXd::Ones(2);
+        ur5e().with_joint_limits(l); }, IA, "effort size = 2");
+  row("SerialArm::with_joint_limits", "negative velocity", [=] { JointLimits l = ur5e().joint_limits(); l.velocity(1) = -1;
+        ur5e().with_joint_limits(l); }, IA, "joint \"shoulder_lift_joint\" velocity = -1");
   row("retime_optimal", "q_start of the wrong size", [=] {
         retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), Eigen::VectorXd::Zero(5)); }, IA, "q_start size = 5");
 #endif

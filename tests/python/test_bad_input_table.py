@@ -415,6 +415,33 @@ def ur_trajectory():
     return dispkin.plan(ur_path(), good_set(), LIMITS)
 
 
+row("SerialArm.with_joint_limits", "velocity of the wrong size", lambda: ur5e().with_joint_limits(velocity=[1.0, 2.0]), V, "velocity size = 2")
+row("SerialArm.with_joint_limits", "zero velocity", lambda: ur5e().with_joint_limits(velocity=[1, 1, 0, 1, 1, 1]), V, "joint \"elbow_joint\" velocity = 0")
+row("SerialArm.with_joint_limits", "NaN lower", lambda: ur5e().with_joint_limits(lower=[NAN, 0, 0, 0, 0, 0]), V, "joint \"shoulder_pan_joint\" (lower, upper) = (nan")
+
+# --- limits files (dispkin.limits_files) ----------------------------------------------------
+from dispkin import limits_files  # noqa: E402
+
+LIMITS_FILE = pathlib.Path(_TMP) / "limits.yaml"
+
+
+def limits_file(text):
+    LIMITS_FILE.write_text(text)
+    return LIMITS_FILE
+
+
+row("read_moveit_joint_limits", "missing file", lambda: limits_files.read_moveit_joint_limits("/nonexistent/joint_limits.yaml"), V, "cannot be read")
+row("read_moveit_joint_limits", "negative max_velocity", lambda: limits_files.read_moveit_joint_limits(limits_file(
+    "joint_limits:\n  j1:\n    has_velocity_limits: true\n    max_velocity: -2\n")), V, "joint_limits.j1.max_velocity = -2: must be > 0")
+row("read_moveit_joint_limits", "+inf max_acceleration", lambda: limits_files.read_moveit_joint_limits(limits_file(
+    "joint_limits:\n  j1:\n    has_acceleration_limits: true\n    max_acceleration: .inf\n")), V, "joint_limits.j1.max_acceleration = inf: must be finite")
+row("apply_moveit_joint_limits", "unknown joint", lambda: limits_files.apply_moveit_joint_limits(ur5e(), limits_file(
+    "joint_limits:\n  j1:\n    has_velocity_limits: true\n    max_velocity: 2\n")), V, "joint_limits.j1: not a joint of the arm")
+row("read_pilz_cartesian_limits", "positive max_trans_dec", lambda: limits_files.read_pilz_cartesian_limits(limits_file(
+    "cartesian_limits: {max_trans_vel: 1, max_trans_acc: 2, max_trans_dec: 3, max_rot_vel: 1}\n")), V, "cartesian_limits.max_trans_dec = 3: must be < 0")
+row("read_pilz_cartesian_limits", "zero max_rot_vel", lambda: limits_files.read_pilz_cartesian_limits(limits_file(
+    "cartesian_limits: {max_trans_vel: 1, max_trans_acc: 2, max_trans_dec: -3, max_rot_vel: 0}\n")), V, "cartesian_limits.max_rot_vel = 0: must be > 0")
+
 row("check_joint_limits", "negative samples_between", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), Q_UR, samples_between=-1), V, "samples_between = -1")
 row("check_joint_limits", "q_start of the wrong size", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), Q_UR[:5]), V, "q_start size = 5")
 row("check_joint_limits", "NaN q_start", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), [NAN] * 6), V, "q_start = (nan")

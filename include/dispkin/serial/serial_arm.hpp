@@ -113,6 +113,11 @@ class SerialArm : public Kinematics {
   std::vector<Eigen::VectorXd> inverse(const Posed& pose) const override;
   JointLimits joint_limits() const override;
   std::vector<std::string> joint_names() const override;
+  //! The same arm with other joint limits (e.g. from MoveIt's joint_limits.yaml, which overrides
+  //! the URDF's): each vector of size dof(), lower < upper (±∞ allowed for continuous joints),
+  //! velocity > 0 (+∞: none), effort empty or > 0 (+∞: none). Throws std::invalid_argument
+  //! naming the entry.
+  SerialArm with_joint_limits(const JointLimits& limits) const;
 
   //! All IK solutions: the analytic family of chain() when there is one (complete), else the
   //! numeric fallback (KDL ChainIkSolverPos_LMA from random starts inside the limits, within

@@ -1,0 +1,216 @@
+"""Limits files people already have: MoveIt's ``joint_limits.yaml`` and the Pilz industrial motion
+planner's ``cartesian_limits.yaml``.
+
+``read_moveit_joint_limits(path)`` reads the per-joint limits MoveIt uses to override a URDF
+(``has_velocity_limits`` / ``max_velocity``, accelerations, jerks, efforts, positions, and the
+default scaling factors); ``apply_moveit_joint_limits(arm, limits)`` returns the arm with those
+velocity, effort and position limits and the joint accelerations for
+``dispkin.retime(..., method="optimal", joint_acceleration=...)``.
+
+``read_pilz_cartesian_limits(path)`` reads ``max_trans_vel``, ``max_trans_acc``, ``max_trans_dec``
+and ``max_rot_vel``. Pilz limits the tool centre's speed and, separately, the angular speed;
+dispkin limits the speed of every point of a set. ``PilzCartesianLimits.limits()`` gives the
+DISP limits (velocity = max_trans_vel, acceleration = the smaller of max_trans_acc and
+|max_trans_dec|), and ``add_rotation_sphere(metric_set)`` adds the sphere around the tool centre
+whose radius r = max_trans_vel / max_rot_vel makes a pure rotation at max_rot_vel move the
+sphere's points at max_trans_vel: with it in the set, ω ≤ max_rot_vel holds for every motion
+(the sphere's fastest point moves at least at |ω| r).
+
+Every mistake raises :class:`LimitsFileError` (a ValueError) naming the file and the key.
+"""
+
+import dataclasses
+import math
+import pathlib
+from typing import Any, Dict, Optional, Tuple, Union
+
+import numpy as np
+import yaml
+
+from ._core import Limits, MetricSet
+
+_PathLike = Union[str, pathlib.Path]
+
+
+class LimitsFileError(ValueError):
+    """A limits file that cannot be read or has a bad entry; the message names the file and key."""
+
+
+def _load(path: _PathLike) -> Tuple[pathlib.Path, Any]:
+    file = pathlib.Path(path)
+    try:
+        text = file.read_text()
+    except OSError as error:
+        raise LimitsFileError(f"{file}: cannot be read: {error.strerror or error}") from None
+    try:
+        return file, yaml.safe_load(text)
+    except yaml.YAMLError as error:
+        raise LimitsFileError(f"{file}: not valid YAML: {error}") from None
+
+
+def _number(file: pathlib.Path, key: str, value: Any, *, positive: bool = False, allow_negative: bool = True) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise LimitsFileError(f"{file}: {key} = {value!r}: must be a number")
+    number = float(value)
+    if not math.isfinite(number):
+        raise LimitsFileError(f"{file}: {key} = {number}: must be finite")
+    if positive and not number > 0:
+        raise LimitsFileError(f"{file}: {key} = {number:g}: must be > 0")
+    if not allow_negative and number < 0:
+        raise LimitsFileError(f"{file}: {key} = {number:g}: must not be negative")
+    return number
+
+
+def _flag(file: pathlib.Path, key: str, value: Any) -> bool:
+    if not isinstance(value, bool):
+        raise LimitsFileError(f"{file}: {key} = {value!r}: must be true or false")
+    return value
+
+
+@dataclasses.dataclass(frozen=True)
+class JointLimitEntry:
+    """One joint's entry of joint_limits.yaml; None where the file states no limit (its
+    ``has_*_limits`` flag is false or absent)."""
+
+    max_velocity: Optional[float] = None
+    max_acceleration: Optional[float] = None
+    max_jerk: Optional[float] = None
+    max_effort: Optional[float] = None
+    min_position: Optional[float] = None
+    max_position: Optional[float] = None
+
+
+@dataclasses.dataclass(frozen=True)
+class MoveItJointLimits:
+    """A joint_limits.yaml: the entries by joint name and MoveIt's default scaling factors (read
+    and reported; dispkin does not apply them: scale the limits yourself if you want them)."""
+
+    joints: Dict[str, JointLimitEntry]
+    default_velocity_scaling_factor: float = 1.0
+    default_acceleration_scaling_factor: float = 1.0
+    source: str = ""
+
+
+_LIMIT_KEYS = {  # has_*_limits flag -> the values it enables
+    "has_velocity_limits": ("max_velocity",),
+    "has_acceleration_limits": ("max_acceleration",),
+    "has_jerk_limits": ("max_jerk",),
+    "has_effort_limits": ("max_effort",),
+    "has_position_limits": ("min_position", "max_position"),
+}
+
+
+def read_moveit_joint_limits(path: _PathLike) -> MoveItJointLimits:
+    """Reads MoveIt's joint_limits.yaml (the ``joint_limits:`` mapping of joint name to
+    ``has_*_limits`` flags and values, plus the optional default scaling factors)."""
+    file, data = _load(path)
+    if not isinstance(data, dict) or not isinstance(data.get("joint_limits"), dict):
+        raise LimitsFileError(f"{file}: joint_limits: missing; expected a mapping of joint names to their limits")
+    factors = {}
+    for name in ("default_velocity_scaling_factor", "default_acceleration_scaling_factor"):
+        factor = _number(file, name, data.get(name, 1.0), positive=True)
+        if factor > 1.0:
+            raise LimitsFileError(f"{file}: {name} = {factor:g}: must be in (0, 1]")
+        factors[name] = factor
+    joints = {}
+    for joint, entry in data["joint_limits"].items():
+        where = f"joint_limits.{joint}"
+        if not isinstance(entry, dict):
+            raise LimitsFileError(f"{file}: {where} = {entry!r}: expected a mapping of has_*_limits flags and values")
+        values: Dict[str, Optional[float]] = {}
+        for flag, keys in _LIMIT_KEYS.items():
+            if not _flag(file, f"{where}.{flag}", entry.get(flag, False)):
+                continue
+            for key in keys:
+                if key not in entry:
+                    raise LimitsFileError(f"{file}: {where}.{key}: missing although {flag} is true")
+                positive = key.startswith("max_") and key != "max_position"
+                values[key] = _number(file, f"{where}.{key}", entry[key], positive=positive)
+        if values.get("min_position") is not None and not values["min_position"] < values["max_position"]:
+            raise LimitsFileError(
+                f"{file}: {where}.(min_position, max_position) = ({values['min_position']:g}, "
+                f"{values['max_position']:g}): must have min_position < max_position")
+        joints[str(joint)] = JointLimitEntry(**values)
+    return MoveItJointLimits(joints, source=str(file), **factors)
+
+
+def apply_moveit_joint_limits(arm: Any, limits: Union[MoveItJointLimits, _PathLike]) -> Tuple[Any, Optional[np.ndarray]]:
+    """The arm with the file's velocity, effort and position limits replacing its URDF's (joints
+    the file does not mention keep theirs), and the joint accelerations ((dof,) array, inf where
+    a joint states none; None if no joint does) for ``retime(..., joint_acceleration=...)``.
+    A joint of the file that the arm does not have is an error (a misspelt name would otherwise
+    silently keep the URDF's limits)."""
+    if not isinstance(limits, MoveItJointLimits):
+        limits = read_moveit_joint_limits(limits)
+    names = list(arm.joint_names)
+    unknown = sorted(set(limits.joints) - set(names))
+    if unknown:
+        raise LimitsFileError(f"{limits.source}: joint_limits.{unknown[0]}: not a joint of the arm "
+                              f"(its joints: {', '.join(names)})")
+    current = arm.joint_limits
+    lower, upper = np.array(current.lower, dtype=float), np.array(current.upper, dtype=float)
+    velocity = np.array(current.velocity, dtype=float)
+    effort = np.array(current.effort, dtype=float) if len(current.effort) else np.full(len(names), np.inf)
+    acceleration = np.full(len(names), np.inf)
+    for i, name in enumerate(names):
+        entry = limits.joints.get(name)
+        if entry is None:
+            continue
+        if entry.max_velocity is not None:
+            velocity[i] = entry.max_velocity
+        if entry.max_effort is not None:
+            effort[i] = entry.max_effort
+        if entry.min_position is not None:
+            lower[i], upper[i] = entry.min_position, entry.max_position
+        if entry.max_acceleration is not None:
+            acceleration[i] = entry.max_acceleration
+    updated = arm.with_joint_limits(lower=lower, upper=upper, velocity=velocity, effort=effort)
+    return updated, (acceleration if np.isfinite(acceleration).any() else None)
+
+
+@dataclasses.dataclass(frozen=True)
+class PilzCartesianLimits:
+    """The Pilz industrial motion planner's Cartesian limits: m/s, m/s², m/s² (negative), rad/s."""
+
+    max_trans_vel: float
+    max_trans_acc: float
+    max_trans_dec: float
+    max_rot_vel: float
+
+    def limits(self, jerk: Optional[float] = None) -> Limits:
+        """The DISP limits: velocity max_trans_vel, acceleration min(max_trans_acc, |max_trans_dec|)
+        (dispkin's laws brake as hard as they accelerate), and `jerk` for S-curves if given."""
+        acceleration = min(self.max_trans_acc, abs(self.max_trans_dec))
+        return Limits(self.max_trans_vel, acceleration) if jerk is None else Limits(self.max_trans_vel, acceleration, jerk)
+
+    @property
+    def rotation_sphere_radius(self) -> float:
+        """r = max_trans_vel / max_rot_vel (m): the sphere around the tool centre whose points move
+        at max_trans_vel when the tool turns at max_rot_vel."""
+        return self.max_trans_vel / self.max_rot_vel
+
+    def add_rotation_sphere(self, metric_set: MetricSet, centre: Any = (0.0, 0.0, 0.0)) -> None:
+        """Adds that sphere (moving with the tool, centred at `centre` in tool coordinates) to
+        `metric_set`, so that its speed limit also keeps the angular speed ≤ max_rot_vel."""
+        metric_set.add_sphere(centre, self.rotation_sphere_radius)
+
+
+def read_pilz_cartesian_limits(path: _PathLike) -> PilzCartesianLimits:
+    """Reads cartesian_limits.yaml: the four values under ``cartesian_limits:`` (or at the top
+    level, as in older files). max_trans_dec must be negative (a deceleration), the others > 0."""
+    file, data = _load(path)
+    if isinstance(data, dict) and isinstance(data.get("cartesian_limits"), dict):
+        data, prefix = data["cartesian_limits"], "cartesian_limits."
+    else:
+        prefix = ""
+    if not isinstance(data, dict):
+        raise LimitsFileError(f"{file}: cartesian_limits: missing; expected max_trans_vel, max_trans_acc, "
+                              f"max_trans_dec and max_rot_vel")
+    values = {}
+    for key in ("max_trans_vel", "max_trans_acc", "max_trans_dec", "max_rot_vel"):
+        if key not in data:
+            raise LimitsFileError(f"{file}: {prefix}{key}: missing")
+        values[key] = _number(file, prefix + key, data[key], positive=key != "max_trans_dec")
+    if not values["max_trans_dec"] < 0:
+        raise LimitsFileError(f"{file}: {prefix}max_trans_dec = {values['max_trans_dec']:g}: must be < 0 (a deceleration)")
+    return PilzCartesianLimits(**values)
