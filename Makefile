@@ -34,8 +34,11 @@ test-python: python
 
 test: test-cpp test-python
 
+# The demo job lives in DEMO_DIR/job.yaml (written from the built-in one the first time): edit it
+# and run `make demo` again.
+DEMO_DIR ?= demo
 demo: python
-	$(VENV)/bin/dispkin demo
+	$(VENV)/bin/dispkin demo -o $(DEMO_DIR)
 
 # The C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (any finding fails).
 # EIGEN_MALLOC_ALREADY_ALIGNED=1: under ASan Eigen would switch to its own aligned allocator

@@ -8,7 +8,9 @@ a summary and, with ``--plot``, PNG plots (see :mod:`dispkin.jobs`).
 compares it with a conventional controller that limits the TCP speed and the angular speed
 separately (Orocos KDL's ``Path_Line`` with an equivalent radius), then measures, over many
 random LIN moves, how much faster than commanded such a controller lets the points of a tool
-sphere move.
+sphere move (progress on stderr when it is a terminal). Then it plans a job: ``OUTDIR/job.yaml``, written from the built-in demo job (a
+hexapod carrying a 120 mm tool through blended moves) the first time; edit it and run the demo
+again to plan your version. The outputs (CSV, JSON, summary, plot) go next to it.
 """
 
 import argparse
@@ -82,7 +84,7 @@ def random_lin_moves(count: int, seed: int) -> List[Pose]:
     return moves
 
 
-def sweep_ratios(count: int, seed: int, eqradius: float = EQRADIUS) -> np.ndarray:
+def sweep_ratios(count: int, seed: int, eqradius: float = EQRADIUS, progress: Optional[TextIO] = None) -> np.ndarray:
     """For random LIN moves (see random_lin_moves), the ratio exact LIN section length of the
     ball of radius `eqradius` around the TCP / KDL path length: how many times the commanded
     speed the fastest point of that ball moves under KDL's Path_Line."""
@@ -90,7 +92,10 @@ def sweep_ratios(count: int, seed: int, eqradius: float = EQRADIUS) -> np.ndarra
     sphere.add_sphere((0.0, 0.0, 0.0), eqradius)
     start = Pose()
     ratios = []
-    for end in random_lin_moves(count, seed):
+    step = max(1, count // 10)
+    for k, end in enumerate(random_lin_moves(count, seed), start=1):
+        if progress is not None and progress.isatty() and (k % step == 0 or k == count):
+            print(f"\rsweep: {k}/{count} moves", end="\n" if k == count else "", file=progress, flush=True)
         kdl = kdl_path_length(start, end, eqradius)
         if kdl > 0.0:  # a move of length zero has no speed to compare
             ratios.append(section_length(sphere, start, end, interpolation="decoupled") / kdl)
@@ -108,8 +113,45 @@ def peak_point_speed(traj: Trajectory, tool: MetricSet, step: float = 1e-3) -> T
     return float(speeds[i]), float(times[i])
 
 
-def run_demo(moves: int, seed: int, out: TextIO) -> int:
-    """Print the demo (see the module docstring) to `out`; returns the exit status 0."""
+#: The built-in demo job, written to OUTDIR/job.yaml by `dispkin demo` when that file is missing.
+DEMO_JOB = """\
+# The dispkin demo job. `dispkin demo` (and `make demo`) wrote this file and plans it; edit it
+# and run the demo again to plan your version. Every key: python/dispkin/job.schema.json and
+# README.md ("Job files and the command line"). Units: m, m/s, degrees for XYZUVW angles.
+#
+# A hexapod carries a 120 mm tool. The tool frame sits at the tool tip, so XYZUVW moves turn
+# about the tip. No point of the tool - the icosahedra around the tip and around the platform
+# centre - may exceed 20 mm/s, and no leg its 10 mm/s (rule (a): the upper leg joints as group 1).
+name: demo
+machine:
+  hexapod:
+    symmetric: {base_radius: 0.12, base_gap: 20, platform_radius: 0.08, platform_gap: 20,
+                height: 0.15, leg_min: 0.12, leg_max: 0.20, leg_speed: 0.01}
+    leg_speed_group: 1
+frames:
+  tool: {xyzuvw: [0, 0, 0.12, 0, 0, 0]}      # the tool tip, platform coordinates
+metric_set:
+  points:
+    - {shape: icosahedron, radius: 0.01, centre: [0, 0, 0.12]}   # around the tool tip
+    - {shape: icosahedron, radius: 0.03, centre: [0, 0, 0]}      # around the platform centre
+start: {xyzuvw: [0, 0, 0, 0, 0, 0]}          # the tool frame in the work frame (here: the base)
+moves:
+  - lin: {to: {xyzuvw: [0.01, 0, 0, 0, 4, 0]}}
+  - lin: {to: {xyzuvw: [0.01, 0.01, 0.005, -3, 4, 0]}}
+    blend: 0.004                             # round the via point instead of stopping there
+  - circ:
+      via: {xyzuvw: [0, 0.015, 0.005, -3, 0, 10]}
+      to: {xyzuvw: [-0.01, 0.01, 0.005, 0, -3, 20]}
+    blend: 0.004
+  - lin: {to: {xyzuvw: [0, 0, 0, 0, 0, 0]}}
+limits: {velocity: 0.02, acceleration: 0.1, jerk: 2.0, profile: scurve}
+output: {sample_period: 0.01, csv: demo.csv, json: demo.json, summary: demo_summary.txt}
+"""
+
+
+def run_demo(moves: int, seed: int, out: TextIO, outdir: Optional[str] = None, progress: Optional[TextIO] = None) -> int:
+    """Print the demo (see the module docstring) to `out`, with the sweep's progress on
+    `progress`; then plan OUTDIR/job.yaml (if `outdir`). Returns the exit status 0."""
     tool = demo_tool()
     start, end = demo_move()
     chord = disp_distance(tool, start, end)
@@ -144,7 +186,7 @@ def run_demo(moves: int, seed: int, out: TextIO) -> int:
         f"fastest point of the set at any 1 ms sample {peak:.6f} m/s (t = {at:.3f} s) <= {v} m/s",
         file=out,
     )
-    ratios = sweep_ratios(moves, seed)
+    ratios = sweep_ratios(moves, seed, progress=progress)
     print(
         f"sweep: {moves} random LIN moves (seed {seed}; translation <= {SWEEP_MAX_TRANSLATION} m, "
         f"rotation <= {math.degrees(SWEEP_MAX_ANGLE):g}°), set = ball r = {EQRADIUS} m around the TCP",
@@ -161,7 +203,18 @@ def run_demo(moves: int, seed: int, out: TextIO) -> int:
         "move and the sweep.",
         file=out,
     )
-    return 0
+    if outdir is None:
+        return 0
+    job_file = pathlib.Path(outdir) / "job.yaml"
+    if not job_file.exists():
+        job_file.parent.mkdir(parents=True, exist_ok=True)
+        job_file.write_text(DEMO_JOB, encoding="utf-8")
+        print(f"\nwrote the demo job to {job_file}", file=out)
+    print(f"\nplanning {job_file} (dispkin plan {job_file} -o {outdir} --plot):", file=out)
+    status = run_plan(str(job_file), outdir, True, out)
+    print(f"\nEdit {job_file} (moves, limits, tool points, machine) and run the demo again to plan your version.",
+          file=out)
+    return status
 
 
 def run_check(job_file: str, out: TextIO) -> int:
@@ -220,14 +273,15 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO) -> int:
     text = jobs.summary_text(summary)
     written[2].write_text(text, encoding="utf-8")
     if plot:
-        written += write_plots(job, trajectory, directory)
+        written += write_plots(job, trajectory, samples, directory)
     out.write(text)
     print("wrote " + ", ".join(str(p) for p in written), file=out)
     return 0
 
 
-def write_plots(job, trajectory: Trajectory, directory: pathlib.Path) -> List[pathlib.Path]:
-    """PNGs of the job's trajectory: path velocity and point speeds (and leg lengths for hexapods)."""
+def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -> List[pathlib.Path]:
+    """PNGs of the job's trajectory: path velocity and point speeds; with a machine also its
+    joints (hexapod legs or arm joints) against their position ranges and velocity limits."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -236,12 +290,21 @@ def write_plots(job, trajectory: Trajectory, directory: pathlib.Path) -> List[pa
     from . import plots
 
     stem = pathlib.Path(job.outputs["csv"]).stem
-    rows = 2 if job.hexapod is not None else 1
-    figure, axes = plt.subplots(rows, 1, figsize=(7, 3.5 * rows), sharex=True, constrained_layout=True, squeeze=False)
+    machine = job.hexapod is not None or job.arm is not None
+    rows = 3 if machine else 1
+    figure, axes = plt.subplots(rows, 1, figsize=(7, 3.2 * rows), sharex=True, constrained_layout=True, squeeze=False)
     plots.point_speed(trajectory, job.metric_set, system_velocity=job.limits.velocity, ax=axes[0][0])
     axes[0][0].set_title(f"{job.name}: path velocity and the fastest point (limit dashed)")
     if job.hexapod is not None:
-        plots.leg_lengths(job.hexapod, trajectory, ax=axes[1][0])
+        h = job.hexapod
+        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
+                           np.asarray(h.leg_min), np.asarray(h.leg_max), np.asarray(h.leg_speed),
+                           axes=(axes[1][0], axes[2][0]))
+    elif job.arm is not None:
+        limits = job.arm.joint_limits
+        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
+                           np.asarray(limits.lower), np.asarray(limits.upper), np.asarray(limits.velocity),
+                           axes=(axes[1][0], axes[2][0]))
     path = directory / f"{stem}.png"
     plots.save([axes[0][0]], str(path))
     plt.close(figure)
@@ -265,12 +328,19 @@ def build_parser() -> argparse.ArgumentParser:
     commands.required = True
     demo = commands.add_parser(
         "demo",
-        help="plan a built-in LIN move and compare with a TCP + angular speed controller (KDL)",
+        help="compare with a TCP + angular speed controller (KDL), then plan the demo job with plots",
         description="Plan a built-in LIN move of a tool under a point-set speed limit, compare it "
-        "with KDL's Path_Line (eqradius 0.1 m), and sweep random LIN moves.",
+        "with KDL's Path_Line (eqradius 0.1 m), and sweep random LIN moves (progress on stderr). Then plan "
+        "OUTDIR/job.yaml - written from the built-in demo job the first time; edit it and run again - and "
+        "write its trajectory, summary and plot into OUTDIR.",
     )
     demo.add_argument("--moves", type=_positive_int, default=10000, help="random moves in the sweep (default 10000)")
     demo.add_argument("--seed", type=int, default=1, help="seed of the random moves (default 1)")
+    demo.add_argument("-o", "--outdir", metavar="OUTDIR", default="dispkin-demo",
+                      help="directory of the demo job (OUTDIR/job.yaml, written from the built-in job when missing: "
+                      "edit it and re-run) and of its outputs: CSV, JSON, summary, PNG (default: dispkin-demo)")
+    demo.add_argument("--no-job", action="store_true", help="only the comparison and the sweep, no job")
+    demo.add_argument("-q", "--quiet", action="store_true", help="no progress display on stderr")
     check = commands.add_parser(
         "check",
         help="validate a job file and print what it holds",
@@ -301,11 +371,12 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Optional[List[str]] = None) -> int:
     """Entry point of the ``dispkin`` command; returns the exit status."""
     args = build_parser().parse_args(argv)
-    if args.command == "demo":
-        return run_demo(args.moves, args.seed, sys.stdout)
     from .jobs import JobError
 
     try:
+        if args.command == "demo":
+            return run_demo(args.moves, args.seed, sys.stdout, None if args.no_job else args.outdir,
+                            None if args.quiet else sys.stderr)
         if args.command == "check":
             return run_check(args.job, sys.stdout)
         if args.command == "plan":

@@ -68,6 +68,39 @@ def leg_lengths(
     return ax
 
 
+def joint_limits(
+    time: np.ndarray,
+    names: Sequence[str],
+    positions: np.ndarray,
+    velocities: np.ndarray,
+    lower: np.ndarray,
+    upper: np.ndarray,
+    velocity_limits: np.ndarray,
+    axes: Optional[Sequence[Any]] = None,
+) -> Sequence[Any]:
+    """Joints (or hexapod legs) against their limits, on two axes: each joint's position as a
+    fraction of its range (0 = lower, 1 = upper; continuous joints, whose range is infinite, are
+    left out) and its speed as a fraction of its velocity limit, both with the limits as dashed
+    lines. `positions` and `velocities` are (N, dof) arrays over `time` (e.g. from
+    dispkin.jobs.sample_job or check_joint_limits' samples). Returns the two axes."""
+    if axes is None:
+        import matplotlib.pyplot as plt
+
+        _, axes = plt.subplots(2, 1, figsize=(7, 6), sharex=True, constrained_layout=True)
+    ax_position, ax_speed = axes
+    for j, name in enumerate(names):
+        if np.isfinite(lower[j]) and np.isfinite(upper[j]):
+            ax_position.plot(time, (positions[:, j] - lower[j]) / (upper[j] - lower[j]), label=name)
+        ax_speed.plot(time, np.abs(velocities[:, j]) / velocity_limits[j], label=name)
+    for ax, label in ((ax_position, "position in its range"), (ax_speed, "|speed| / limit")):
+        ax.axhline(1.0, color="k", ls="--", lw=1)
+        ax.set_ylabel(label)
+        ax.legend(ncol=3, fontsize="small")
+    ax_position.axhline(0.0, color="k", ls="--", lw=1)
+    ax_speed.set_xlabel("time (s)")
+    return axes
+
+
 def path_xy(
     path: Path,
     pivot: Sequence[float] = (0.0, 0.0, 0.0),

@@ -20,7 +20,7 @@ def figure(text, label):
 
 
 def test_demo_prints_the_figures_it_computes(capsys):
-    assert cli.main(["demo", "--moves", "200", "--seed", "7"]) == 0
+    assert cli.main(["demo", "--moves", "200", "--seed", "7", "--no-job"]) == 0
     out = capsys.readouterr().out
     tool = cli.demo_tool()
     a, b = cli.demo_move()
@@ -42,6 +42,34 @@ def test_demo_prints_the_figures_it_computes(capsys):
     # The figures make sense: chord <= exact length; the tip at 0.3 m turns faster than the
     # 0.1 m equivalent radius lets KDL assume, so KDL under-estimates the path.
     assert chord <= lin and chord <= screw and lin > kdl
+
+
+def test_demo_plans_its_job_and_replans_the_edited_one(tmp_path, capsys):
+    """`dispkin demo -o DIR` writes DIR/job.yaml from the built-in job, plans it with plots; after
+    an edit of the job file the next run plans the edited job (the newcomer's loop of `make demo`)."""
+    import yaml
+
+    from dispkin import jobs
+
+    outdir = tmp_path / "demo"
+    assert cli.main(["demo", "--moves", "20", "-o", str(outdir)]) == 0
+    out = capsys.readouterr().out
+    job_file = outdir / "job.yaml"
+    assert job_file.read_text() == cli.DEMO_JOB and f"wrote the demo job to {job_file}" in out
+    for name in ("demo.csv", "demo.json", "demo_summary.txt", "demo.png"):
+        assert (outdir / name).stat().st_size > 0
+    assert f"Edit {job_file}" in out.strip().splitlines()[-1]
+    first = jobs.plan_job(jobs.load_job(job_file)).duration
+    assert f"duration {first:.4f} s" in out
+
+    edited = yaml.safe_load(job_file.read_text())
+    edited["limits"]["velocity"] = 0.005  # a quarter of the speed, below the legs' 0.01 m/s
+    job_file.write_text(yaml.safe_dump(edited))
+    assert cli.main(["demo", "--moves", "20", "-o", str(outdir)]) == 0
+    out = capsys.readouterr().out
+    assert "wrote the demo job" not in out  # the edited file is kept
+    second = jobs.plan_job(jobs.load_job(job_file)).duration
+    assert second > first * 1.3 and f"duration {second:.4f} s" in out
 
 
 def test_demo_move_is_the_specified_one():
