@@ -189,10 +189,10 @@ class PilzCartesianLimits:
         at max_trans_vel when the tool turns at max_rot_vel."""
         return self.max_trans_vel / self.max_rot_vel
 
-    def add_rotation_sphere(self, metric_set: MetricSet, centre: Any = (0.0, 0.0, 0.0)) -> None:
-        """Adds that sphere (moving with the tool, centred at `centre` in tool coordinates) to
+    def add_rotation_sphere(self, metric_set: MetricSet, center: Any = (0.0, 0.0, 0.0)) -> None:
+        """Adds that sphere (moving with the tool, centred at `center` in tool coordinates) to
         `metric_set`, so that its speed limit also keeps the angular speed ≤ max_rot_vel."""
-        metric_set.add_sphere(centre, self.rotation_sphere_radius)
+        metric_set.add_sphere(center, self.rotation_sphere_radius)
 
 
 def read_pilz_cartesian_limits(path: _PathLike) -> PilzCartesianLimits:
