@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python test test-cpp test-python demo bench sanitize fuzz clean
+.PHONY: all deps build python test test-cpp test-python demo bench sanitize sweep fuzz clean
 
 all: build
 
@@ -48,7 +48,7 @@ demo: python
 # x86-64 like glibc's, so keeping Eigen on plain malloc is correct and matches the library.
 SANITIZE_BUILD ?= build/sanitize
 sanitize: deps
-	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON \
+	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON -DDISPKIN_SWEEP_COUNT=1000 \
 	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
@@ -66,6 +66,16 @@ fuzz: deps
 	  -DDISPKIN_BUILD_FUZZERS=ON -DDISPKIN_BUILD_TESTS=OFF -DDISPKIN_BUILD_EXAMPLES=OFF -DDISPKIN_BUILD_BENCHMARKS=OFF
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) scripts/run-fuzzers.sh $(FUZZERS)
+
+# The sweeps at 10⁷ cases per family (issue 9): their own Release build directory, only the
+# tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.
+SWEEP_BUILD ?= build/sweep
+SWEEP_COUNT ?= 10000000
+sweep: deps
+	cmake -S . -B $(SWEEP_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DDISPKIN_BUILD_TESTS=ON -DDISPKIN_BUILD_BENCHMARKS=OFF \
+	  -DDISPKIN_BUILD_EXAMPLES=OFF -DDISPKIN_SWEEP_COUNT=$(SWEEP_COUNT)
+	cmake --build $(SWEEP_BUILD) -j $(JOBS) --target dispkin_sweep_tests dispkin_serial_tests
+	cd $(SWEEP_BUILD) && ctest --output-on-failure -j $(JOBS) -L sweep
 
 bench: build
 	$(BUILD)/benchmarks/dispkin_benchmarks --benchmark_min_time=0.2

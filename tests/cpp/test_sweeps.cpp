@@ -1,0 +1,116 @@
+// Large random sweeps (issue 9, item 3): the guarantee (MATH.md §7 oracle 4) per path family,
+// profile invariants per law, hexapod IK → FK round trips. The count per family comes from
+// DISPKIN_SWEEP_COUNT (CMake cache variable of the same name: 10⁵ in `make test`, 10⁷ in
+// `make sweep`); the analytic-IK round trips run as the `sweep_analytic_ik_round_trips` test
+// (tests/CMakeLists.txt). Every family reports its count and worst figure as test properties.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <dispkin/hexapod.hpp>
+#include <dispkin/planner.hpp>
+#include <dispkin/profile.hpp>
+
+#include "random_cases.hpp"
+#include "random_paths.hpp"
+
+namespace dispkin {
+namespace {
+
+using testing::Random;
+
+int sweep_count() { return static_cast<int>(testing::env_or("DISPKIN_SWEEP_COUNT", 1000)); }
+
+void record(const std::string& family, int count, double worst) {
+  ::testing::Test::RecordProperty(family + "_count", std::to_string(count));
+  ::testing::Test::RecordProperty(family + "_worst", std::to_string(worst));
+  std::printf("%s: %d cases, worst %.9g\n", family.c_str(), count, worst);
+}
+
+// The guarantee for one path family of testing::random_path: random sets (relative and absolute
+// points, spheres, a second group with its own limit), random limits and profile kind, every
+// point's speed / limit at 32 random instants per case by finite differences of the motion.
+void guarantee_sweep(int family, unsigned long salt) {
+  Random rnd(salt);
+  const int n = sweep_count();
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const Path path = testing::random_path(rnd, family);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
+    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const Trajectory traj = plan(path, set, limits, kind);
+    const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
+    worst = std::max(worst, ratio);
+    ASSERT_LE(ratio, 1.0 + 1e-6) << "family " << family << " case " << i;
+    ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-9)) << "family " << family << " case " << i;
+  }
+  record("guarantee_family_" + std::to_string(family), n, worst);
+}
+
+TEST(Sweep, GuaranteeDecoupledLin) { guarantee_sweep(0, 9100); }
+TEST(Sweep, GuaranteeScrewLin) { guarantee_sweep(1, 9101); }
+TEST(Sweep, GuaranteeCirc) { guarantee_sweep(2, 9102); }
+TEST(Sweep, GuaranteeChainWithACorner) { guarantee_sweep(3, 9103); }
+TEST(Sweep, GuaranteeSpline) { guarantee_sweep(4, 9104); }
+TEST(Sweep, GuaranteeBlendedChain) { guarantee_sweep(5, 9105); }
+
+// Profiles: the final state is reached and no limit is exceeded at the phase ends or at random
+// instants; rest to rest over S from 1e-6 to 10 and limits over three decades each.
+void profile_sweep(ProfileKind kind, unsigned long salt) {
+  Random rnd(salt);
+  const int n = sweep_count();
+  double worst = 0.0;  // largest excess over a limit, relative
+  for (int i = 0; i < n; ++i) {
+    const double distance = std::pow(10.0, rnd.uniform(-6.0, 1.0));
+    const double v = std::pow(10.0, rnd.uniform(-2.0, 1.0)), a = std::pow(10.0, rnd.uniform(-2.0, 1.0));
+    const double j = std::pow(10.0, rnd.uniform(-1.0, 2.0));
+    const Profile law = kind == ProfileKind::scurve ? Profile::scurve(distance, v, a, j) : Profile::trapezoid(distance, v, a);
+    const ProfileState end = law.state_at(law.duration());
+    ASSERT_NEAR(end.s, distance, 1e-9 * std::max(1.0, distance)) << "case " << i;
+    ASSERT_NEAR(end.v, 0.0, 1e-9 * v) << "case " << i;
+    for (int k = 0; k < 8; ++k) {
+      const ProfileState x = law.state_at(rnd.uniform(0.0, law.duration()));
+      const double excess = std::max({x.v / v - 1.0, std::abs(x.a) / a - 1.0,
+                                      kind == ProfileKind::scurve ? std::abs(x.j) / j - 1.0 : -1.0, -x.v / v});
+      worst = std::max(worst, excess);
+      ASSERT_LE(excess, 1e-12) << "case " << i << " t-sample " << k;
+      ASSERT_GE(x.s, -1e-12 * distance) << "case " << i;
+      ASSERT_LE(x.s, distance * (1 + 1e-12)) << "case " << i;
+    }
+  }
+  record(kind == ProfileKind::scurve ? "profile_scurve" : "profile_trapezoid", n, worst);
+}
+
+TEST(Sweep, ProfileTrapezoid) { profile_sweep(ProfileKind::trapezoid, 9200); }
+TEST(Sweep, ProfileScurve) { profile_sweep(ProfileKind::scurve, 9201); }
+
+// Hexapod: leg lengths of a random reachable pose → forward kinematics from home → the pose
+// again, to 1e-12 m in every leg (the solver's tolerance) and 1e-9 in the pose.
+TEST(Sweep, HexapodInverseThenForward) {
+  constexpr double pi = 3.14159265358979323846;
+  const Hexapod h = Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01);
+  Random rnd(9300);
+  const int n = sweep_count();
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    Posed pose;
+    do {
+      pose = h.home() * Posed::exp(Twistd(rnd.vector(0.04), rnd.unit_vector() * rnd.uniform(0.0, 0.25)));
+    } while (!h.check(pose).reachable());
+    const Hexapod::Legs legs = h.leg_lengths(pose);
+    const Posed found = h.forward(legs);
+    const double leg_error = (h.leg_lengths(found) - legs).cwiseAbs().maxCoeff();
+    worst = std::max(worst, leg_error);
+    ASSERT_LE(leg_error, 1e-12) << "case " << i;
+    ASSERT_TRUE(found.is_approx(pose, 1e-9)) << "case " << i;
+  }
+  record("hexapod_round_trip_leg_error", n, worst);
+}
+
+}  // namespace
+}  // namespace dispkin
