@@ -2,6 +2,7 @@
 #include <optional>
 #include <string>
 
+#include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -119,6 +120,18 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
       .def("section_lengths", [](const Trajectory& t) {
         return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()), t.section_lengths().data());
       }, "L of every section, metres.")
+      .def("rest_positions", [](const Trajectory& t) {
+        return py::array_t<double>(static_cast<py::ssize_t>(t.rest_positions().size()), t.rest_positions().data());
+      }, "Path positions s (m) where the trajectory is at rest: 0, every corner, the length.")
+      .def("speed_limits", [](const Trajectory& t) {
+        Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
+        for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
+          const Trajectory::SpeedLimit& span = t.speed_limits()[k];
+          out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
+        }
+        return out;
+      }, "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
+         "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });

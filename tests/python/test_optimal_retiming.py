@@ -90,9 +90,14 @@ def test_optimal_is_never_slower_than_scaling_and_keeps_limits_densely():
     torque = dense.samples["static_torque"] + dense.samples["dynamic_torque"]
     assert np.all(np.abs(torque) <= limits.effort)
     assert optimal.grid_s.shape == optimal.grid_speed.shape and optimal.grid_speed[0] == 0.0
-    # The path speed never exceeds the DISP system velocity.
+    # The path speed never exceeds the plan's velocity-limit curve; it rests where the plan rests.
     t = np.linspace(0, optimal.trajectory.duration, 2001)
-    assert np.all(optimal.trajectory.path_velocity(t) <= fast.velocity * (1 + 1e-12))
+    spans = optimal.trajectory.speed_limits()
+    assert spans.shape[1] == 3 and np.all(spans[:, 2] <= fast.velocity)
+    s, v = optimal.trajectory.path_position(t), optimal.trajectory.path_velocity(t)
+    caps = np.array([spans[(spans[:, 0] <= x + 1e-12) & (x <= spans[:, 0] + spans[:, 1] + 1e-12), 2].min() for x in s])
+    assert np.all(v <= caps * (1 + 1e-12))
+    np.testing.assert_array_equal(optimal.trajectory.rest_positions(), [0.0, optimal.trajectory.length])
 
 
 def test_hexapod_legs_are_the_joints():
