@@ -49,6 +49,25 @@ inline Eigen::Vector3d rotate(const Eigen::Vector3d& k, double angle, const Eige
   return kp * k + std::cos(angle) * (p - kp * k) + std::sin(angle) * k.cross(p);
 }
 
+//! The 3×3 rotation R(k, θ) = cos θ I + sin θ [k]× + (1 − cos θ) k kᵀ (Rodrigues), θ given by
+//! its cosine and sine: no trigonometric function.
+inline Eigen::Matrix3d rotation(const Eigen::Vector3d& k, const CosSin& r) noexcept {
+  const double v = 1.0 - r.c;
+  const double x = k.x(), y = k.y(), z = k.z();
+  const double vxy = v * x * y, vxz = v * x * z, vyz = v * y * z;
+  Eigen::Matrix3d m;
+  m(0, 0) = r.c + v * x * x;
+  m(1, 1) = r.c + v * y * y;
+  m(2, 2) = r.c + v * z * z;
+  m(0, 1) = vxy - r.s * z;
+  m(1, 0) = vxy + r.s * z;
+  m(0, 2) = vxz + r.s * y;
+  m(2, 0) = vxz - r.s * y;
+  m(1, 2) = vyz - r.s * x;
+  m(2, 1) = vyz + r.s * x;
+  return m;
+}
+
 //! The 3×3 rotation R(k, θ) (Rodrigues).
 inline Eigen::Matrix3d rotation(const Eigen::Vector3d& k, double angle) noexcept {
   const double c = std::cos(angle);
