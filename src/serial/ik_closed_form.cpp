@@ -22,6 +22,7 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
   const Motion target = Motion::of(pose);
   const Motion m = Motion::of(chain.tip_at_zero);
   const Motion g = target * m.inverse();
+  const JointThen tool(chain, 5, m);  // e₆(q₆) M
   const Eigen::Vector3d& c = geometry.wrist_centre;
   const Eigen::Vector3d& w4 = chain.axes[3];
   const Eigen::Vector3d& w5 = chain.axes[4];
@@ -38,12 +39,12 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
     const AnglePairs q45 = subproblem2(w4, w5, w6, r_wrist * w6);
     if (!q45.exists) continue;
     const Eigen::Vector3d arm_angles = arm.angles(b);
+    const Eigen::Vector3d x6_target = r_wrist * x6;
     for (std::size_t l = 0; l < (q45.single ? 1u : 2u); ++l) {
       const Motion e4 = joint_motion(chain, 3, q45.first[l]);
       const Motion e5 = joint_motion(chain, 4, q45.second[l]);
-      const Motion e45 = e4 * e5;
-      const CosSin q6 = subproblem1_cs(w6, x6, e45.r.transpose() * r_wrist * x6);
-      const Motion fk = e123 * e45 * joint_motion(chain, 5, q6) * m;
+      const CosSin q6 = subproblem1_cs(w6, x6, e5.r.transpose() * (e4.r.transpose() * x6_target));
+      const Motion fk = e123 * e4 * e5 * tool.at(q6);
       Vector6d q;
       q << arm_angles, q45.first[l].angle(), q45.second[l].angle(), q6.angle();
       offer(chain, pose, q, motion_error(fk, target), out);
@@ -57,6 +58,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   const Motion target = Motion::of(pose);
   const Motion m = Motion::of(chain.tip_at_zero);
   const Motion g = target * m.inverse();
+  const JointThen tool(chain, 5, m);  // e₆(q₆) M
   const Eigen::Vector3d& w1 = chain.axes[0];
   const Eigen::Vector3d& w2 = chain.axes[1];
   const Eigen::Vector3d& w3 = chain.axes[2];
@@ -76,14 +78,16 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   for (int l1 = 0; l1 < (q1s.single() ? 1 : 2); ++l1) {
     const CosSin q1 = (l1 == 0 ? q1s.plus : q1s.minus).inverse();  // the subproblem's angle is −q₁
     const Motion e1 = joint_motion(chain, 0, q1);
-    const Motion a = e1.inverse() * g;  // e₁⁻¹ G = e₂ ⋯ e₆
+    const Motion a_m = e1.inverse() * target;  // e₁⁻¹ G M = e₂ ⋯ e₆ M
     const Eigen::Vector3d r1_w2 = e1.r * w2;
+    const double q1_angle = q1.angle();
     // Orientation along ω₂: ω₂ᵀ R₅ ω₆ = (R₁ ω₂)ᵀ R_G ω₆ (subproblem 4 in q₅).
     const Angles q5s = subproblem4(w2, w5, w6, r1_w2.dot(g.r * w6));
     if (!q5s.exists) continue;
     for (int l5 = 0; l5 < (q5s.single() ? 1 : 2); ++l5) {
       const CosSin q5 = l5 == 0 ? q5s.plus : q5s.minus;
       const Motion e5 = joint_motion(chain, 4, q5);
+      const double q5_angle = q5.angle();
       // R₆ᵀ R₅ᵀ ω₂ = R_Gᵀ R₁ ω₂ (subproblem 1 in −q₆).
       const Eigen::Vector3d u = e5.r.transpose() * w2;
       std::array<CosSin, 3> q6_candidates{{subproblem1_cs(w6, u, g.r.transpose() * r1_w2).inverse(), {}, {}}};
@@ -96,7 +100,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
       if (u.cross(w6).norm() < 1e-6) {
         near_singular = true;
         const Eigen::Vector3d u6 = e5.inverse() * p4 - p6;
-        const Eigen::Vector3d v6 = a.inverse() * p2 - p6;
+        const Eigen::Vector3d v6 = (e1.inverse() * g).inverse() * p2 - p6;  // (e₁⁻¹ G)⁻¹ p₂
         // ‖R(k, θ) u − v‖² ranges over base ± 2 ‖u⊥‖ ‖v⊥‖.
         auto range = [](const Eigen::Vector3d& k, const Eigen::Vector3d& uu, const Eigen::Vector3d& vv) {
           const double base = uu.squaredNorm() + vv.squaredNorm() - 2.0 * k.dot(uu) * k.dot(vv);
@@ -117,10 +121,10 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
       }
       for (std::size_t k6 = 0; k6 < q6_count; ++k6) {
         const CosSin q6 = q6_candidates[k6];
-        const Motion e6 = joint_motion(chain, 5, q6);
-        const Motion e56 = e5 * e6;
+        const Motion e56m = e5 * tool.at(q6);  // e₅e₆M
         // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄; e₄ fixes p₄, so e₂e₃ p₄ = H p₄: subproblems 3 and 1.
-        const Motion h = a * e56.inverse();
+        const Motion h = a_m * e56m.inverse();
+        const double q6_angle = q6.angle();
         const Eigen::Vector3d y = h * p4;
         const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
         if (!q3s.exists) continue;
@@ -131,9 +135,9 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
           const Motion e23 = joint_motion(chain, 1, q2) * e3;
           // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
           const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h.r * x4);
-          const Motion fk = e1 * e23 * joint_motion(chain, 3, q4) * e56 * m;
+          const Motion fk = e1 * e23 * joint_motion(chain, 3, q4) * e56m;
           Vector6d q;
-          q << q1.angle(), q2.angle(), q3.angle(), q4.angle(), q5.angle(), q6.angle();
+          q << q1_angle, q2.angle(), q3.angle(), q4.angle(), q5_angle, q6_angle;
           offer(chain, pose, q, motion_error(fk, target), out);
         }
       }

@@ -79,19 +79,41 @@ struct Motion {
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
 
   static Motion of(const Posed& pose) noexcept { return {pose.rotation(), pose.translation()}; }
-  Eigen::Vector3d operator*(const Eigen::Vector3d& x) const noexcept { return r * x + t; }
-  Motion operator*(const Motion& o) const noexcept { return {r * o.r, r * o.t + t}; }
-  Motion inverse() const noexcept { return {r.transpose(), -(r.transpose() * t)}; }
+  EIGEN_ALWAYS_INLINE Eigen::Vector3d operator*(const Eigen::Vector3d& x) const noexcept { return r * x + t; }
+  EIGEN_ALWAYS_INLINE Motion operator*(const Motion& o) const noexcept { return {r * o.r, r * o.t + t}; }
+  EIGEN_ALWAYS_INLINE Motion inverse() const noexcept { return {r.transpose(), -(r.transpose() * t)}; }
 };
 
 //! The motion of joint i turned by θ (cosine and sine): x ↦ R(ωᵢ, θ)(x − pᵢ) + pᵢ.
-inline Motion joint_motion(const RevoluteChain& chain, int i, const CosSin& angle) noexcept {
+EIGEN_ALWAYS_INLINE Motion joint_motion(const RevoluteChain& chain, int i, const CosSin& angle) noexcept {
   const auto k = static_cast<std::size_t>(i);
   Motion m;
   m.r = rotation(chain.axes[k], angle);
   m.t = chain.points[k] - m.r * chain.points[k];
   return m;
 }
+
+//! e_i(θ) X for a fixed motion X as a function of (cos θ, sin θ). With
+//! R(ω, θ) = ωωᵀ + cos θ (I − ωωᵀ) + sin θ [ω]×, the motion x ↦ R (X x − p) + p splits into
+//! three fixed motions, so each evaluation is two scaled sums (no matrix product).
+struct JointThen {
+  Motion along, normal, cross;
+
+  JointThen(const RevoluteChain& chain, int i, const Motion& x) noexcept {
+    const auto k = static_cast<std::size_t>(i);
+    const Eigen::Vector3d& w = chain.axes[k];
+    const Eigen::Vector3d y = x.t - chain.points[k];
+    along.r = w * (w.transpose() * x.r);
+    along.t = w * w.dot(y) + chain.points[k];
+    normal.r = x.r - along.r;
+    normal.t = y - w * w.dot(y);
+    for (int j = 0; j < 3; ++j) cross.r.col(j) = w.cross(x.r.col(j));
+    cross.t = w.cross(y);
+  }
+  EIGEN_ALWAYS_INLINE Motion at(const CosSin& a) const noexcept {
+    return {along.r + a.c * normal.r + a.s * cross.r, along.t + a.c * normal.t + a.s * cross.t};
+  }
+};
 
 //! Position and rotation error of the motion `t` against `target`. The rotation angle θ of
 //! R_targetᵀ R follows from ‖R − R_target‖_F = 2√2 sin(θ/2) (one asin, no quaternion).

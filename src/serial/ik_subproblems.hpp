@@ -51,7 +51,7 @@ inline Eigen::Vector3d rotate(const Eigen::Vector3d& k, double angle, const Eige
 
 //! The 3×3 rotation R(k, θ) = cos θ I + sin θ [k]× + (1 − cos θ) k kᵀ (Rodrigues), θ given by
 //! its cosine and sine: no trigonometric function.
-inline Eigen::Matrix3d rotation(const Eigen::Vector3d& k, const CosSin& r) noexcept {
+EIGEN_ALWAYS_INLINE Eigen::Matrix3d rotation(const Eigen::Vector3d& k, const CosSin& r) noexcept {
   const double v = 1.0 - r.c;
   const double x = k.x(), y = k.y(), z = k.z();
   const double vxy = v * x * y, vxz = v * x * z, vyz = v * y * z;
