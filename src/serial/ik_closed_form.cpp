@@ -15,7 +15,10 @@ inline Eigen::Vector3d normal_to(const Eigen::Vector3d& k) {
 
 // Both closed forms work on cosines and sines end to end: every joint's motion is composed from
 // the (cos, sin) its subproblem gives, so is the forward kinematics that checks a candidate,
-// and only the returned joint values take an atan2.
+// and only the returned joint values take an atan2. The check compares e₁ ⋯ e₆ M with the
+// target seen from a link the candidates of a branch share, e.g. e_k⁻¹ ⋯ e₁⁻¹ T against
+// e_{k+1} ⋯ e₆ M: a rigid motion applied to both sides changes neither the distance of the
+// origins nor ‖R − R_target‖_F, so this is the full pose error, at a fraction of the products.
 
 void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                              IkSolutionSet& out) {
@@ -40,14 +43,15 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
     if (!q45.exists) continue;
     const Eigen::Vector3d arm_angles = arm.angles(b);
     const Eigen::Vector3d x6_target = r_wrist * x6;
+    const Motion target_from_3 = e123.inverse() * target;  // e₃⁻¹e₂⁻¹e₁⁻¹ T
     for (std::size_t l = 0; l < (q45.single ? 1u : 2u); ++l) {
       const Motion e4 = joint_motion(chain, 3, q45.first[l]);
       const Motion e5 = joint_motion(chain, 4, q45.second[l]);
       const CosSin q6 = subproblem1_cs(w6, x6, e5.r.transpose() * (e4.r.transpose() * x6_target));
-      const Motion fk = e123 * e4 * e5 * tool.at(q6);
+      const Motion fk_from_3 = e4 * e5 * tool.at(q6);  // e₄e₅e₆ M
       Vector6d q;
       q << arm_angles, q45.first[l].angle(), q45.second[l].angle(), q6.angle();
-      offer(chain, pose, q, motion_error(fk, target), out);
+      offer(chain, pose, q, motion_error(fk_from_3, target_from_3), out);
     }
   }
 }
@@ -135,10 +139,10 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
           const Motion e23 = joint_motion(chain, 1, q2) * e3;
           // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
           const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h.r * x4);
-          const Motion fk = e1 * e23 * joint_motion(chain, 3, q4) * e56m;
+          const Motion fk_from_1 = e23 * joint_motion(chain, 3, q4) * e56m;  // e₂ ⋯ e₆ M
           Vector6d q;
           q << q1_angle, q2.angle(), q3.angle(), q4.angle(), q5_angle, q6_angle;
-          offer(chain, pose, q, motion_error(fk, target), out);
+          offer(chain, pose, q, motion_error(fk_from_1, a_m), out);
         }
       }
     }

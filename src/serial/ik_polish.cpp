@@ -26,6 +26,14 @@ Posed forward_with_axes(const RevoluteChain& chain, const Vector6d& q, Eigen::Ma
   return t * chain.tip_at_zero;
 }
 
+// Position and rotation error of the tip pose t against the target.
+PoseError error_of(const Posed& t, const Posed& target) {
+  PoseError e;
+  e.position = (t.translation() - target.translation()).norm();
+  e.rotation = angle_of(target.quaternion().conjugate() * t.quaternion());
+  return e;
+}
+
 }  // namespace
 
 PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept {
@@ -34,11 +42,7 @@ PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed&
     const auto k = static_cast<std::size_t>(i);
     t = t * rotation_about_line(chain.axes[k], chain.points[k], q(i));
   }
-  t = t * chain.tip_at_zero;
-  PoseError e;
-  e.position = (t.translation() - target.translation()).norm();
-  e.rotation = angle_of(target.quaternion().conjugate() * t.quaternion());
-  return e;
+  return error_of(t * chain.tip_at_zero, target);
 }
 
 PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept {
@@ -46,10 +50,11 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
   Eigen::Matrix<double, 6, 6> jacobian;
   Eigen::Matrix<double, 6, 1> residual;
   Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, 6, 6>> solver;
+  // One forward kinematics per q: it gives both the error and the Jacobian's axes.
+  Posed t = forward_with_axes(chain, q, w, p);
   Vector6d best = q;
-  PoseError best_error = pose_error(chain, q, target);
+  PoseError best_error = error_of(t, target);
   for (int iteration = 0; iteration < max_iterations && best_error.worst() > 1e-15; ++iteration) {
-    const Posed t = forward_with_axes(chain, q, w, p);
     // Space-frame error: the tool origin must move by Δt, the frame turn by the rotation vector
     // of R_target Rᵀ; joint i moves the origin by ωᵢ' × (t − pᵢ') and turns it about ωᵢ'.
     residual.head<3>() = target.translation() - t.translation();
@@ -63,7 +68,8 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
     solver.compute(jacobian);
     q += solver.solve(residual);
     for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
-    const PoseError e = pose_error(chain, q, target);
+    t = forward_with_axes(chain, q, w, p);
+    const PoseError e = error_of(t, target);
     if (e.worst() < best_error.worst()) {
       best = q;
       best_error = e;

@@ -122,13 +122,13 @@ inline Angles solve_harmonic(double a, double b, double c, double scale) noexcep
 //! Subproblem 1: the θ with R(k, θ) p = q (least squares in the plane normal to k), as
 //! cosine and sine. If p or q lies on the axis θ is free; 0 is returned.
 inline CosSin subproblem1_cs(const Eigen::Vector3d& k, const Eigen::Vector3d& p, const Eigen::Vector3d& q) noexcept {
-  const Eigen::Vector3d pp = p - k.dot(p) * k;
-  const Eigen::Vector3d qp = q - k.dot(q) * k;
-  const double sine = k.dot(pp.cross(qp));
-  const double cosine = pp.dot(qp);
+  // With p⊥ = p − (k·p) k: sin θ ∝ k · (p⊥ × q⊥) = k · (p × q), cos θ ∝ p⊥ · q⊥ = p · q − (k·p)(k·q).
+  const double sine = k.dot(p.cross(q));
+  const double cosine = p.dot(q) - k.dot(p) * k.dot(q);
   const double h = std::sqrt(sine * sine + cosine * cosine);
   if (!(h > 1e-300)) return {};
-  return {cosine / h, sine / h};
+  const double inverse_h = 1.0 / h;
+  return {cosine * inverse_h, sine * inverse_h};
 }
 
 //! Subproblem 1 as an angle.
