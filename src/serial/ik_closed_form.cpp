@@ -31,6 +31,7 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
   const Eigen::Vector3d& w5 = chain.axes[4];
   const Eigen::Vector3d& w6 = chain.axes[5];
   const Eigen::Vector3d x6 = normal_to(w6);
+  const Eigen::Vector3d g_w6 = g.r * w6, g_x6 = g.r * x6;
   // e₄e₅e₆ fix the wrist centre: e₁e₂e₃ c = G c.
   const PositionSolutions arm = solve_position(chain, geometry, c, g * c);
   for (std::size_t b = 0; b < 4; ++b) {
@@ -38,11 +39,10 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
     const std::array<CosSin, 3>& t = arm.q[b];
     const Motion e123 = joint_motion(chain, 0, t[0]) * joint_motion(chain, 1, t[1]) * joint_motion(chain, 2, t[2]);
     // R₄R₅R₆ = (R₁R₂R₃)ᵀ R_G: R₄R₅ ω₆ = R_w ω₆ (subproblem 2), then q₆ (subproblem 1).
-    const Eigen::Matrix3d r_wrist = e123.r.transpose() * g.r;
-    const AnglePairs q45 = subproblem2(w4, w5, w6, r_wrist * w6);
+    const AnglePairs q45 = subproblem2(w4, w5, w6, e123.r.transpose() * g_w6);
     if (!q45.exists) continue;
     const Eigen::Vector3d arm_angles = arm.angles(b);
-    const Eigen::Vector3d x6_target = r_wrist * x6;
+    const Eigen::Vector3d x6_target = e123.r.transpose() * g_x6;
     const Motion target_from_3 = e123.inverse() * target;  // e₃⁻¹e₂⁻¹e₁⁻¹ T
     for (std::size_t l = 0; l < (q45.single ? 1u : 2u); ++l) {
       const Motion e4 = joint_motion(chain, 3, q45.first[l]);
@@ -130,6 +130,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
         const Motion h = a_m * e56m.inverse();
         const double q6_angle = q6.angle();
         const Eigen::Vector3d y = h * p4;
+        const Eigen::Vector3d h_x4 = h.r * x4;
         const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
         if (!q3s.exists) continue;
         for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
@@ -138,7 +139,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
           const CosSin q2 = subproblem1_cs(w2, e3 * p4 - p2, y - p2);
           const Motion e23 = joint_motion(chain, 1, q2) * e3;
           // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
-          const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h.r * x4);
+          const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h_x4);
           const Motion fk_from_1 = e23 * joint_motion(chain, 3, q4) * e56m;  // e₂ ⋯ e₆ M
           Vector6d q;
           q << q1_angle, q2.angle(), q3.angle(), q4.angle(), q5_angle, q6_angle;
