@@ -40,44 +40,77 @@ struct Sample {
   std::array<double, 4> margin{};  // of the positioning stage (PositionSolutions::margin)
 };
 
+// A point or vector turning with q₆ = θ: a + cos θ b + sin θ c (R(k, ±θ) applied to a fixed
+// vector has this form), so evaluating it costs six multiplications.
+struct Turning {
+  Eigen::Vector3d a, b, c;
+  Eigen::Vector3d at(const CosSin& theta) const noexcept { return a + theta.c * b + theta.s * c; }
+};
+
 class OffsetWristSearch {
  public:
   OffsetWristSearch(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose)
       : chain_(chain), geometry_(geometry), pose_(pose), g_(pose * chain.tip_at_zero.inverse()),
-        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {}
+        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {
+    // The circle of w = axes 4 ∩ 5: G (R(ω₆, −θ)(w − p₆) + p₆), and R_G R(ω₆, −θ) ω₅, with
+    // R(k, −θ) d = (k·d) k + cos θ d⊥ − sin θ k × d.
+    const Eigen::Vector3d& k = chain.axes[5];
+    const Eigen::Vector3d& p6 = chain.points[5];
+    const Eigen::Vector3d d = geometry.point_45 - p6;
+    const Eigen::Vector3d& w5 = chain.axes[4];
+    wrist_point_ = {g_ * (k.dot(d) * k + p6), g_rotation_ * (d - k.dot(d) * k), -(g_rotation_ * k.cross(d))};
+    axis_5_ = {g_rotation_ * (k.dot(w5) * k), g_rotation_ * (w5 - k.dot(w5) * k), -(g_rotation_ * k.cross(w5))};
+    // R(ω₃, q₃) ω₄ in the same form (q₃ is a positioning angle).
+    const Eigen::Vector3d& w3 = chain.axes[2];
+    const Eigen::Vector3d& w4 = chain.axes[3];
+    axis_4_in_3_ = {w3.dot(w4) * w3, w4 - w3.dot(w4) * w3, w3.cross(w4)};
+  }
 
   Sample evaluate(double theta) const {
     Sample s;
-    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
-    const PositionSolutions arm = position(minus_theta);
+    const CosSin turn{std::cos(theta), std::sin(theta)};
+    const PositionSolutions arm = position(turn);
     s.margin = arm.margin;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
+    const Eigen::Vector3d v = axis_5_.at(turn);  // R_G R₆ᵀ ω₅
+    // f_b = ω₄ · (R₁R₂R₃)ᵀ v = (R₂R₃ω₄) · (R₁ᵀ v); branches with the same q₁ share R₁ᵀ v.
+    Eigen::Vector3d v1 = Eigen::Vector3d::Zero();
+    CosSin q1_of_v1{2.0, 0.0};  // none yet
     for (std::size_t b = 0; b < 4; ++b) {
       if (!arm.exists[b]) continue;
       s.exists[b] = true;
-      s.value[b] = chain_.axes[3].dot(back_through_arm(arm.q[b], v)) - cos_45_;
+      if (!(arm.q[b][0] == q1_of_v1)) {
+        q1_of_v1 = arm.q[b][0];
+        v1 = rotate(chain_.axes[0], q1_of_v1.inverse(), v);
+      }
+      s.value[b] = arm_axis_4(arm.q[b]).dot(v1) - cos_45_;
     }
     return s;
   }
 
-  // One branch only (refinement).
-  bool evaluate(double theta, std::size_t branch, double& value) const {
-    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
-    const PositionSolutions arm = position(minus_theta);
+  // One branch only (refinement). `margin`: the positioning margin of the branch there.
+  bool evaluate(double theta, std::size_t branch, double& value, double& margin) const {
+    const CosSin turn{std::cos(theta), std::sin(theta)};
+    const PositionSolutions arm = position(turn);
+    margin = arm.margin[branch];
     if (!arm.exists[branch]) return false;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);
-    value = chain_.axes[3].dot(back_through_arm(arm.q[branch], v)) - cos_45_;
+    const Eigen::Vector3d v1 = rotate(chain_.axes[0], arm.q[branch][0].inverse(), axis_5_.at(turn));
+    value = arm_axis_4(arm.q[branch]).dot(v1) - cos_45_;
     return true;
+  }
+
+  bool evaluate(double theta, std::size_t branch, double& value) const {
+    double margin;
+    return evaluate(theta, branch, value, margin);
   }
 
   // The positioning margin of branch b (≥ 0 where it exists).
   double margin(double theta, std::size_t branch) const {
-    return position({std::cos(theta), -std::sin(theta)}).margin[branch];
+    return position({std::cos(theta), std::sin(theta)}).margin[branch];
   }
 
   // The full q at a root θ of branch b, offered to the solution list (polish, check, dedupe).
   void offer_root(double theta, std::size_t branch, SolutionList& out) const {
-    const PositionSolutions arm = position({std::cos(theta), -std::sin(theta)});
+    const PositionSolutions arm = position({std::cos(theta), std::sin(theta)});
     if (!arm.exists[branch]) return;
     const Eigen::Vector3d t = arm.angles(branch);
     const Eigen::Matrix3d r_rem = (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) *
@@ -95,17 +128,14 @@ class OffsetWristSearch {
   }
 
  private:
-  // The positioning stage for q₆ = θ, given cos θ and −sin θ.
-  PositionSolutions position(const CosSin& minus_theta) const {
-    const Eigen::Vector3d& p6 = chain_.points[5];
-    const Eigen::Vector3d w_target = g_ * (rotate(chain_.axes[5], minus_theta, geometry_.point_45 - p6) + p6);
-    return solve_position(chain_, geometry_, geometry_.point_45, w_target);
+  // The positioning stage for q₆ = θ.
+  PositionSolutions position(const CosSin& turn) const {
+    return solve_position(chain_, geometry_, geometry_.point_45, wrist_point_.at(turn));
   }
 
-  // (R₁R₂R₃)ᵀ v.
-  Eigen::Vector3d back_through_arm(const std::array<CosSin, 3>& t, const Eigen::Vector3d& v) const {
-    return rotate(chain_.axes[2], t[2].inverse(),
-                  rotate(chain_.axes[1], t[1].inverse(), rotate(chain_.axes[0], t[0].inverse(), v)));
+  // R₂R₃ ω₄ for the positioning angles t.
+  Eigen::Vector3d arm_axis_4(const std::array<CosSin, 3>& t) const {
+    return rotate(chain_.axes[1], t[1], axis_4_in_3_.at(t[2]));
   }
 
   const RevoluteChain& chain_;
@@ -114,6 +144,9 @@ class OffsetWristSearch {
   Posed g_;
   Eigen::Matrix3d g_rotation_;
   double cos_45_;
+  Turning wrist_point_;   // G (R(ω₆, −θ)(w − p₆) + p₆): where joints 1–3 must put w
+  Turning axis_5_;        // R_G R(ω₆, −θ) ω₅
+  Turning axis_4_in_3_;   // R(ω₃, q₃) ω₄
 };
 
 // Illinois regula falsi on [a, b] with f(a) f(b) < 0.
@@ -211,19 +244,39 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
   }
 }
 
-// The end of branch b between `in` (where it exists, value f_in) and `outside`, by bisection;
+// The end of branch b between `in` (where it exists) and `outside` (where it does not);
 // returns the graded sub-samples from the end towards `in` (excluding `in`), end first.
-std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
-  double f_in = 0.0;
+// The end is where the positioning margin of the branch reaches −tangency_slack. The margin is
+// smooth through the end (f_b is not: it behaves like a square root there), so regula falsi on
+// it (Illinois-weighted) needs a handful of evaluations where bisection needs ~40; every
+// fourth step bisects, so that a margin with a kink (a minimum of two subproblems' margins)
+// still brackets the end at least as fast as bisection.
+// `m_in`, `m_out`: the margins at `in` and `outside` (from the sample table).
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double m_in, double outside,
+                              double m_out) {
   const double start = in;
-  while (std::abs(outside - in) > 1e-14) {
-    const double mid = 0.5 * (in + outside);
-    double f;
-    if (search.evaluate(mid, b, f)) {
+  double f_in = 0.0, f = 0.0;
+  m_in += tangency_slack;  // ≥ 0 inside, < 0 outside (unless the branch ends by degeneracy)
+  m_out += tangency_slack;
+  int side = 0;
+  for (int step = 0; step < 200 && std::abs(outside - in) > 1e-14; ++step) {
+    double mid = 0.5 * (in + outside);
+    if (step % 4 != 3 && m_in >= 0.0 && m_out < 0.0) {
+      const double t = in + (outside - in) * (m_in / (m_in - m_out));
+      if (t > std::min(in, outside) && t < std::max(in, outside)) mid = t;
+    }
+    double m;
+    if (search.evaluate(mid, b, f, m)) {
       in = mid;
       f_in = f;
+      m_in = m + tangency_slack;
+      if (side == 1) m_out *= 0.5;
+      side = 1;
     } else {
       outside = mid;
+      m_out = m + tangency_slack;
+      if (side == -1) m_in *= 0.5;
+      side = -1;
     }
   }
   std::vector<Point> points;
@@ -236,6 +289,11 @@ std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, do
     if (search.evaluate(theta, b, f)) points.push_back({theta, f});
   }
   return points;
+}
+
+// branch_end() measuring the margins at both points first.
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
+  return branch_end(search, b, in, search.margin(in, b), outside, search.margin(outside, b));
 }
 
 // An island: branch b absent at the samples t₋₁, t₀, t₁ but with a sampled maximum of its
@@ -318,10 +376,12 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
       int last = j;
       while (last + 1 <= gap + n && at(last + 1).exists[b]) ++last;
       run.clear();
-      const std::vector<Point> front = branch_end(search, b, theta_of(j), theta_of(j - 1));
+      const std::vector<Point> front =
+          branch_end(search, b, theta_of(j), at(j).margin[b], theta_of(j - 1), at(j - 1).margin[b]);
       run.insert(run.end(), front.begin(), front.end());
       for (int k = j; k <= last; ++k) run.push_back({theta_of(k), at(k).value[b]});
-      std::vector<Point> back = branch_end(search, b, theta_of(last), theta_of(last + 1));
+      std::vector<Point> back =
+          branch_end(search, b, theta_of(last), at(last).margin[b], theta_of(last + 1), at(last + 1).margin[b]);
       run.insert(run.end(), back.rbegin(), back.rend());
       scan(search, b, run, !front.empty(), !back.empty(), out);
       j = last + 1;
