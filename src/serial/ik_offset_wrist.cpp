@@ -282,11 +282,38 @@ std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, do
   std::vector<Point> points;
   if (in == start) return points;  // the sample itself is the end (to rounding)
   points.push_back({in, f_in});
+  // Sub-samples uniform in u = √((θ − θ_end) / (θ_start − θ_end)): the branch and its partner
+  // (the other label of the subproblem that reaches its tangency) are one smooth function
+  // g(±u), f_b ≈ f_end + g₁ u + g₂ u².
+  auto theta_at = [&](double u) { return in + (start - in) * u * u; };
   for (int k = 1; k < end_samples; ++k) {
-    const double s = static_cast<double>(k) / end_samples;
-    const double theta = in + (start - in) * s * s;
+    const double theta = theta_at(static_cast<double>(k) / end_samples);
     double f;
     if (search.evaluate(theta, b, f)) points.push_back({theta, f});
+  }
+  // A pair of roots closer to the end than the first sub-sample (a touching pair next to the
+  // tangency): f leaves the end towards zero and comes back. The slope g₁ at u = 0 (probed at
+  // u = 1e-3) and the first sub-sample give the model's extremum; where it may reach zero, a
+  // golden-section search finds it and the run gets that point, so that the scan brackets both
+  // roots.
+  const double u1 = 1.0 / end_samples;
+  const double u_probe = 1e-3;
+  double f_probe = 0.0;
+  if (points.size() >= 2 && points[1].theta == theta_at(u1) && f_in != 0.0 &&
+      search.evaluate(theta_at(u_probe), b, f_probe)) {
+    const double sign = f_in < 0.0 ? -1.0 : 1.0;
+    const double h0 = sign * f_in;                                  // > 0
+    const double h1 = sign * (f_probe - f_in) / u_probe;            // slope of |f| in u
+    const double h2 = (sign * points[1].value - h0 - h1 * u1) / (u1 * u1);
+    const bool heads_to_zero = h1 < 0.0;
+    const double u_min = h2 > 0.0 ? -h1 / (2.0 * h2) : u1;
+    const double h_min = h2 > 0.0 ? h0 - h1 * h1 / (4.0 * h2) : h0 + h1 * u1 + h2 * u1 * u1;
+    if (heads_to_zero && u_min <= u1 && h_min < 0.5 * h0) {
+      Point low;
+      if (minimise(search, b, sign, std::min(in, points[1].theta), std::max(in, points[1].theta), low) &&
+          low.theta != in && low.theta != points[1].theta)
+        points.insert(points.begin() + 1, low);
+    }
   }
   return points;
 }
