@@ -213,6 +213,26 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
   return true;
 }
 
+// Whether f, of one sign at run[i] and run[i + 1], would reach zero between them if it kept the
+// slope it has on the neighbouring interval on either side (f turning back inside the interval).
+bool reaches_zero_by_slope(const std::vector<Point>& run, std::size_t i) {
+  const Point& p0 = run[i];
+  const Point& p1 = run[i + 1];
+  const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+  const double width = p1.theta - p0.theta;
+  if (i >= 1) {
+    const Point& pm = run[i - 1];
+    const double slope = sign * (p0.value - pm.value) / (p0.theta - pm.theta);
+    if (sign * p0.value + slope * width < 0.0) return true;
+  }
+  if (i + 2 < run.size()) {
+    const Point& pp = run[i + 2];
+    const double slope = sign * (pp.value - p1.value) / (pp.theta - p1.theta);
+    if (sign * p1.value - slope * width < 0.0) return true;
+  }
+  return false;
+}
+
 // Roots of branch b along a run of points where it exists (θ increasing, the branch defined
 // between consecutive points): sign changes, exact zeros, and sampled extrema of |f| that may
 // touch or cross zero. `ends`: the first / last point is where the branch ends.
@@ -225,8 +245,22 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
     const Point& p0 = run[i];
     const Point& p1 = run[i + 1];
     if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
-    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0)
+    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0) {
       search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
+    } else if (p0.value != 0.0 && p1.value != 0.0 && reaches_zero_by_slope(run, i)) {
+      // No sign change, but the slope f has next to the interval carries it through zero
+      // inside: a narrow pair of roots (or a touching one) the spacing does not resolve.
+      const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+      Point low;
+      if (minimise(search, b, sign, p0.theta, p1.theta, low)) {
+        if (sign * low.value < 0.0) {
+          search.offer_root(refine_root(search, b, p0.theta, p0.value, low.theta, low.value), b, out);
+          search.offer_root(refine_root(search, b, low.theta, low.value, p1.theta, p1.value), b, out);
+        } else if (sign * low.value <= touch_tolerance) {
+          search.offer_root(low.theta, b, out);
+        }
+      }
+    }
     if (i == 0) continue;
     // A sampled extremum of |f| at p0 that a parabola through its neighbours brings near zero.
     const Point& pm = run[i - 1];
@@ -323,6 +357,48 @@ std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, do
   return branch_end(search, b, in, search.margin(in, b), outside, search.margin(outside, b));
 }
 
+// A gap the samples straddle: branch b exists at the samples t₋₁, t₀, t₁ but its margin has a
+// sampled minimum at t₀ that a parabola brings near zero. Golden-section minimisation of the
+// margin looks for a θ in (t₋₁, t₁) where the branch does not exist; true with that θ and its
+// margin if there is one (the run is then split there).
+bool straddled_gap(const OffsetWristSearch& search, std::size_t b, double lo, double hi, double& theta,
+                   double& margin) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double f = 0.0, m1 = 0.0, m2 = 0.0;
+  if (!search.evaluate(x1, b, f, m1)) {
+    theta = x1, margin = m1;
+    return true;
+  }
+  if (!search.evaluate(x2, b, f, m2)) {
+    theta = x2, margin = m2;
+    return true;
+  }
+  for (int k = 0; k < 80 && hi - lo > 1e-13; ++k) {
+    if (m1 < m2) {
+      hi = x2;
+      x2 = x1;
+      m2 = m1;
+      x1 = hi - ratio * (hi - lo);
+      if (!search.evaluate(x1, b, f, m1)) {
+        theta = x1, margin = m1;
+        return true;
+      }
+    } else {
+      lo = x1;
+      x1 = x2;
+      m1 = m2;
+      x2 = lo + ratio * (hi - lo);
+      if (!search.evaluate(x2, b, f, m2)) {
+        theta = x2, margin = m2;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 // An island: branch b absent at the samples t₋₁, t₀, t₁ but with a sampled maximum of its
 // margin at t₀ that a parabola brings near zero. Golden-section maximisation of the margin
 // finds a point of the island if there is one; the island is then sampled from both its ends.
@@ -376,16 +452,60 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
 
   SolutionList out;
   std::vector<Point> run;
+  // A sampled minimum of the margin of branch b at sample k (existing, as its neighbours) that a
+  // parabola brings near zero: a gap between the samples may hide there.
+  auto dip_at = [&](std::size_t b, int k) {
+    const double mm = at(k - 1).margin[b], m0 = at(k).margin[b], mp = at(k + 1).margin[b];
+    return m0 <= mm && m0 <= mp && m0 < 4.0 * ((mm - m0) + (mp - m0));
+  };
+  // The existing samples first … last of branch b, with the branch absent at `before` (margin
+  // m_before) and at `after` (margin m_after): split at the gaps the samples straddle, each
+  // piece followed to its ends and scanned.
+  auto process_run = [&](std::size_t b, int first, int last, double before, double m_before, double after,
+                         double m_after) {
+    int piece = first;
+    for (int k = first; k <= last; ++k) {
+      double gap_theta = 0.0, gap_margin = 0.0;
+      const bool gap_found = k > piece && k < last && dip_at(b, k) &&
+                             straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin);
+      if (!gap_found && k < last) continue;
+      const int right = !gap_found ? last : (gap_theta < theta_of(k) ? k - 1 : k);
+      run.clear();
+      const std::vector<Point> front = branch_end(search, b, theta_of(piece), at(piece).margin[b], before, m_before);
+      run.insert(run.end(), front.begin(), front.end());
+      for (int i = piece; i <= right; ++i) run.push_back({theta_of(i), at(i).value[b]});
+      const std::vector<Point> back = branch_end(search, b, theta_of(right), at(right).margin[b],
+                                                 gap_found ? gap_theta : after, gap_found ? gap_margin : m_after);
+      run.insert(run.end(), back.rbegin(), back.rend());
+      scan(search, b, run, !front.empty(), !back.empty(), out);
+      if (!gap_found) break;
+      piece = right + 1;
+      before = gap_theta;
+      m_before = gap_margin;
+      k = piece;  // the loop's ++k then looks at piece + 1 first
+    }
+  };
   for (std::size_t b = 0; b < 4; ++b) {
     int gap = -1;  // a sample where the branch does not exist
     for (int j = 0; j < n && gap < 0; ++j)
       if (!at(j).exists[b]) gap = j;
     if (gap < 0) {
-      // The branch exists all the way round: one periodic run (two samples repeated past the
-      // turn so that the wrap-around interval and extremum are scanned too).
-      run.clear();
-      for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
-      scan(search, b, run, false, false, out);
+      // The branch exists at every sample: one periodic run, unless it has a gap the samples
+      // straddle, from which it is then followed once round.
+      double gap_theta = 0.0, gap_margin = 0.0;
+      int k = 0;
+      while (k < n && !(dip_at(b, k) && straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin)))
+        ++k;
+      if (k == n) {
+        // Two samples repeated past the turn so that the wrap-around interval and extremum are
+        // scanned too.
+        run.clear();
+        for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
+        scan(search, b, run, false, false, out);
+      } else {
+        const int first = gap_theta < theta_of(k) ? k : k + 1;  // the first sample after the gap
+        process_run(b, first, first + n - 1, gap_theta, gap_margin, gap_theta + 2.0 * pi, gap_margin);
+      }
       continue;
     }
     // Runs of consecutive existing samples, starting after the gap, once round; islands
@@ -402,15 +522,7 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
       }
       int last = j;
       while (last + 1 <= gap + n && at(last + 1).exists[b]) ++last;
-      run.clear();
-      const std::vector<Point> front =
-          branch_end(search, b, theta_of(j), at(j).margin[b], theta_of(j - 1), at(j - 1).margin[b]);
-      run.insert(run.end(), front.begin(), front.end());
-      for (int k = j; k <= last; ++k) run.push_back({theta_of(k), at(k).value[b]});
-      std::vector<Point> back =
-          branch_end(search, b, theta_of(last), at(last).margin[b], theta_of(last + 1), at(last + 1).margin[b]);
-      run.insert(run.end(), back.rbegin(), back.rend());
-      scan(search, b, run, !front.empty(), !back.empty(), out);
+      process_run(b, j, last, theta_of(j - 1), at(j - 1).margin[b], theta_of(last + 1), at(last + 1).margin[b]);
       j = last + 1;
     }
   }
