@@ -116,7 +116,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
         const double lo = std::max(elbow[0], circle[0]);
         const double hi = std::min(elbow[1], circle[1]);
         if (lo <= hi) {
-          const Angles minus_q6 = subproblem3(w6, u6, v6, std::sqrt(std::max(0.0, 0.5 * (lo + hi))));
+          const Angles minus_q6 = subproblem3(w6, u6, v6, std::max(0.0, 0.5 * (lo + hi)));
           if (minus_q6.exists) {
             q6_candidates[q6_count++] = minus_q6.plus.inverse();
             q6_candidates[q6_count++] = minus_q6.minus.inverse();
@@ -131,7 +131,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
         const double q6_angle = q6.angle();
         const Eigen::Vector3d y = h * p4;
         const Eigen::Vector3d h_x4 = h.r * x4;
-        const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
+        const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).squaredNorm());
         if (!q3s.exists) continue;
         for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
           const CosSin q3 = l3 == 0 ? q3s.plus : q3s.minus;

@@ -16,6 +16,7 @@
 //     crosses zero, it brackets two roots, if it touches, it is a candidate itself.
 // Every root becomes a full q (q₄, q₅ by subproblem 1), is polished by Newton on the full pose
 // and kept only if forward kinematics reproduces the pose to 1e-10.
+#include <limits>
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
@@ -149,10 +150,11 @@ class OffsetWristSearch {
   Turning axis_4_in_3_;   // R(ω₃, q₃) ω₄
 };
 
-// Illinois regula falsi on [a, b] with f(a) f(b) < 0.
+// Illinois regula falsi on [a, b] with f(a) f(b) < 0, to 1e-10 rad: Newton on the full pose
+// (offer) takes the root from there to rounding.
 double refine_root(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
   int side = 0;
-  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-14; ++iteration) {
+  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-10; ++iteration) {
     double c = (a * fb - b * fa) / (fb - fa);
     if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
     double fc;
@@ -187,7 +189,10 @@ struct Point {
 };
 
 // Golden-section minimum of sign · f_b on [lo, hi]; false if the branch was left.
-bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best) {
+// `slope`: where given, stop as soon as even this slope could not carry f from the best point
+// to zero within the bracket (the bound that made the caller look, see zero_reaching_slope).
+bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best,
+              double slope = std::numeric_limits<double>::infinity()) {
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - ratio * (hi - lo);
   double x2 = lo + ratio * (hi - lo);
@@ -195,6 +200,7 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
   if (!search.evaluate(x1, branch, f1) || !search.evaluate(x2, branch, f2)) return false;
   for (int k = 0; k < 60 && hi - lo > 1e-10; ++k) {
     if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;  // crossed zero: two roots
+    if (std::min(sign * f1, sign * f2) > touch_tolerance + slope * (hi - lo)) break;  // cannot reach zero
     if (sign * f1 < sign * f2) {
       hi = x2;
       x2 = x1;
@@ -214,8 +220,9 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
 }
 
 // Whether f, of one sign at run[i] and run[i + 1], would reach zero between them if it kept the
-// slope it has on the neighbouring interval on either side (f turning back inside the interval).
-bool reaches_zero_by_slope(const std::vector<Point>& run, std::size_t i) {
+// slope it has on the neighbouring interval on either side (f turning back inside the interval):
+// that slope's magnitude if so, else 0.
+double zero_reaching_slope(const std::vector<Point>& run, std::size_t i) {
   const Point& p0 = run[i];
   const Point& p1 = run[i + 1];
   const double sign = p0.value < 0.0 ? -1.0 : 1.0;
@@ -223,14 +230,14 @@ bool reaches_zero_by_slope(const std::vector<Point>& run, std::size_t i) {
   if (i >= 1) {
     const Point& pm = run[i - 1];
     const double slope = sign * (p0.value - pm.value) / (p0.theta - pm.theta);
-    if (sign * p0.value + slope * width < 0.0) return true;
+    if (sign * p0.value + slope * width < 0.0) return -slope;
   }
   if (i + 2 < run.size()) {
     const Point& pp = run[i + 2];
     const double slope = sign * (pp.value - p1.value) / (pp.theta - p1.theta);
-    if (sign * p1.value - slope * width < 0.0) return true;
+    if (sign * p1.value - slope * width < 0.0) return slope;
   }
-  return false;
+  return 0.0;
 }
 
 // Roots of branch b along a run of points where it exists (θ increasing, the branch defined
@@ -247,12 +254,12 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
     if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
     if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0) {
       search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
-    } else if (p0.value != 0.0 && p1.value != 0.0 && reaches_zero_by_slope(run, i)) {
+    } else if (const double slope = p0.value != 0.0 && p1.value != 0.0 ? zero_reaching_slope(run, i) : 0.0) {
       // No sign change, but the slope f has next to the interval carries it through zero
       // inside: a narrow pair of roots (or a touching one) the spacing does not resolve.
       const double sign = p0.value < 0.0 ? -1.0 : 1.0;
       Point low;
-      if (minimise(search, b, sign, p0.theta, p1.theta, low)) {
+      if (minimise(search, b, sign, p0.theta, p1.theta, low, slope)) {
         if (sign * low.value < 0.0) {
           search.offer_root(refine_root(search, b, p0.theta, p0.value, low.theta, low.value), b, out);
           search.offer_root(refine_root(search, b, low.theta, low.value, p1.theta, p1.value), b, out);

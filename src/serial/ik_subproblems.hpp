@@ -136,14 +136,17 @@ inline double subproblem1(const Eigen::Vector3d& k, const Eigen::Vector3d& p, co
   return subproblem1_cs(k, p, q).angle();
 }
 
-//! Subproblem 3 (distance): θ with ‖R(k, θ) u − v‖ = δ, u and v relative to a point on the axis.
-inline Angles subproblem3(const Eigen::Vector3d& k, const Eigen::Vector3d& u, const Eigen::Vector3d& v, double delta) noexcept {
+//! Subproblem 3 (distance): θ with ‖R(k, θ) u − v‖² = δ², u and v relative to a point on the
+//! axis (the distance is given squared: the callers have it so, and it enters squared).
+inline Angles subproblem3(const Eigen::Vector3d& k, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                          double delta_squared) noexcept {
   const double ku = k.dot(u);
   const Eigen::Vector3d up = u - ku * k;
   const double a = v.dot(up);
   const double b = v.dot(k.cross(u));
-  const double c = 0.5 * (u.squaredNorm() + v.squaredNorm() - delta * delta) - ku * k.dot(v);
-  return solve_harmonic(a, b, c, u.norm() * v.norm() + 1e-300);
+  const double u2 = u.squaredNorm(), v2 = v.squaredNorm();
+  const double c = 0.5 * (u2 + v2 - delta_squared) - ku * k.dot(v);
+  return solve_harmonic(a, b, c, std::sqrt(u2 * v2) + 1e-300);
 }
 
 //! Subproblem 4 (projection, IK-Geo): θ with h · R(k, θ) p = d.
@@ -152,7 +155,7 @@ inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, co
   const double a = h.dot(p - kp * k);
   const double b = h.dot(k.cross(p));
   const double c = d - kp * k.dot(h);
-  return solve_harmonic(a, b, c, h.norm() * p.norm() + 1e-300);
+  return solve_harmonic(a, b, c, std::sqrt(h.squaredNorm() * p.squaredNorm()) + 1e-300);
 }
 
 //! Subproblem 2's two solutions (θ₁, θ₂) labelled by the sign of the out-of-plane component.
