@@ -140,10 +140,16 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
           const Motion e23 = joint_motion(chain, 1, q2) * e3;
           // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
           const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h_x4);
-          const Motion fk_from_1 = e23 * joint_motion(chain, 3, q4) * e56m;  // e₂ ⋯ e₆ M
+          const Motion e4 = joint_motion(chain, 3, q4);
+          // The check in link 1's frame: the tool origin e₂e₃e₄(e₅e₆M origin) against that of
+          // e₁⁻¹T, and R₂R₃R₄ against R_H = R(e₁⁻¹T) (R₅R₆R_M)ᵀ (‖R − R'‖_F is unchanged by a
+          // rotation on either side): the full pose error with one matrix product.
+          PoseError error;
+          error.position = (e23 * (e4 * e56m.t) - a_m.t).norm();
+          error.rotation = rotation_error(e23.r * e4.r, h.r);
           Vector6d q;
           q << q1_angle, q2.angle(), q3.angle(), q4.angle(), q5_angle, q6_angle;
-          offer(chain, pose, q, motion_error(fk_from_1, a_m), out);
+          offer(chain, pose, q, error, out);
         }
       }
     }

@@ -115,15 +115,20 @@ struct JointThen {
   }
 };
 
-//! Position and rotation error of the motion `t` against `target`. The rotation angle θ of
-//! R_targetᵀ R follows from ‖R − R_target‖_F = 2√2 sin(θ/2) (one asin, no quaternion).
+//! The rotation angle θ (rad) of targetᵀ r, from ‖r − target‖_F = 2√2 sin(θ/2) (one asin, no
+//! quaternion).
+inline double rotation_error(const Eigen::Matrix3d& r, const Eigen::Matrix3d& target) noexcept {
+  const double x = (r - target).norm() / (2.0 * std::sqrt(2.0));
+  // asin x = x + x³/6 + O(x⁵): for x < 1e-4 (every candidate near a solution) the first two
+  // terms are asin to rounding (the next one is 3x⁵/40 < 1e-17 x), without a libm call.
+  return 2.0 * (x < 1e-4 ? x + x * x * x / 6.0 : std::asin(std::min(1.0, x)));
+}
+
+//! Position (m) and rotation (rad) error of the motion `t` against `target`.
 inline PoseError motion_error(const Motion& t, const Motion& target) noexcept {
   PoseError e;
   e.position = (t.t - target.t).norm();
-  const double x = (t.r - target.r).norm() / (2.0 * std::sqrt(2.0));
-  // asin x = x + x³/6 + O(x⁵): for x < 1e-4 (every candidate near a solution) the first two
-  // terms are asin to rounding (the next one is 3x⁵/40 < 1e-17 x), without a libm call.
-  e.rotation = 2.0 * (x < 1e-4 ? x + x * x * x / 6.0 : std::asin(std::min(1.0, x)));
+  e.rotation = rotation_error(t.r, target.r);
   return e;
 }
 
