@@ -340,8 +340,8 @@ std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, do
   auto theta_at = [&](double u) { return in + (start - in) * u * u; };
   for (int k = 1; k < end_samples; ++k) {
     const double theta = theta_at(static_cast<double>(k) / end_samples);
-    double f;
-    if (search.evaluate(theta, b, f)) points.push_back({theta, f});
+    double value;
+    if (search.evaluate(theta, b, value)) points.push_back({theta, value});
   }
   // A pair of roots closer to the end than the first sub-sample (a touching pair next to the
   // tangency): f leaves the end towards zero and comes back. The slope g₁ at u = 0 (probed at
