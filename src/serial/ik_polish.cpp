@@ -37,8 +37,16 @@ PoseError error_of(const Posed& t, const Posed& target) {
   return e;
 }
 
-// Below this reciprocal condition number of J the Newton step is the minimum-norm one.
-constexpr double well_conditioned = 1e-6;
+// Below this ratio of the smallest to the largest pivot of J's LU the Newton step is the
+// minimum-norm one (a singular J has a zero pivot; the ratio is a cheap stand-in for the
+// reciprocal condition number, whose estimate costs more than the factorisation).
+constexpr double well_conditioned = 1e-5;
+
+// min |uᵢᵢ| / max |uᵢᵢ| of a partial-pivoting LU.
+double pivot_ratio(const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>>& lu) {
+  const auto pivots = lu.matrixLU().diagonal().cwiseAbs();
+  return pivots.minCoeff() / pivots.maxCoeff();
+}
 
 }  // namespace
 
@@ -74,7 +82,7 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
     // Away from singular q the step is J⁻¹ e (LU); near them the minimum-norm least-squares
     // step, which leaves the free combination alone.
     lu.compute(jacobian);
-    if (lu.rcond() > well_conditioned) {
+    if (pivot_ratio(lu) > well_conditioned) {
       q += lu.solve(residual);
     } else {
       minimum_norm.setThreshold(1e-10);
