@@ -2,6 +2,7 @@
 // entry points, which check the chain, recognise or check its family and run its solver.
 #include "dispkin/serial/analytic_ik.hpp"
 
+#include <array>
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
@@ -24,6 +25,43 @@ namespace {
 // from DH tables or URDFs are exact to rounding; a family that fits only to 1e-9 still gives
 // exact solutions because every candidate is polished on the true chain.
 constexpr double family_tolerance = 1e-9;
+
+// The chain last analysed on this thread (its axes and points, bit for bit) and its geometry.
+// The real-time path solves pose after pose of one chain, and checking and analysing it again
+// cost as much as a tenth of a closed-form call. A chain with a NaN never matches (NaN ≠ NaN),
+// so it is always checked, and refused.
+struct AnalysedChain {
+  std::array<double, 36> key{};
+  bool valid = false;
+  detail::ChainGeometry geometry;
+};
+
+bool same_axes(const RevoluteChain& chain, const std::array<double, 36>& key) {
+  for (std::size_t i = 0; i < 6; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!(chain.axes[i](j) == key[6 * i + static_cast<std::size_t>(j)] &&
+            chain.points[i](j) == key[6 * i + 3 + static_cast<std::size_t>(j)]))
+        return false;
+  return true;
+}
+
+// validate_chain + analyse with family_tolerance, from the thread's cache when the chain is the
+// one analysed last.
+const detail::ChainGeometry& checked_geometry(const RevoluteChain& chain) {
+  thread_local AnalysedChain last;
+  if (last.valid && chain.axes.size() == 6 && chain.points.size() == 6 && same_axes(chain, last.key))
+    return last.geometry;
+  last.valid = false;
+  detail::validate_chain(chain);
+  last.geometry = detail::analyse(chain, family_tolerance);
+  for (std::size_t i = 0; i < 6; ++i)
+    for (int j = 0; j < 3; ++j) {
+      last.key[6 * i + static_cast<std::size_t>(j)] = chain.axes[i](j);
+      last.key[6 * i + 3 + static_cast<std::size_t>(j)] = chain.points[i](j);
+    }
+  last.valid = true;
+  return last.geometry;
+}
 
 // Throws unless `family` fits the chain (and is not general).
 void require_family(const detail::ChainGeometry& g, IkFamily family) {
@@ -65,8 +103,7 @@ IkFamily recognise(const RevoluteChain& chain, double tolerance) {
 
 void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose, IkSolutionSet& out) {
   out.count = 0;
-  detail::validate_chain(chain);
-  const detail::ChainGeometry g = detail::analyse(chain, family_tolerance);
+  const detail::ChainGeometry& g = checked_geometry(chain);
   require_family(g, family);
   if (family == IkFamily::spherical_wrist) {
     detail::spherical_wrist_inverse(chain, g, pose, out);
@@ -90,8 +127,7 @@ void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& 
 std::vector<Eigen::VectorXd> offset_wrist_inverse(const RevoluteChain& chain, const Posed& pose,
                                                   const OffsetWristOptions& options) {
   require(options.samples >= 16, "options.samples", options.samples, "must be at least 16");
-  detail::validate_chain(chain);
-  const detail::ChainGeometry g = detail::analyse(chain, family_tolerance);
+  const detail::ChainGeometry& g = checked_geometry(chain);
   require_family(g, IkFamily::offset_wrist);
   return detail::offset_wrist_search(chain, g, pose, options.samples);
 }

@@ -13,33 +13,45 @@ inline Eigen::Vector3d normal_to(const Eigen::Vector3d& k) {
   return k.cross(seed).normalized();
 }
 
+// Both closed forms work on cosines and sines end to end: every joint's motion is composed from
+// the (cos, sin) its subproblem gives, so is the forward kinematics that checks a candidate,
+// and only the returned joint values take an atan2. The check compares e₁ ⋯ e₆ M with the
+// target seen from a link the candidates of a branch share, e.g. e_k⁻¹ ⋯ e₁⁻¹ T against
+// e_{k+1} ⋯ e₆ M: a rigid motion applied to both sides changes neither the distance of the
+// origins nor ‖R − R_target‖_F, so this is the full pose error, at a fraction of the products.
+
 void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                              IkSolutionSet& out) {
-  const Posed g = pose * chain.tip_at_zero.inverse();
-  const Eigen::Matrix3d g_rotation = g.rotation();
+  const Motion target = Motion::of(pose);
+  const Motion m = Motion::of(chain.tip_at_zero);
+  const Motion g = target * m.inverse();
+  const JointThen tool(chain, 5, m);  // e₆(q₆) M
   const Eigen::Vector3d& c = geometry.wrist_centre;
   const Eigen::Vector3d& w4 = chain.axes[3];
   const Eigen::Vector3d& w5 = chain.axes[4];
   const Eigen::Vector3d& w6 = chain.axes[5];
   const Eigen::Vector3d x6 = normal_to(w6);
+  const Eigen::Vector3d g_w6 = g.r * w6, g_x6 = g.r * x6;
   // e₄e₅e₆ fix the wrist centre: e₁e₂e₃ c = G c.
   const PositionSolutions arm = solve_position(chain, geometry, c, g * c);
   for (std::size_t b = 0; b < 4; ++b) {
     if (!arm.exists[b]) continue;
-    const Eigen::Vector3d t = arm.angles(b);
+    const std::array<CosSin, 3>& t = arm.q[b];
+    const Motion e123 = joint_motion(chain, 0, t[0]) * joint_motion(chain, 1, t[1]) * joint_motion(chain, 2, t[2]);
     // R₄R₅R₆ = (R₁R₂R₃)ᵀ R_G: R₄R₅ ω₆ = R_w ω₆ (subproblem 2), then q₆ (subproblem 1).
-    const Eigen::Matrix3d r123 = rotation(chain.axes[0], t(0)) * rotation(chain.axes[1], t(1)) * rotation(chain.axes[2], t(2));
-    const Eigen::Matrix3d r_wrist = r123.transpose() * g_rotation;
-    const AnglePairs q45 = subproblem2(w4, w5, w6, r_wrist * w6);
+    const AnglePairs q45 = subproblem2(w4, w5, w6, e123.r.transpose() * g_w6);
     if (!q45.exists) continue;
+    const Eigen::Vector3d arm_angles = arm.angles(b);
+    const Eigen::Vector3d x6_target = e123.r.transpose() * g_x6;
+    const Motion target_from_3 = e123.inverse() * target;  // e₃⁻¹e₂⁻¹e₁⁻¹ T
     for (std::size_t l = 0; l < (q45.single ? 1u : 2u); ++l) {
-      const double q4 = q45.first[l].angle();
-      const double q5 = q45.second[l].angle();
-      const Eigen::Matrix3d r45 = rotation(w4, q4) * rotation(w5, q5);
-      const double q6 = subproblem1(w6, x6, r45.transpose() * r_wrist * x6);
+      const Motion e4 = joint_motion(chain, 3, q45.first[l]);
+      const Motion e5 = joint_motion(chain, 4, q45.second[l]);
+      const CosSin q6 = subproblem1_cs(w6, x6, e5.r.transpose() * (e4.r.transpose() * x6_target));
+      const Motion fk_from_3 = e4 * e5 * tool.at(q6);  // e₄e₅e₆ M
       Vector6d q;
-      q << t, q4, q5, q6;
-      offer(chain, pose, q, out);
+      q << arm_angles, q45.first[l].angle(), q45.second[l].angle(), q6.angle();
+      offer(chain, pose, q, motion_error(fk_from_3, target_from_3), out);
     }
   }
 }
@@ -47,8 +59,10 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
 bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                             IkSolutionSet& out) {
   bool near_singular = false;
-  const Posed g = pose * chain.tip_at_zero.inverse();
-  const Eigen::Matrix3d g_rotation = g.rotation();
+  const Motion target = Motion::of(pose);
+  const Motion m = Motion::of(chain.tip_at_zero);
+  const Motion g = target * m.inverse();
+  const JointThen tool(chain, 5, m);  // e₆(q₆) M
   const Eigen::Vector3d& w1 = chain.axes[0];
   const Eigen::Vector3d& w2 = chain.axes[1];
   const Eigen::Vector3d& w3 = chain.axes[2];
@@ -59,35 +73,38 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   const Eigen::Vector3d& p2 = chain.points[1];
   const Eigen::Vector3d& p3 = chain.points[2];
   const Eigen::Vector3d& p4 = chain.points[3];
+  const Eigen::Vector3d& p6 = chain.points[5];
   const Eigen::Vector3d& c = geometry.point_56;
   const Eigen::Vector3d x4 = normal_to(w4);
   // e₂e₃e₄ keep the component along ω₂, e₅e₆ fix c = axes 5 ∩ 6: ω₂ · e₁⁻¹ G c = ω₂ · c.
   const Angles q1s = subproblem4(w2, w1, g * c - p1, w2.dot(c - p1));
   if (!q1s.exists) return false;
   for (int l1 = 0; l1 < (q1s.single() ? 1 : 2); ++l1) {
-    const double q1 = -(l1 == 0 ? q1s.plus : q1s.minus).angle();
-    const Eigen::Matrix3d r1 = rotation(w1, q1);
+    const CosSin q1 = (l1 == 0 ? q1s.plus : q1s.minus).inverse();  // the subproblem's angle is −q₁
+    const Motion e1 = joint_motion(chain, 0, q1);
+    const Motion a_m = e1.inverse() * target;  // e₁⁻¹ G M = e₂ ⋯ e₆ M
+    const Eigen::Vector3d r1_w2 = e1.r * w2;
+    const double q1_angle = q1.angle();
     // Orientation along ω₂: ω₂ᵀ R₅ ω₆ = (R₁ ω₂)ᵀ R_G ω₆ (subproblem 4 in q₅).
-    const Angles q5s = subproblem4(w2, w5, w6, (r1 * w2).dot(g_rotation * w6));
+    const Angles q5s = subproblem4(w2, w5, w6, r1_w2.dot(g.r * w6));
     if (!q5s.exists) continue;
     for (int l5 = 0; l5 < (q5s.single() ? 1 : 2); ++l5) {
-      const double q5 = (l5 == 0 ? q5s.plus : q5s.minus).angle();
+      const CosSin q5 = l5 == 0 ? q5s.plus : q5s.minus;
+      const Motion e5 = joint_motion(chain, 4, q5);
+      const double q5_angle = q5.angle();
       // R₆ᵀ R₅ᵀ ω₂ = R_Gᵀ R₁ ω₂ (subproblem 1 in −q₆).
-      const Eigen::Vector3d u = rotate(w5, -q5, w2);
-      const double q6 = -subproblem1(w6, u, g_rotation.transpose() * (r1 * w2));
+      const Eigen::Vector3d u = e5.r.transpose() * w2;
+      std::array<CosSin, 3> q6_candidates{{subproblem1_cs(w6, u, g.r.transpose() * r1_w2).inverse(), {}, {}}};
+      std::size_t q6_count = 1;
       // Wrist singularity (R₅ᵀω₂ ∥ ω₆: axes 2, 3, 4, 6 parallel): q₆ and q₂ + q₃ + q₄ share one
       // planar motion, so q₆ is (nearly) free, but only an interval of q₆ leaves the elbow in
       // reach — a tiny one near the stretched elbow. Besides subproblem 1's value, take the q₆
       // that puts the elbow distance ‖H p₄ − p₂‖ mid-way in the range both the elbow (q₃) and
       // the circle of q₆ allow (subproblem 3 in −q₆); Newton then settles each on the pose.
-      std::array<double, 3> q6_candidates{{q6, 0.0, 0.0}};
-      std::size_t q6_count = 1;
       if (u.cross(w6).norm() < 1e-6) {
         near_singular = true;
-        const Posed a = rotation_about_line(w1, p1, -q1) * g;
-        const Eigen::Vector3d& p6 = chain.points[5];
-        const Eigen::Vector3d u6 = rotation_about_line(w5, chain.points[4], -q5) * p4 - p6;
-        const Eigen::Vector3d v6 = a.inverse() * p2 - p6;
+        const Eigen::Vector3d u6 = e5.inverse() * p4 - p6;
+        const Eigen::Vector3d v6 = (e1.inverse() * g).inverse() * p2 - p6;  // (e₁⁻¹ G)⁻¹ p₂
         // ‖R(k, θ) u − v‖² ranges over base ± 2 ‖u⊥‖ ‖v⊥‖.
         auto range = [](const Eigen::Vector3d& k, const Eigen::Vector3d& uu, const Eigen::Vector3d& vv) {
           const double base = uu.squaredNorm() + vv.squaredNorm() - 2.0 * k.dot(uu) * k.dot(vv);
@@ -99,32 +116,40 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
         const double lo = std::max(elbow[0], circle[0]);
         const double hi = std::min(elbow[1], circle[1]);
         if (lo <= hi) {
-          const Angles minus_q6 = subproblem3(w6, u6, v6, std::sqrt(std::max(0.0, 0.5 * (lo + hi))));
+          const Angles minus_q6 = subproblem3(w6, u6, v6, std::max(0.0, 0.5 * (lo + hi)));
           if (minus_q6.exists) {
-            q6_candidates[q6_count++] = -minus_q6.plus.angle();
-            q6_candidates[q6_count++] = -minus_q6.minus.angle();
+            q6_candidates[q6_count++] = minus_q6.plus.inverse();
+            q6_candidates[q6_count++] = minus_q6.minus.inverse();
           }
         }
       }
       for (std::size_t k6 = 0; k6 < q6_count; ++k6) {
-        const double q6k = q6_candidates[k6];
+        const CosSin q6 = q6_candidates[k6];
+        const Motion e56m = e5 * tool.at(q6);  // e₅e₆M
         // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄; e₄ fixes p₄, so e₂e₃ p₄ = H p₄: subproblems 3 and 1.
-        const Posed h = rotation_about_line(w1, p1, -q1) * g * rotation_about_line(w6, chain.points[5], -q6k) *
-                        rotation_about_line(w5, chain.points[4], -q5);
+        const Motion h = a_m * e56m.inverse();
+        const double q6_angle = q6.angle();
         const Eigen::Vector3d y = h * p4;
-        const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).norm());
+        const Eigen::Vector3d h_x4 = h.r * x4;
+        const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).squaredNorm());
         if (!q3s.exists) continue;
-        const Eigen::Matrix3d h_rotation = h.rotation();
         for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {
-          const double q3 = (l3 == 0 ? q3s.plus : q3s.minus).angle();
-          const Eigen::Vector3d y3 = rotate(w3, q3, p4 - p3) + p3;
-          const double q2 = subproblem1(w2, y3 - p2, y - p2);
+          const CosSin q3 = l3 == 0 ? q3s.plus : q3s.minus;
+          const Motion e3 = joint_motion(chain, 2, q3);
+          const CosSin q2 = subproblem1_cs(w2, e3 * p4 - p2, y - p2);
+          const Motion e23 = joint_motion(chain, 1, q2) * e3;
           // R₄ = R₃ᵀ R₂ᵀ R_H about ω₄.
-          const Eigen::Matrix3d r4 = rotation(w3, -q3) * rotation(w2, -q2) * h_rotation;
-          const double q4 = subproblem1(w4, x4, r4 * x4);
+          const CosSin q4 = subproblem1_cs(w4, x4, e23.r.transpose() * h_x4);
+          const Motion e4 = joint_motion(chain, 3, q4);
+          // The check in link 1's frame: the tool origin e₂e₃e₄(e₅e₆M origin) against that of
+          // e₁⁻¹T, and R₂R₃R₄ against R_H = R(e₁⁻¹T) (R₅R₆R_M)ᵀ (‖R − R'‖_F is unchanged by a
+          // rotation on either side): the full pose error with one matrix product.
+          PoseError error;
+          error.position = (e23 * (e4 * e56m.t) - a_m.t).norm();
+          error.rotation = rotation_error(e23.r * e4.r, h.r);
           Vector6d q;
-          q << q1, q2, q3, q4, q5, q6k;
-          offer(chain, pose, q, out);
+          q << q1_angle, q2.angle(), q3.angle(), q4.angle(), q5_angle, q6_angle;
+          offer(chain, pose, q, error, out);
         }
       }
     }

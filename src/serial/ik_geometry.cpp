@@ -149,7 +149,7 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     for (int l1 = 0; l1 < 2; ++l1) {
       const CosSin minus_q1 = l1 == 0 ? q1.plus : q1.minus;  // the subproblem's angle is −q₁
       const Eigen::Vector3d y1 = rotate(w1, minus_q1, y - p1) + p1;  // e₁⁻¹ y
-      const Angles q3 = subproblem3(w3, x - p3, p2 - p3, (y1 - p2).norm());
+      const Angles q3 = subproblem3(w3, x - p3, p2 - p3, (y1 - p2).squaredNorm());
       out.margin[static_cast<std::size_t>(2 * l1)] = out.margin[static_cast<std::size_t>(2 * l1 + 1)] =
           std::min(q1.margin, q3.margin);
       if (!q3.exists) continue;
@@ -164,7 +164,7 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
   } else if (geometry.layout == PositionLayout::intersecting_12) {
     // e₁e₂ fix the shoulder o: ‖e₃ x − o‖ = ‖y − o‖ (subproblem 3), then subproblem 2.
     const Eigen::Vector3d& o = geometry.shoulder;
-    const Angles q3 = subproblem3(w3, x - p3, o - p3, (y - o).norm());
+    const Angles q3 = subproblem3(w3, x - p3, o - p3, (y - o).squaredNorm());
     out.margin.fill(q3.margin);
     if (!q3.exists) return out;
     for (int l3 = 0; l3 < 2; ++l3) {

@@ -3,7 +3,9 @@
 // solution set.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include <Eigen/Core>
 
@@ -69,6 +71,67 @@ struct PoseError {
 };
 PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept;
 
+//! A rigid motion x ↦ R x + t held as a matrix and a vector: the closed forms compose the
+//! joints' motions from the cosines and sines their subproblems give, with no trigonometric
+//! function (a quaternion AngleAxis or a Rodrigues matrix from an angle needs sin and cos).
+struct Motion {
+  Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+
+  static Motion of(const Posed& pose) noexcept { return {pose.rotation(), pose.translation()}; }
+  EIGEN_ALWAYS_INLINE Eigen::Vector3d operator*(const Eigen::Vector3d& x) const noexcept { return r * x + t; }
+  EIGEN_ALWAYS_INLINE Motion operator*(const Motion& o) const noexcept { return {r * o.r, r * o.t + t}; }
+  EIGEN_ALWAYS_INLINE Motion inverse() const noexcept { return {r.transpose(), -(r.transpose() * t)}; }
+};
+
+//! The motion of joint i turned by θ (cosine and sine): x ↦ R(ωᵢ, θ)(x − pᵢ) + pᵢ.
+EIGEN_ALWAYS_INLINE Motion joint_motion(const RevoluteChain& chain, int i, const CosSin& angle) noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  Motion m;
+  m.r = rotation(chain.axes[k], angle);
+  m.t = chain.points[k] - m.r * chain.points[k];
+  return m;
+}
+
+//! e_i(θ) X for a fixed motion X as a function of (cos θ, sin θ). With
+//! R(ω, θ) = ωωᵀ + cos θ (I − ωωᵀ) + sin θ [ω]×, the motion x ↦ R (X x − p) + p splits into
+//! three fixed motions, so each evaluation is two scaled sums (no matrix product).
+struct JointThen {
+  Motion along, normal, cross;
+
+  JointThen(const RevoluteChain& chain, int i, const Motion& x) noexcept {
+    const auto k = static_cast<std::size_t>(i);
+    const Eigen::Vector3d& w = chain.axes[k];
+    const Eigen::Vector3d y = x.t - chain.points[k];
+    along.r = w * (w.transpose() * x.r);
+    along.t = w * w.dot(y) + chain.points[k];
+    normal.r = x.r - along.r;
+    normal.t = y - w * w.dot(y);
+    for (int j = 0; j < 3; ++j) cross.r.col(j) = w.cross(x.r.col(j));
+    cross.t = w.cross(y);
+  }
+  EIGEN_ALWAYS_INLINE Motion at(const CosSin& a) const noexcept {
+    return {along.r + a.c * normal.r + a.s * cross.r, along.t + a.c * normal.t + a.s * cross.t};
+  }
+};
+
+//! The rotation angle θ (rad) of targetᵀ r, from ‖r − target‖_F = 2√2 sin(θ/2) (one asin, no
+//! quaternion).
+inline double rotation_error(const Eigen::Matrix3d& r, const Eigen::Matrix3d& target) noexcept {
+  const double x = (r - target).norm() / (2.0 * std::sqrt(2.0));
+  // asin x = x + x³/6 + O(x⁵): for x < 1e-4 (every candidate near a solution) the first two
+  // terms are asin to rounding (the next one is 3x⁵/40 < 1e-17 x), without a libm call.
+  return 2.0 * (x < 1e-4 ? x + x * x * x / 6.0 : std::asin(std::min(1.0, x)));
+}
+
+//! Position (m) and rotation (rad) error of the motion `t` against `target`.
+inline PoseError motion_error(const Motion& t, const Motion& target) noexcept {
+  PoseError e;
+  e.position = (t.t - target.t).norm();
+  e.rotation = rotation_error(t.r, target.r);
+  return e;
+}
+
 //! Newton's method on the full 6-D pose error with the analytic space Jacobian of the
 //! product of exponentials (minimum-norm steps, so it also converges at singular q).
 //! Returns the final error; q is updated in place and wrapped to (−π, π].
@@ -77,18 +140,29 @@ PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, i
 //! Accept a candidate: polish it if its error exceeds `polish_above`, keep it if the error is
 //! then ≤ ik_pose_tolerance, and not if it repeats a kept one (all joints within
 //! ik_duplicate_tolerance mod 2π). `Store` has size(), operator[] and push(q).
+//! `error`: the pose error of q already measured (the closed forms measure it from the cosines
+//! and sines, to which q = atan2(s, c) agrees to an ulp — a pose difference of ~1e-16 m, far
+//! below the polish threshold); a polished q is measured again by pose_error.
 template <typename Store>
-void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, Store& store, double polish_above = 4e-15) {
+void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, PoseError error, Store& store,
+           double polish_above = 4e-15) {
   for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
-  PoseError e = pose_error(chain, q, target);
+  PoseError e = error;
   if (e.worst() > polish_above) e = polish(chain, target, q, 30);
   if (!(e.worst() <= ik_pose_tolerance)) return;
   for (int s = 0; s < store.size(); ++s) {
-    double gap = 0.0;
-    for (int i = 0; i < 6; ++i) gap = std::max(gap, std::abs(wrap_angle(q(i) - store[s](i))));
-    if (gap <= ik_duplicate_tolerance) return;
+    int i = 0;
+    while (i < 6 && std::abs(wrap_angle(q(i) - store[s](i))) <= ik_duplicate_tolerance) ++i;
+    if (i == 6) return;  // every joint agrees
   }
   store.push(q);
+}
+
+//! offer() measuring the pose error of q by forward kinematics.
+template <typename Store>
+void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, Store& store, double polish_above = 4e-15) {
+  for (int i = 0; i < 6; ++i) q(i) = wrap_angle(q(i));
+  offer(chain, target, q, pose_error(chain, q, target), store, polish_above);
 }
 
 }  // namespace detail

@@ -9,13 +9,25 @@
 // exists (its subproblem labels are fixed), and two branches meet where a subproblem reaches
 // its tangency, so:
 //   - sign changes between samples of one branch bracket roots;
-//   - a branch ending between samples is followed to its end by bisection; a sign change up to
-//     the end, or a value there near zero, gives a root (the partner branch, which ends at the
-//     same point with the same value, checks its own side);
-//   - a sampled local extremum of |f_b| that may touch zero is refined (golden section); if it
+//   - a branch ending between samples is followed to its end (regula falsi on the positioning
+//     margin, which is smooth there) and sampled from it uniformly in u = √(θ − θ_end), the
+//     variable in which it and its partner branch are one smooth function; a sign change up
+//     to the end, or a value there near zero, gives a root (the partner branch, which ends at
+//     the same point with the same value, checks its own side), and a slope at the end that
+//     heads for zero is followed to a root pair closer to the end than the first sub-sample;
+//   - a branch may also end and restart between two samples where it exists (a gap the samples
+//     straddle) or exist only between two where it does not (an island): a sampled extremum of
+//     the margin that may cross zero is refined (golden section) and the run split or the
+//     island followed;
+//   - a sampled local extremum of |f_b| that may touch zero, or an interval across which the
+//     neighbouring slope would carry f_b through zero, is refined (golden section); if it
 //     crosses zero, it brackets two roots, if it touches, it is a candidate itself.
+// The default 180 samples per turn recovered the original q in every one of 10⁵ random round
+// trips on the Jaco2 (benchmarks/RESULTS.md); each refinement above was added for a miss a
+// coarser sampling showed.
 // Every root becomes a full q (q₄, q₅ by subproblem 1), is polished by Newton on the full pose
 // and kept only if forward kinematics reproduces the pose to 1e-10.
+#include <limits>
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
@@ -40,44 +52,77 @@ struct Sample {
   std::array<double, 4> margin{};  // of the positioning stage (PositionSolutions::margin)
 };
 
+// A point or vector turning with q₆ = θ: a + cos θ b + sin θ c (R(k, ±θ) applied to a fixed
+// vector has this form), so evaluating it costs six multiplications.
+struct Turning {
+  Eigen::Vector3d a, b, c;
+  Eigen::Vector3d at(const CosSin& theta) const noexcept { return a + theta.c * b + theta.s * c; }
+};
+
 class OffsetWristSearch {
  public:
   OffsetWristSearch(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose)
       : chain_(chain), geometry_(geometry), pose_(pose), g_(pose * chain.tip_at_zero.inverse()),
-        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {}
+        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {
+    // The circle of w = axes 4 ∩ 5: G (R(ω₆, −θ)(w − p₆) + p₆), and R_G R(ω₆, −θ) ω₅, with
+    // R(k, −θ) d = (k·d) k + cos θ d⊥ − sin θ k × d.
+    const Eigen::Vector3d& k = chain.axes[5];
+    const Eigen::Vector3d& p6 = chain.points[5];
+    const Eigen::Vector3d d = geometry.point_45 - p6;
+    const Eigen::Vector3d& w5 = chain.axes[4];
+    wrist_point_ = {g_ * (k.dot(d) * k + p6), g_rotation_ * (d - k.dot(d) * k), -(g_rotation_ * k.cross(d))};
+    axis_5_ = {g_rotation_ * (k.dot(w5) * k), g_rotation_ * (w5 - k.dot(w5) * k), -(g_rotation_ * k.cross(w5))};
+    // R(ω₃, q₃) ω₄ in the same form (q₃ is a positioning angle).
+    const Eigen::Vector3d& w3 = chain.axes[2];
+    const Eigen::Vector3d& w4 = chain.axes[3];
+    axis_4_in_3_ = {w3.dot(w4) * w3, w4 - w3.dot(w4) * w3, w3.cross(w4)};
+  }
 
   Sample evaluate(double theta) const {
     Sample s;
-    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
-    const PositionSolutions arm = position(minus_theta);
+    const CosSin turn{std::cos(theta), std::sin(theta)};
+    const PositionSolutions arm = position(turn);
     s.margin = arm.margin;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);  // R_G R₆ᵀ ω₅
+    const Eigen::Vector3d v = axis_5_.at(turn);  // R_G R₆ᵀ ω₅
+    // f_b = ω₄ · (R₁R₂R₃)ᵀ v = (R₂R₃ω₄) · (R₁ᵀ v); branches with the same q₁ share R₁ᵀ v.
+    Eigen::Vector3d v1 = Eigen::Vector3d::Zero();
+    CosSin q1_of_v1{2.0, 0.0};  // none yet
     for (std::size_t b = 0; b < 4; ++b) {
       if (!arm.exists[b]) continue;
       s.exists[b] = true;
-      s.value[b] = chain_.axes[3].dot(back_through_arm(arm.q[b], v)) - cos_45_;
+      if (!(arm.q[b][0] == q1_of_v1)) {
+        q1_of_v1 = arm.q[b][0];
+        v1 = rotate(chain_.axes[0], q1_of_v1.inverse(), v);
+      }
+      s.value[b] = arm_axis_4(arm.q[b]).dot(v1) - cos_45_;
     }
     return s;
   }
 
-  // One branch only (refinement).
-  bool evaluate(double theta, std::size_t branch, double& value) const {
-    const CosSin minus_theta{std::cos(theta), -std::sin(theta)};
-    const PositionSolutions arm = position(minus_theta);
+  // One branch only (refinement). `margin`: the positioning margin of the branch there.
+  bool evaluate(double theta, std::size_t branch, double& value, double& margin) const {
+    const CosSin turn{std::cos(theta), std::sin(theta)};
+    const PositionSolutions arm = position(turn);
+    margin = arm.margin[branch];
     if (!arm.exists[branch]) return false;
-    const Eigen::Vector3d v = g_rotation_ * rotate(chain_.axes[5], minus_theta, chain_.axes[4]);
-    value = chain_.axes[3].dot(back_through_arm(arm.q[branch], v)) - cos_45_;
+    const Eigen::Vector3d v1 = rotate(chain_.axes[0], arm.q[branch][0].inverse(), axis_5_.at(turn));
+    value = arm_axis_4(arm.q[branch]).dot(v1) - cos_45_;
     return true;
+  }
+
+  bool evaluate(double theta, std::size_t branch, double& value) const {
+    double margin;
+    return evaluate(theta, branch, value, margin);
   }
 
   // The positioning margin of branch b (≥ 0 where it exists).
   double margin(double theta, std::size_t branch) const {
-    return position({std::cos(theta), -std::sin(theta)}).margin[branch];
+    return position({std::cos(theta), std::sin(theta)}).margin[branch];
   }
 
   // The full q at a root θ of branch b, offered to the solution list (polish, check, dedupe).
   void offer_root(double theta, std::size_t branch, SolutionList& out) const {
-    const PositionSolutions arm = position({std::cos(theta), -std::sin(theta)});
+    const PositionSolutions arm = position({std::cos(theta), std::sin(theta)});
     if (!arm.exists[branch]) return;
     const Eigen::Vector3d t = arm.angles(branch);
     const Eigen::Matrix3d r_rem = (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) *
@@ -95,17 +140,14 @@ class OffsetWristSearch {
   }
 
  private:
-  // The positioning stage for q₆ = θ, given cos θ and −sin θ.
-  PositionSolutions position(const CosSin& minus_theta) const {
-    const Eigen::Vector3d& p6 = chain_.points[5];
-    const Eigen::Vector3d w_target = g_ * (rotate(chain_.axes[5], minus_theta, geometry_.point_45 - p6) + p6);
-    return solve_position(chain_, geometry_, geometry_.point_45, w_target);
+  // The positioning stage for q₆ = θ.
+  PositionSolutions position(const CosSin& turn) const {
+    return solve_position(chain_, geometry_, geometry_.point_45, wrist_point_.at(turn));
   }
 
-  // (R₁R₂R₃)ᵀ v.
-  Eigen::Vector3d back_through_arm(const std::array<CosSin, 3>& t, const Eigen::Vector3d& v) const {
-    return rotate(chain_.axes[2], t[2].inverse(),
-                  rotate(chain_.axes[1], t[1].inverse(), rotate(chain_.axes[0], t[0].inverse(), v)));
+  // R₂R₃ ω₄ for the positioning angles t.
+  Eigen::Vector3d arm_axis_4(const std::array<CosSin, 3>& t) const {
+    return rotate(chain_.axes[1], t[1], axis_4_in_3_.at(t[2]));
   }
 
   const RevoluteChain& chain_;
@@ -114,12 +156,16 @@ class OffsetWristSearch {
   Posed g_;
   Eigen::Matrix3d g_rotation_;
   double cos_45_;
+  Turning wrist_point_;   // G (R(ω₆, −θ)(w − p₆) + p₆): where joints 1–3 must put w
+  Turning axis_5_;        // R_G R(ω₆, −θ) ω₅
+  Turning axis_4_in_3_;   // R(ω₃, q₃) ω₄
 };
 
-// Illinois regula falsi on [a, b] with f(a) f(b) < 0.
+// Illinois regula falsi on [a, b] with f(a) f(b) < 0, to 1e-10 rad: Newton on the full pose
+// (offer) takes the root from there to rounding.
 double refine_root(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
   int side = 0;
-  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-14; ++iteration) {
+  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-10; ++iteration) {
     double c = (a * fb - b * fa) / (fb - fa);
     if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
     double fc;
@@ -154,7 +200,10 @@ struct Point {
 };
 
 // Golden-section minimum of sign · f_b on [lo, hi]; false if the branch was left.
-bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best) {
+// `slope`: where given, stop as soon as even this slope could not carry f from the best point
+// to zero within the bracket (the bound that made the caller look, see zero_reaching_slope).
+bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, double lo, double hi, Point& best,
+              double slope = std::numeric_limits<double>::infinity()) {
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double x1 = hi - ratio * (hi - lo);
   double x2 = lo + ratio * (hi - lo);
@@ -162,6 +211,7 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
   if (!search.evaluate(x1, branch, f1) || !search.evaluate(x2, branch, f2)) return false;
   for (int k = 0; k < 60 && hi - lo > 1e-10; ++k) {
     if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;  // crossed zero: two roots
+    if (std::min(sign * f1, sign * f2) > touch_tolerance + slope * (hi - lo)) break;  // cannot reach zero
     if (sign * f1 < sign * f2) {
       hi = x2;
       x2 = x1;
@@ -180,6 +230,27 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
   return true;
 }
 
+// Whether f, of one sign at run[i] and run[i + 1], would reach zero between them if it kept the
+// slope it has on the neighbouring interval on either side (f turning back inside the interval):
+// that slope's magnitude if so, else 0.
+double zero_reaching_slope(const std::vector<Point>& run, std::size_t i) {
+  const Point& p0 = run[i];
+  const Point& p1 = run[i + 1];
+  const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+  const double width = p1.theta - p0.theta;
+  if (i >= 1) {
+    const Point& pm = run[i - 1];
+    const double slope = sign * (p0.value - pm.value) / (p0.theta - pm.theta);
+    if (sign * p0.value + slope * width < 0.0) return -slope;
+  }
+  if (i + 2 < run.size()) {
+    const Point& pp = run[i + 2];
+    const double slope = sign * (pp.value - p1.value) / (pp.theta - p1.theta);
+    if (sign * p1.value - slope * width < 0.0) return slope;
+  }
+  return 0.0;
+}
+
 // Roots of branch b along a run of points where it exists (θ increasing, the branch defined
 // between consecutive points): sign changes, exact zeros, and sampled extrema of |f| that may
 // touch or cross zero. `ends`: the first / last point is where the branch ends.
@@ -192,8 +263,22 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
     const Point& p0 = run[i];
     const Point& p1 = run[i + 1];
     if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
-    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0)
+    if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0) {
       search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
+    } else if (const double slope = p0.value != 0.0 && p1.value != 0.0 ? zero_reaching_slope(run, i) : 0.0) {
+      // No sign change, but the slope f has next to the interval carries it through zero
+      // inside: a narrow pair of roots (or a touching one) the spacing does not resolve.
+      const double sign = p0.value < 0.0 ? -1.0 : 1.0;
+      Point low;
+      if (minimise(search, b, sign, p0.theta, p1.theta, low, slope)) {
+        if (sign * low.value < 0.0) {
+          search.offer_root(refine_root(search, b, p0.theta, p0.value, low.theta, low.value), b, out);
+          search.offer_root(refine_root(search, b, low.theta, low.value, p1.theta, p1.value), b, out);
+        } else if (sign * low.value <= touch_tolerance) {
+          search.offer_root(low.theta, b, out);
+        }
+      }
+    }
     if (i == 0) continue;
     // A sampled extremum of |f| at p0 that a parabola through its neighbours brings near zero.
     const Point& pm = run[i - 1];
@@ -211,31 +296,125 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
   }
 }
 
-// The end of branch b between `in` (where it exists, value f_in) and `outside`, by bisection;
+// The end of branch b between `in` (where it exists) and `outside` (where it does not);
 // returns the graded sub-samples from the end towards `in` (excluding `in`), end first.
-std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
-  double f_in = 0.0;
+// The end is where the positioning margin of the branch reaches −tangency_slack. The margin is
+// smooth through the end (f_b is not: it behaves like a square root there), so regula falsi on
+// it (Illinois-weighted) needs a handful of evaluations where bisection needs ~40; every
+// fourth step bisects, so that a margin with a kink (a minimum of two subproblems' margins)
+// still brackets the end at least as fast as bisection.
+// `m_in`, `m_out`: the margins at `in` and `outside` (from the sample table).
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double m_in, double outside,
+                              double m_out) {
   const double start = in;
-  while (std::abs(outside - in) > 1e-14) {
-    const double mid = 0.5 * (in + outside);
-    double f;
-    if (search.evaluate(mid, b, f)) {
+  double f_in = 0.0, f = 0.0;
+  m_in += tangency_slack;  // ≥ 0 inside, < 0 outside (unless the branch ends by degeneracy)
+  m_out += tangency_slack;
+  int side = 0;
+  for (int step = 0; step < 200 && std::abs(outside - in) > 1e-14; ++step) {
+    double mid = 0.5 * (in + outside);
+    if (step % 4 != 3 && m_in >= 0.0 && m_out < 0.0) {
+      const double t = in + (outside - in) * (m_in / (m_in - m_out));
+      if (t > std::min(in, outside) && t < std::max(in, outside)) mid = t;
+    }
+    double m;
+    if (search.evaluate(mid, b, f, m)) {
       in = mid;
       f_in = f;
+      m_in = m + tangency_slack;
+      if (side == 1) m_out *= 0.5;
+      side = 1;
     } else {
       outside = mid;
+      m_out = m + tangency_slack;
+      if (side == -1) m_in *= 0.5;
+      side = -1;
     }
   }
   std::vector<Point> points;
   if (in == start) return points;  // the sample itself is the end (to rounding)
   points.push_back({in, f_in});
+  // Sub-samples uniform in u = √((θ − θ_end) / (θ_start − θ_end)): the branch and its partner
+  // (the other label of the subproblem that reaches its tangency) are one smooth function
+  // g(±u), f_b ≈ f_end + g₁ u + g₂ u².
+  auto theta_at = [&](double u) { return in + (start - in) * u * u; };
   for (int k = 1; k < end_samples; ++k) {
-    const double s = static_cast<double>(k) / end_samples;
-    const double theta = in + (start - in) * s * s;
-    double f;
-    if (search.evaluate(theta, b, f)) points.push_back({theta, f});
+    const double theta = theta_at(static_cast<double>(k) / end_samples);
+    double value;
+    if (search.evaluate(theta, b, value)) points.push_back({theta, value});
+  }
+  // A pair of roots closer to the end than the first sub-sample (a touching pair next to the
+  // tangency): f leaves the end towards zero and comes back. The slope g₁ at u = 0 (probed at
+  // u = 1e-3) and the first sub-sample give the model's extremum; where it may reach zero, a
+  // golden-section search finds it and the run gets that point, so that the scan brackets both
+  // roots.
+  const double u1 = 1.0 / end_samples;
+  const double u_probe = 1e-3;
+  double f_probe = 0.0;
+  if (points.size() >= 2 && points[1].theta == theta_at(u1) && f_in != 0.0 &&
+      search.evaluate(theta_at(u_probe), b, f_probe)) {
+    const double sign = f_in < 0.0 ? -1.0 : 1.0;
+    const double h0 = sign * f_in;                                  // > 0
+    const double h1 = sign * (f_probe - f_in) / u_probe;            // slope of |f| in u
+    const double h2 = (sign * points[1].value - h0 - h1 * u1) / (u1 * u1);
+    const bool heads_to_zero = h1 < 0.0;
+    const double u_min = h2 > 0.0 ? -h1 / (2.0 * h2) : u1;
+    const double h_min = h2 > 0.0 ? h0 - h1 * h1 / (4.0 * h2) : h0 + h1 * u1 + h2 * u1 * u1;
+    if (heads_to_zero && u_min <= u1 && h_min < 0.5 * h0) {
+      Point low;
+      if (minimise(search, b, sign, std::min(in, points[1].theta), std::max(in, points[1].theta), low) &&
+          low.theta != in && low.theta != points[1].theta)
+        points.insert(points.begin() + 1, low);
+    }
   }
   return points;
+}
+
+// branch_end() measuring the margins at both points first.
+std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, double in, double outside) {
+  return branch_end(search, b, in, search.margin(in, b), outside, search.margin(outside, b));
+}
+
+// A gap the samples straddle: branch b exists at the samples t₋₁, t₀, t₁ but its margin has a
+// sampled minimum at t₀ that a parabola brings near zero. Golden-section minimisation of the
+// margin looks for a θ in (t₋₁, t₁) where the branch does not exist; true with that θ and its
+// margin if there is one (the run is then split there).
+bool straddled_gap(const OffsetWristSearch& search, std::size_t b, double lo, double hi, double& theta,
+                   double& margin) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - ratio * (hi - lo);
+  double x2 = lo + ratio * (hi - lo);
+  double f = 0.0, m1 = 0.0, m2 = 0.0;
+  if (!search.evaluate(x1, b, f, m1)) {
+    theta = x1, margin = m1;
+    return true;
+  }
+  if (!search.evaluate(x2, b, f, m2)) {
+    theta = x2, margin = m2;
+    return true;
+  }
+  for (int k = 0; k < 80 && hi - lo > 1e-13; ++k) {
+    if (m1 < m2) {
+      hi = x2;
+      x2 = x1;
+      m2 = m1;
+      x1 = hi - ratio * (hi - lo);
+      if (!search.evaluate(x1, b, f, m1)) {
+        theta = x1, margin = m1;
+        return true;
+      }
+    } else {
+      lo = x1;
+      x1 = x2;
+      m1 = m2;
+      x2 = lo + ratio * (hi - lo);
+      if (!search.evaluate(x2, b, f, m2)) {
+        theta = x2, margin = m2;
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 // An island: branch b absent at the samples t₋₁, t₀, t₁ but with a sampled maximum of its
@@ -291,16 +470,60 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
 
   SolutionList out;
   std::vector<Point> run;
+  // A sampled minimum of the margin of branch b at sample k (existing, as its neighbours) that a
+  // parabola brings near zero: a gap between the samples may hide there.
+  auto dip_at = [&](std::size_t b, int k) {
+    const double mm = at(k - 1).margin[b], m0 = at(k).margin[b], mp = at(k + 1).margin[b];
+    return m0 <= mm && m0 <= mp && m0 < 4.0 * ((mm - m0) + (mp - m0));
+  };
+  // The existing samples first … last of branch b, with the branch absent at `before` (margin
+  // m_before) and at `after` (margin m_after): split at the gaps the samples straddle, each
+  // piece followed to its ends and scanned.
+  auto process_run = [&](std::size_t b, int first, int last, double before, double m_before, double after,
+                         double m_after) {
+    int piece = first;
+    for (int k = first; k <= last; ++k) {
+      double gap_theta = 0.0, gap_margin = 0.0;
+      const bool gap_found = k > piece && k < last && dip_at(b, k) &&
+                             straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin);
+      if (!gap_found && k < last) continue;
+      const int right = !gap_found ? last : (gap_theta < theta_of(k) ? k - 1 : k);
+      run.clear();
+      const std::vector<Point> front = branch_end(search, b, theta_of(piece), at(piece).margin[b], before, m_before);
+      run.insert(run.end(), front.begin(), front.end());
+      for (int i = piece; i <= right; ++i) run.push_back({theta_of(i), at(i).value[b]});
+      const std::vector<Point> back = branch_end(search, b, theta_of(right), at(right).margin[b],
+                                                 gap_found ? gap_theta : after, gap_found ? gap_margin : m_after);
+      run.insert(run.end(), back.rbegin(), back.rend());
+      scan(search, b, run, !front.empty(), !back.empty(), out);
+      if (!gap_found) break;
+      piece = right + 1;
+      before = gap_theta;
+      m_before = gap_margin;
+      k = piece;  // the loop's ++k then looks at piece + 1 first
+    }
+  };
   for (std::size_t b = 0; b < 4; ++b) {
     int gap = -1;  // a sample where the branch does not exist
     for (int j = 0; j < n && gap < 0; ++j)
       if (!at(j).exists[b]) gap = j;
     if (gap < 0) {
-      // The branch exists all the way round: one periodic run (two samples repeated past the
-      // turn so that the wrap-around interval and extremum are scanned too).
-      run.clear();
-      for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
-      scan(search, b, run, false, false, out);
+      // The branch exists at every sample: one periodic run, unless it has a gap the samples
+      // straddle, from which it is then followed once round.
+      double gap_theta = 0.0, gap_margin = 0.0;
+      int k = 0;
+      while (k < n && !(dip_at(b, k) && straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin)))
+        ++k;
+      if (k == n) {
+        // Two samples repeated past the turn so that the wrap-around interval and extremum are
+        // scanned too.
+        run.clear();
+        for (int j = 0; j < n + 2; ++j) run.push_back({theta_of(j), at(j).value[b]});
+        scan(search, b, run, false, false, out);
+      } else {
+        const int first = gap_theta < theta_of(k) ? k : k + 1;  // the first sample after the gap
+        process_run(b, first, first + n - 1, gap_theta, gap_margin, gap_theta + 2.0 * pi, gap_margin);
+      }
       continue;
     }
     // Runs of consecutive existing samples, starting after the gap, once round; islands
@@ -317,13 +540,7 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
       }
       int last = j;
       while (last + 1 <= gap + n && at(last + 1).exists[b]) ++last;
-      run.clear();
-      const std::vector<Point> front = branch_end(search, b, theta_of(j), theta_of(j - 1));
-      run.insert(run.end(), front.begin(), front.end());
-      for (int k = j; k <= last; ++k) run.push_back({theta_of(k), at(k).value[b]});
-      std::vector<Point> back = branch_end(search, b, theta_of(last), theta_of(last + 1));
-      run.insert(run.end(), back.rbegin(), back.rend());
-      scan(search, b, run, !front.empty(), !back.empty(), out);
+      process_run(b, j, last, theta_of(j - 1), at(j - 1).margin[b], theta_of(last + 1), at(last + 1).margin[b]);
       j = last + 1;
     }
   }

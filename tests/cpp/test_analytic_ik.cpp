@@ -199,8 +199,8 @@ TEST(AnalyticIk, SolutionCountsMatchEaik) {
   EXPECT_EQ(checked, 1000);  // 200 poses for each of the five robots EAIK decomposes
 }
 
-// EAIK has no decomposition for the Jaco2's offset wrist: the default search (360 samples)
-// must find exactly what a ten times denser search finds.
+// EAIK has no decomposition for the Jaco2's offset wrist: the default search (180 samples)
+// must find exactly what a twenty times denser search finds.
 TEST(AnalyticIk, OffsetWristSearchAgreesWithADenserSearch) {
   const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
   testing::Random random(621);
