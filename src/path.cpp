@@ -139,9 +139,13 @@ void Path::append(Section section) {
 }
 
 std::vector<double> Path::section_lengths(const MetricSetd& set, std::optional<double> system_velocity) const {
+  set.require_well_formed();
+  detail::require_system_velocity(system_velocity);
+  // The groups' weights and reaches are per path: once, not once per section.
+  detail::GroupFactors factors(set, system_velocity);
   std::vector<double> lengths;
   lengths.reserve(sections_.size());
-  for (const Section& s : sections_) lengths.push_back(section_length(s, set, system_velocity));
+  for (const Section& s : sections_) lengths.push_back(detail::section_bounds(s, factors).length);
   return lengths;
 }
 
@@ -178,6 +182,19 @@ double LinSection::acceleration_bound(const MetricSetd& set) const {
   }
   const double speed = ((end * pivot) - (start * pivot)).norm();
   return set_acceleration_bound(set, pivot, pivot_middle, {speed, 0.0, rotation_angle(start, end), 0.0});
+}
+
+detail::SectionBounds LinSection::bounds(const detail::GroupFactors& factors) const {
+  return {length(factors.set(), factors.system_velocity()), acceleration_bound(factors.set())};
+}
+
+detail::SectionBounds detail::section_bounds(const Section& section, GroupFactors& factors) {
+  return std::visit(
+      [&](const auto& s) {
+        factors.use_pivot(s.pivot);
+        return s.bounds(factors);
+      },
+      section);
 }
 
 double ArcSection::acceleration_bound(const MetricSetd& set) const {

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -58,6 +59,23 @@ inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept;
 
 namespace detail {
 
+//! exp(φ) as a unit quaternion and J_r(φ) u, from one sine/cosine pair of θ/2 (θ = |φ|):
+//! sin θ = 2 sin(θ/2) cos(θ/2) serves J_r's C(θ). The series branches are those of
+//! quaternion_exp, coefficient_b and coefficient_c.
+inline void exp_and_right_jacobian(const Eigen::Vector3d& phi, const Eigen::Vector3d& u, Eigen::Quaterniond& exp_phi,
+                                   Eigen::Vector3d& jacobian_u) noexcept {
+  const double theta = phi.norm();
+  const double t2 = theta * theta;
+  const double s = std::sin(0.5 * theta), c = std::cos(0.5 * theta);
+  const double half_sine = theta < 1e-4 ? 0.5 - t2 / 48.0 : s / theta;
+  const double b = theta < 1e-4 ? 0.5 - t2 / 24.0 : 2.0 * half_sine * half_sine;
+  const double cc = theta < 1e-2 ? 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362880.0
+                                 : (theta - 2.0 * s * c) / (t2 * theta);
+  exp_phi = Eigen::Quaterniond(c, half_sine * phi.x(), half_sine * phi.y(), half_sine * phi.z());
+  const Eigen::Vector3d pu = phi.cross(u);
+  jacobian_u = u - b * pu + cc * phi.cross(pu);
+}
+
 //! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
 //! |ω| and angular acceleration |ω̇|.
 struct MotionBounds {
@@ -70,6 +88,60 @@ struct MotionBounds {
 //! `pivot_middle`, the pivot's world position at the middle of the section, plus |ċ|/2).
 inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& bounds);
+
+//! How far the group's body objects reach from the pivot (body coordinates): the largest
+//! |r − p| of its relative points and |c − p| + ρ of its relative spheres, 0 without any. It
+//! depends on the pivot only, not on the section.
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept;
+
+//! group_acceleration_bound with the group's relative_reach from the pivot already known.
+inline double group_acceleration_bound(const MetricGroup<double>& g, double reach, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& bounds) noexcept;
+
+//! What the section bounds need of each group of a set, once per path instead of once per
+//! section: its weight v_sys / v_g and its relative_reach from the pivot (recomputed only
+//! when a section has another pivot). Planning side; allocates.
+class GroupFactors {
+ public:
+  //! Throws like MetricGroup::weight (a group limit without a system velocity).
+  GroupFactors(const MetricSetd& set, std::optional<double> system_velocity)
+      : set_(&set), system_velocity_(system_velocity) {
+    weights_.reserve(set.groups().size());
+    for (const auto& g : set.groups()) {
+      weights_.push_back(g.weight(system_velocity));
+      max_weight_ = std::max(max_weight_, weights_.back());
+    }
+    reaches_.resize(weights_.size());
+  }
+
+  //! Makes reach() refer to `pivot` (body coordinates).
+  void use_pivot(const Eigen::Vector3d& pivot) noexcept {
+    if (has_pivot_ && pivot == pivot_) return;
+    for (std::size_t i = 0; i < reaches_.size(); ++i) reaches_[i] = relative_reach(set_->groups()[i], pivot);
+    pivot_ = pivot;
+    has_pivot_ = true;
+  }
+
+  const MetricSetd& set() const noexcept { return *set_; }
+  std::optional<double> system_velocity() const noexcept { return system_velocity_; }
+  double weight(std::size_t group) const noexcept { return weights_[group]; }
+  double max_weight() const noexcept { return max_weight_; }
+  double reach(std::size_t group) const noexcept { return reaches_[group]; }
+
+ private:
+  const MetricSetd* set_;
+  std::optional<double> system_velocity_;
+  std::vector<double> weights_, reaches_;
+  double max_weight_ = 0.0;
+  Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
+  bool has_pivot_ = false;
+};
+
+//! A section's length (weighted, see CurveSection::length) and acceleration bound
+//! (unweighted, see CurveSection::acceleration_bound), from one evaluation.
+struct SectionBounds {
+  double length, acceleration;
+};
 
 }  // namespace detail
 
@@ -99,13 +171,16 @@ struct CurveSection {
     return xi;
   }
 
-  //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and of exp.
+  //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and one
+  //! sine/cosine pair between exp and J_r.
   void at(double tau, Posed& pose_out, Twistd& twist_out) const noexcept {
     const double h = span();
     const double v = v0 + tau * h;
-    const Eigen::Vector3d phi = rotation.value(v);
-    const Eigen::Quaterniond q = (q0 * quaternion_exp(phi)).normalized();
-    const Eigen::Vector3d omega = h * right_jacobian_times(phi, rotation.first(v));
+    Eigen::Quaterniond turn;
+    Eigen::Vector3d omega;
+    detail::exp_and_right_jacobian(rotation.value(v), rotation.first(v), turn, omega);
+    omega *= h;
+    const Eigen::Quaterniond q = (q0 * turn).normalized();
     pose_out = Posed::unchecked(q, position.value(v) - q * pivot);
     twist_out = Twistd(q.conjugate() * (h * position.first(v)) - omega.cross(pivot), omega);
   }
@@ -127,6 +202,11 @@ struct CurveSection {
 
   //! Bounds over the section of |ċ|, |c̈|, |ω| ≤ |φ̇| and |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², per unit τ.
   detail::MotionBounds motion_bounds() const;
+
+  //! length() and acceleration_bound() together, sharing the motion bounds and the middle
+  //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
+  //! the groups' weights and reaches are per path).
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
 };
 
 // --- definitions (inline: the hexapod plugin uses curved sections without the umbrella) ---
@@ -160,6 +240,13 @@ inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept {
 
 inline double CurveSection::length(const MetricSetd& set, std::optional<double> system_velocity) const {
   set.require_well_formed();
+  detail::GroupFactors factors(set, system_velocity);
+  factors.use_pivot(pivot);
+  return bounds(factors).length;
+}
+
+inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
+  const MetricSetd& set = factors.set();
   const double m = 0.5 * (v0 + v1);
   const detail::MotionBounds motion = motion_bounds();
   Posed middle;
@@ -167,13 +254,15 @@ inline double CurveSection::length(const MetricSetd& set, std::optional<double> 
   at(0.5, middle, twist_middle);
   const Eigen::Vector3d pivot_middle = position.value(m);
 
-  double best = 0.0;
-  for (const auto& g : set.groups()) {
-    const double rate = detail::group_acceleration_bound(g, pivot, pivot_middle, motion);
+  double length = 0.0, acceleration = 0.0;
+  for (std::size_t i = 0; i < set.groups().size(); ++i) {
+    const auto& g = set.groups()[i];
+    const double rate = detail::group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
     const double speed = detail::group_max_speed(g, middle, twist_middle);
-    best = std::max(best, g.weight(system_velocity) * (speed + 0.5 * rate));
+    length = std::max(length, factors.weight(i) * (speed + 0.5 * rate));
+    acceleration = std::max(acceleration, rate);
   }
-  return best;
+  return {length, acceleration};
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {
@@ -197,13 +286,23 @@ inline double CurveSection::acceleration_bound(const MetricSetd& set) const {
 
 namespace detail {
 
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept {
+  double r = 0.0;
+  for (const auto& p : g.relative_points) r = std::max(r, (p - pivot).norm());
+  for (const auto& s : g.relative_spheres) r = std::max(r, (s.center - pivot).norm() + s.radius);
+  return r;
+}
+
 inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
-                                const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
-  // The largest distance of the group's body objects from the pivot, and of its absolute
-  // objects from the pivot anywhere on the section (at most |ċ|/2 from the middle).
-  double r_relative = 0.0, r_absolute = 0.0;
-  for (const auto& p : g.relative_points) r_relative = std::max(r_relative, (p - pivot).norm());
-  for (const auto& s : g.relative_spheres) r_relative = std::max(r_relative, (s.center - pivot).norm() + s.radius);
+                                       const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
+  return group_acceleration_bound(g, relative_reach(g, pivot), pivot_middle, b);
+}
+
+inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& b) noexcept {
+  // The largest distance of the group's absolute objects from the pivot anywhere on the
+  // section (at most |ċ|/2 from the middle); the body objects' reach is given.
+  double r_absolute = 0.0;
   bool has_absolute = false;
   for (const auto& p : g.absolute_points) {
     r_absolute = std::max(r_absolute, (p - pivot_middle).norm());

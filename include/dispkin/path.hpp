@@ -50,6 +50,9 @@ struct LinSection {
   //! the decoupled line has a constant pivot velocity and angular velocity; a screw's pivot
   //! turns about the screw axis (|c̈| = |ω × ċ|).
   double acceleration_bound(const MetricSetd& set) const;
+
+  //! length() and acceleration_bound() together (see CurveSection::bounds).
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
 };
 
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
@@ -64,9 +67,8 @@ struct ArcSection {
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
 
   Posed pose(double tau) const noexcept {
-    const Eigen::Vector3d c = center + Eigen::AngleAxisd(tau * angle, normal) * (start * pivot - center);
-    const Eigen::Quaterniond q =
-        (Eigen::Quaterniond(Eigen::AngleAxisd(tau * rotation_angle, rotation_axis)) * start.quaternion()).normalized();
+    const Eigen::Vector3d c = center + detail::axis_turn(normal, tau * angle) * (start * pivot - center);
+    const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, tau * rotation_angle) * start.quaternion()).normalized();
     return Posed::unchecked(q, c - q * pivot);
   }
 
@@ -89,9 +91,11 @@ struct ArcSection {
   //! position also differs by at most δ, adding θ δ through the rotation.
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     set.require_well_formed();
-    const Posed reference_end = reference_section_end();
-    const double reference = section_length(set, start, reference_end, Interpolation::decoupled, pivot, system_velocity);
-    return reference + (1.0 + std::abs(rotation_angle)) * deviation_bound() * max_weight(set, system_velocity);
+    detail::require_system_velocity(system_velocity);
+    require_finite(pivot, "pivot");
+    detail::GroupFactors factors(set, system_velocity);
+    factors.use_pivot(pivot);
+    return bounds(factors).length;
   }
 
   //! A bound of every object's acceleration per unit τ² (see CurveSection::acceleration_bound):
@@ -105,20 +109,40 @@ struct ArcSection {
   }
 
   //! The end pose of the reference (straight, constant-velocity) section.
-  Posed reference_section_end() const noexcept {
+  Posed reference_section_end() const noexcept { return reference_section_end(start * pivot, pivot_at_middle()); }
+
+  //! length() and acceleration_bound() together (see CurveSection::bounds), sharing the
+  //! pivot's middle position: it gives both the reference velocity and the absolute objects'
+  //! distances.
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
+    const MetricSetd& set = factors.set();
     const Eigen::Vector3d c0 = start * pivot;
-    const Eigen::Vector3d mid = center + Eigen::AngleAxisd(0.5 * angle, normal) * (c0 - center);
-    const Eigen::Vector3d velocity = angle * normal.cross(mid - center);
-    const Eigen::Quaterniond q =
-        (Eigen::Quaterniond(Eigen::AngleAxisd(rotation_angle, rotation_axis)) * start.quaternion()).normalized();
-    return Posed::unchecked(q, c0 + velocity - q * pivot);
+    const Eigen::Vector3d middle = pivot_at_middle();
+    const detail::DecoupledSection<double> reference(start, reference_section_end(c0, middle), pivot);
+    const double radius = (c0 - center).norm();
+    const double phi = std::abs(angle);
+    const detail::MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
+    double length = 0.0, acceleration = 0.0;
+    for (std::size_t i = 0; i < set.groups().size(); ++i) {
+      const auto& g = set.groups()[i];
+      length = std::max(length, factors.weight(i) * detail::group_decoupled_length(g, reference));
+      acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
+    }
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation_bound() * factors.max_weight(), acceleration};
   }
 
  private:
-  static double max_weight(const MetricSetd& set, std::optional<double> system_velocity) {
-    double w = 0.0;
-    for (const auto& g : set.groups()) w = std::max(w, g.weight(system_velocity));
-    return w;
+  // The pivot's world position at τ = ½.
+  Eigen::Vector3d pivot_at_middle() const noexcept {
+    return center + detail::axis_turn(normal, 0.5 * angle) * (start * pivot - center);
+  }
+
+  // The reference section ends where the pivot, leaving c₀ with the arc's middle velocity
+  // φ n × (c(½) − o), is at τ = 1, with the arc's end orientation.
+  Posed reference_section_end(const Eigen::Vector3d& c0, const Eigen::Vector3d& middle) const noexcept {
+    const Eigen::Vector3d velocity = angle * normal.cross(middle - center);
+    const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
+    return Posed::unchecked(q, c0 + velocity - q * pivot);
   }
 };
 
@@ -152,6 +176,11 @@ inline double section_length(const Section& section, const MetricSetd& set,
 inline double section_acceleration_bound(const Section& section, const MetricSetd& set) {
   return std::visit([&](const auto& s) { return s.acceleration_bound(set); }, section);
 }
+
+namespace detail {
+//! Length and acceleration bound of any section from `factors` (whose pivot it sets).
+SectionBounds section_bounds(const Section& section, GroupFactors& factors);
+}  // namespace detail
 
 //! Geometry of a circle through three points (MATH: circumcentre), with the arc from the
 //! first to the last point passing through the middle one.

@@ -19,6 +19,7 @@
 #include "dispkin/path.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/profile.hpp"
+#include "dispkin/section_motion.hpp"
 
 namespace dispkin {
 
@@ -70,35 +71,26 @@ class Trajectory {
   //! P0, P1, P12, P2, P3 for each law). Planning side; allocates.
   std::vector<double> characteristic_times() const;
 
+  //! Where a sequence of samples has got to: the time law and the section of the last sample.
+  //! A control loop keeps one per trajectory and passes it to sample(t, cursor), which then
+  //! finds the law and the section of a nearby time without searching. Any value is valid
+  //! (a default one, one left by another trajectory): it is only a hint.
+  struct Cursor {
+    std::size_t piece = 0;    //!< index of the time law of the last sample
+    std::size_t section = 0;  //!< index of the section of the last sample
+  };
+
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
-  //! out[i] = sample(times[i]).
+  //! The same state as sample(t), bit for bit, found from `cursor` (then moved to t): in
+  //! constant time when t lies in the law and section of the previous sample or the next
+  //! one, by binary search otherwise. Consecutive controller cycles are the fast case.
+  TrajectorySample sample(double t, Cursor& cursor) const noexcept;
+  //! out[i] = sample(times[i]), found with one cursor (fastest for increasing times).
   void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
 
  private:
   friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind, const PlanOptions&);
-
-  // What sampling needs of a section, precomputed at planning time so that a sample costs one
-  // sine/cosine pair per rotation and no logarithm: the pivot on its line (c₀ + τΔc) or arc
-  // (about `normal` through `center` by τφ), the orientation turned by τθ about the world
-  // axis ŵ, t = c − R p. Screw sections keep T₀ and their constant twist ξ.
-  struct Motion {
-    enum class Kind { line, arc, screw, curve } kind = Kind::line;
-    Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
-    Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
-    Eigen::Vector3d center = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
-    double angle = 0.0;
-    Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
-    double theta = 0.0;
-    Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
-    Posed start;
-    Twistd xi;
-    CurveSection curve;  // a curved section samples its own polynomials
-
-    static Motion of(const Section& section);
-    //! Pose and body twist per unit τ at τ.
-    void at(double tau, Posed& pose, Twistd& twist) const noexcept;
-  };
 
   // One time law: over a segment of constant velocity limit, within a rest-to-rest run.
   struct Piece {
@@ -107,7 +99,14 @@ class Trajectory {
     double start_s;               // DISP arc length at its start
   };
 
-  std::vector<Motion> motions_;    // section k, ready to sample
+  // The law running at t: the first that ends after t (the last one for t ≥ duration), found
+  // from the hint `piece` when that or the next one is it.
+  std::size_t piece_at(double t, std::size_t piece) const noexcept;
+  // The section holding s: the last whose start is ≤ s (the first for s below it), found from
+  // the hint `section` when that or the next one is it.
+  std::size_t section_at(double s, std::size_t section) const noexcept;
+
+  std::vector<detail::SectionMotion> motions_;  // section k, ready to sample
   std::vector<double> lengths_;    // L_k
   std::vector<double> section_s_;  // s at the start of section k
   std::vector<Piece> pieces_;

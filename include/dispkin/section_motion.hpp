@@ -1,0 +1,146 @@
+//! The sampling forms of path sections: what Trajectory::sample evaluates, precomputed at
+//! planning time so that a sample costs at most two sine/cosine pairs (one per turning
+//! angle), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
+//! allocation-free).
+//!
+//! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
+//! same motion as the section's own pose()/twist() (to rounding).
+#pragma once
+
+#include <cmath>
+#include <variant>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/curve_section.hpp"
+#include "dispkin/path.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+namespace detail {
+
+//! An orientation turning by α about a fixed world axis ŵ, q(α) = turn(ŵ, α) q₀, carrying
+//! the body point p (the pivot). With r = (0, ŵ) q₀ (a unit quaternion orthogonal to q₀):
+//!   q(α) = cos(α/2) q₀ + sin(α/2) r,
+//!   q(α) p = P∥ + cos α P⊥ + sin α ŵ × P⊥   (P = q₀ p split along ŵ and across it),
+//! and the body angular velocity per unit α, q(α)⁻¹ ŵ = q₀⁻¹ ŵ, is constant.
+struct TurningFrame {
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity(), r = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body
+  Eigen::Vector3d pivot_along = Eigen::Vector3d::Zero(), pivot_across = Eigen::Vector3d::Zero(),
+                  pivot_side = Eigen::Vector3d::Zero();  //!< P∥, P⊥, ŵ × P⊥ (world)
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   //!< θ q₀⁻¹ ŵ: ω_b per unit τ
+  double theta = 0.0;                                      //!< the turn over the section, rad
+
+  TurningFrame() = default;
+  TurningFrame(const Eigen::Quaterniond& start, const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& p) noexcept
+      : q0(start), w_hat(axis), pivot(p), theta(angle) {
+    r = Eigen::Quaterniond(0.0, axis.x(), axis.y(), axis.z()) * start;
+    const Eigen::Vector3d world = start * p;
+    pivot_along = world.dot(axis) * axis;
+    pivot_across = world - pivot_along;
+    pivot_side = axis.cross(pivot_across);
+    omega_body = angle * (start.conjugate() * axis);
+  }
+
+  //! The cosine and sine of the turn τθ and the orientation, from one sine/cosine pair of τθ/2.
+  void at(double tau, Eigen::Quaterniond& q, double& cos_turn, double& sin_turn) const noexcept {
+    const double half = 0.5 * tau * theta;
+    const double s = std::sin(half), c = std::cos(half);
+    q = Eigen::Quaterniond(c * q0.coeffs() + s * r.coeffs());
+    cos_turn = 1.0 - 2.0 * s * s;
+    sin_turn = 2.0 * s * c;
+  }
+
+  //! q p for the turn with cosine c and sine s.
+  Eigen::Vector3d pivot_world(double c, double s) const noexcept { return pivot_along + c * pivot_across + s * pivot_side; }
+};
+
+//! A decoupled LIN section: the pivot at c₀ + τ Δc, the orientation turned by τθ about ŵ.
+struct LineMotion {
+  TurningFrame frame;
+  Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond q;
+    double c, s;
+    frame.at(tau, q, c, s);
+    pose = Posed::unchecked(q, c0 + tau * delta_c - frame.pivot_world(c, s));
+    // Body twist: ω_b, v_b = q⁻¹ Δc − ω_b × p (the body origin is t = c − q p).
+    twist.angular = frame.omega_body;
+    twist.linear = q.conjugate() * delta_c - frame.omega_body.cross(frame.pivot);
+  }
+};
+
+//! A CIRC section: the pivot turned by τφ about the axis (centre o, normal n̂) from c₀, the
+//! orientation by τθ about ŵ. c(β) = o + R∥ + cos β R⊥ + sin β n̂ × R⊥ with R = c₀ − o.
+struct ArcMotion {
+  TurningFrame frame;
+  Eigen::Vector3d center_along = Eigen::Vector3d::Zero();  //!< o + R∥
+  Eigen::Vector3d radius_across = Eigen::Vector3d::Zero(), radius_side = Eigen::Vector3d::Zero();  //!< R⊥, n̂ × R⊥
+  double angle = 0.0;  //!< φ, rad
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond q;
+    double c, s;
+    frame.at(tau, q, c, s);
+    const double beta = tau * angle;
+    const double cb = std::cos(beta), sb = std::sin(beta);
+    pose = Posed::unchecked(q, center_along + cb * radius_across + sb * radius_side - frame.pivot_world(c, s));
+    // ċ = φ n̂ × (c − o) = φ (cos β n̂ × R⊥ − sin β R⊥).
+    const Eigen::Vector3d c_dot = angle * (cb * radius_side - sb * radius_across);
+    twist.angular = frame.omega_body;
+    twist.linear = q.conjugate() * c_dot - frame.omega_body.cross(frame.pivot);
+  }
+};
+
+//! A screw section: T₀ exp(τ ξ), constant body twist ξ.
+struct ScrewMotion {
+  Posed start;
+  Twistd xi;
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    pose = start * Posed::exp(xi * tau);
+    twist = xi;
+  }
+};
+
+//! A curved section with its cubics re-expanded in τ (v = v₀ + τh): c(τ), φ(τ) and their
+//! τ-derivatives directly, R = R₀ exp(φ), ω_b = J_r(φ) φ′, v_b = Rᵀ c′ − ω_b × p.
+struct CurveMotion {
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
+  Cubic3 position, rotation;  //!< in τ
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond turn;
+    Eigen::Vector3d omega;
+    exp_and_right_jacobian(rotation.value(tau), rotation.first(tau), turn, omega);
+    const Eigen::Quaterniond q = (q0 * turn).normalized();
+    pose = Posed::unchecked(q, position.value(tau) - q * pivot);
+    twist.angular = omega;
+    twist.linear = q.conjugate() * position.first(tau) - omega.cross(pivot);
+  }
+};
+
+//! One section ready to sample.
+using SectionMotion = std::variant<LineMotion, ArcMotion, ScrewMotion, CurveMotion>;
+
+//! The sampling form of a section (planning side).
+SectionMotion section_motion(const Section& section);
+
+//! Pose and body twist per unit τ of `motion` at τ.
+inline void motion_at(const SectionMotion& motion, double tau, Posed& pose, Twistd& twist) noexcept {
+  // A switch, not std::visit: it inlines, and it cannot throw (the variant is never valueless).
+  switch (motion.index()) {
+    case 0: std::get_if<LineMotion>(&motion)->at(tau, pose, twist); return;
+    case 1: std::get_if<ArcMotion>(&motion)->at(tau, pose, twist); return;
+    case 2: std::get_if<ScrewMotion>(&motion)->at(tau, pose, twist); return;
+    default: std::get_if<CurveMotion>(&motion)->at(tau, pose, twist); return;
+  }
+}
+
+}  // namespace detail
+}  // namespace dispkin
