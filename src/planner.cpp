@@ -132,11 +132,8 @@ SectionMotion section_motion(const Section& section) {
     const Eigen::Vector3d rotation = q0 * quaternion_log(Eigen::Quaterniond(q0.conjugate() * lin->end.quaternion()));
     const double theta = rotation.norm();
     const Eigen::Vector3d w_hat = theta > 0.0 ? Eigen::Vector3d(rotation / theta) : Eigen::Vector3d::UnitZ();
-    LineMotion m;
-    m.frame = TurningFrame(q0, w_hat, theta, lin->pivot);
-    m.c0 = lin->start * lin->pivot;
-    m.delta_c = (lin->end * lin->pivot) - m.c0;
-    return m;
+    const Eigen::Vector3d c0 = lin->start * lin->pivot;
+    return LineMotion(TurningFrame(q0, w_hat, theta, lin->pivot), c0, (lin->end * lin->pivot) - c0);
   }
   if (const auto* curve = std::get_if<CurveSection>(&section)) {
     // p(v₀ + τh) = Σ bᵢ τⁱ: b₀ = p(v₀), b₁ = h p′(v₀), b₂ = h² p″(v₀)/2, b₃ = h³ a₃.
@@ -215,6 +212,8 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
   trajectory.motions_.reserve(n);
   for (const Section& section : sections) trajectory.motions_.push_back(detail::section_motion(section));
+  trajectory.inverse_lengths_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) trajectory.inverse_lengths_[k] = 1.0 / trajectory.lengths_[k];
   trajectory.section_s_.resize(n);
   double s = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -300,9 +299,9 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   out.s_ddot = law.a;
   // The section holding s, and τ within it.
   const std::size_t k = cursor.section = section_at(out.s, cursor.section);
-  const double tau = std::clamp((out.s - section_s_[k]) / lengths_[k], 0.0, 1.0);
+  const double tau = std::clamp((out.s - section_s_[k]) * inverse_lengths_[k], 0.0, 1.0);
   detail::motion_at(motions_[k], tau, out.pose, out.body_twist);
-  out.body_twist = out.body_twist * (out.s_dot / lengths_[k]);
+  out.body_twist = out.body_twist * (out.s_dot * inverse_lengths_[k]);
   return out;
 }
 

@@ -67,10 +67,11 @@ inline void exp_and_right_jacobian(const Eigen::Vector3d& phi, const Eigen::Vect
   const double theta = phi.norm();
   const double t2 = theta * theta;
   const double s = std::sin(0.5 * theta), c = std::cos(0.5 * theta);
-  const double half_sine = theta < 1e-4 ? 0.5 - t2 / 48.0 : s / theta;
+  const double inverse = 1.0 / theta;  // one division for both closed forms
+  const double half_sine = theta < 1e-4 ? 0.5 - t2 / 48.0 : s * inverse;
   const double b = theta < 1e-4 ? 0.5 - t2 / 24.0 : 2.0 * half_sine * half_sine;
   const double cc = theta < 1e-2 ? 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362880.0
-                                 : (theta - 2.0 * s * c) / (t2 * theta);
+                                 : (theta - 2.0 * s * c) * (inverse * inverse * inverse);
   exp_phi = Eigen::Quaterniond(c, half_sine * phi.x(), half_sine * phi.y(), half_sine * phi.z());
   const Eigen::Vector3d pu = phi.cross(u);
   jacobian_u = u - b * pu + cc * phi.cross(pu);
@@ -174,15 +175,8 @@ struct CurveSection {
   //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and one
   //! sine/cosine pair between exp and J_r.
   void at(double tau, Posed& pose_out, Twistd& twist_out) const noexcept {
-    const double h = span();
-    const double v = v0 + tau * h;
-    Eigen::Quaterniond turn;
-    Eigen::Vector3d omega;
-    detail::exp_and_right_jacobian(rotation.value(v), rotation.first(v), turn, omega);
-    omega *= h;
-    const Eigen::Quaterniond q = (q0 * turn).normalized();
-    pose_out = Posed::unchecked(q, position.value(v) - q * pivot);
-    twist_out = Twistd(q.conjugate() * (h * position.first(v)) - omega.cross(pivot), omega);
+    const double v = v0 + tau * span();
+    pose_and_twist(position.value(v), position.first(v), rotation.value(v), rotation.first(v), pose_out, twist_out);
   }
 
   //! An upper bound of the speed of every object of the set per unit τ (never below the
@@ -207,6 +201,20 @@ struct CurveSection {
   //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
   //! the groups' weights and reaches are per path).
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
+
+ private:
+  // Pose and body twist per unit τ where the curve has c, c′, φ, φ′ (per unit v).
+  void pose_and_twist(const Eigen::Vector3d& c, const Eigen::Vector3d& c_slope, const Eigen::Vector3d& phi,
+                      const Eigen::Vector3d& phi_slope, Posed& pose_out, Twistd& twist_out) const noexcept {
+    const double h = span();
+    Eigen::Quaterniond turn;
+    Eigen::Vector3d omega;
+    detail::exp_and_right_jacobian(phi, phi_slope, turn, omega);
+    omega *= h;
+    const Eigen::Quaterniond q = (q0 * turn).normalized();
+    pose_out = Posed::unchecked(q, c - q * pivot);
+    twist_out = Twistd(q.conjugate() * (h * c_slope) - omega.cross(pivot), omega);
+  }
 };
 
 // --- definitions (inline: the hexapod plugin uses curved sections without the umbrella) ---
@@ -224,10 +232,30 @@ inline double jacobian_rate_bound(double theta) {
 struct DerivativeBounds {
   double first, second;
 };
-inline DerivativeBounds derivative_bounds(const Cubic3& p, double m, double delta) {
-  const double third = p.third().norm();
-  const double second_mid = p.second(m).norm();
-  return {p.first(m).norm() + second_mid * delta + 0.5 * third * delta * delta, second_mid + third * delta};
+
+// A cubic's value and derivatives at one parameter, evaluated once for all that needs them.
+struct CubicAt {
+  Eigen::Vector3d value, first, second;
+  double third_norm;
+};
+inline CubicAt cubic_at(const Cubic3& p, double v) noexcept { return {p.value(v), p.first(v), p.second(v), p.third().norm()}; }
+
+inline DerivativeBounds derivative_bounds(const CubicAt& at, double delta) noexcept {
+  const double second_mid = at.second.norm();
+  return {at.first.norm() + second_mid * delta + 0.5 * at.third_norm * delta * delta, second_mid + at.third_norm * delta};
+}
+inline DerivativeBounds derivative_bounds(const Cubic3& p, double m, double delta) noexcept {
+  return derivative_bounds(cubic_at(p, m), delta);
+}
+
+// The motion bounds of a section of span h from the curve at its middle (position c, rotation φ).
+inline MotionBounds motion_bounds_at_middle(const CubicAt& c, const CubicAt& phi, double h) {
+  const double delta = 0.5 * h;
+  const DerivativeBounds dc = derivative_bounds(c, delta);
+  const DerivativeBounds dphi = derivative_bounds(phi, delta);
+  const double theta_max = phi.value.norm() + dphi.first * delta;
+  return {h * dc.first, h * h * dc.second, h * dphi.first,
+          h * h * (dphi.second + jacobian_rate_bound(theta_max) * dphi.first * dphi.first)};
 }
 
 }  // namespace detail
@@ -247,12 +275,15 @@ inline double CurveSection::length(const MetricSetd& set, std::optional<double> 
 
 inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
   const MetricSetd& set = factors.set();
+  // The polynomials at the middle, once: the motion bounds, the middle pose and twist and the
+  // pivot's middle position all come from them.
   const double m = 0.5 * (v0 + v1);
-  const detail::MotionBounds motion = motion_bounds();
+  const detail::CubicAt c = detail::cubic_at(position, m), phi = detail::cubic_at(rotation, m);
+  const detail::MotionBounds motion = detail::motion_bounds_at_middle(c, phi, span());
   Posed middle;
   Twistd twist_middle;
-  at(0.5, middle, twist_middle);
-  const Eigen::Vector3d pivot_middle = position.value(m);
+  pose_and_twist(c.value, c.first, phi.value, phi.first, middle, twist_middle);
+  const Eigen::Vector3d& pivot_middle = c.value;
 
   double length = 0.0, acceleration = 0.0;
   for (std::size_t i = 0; i < set.groups().size(); ++i) {
@@ -266,14 +297,8 @@ inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& fa
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {
-  const double h = span();
   const double m = 0.5 * (v0 + v1);
-  const double delta = 0.5 * h;
-  const detail::DerivativeBounds c = detail::derivative_bounds(position, m, delta);
-  const detail::DerivativeBounds phi = detail::derivative_bounds(rotation, m, delta);
-  const double theta_max = rotation.value(m).norm() + phi.first * delta;
-  return {h * c.first, h * h * c.second, h * phi.first,
-          h * h * (phi.second + detail::jacobian_rate_bound(theta_max) * phi.first * phi.first)};
+  return detail::motion_bounds_at_middle(detail::cubic_at(position, m), detail::cubic_at(rotation, m), span());
 }
 
 inline double CurveSection::acceleration_bound(const MetricSetd& set) const {

@@ -103,22 +103,29 @@ struct ArcSection {
   double acceleration_bound(const MetricSetd& set) const;
 
   //! δ = 2 φ ρ sin(φ/4): how far the pivot velocity along the arc strays from its middle value.
-  double deviation_bound() const noexcept {
-    const double radius = (start * pivot - center).norm();
-    return 2.0 * std::abs(angle) * radius * std::sin(std::abs(angle) / 4.0);
-  }
+  double deviation_bound() const noexcept { return deviation_bound((start * pivot - center).norm()); }
 
   //! The end pose of the reference (straight, constant-velocity) section.
-  Posed reference_section_end() const noexcept { return reference_section_end(start * pivot, pivot_at_middle()); }
+  Posed reference_section_end() const noexcept {
+    const Eigen::Vector3d c0 = start * pivot;
+    const Eigen::Quaterniond q = end_orientation();
+    return Posed::unchecked(q, c0 + middle_velocity(pivot_at_middle(c0)) - q * pivot);
+  }
 
   //! length() and acceleration_bound() together (see CurveSection::bounds), sharing the
-  //! pivot's middle position: it gives both the reference velocity and the absolute objects'
-  //! distances.
+  //! pivot's positions: its middle gives both the reference velocity and the absolute
+  //! objects' distances.
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
     const MetricSetd& set = factors.set();
     const Eigen::Vector3d c0 = start * pivot;
-    const Eigen::Vector3d middle = pivot_at_middle();
-    const detail::DecoupledSection<double> reference(start, reference_section_end(c0, middle), pivot);
+    const Eigen::Vector3d middle = pivot_at_middle(c0);
+    // The reference section from its parts: its rotation is the arc's, θ ŵ seen from the start
+    // (no logarithm needed while |θ| ≤ π, the range of the logarithm).
+    const Eigen::Quaterniond q1 = end_orientation();
+    const Eigen::Vector3d rotation = std::abs(rotation_angle) <= 3.14159265358979323846
+                                         ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
+                                         : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
+    const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation, pivot);
     const double radius = (c0 - center).norm();
     const double phi = std::abs(angle);
     const detail::MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
@@ -128,21 +135,21 @@ struct ArcSection {
       length = std::max(length, factors.weight(i) * detail::group_decoupled_length(g, reference));
       acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
     }
-    return {length + (1.0 + std::abs(rotation_angle)) * deviation_bound() * factors.max_weight(), acceleration};
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation_bound(radius) * factors.max_weight(), acceleration};
   }
 
  private:
-  // The pivot's world position at τ = ½.
-  Eigen::Vector3d pivot_at_middle() const noexcept {
-    return center + detail::axis_turn(normal, 0.5 * angle) * (start * pivot - center);
+  double deviation_bound(double radius) const noexcept {
+    return 2.0 * std::abs(angle) * radius * std::sin(std::abs(angle) / 4.0);
   }
-
-  // The reference section ends where the pivot, leaving c₀ with the arc's middle velocity
-  // φ n × (c(½) − o), is at τ = 1, with the arc's end orientation.
-  Posed reference_section_end(const Eigen::Vector3d& c0, const Eigen::Vector3d& middle) const noexcept {
-    const Eigen::Vector3d velocity = angle * normal.cross(middle - center);
-    const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
-    return Posed::unchecked(q, c0 + velocity - q * pivot);
+  // The pivot's world position at τ = ½, from its start c₀.
+  Eigen::Vector3d pivot_at_middle(const Eigen::Vector3d& c0) const noexcept {
+    return center + detail::axis_turn(normal, 0.5 * angle) * (c0 - center);
+  }
+  // The pivot's velocity per unit τ there, φ n × (c(½) − o): the reference section's.
+  Eigen::Vector3d middle_velocity(const Eigen::Vector3d& middle) const noexcept { return angle * normal.cross(middle - center); }
+  Eigen::Quaterniond end_orientation() const noexcept {
+    return (detail::axis_turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
   }
 };
 

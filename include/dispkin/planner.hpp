@@ -108,6 +108,7 @@ class Trajectory {
 
   std::vector<detail::SectionMotion> motions_;  // section k, ready to sample
   std::vector<double> lengths_;    // L_k
+  std::vector<double> inverse_lengths_;  // 1 / L_k: sampling multiplies
   std::vector<double> section_s_;  // s at the start of section k
   std::vector<Piece> pieces_;
   std::size_t rest_pieces_ = 0;

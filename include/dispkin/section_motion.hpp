@@ -32,6 +32,7 @@ struct TurningFrame {
   Eigen::Vector3d pivot_along = Eigen::Vector3d::Zero(), pivot_across = Eigen::Vector3d::Zero(),
                   pivot_side = Eigen::Vector3d::Zero();  //!< P∥, P⊥, ŵ × P⊥ (world)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   //!< θ q₀⁻¹ ŵ: ω_b per unit τ
+  Eigen::Vector3d omega_cross_pivot = Eigen::Vector3d::Zero();  //!< ω_b × p, constant too
   double theta = 0.0;                                      //!< the turn over the section, rad
 
   TurningFrame() = default;
@@ -43,6 +44,7 @@ struct TurningFrame {
     pivot_across = world - pivot_along;
     pivot_side = axis.cross(pivot_across);
     omega_body = angle * (start.conjugate() * axis);
+    omega_cross_pivot = omega_body.cross(p);
   }
 
   //! The cosine and sine of the turn τθ and the orientation, from one sine/cosine pair of τθ/2.
@@ -59,9 +61,24 @@ struct TurningFrame {
 };
 
 //! A decoupled LIN section: the pivot at c₀ + τ Δc, the orientation turned by τθ about ŵ.
+//! The pivot velocity seen from the body, q(α)⁻¹ Δc = q₀⁻¹ turn(ŵ, −α) Δc, is
+//! q₀⁻¹ D∥ + cos α q₀⁻¹ D⊥ − sin α q₀⁻¹ (ŵ × D⊥) with D = Δc split along ŵ and across it.
 struct LineMotion {
   TurningFrame frame;
   Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
+  //! v_b = linear_fixed + cos α linear_cos + sin α linear_sin (ω_b × p folded into the first).
+  Eigen::Vector3d linear_fixed = Eigen::Vector3d::Zero(), linear_cos = Eigen::Vector3d::Zero(),
+                  linear_sin = Eigen::Vector3d::Zero();
+
+  LineMotion() = default;
+  LineMotion(const TurningFrame& turning, const Eigen::Vector3d& start, const Eigen::Vector3d& travel) noexcept
+      : frame(turning), c0(start), delta_c(travel) {
+    const Eigen::Quaterniond to_body = frame.q0.conjugate();
+    const Eigen::Vector3d along = travel.dot(frame.w_hat) * frame.w_hat, across = travel - along;
+    linear_fixed = to_body * along - frame.omega_cross_pivot;
+    linear_cos = to_body * across;
+    linear_sin = -(to_body * frame.w_hat.cross(across));
+  }
 
   void at(double tau, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond q;
@@ -70,7 +87,7 @@ struct LineMotion {
     pose = Posed::unchecked(q, c0 + tau * delta_c - frame.pivot_world(c, s));
     // Body twist: ω_b, v_b = q⁻¹ Δc − ω_b × p (the body origin is t = c − q p).
     twist.angular = frame.omega_body;
-    twist.linear = q.conjugate() * delta_c - frame.omega_body.cross(frame.pivot);
+    twist.linear = linear_fixed + c * linear_cos + s * linear_sin;
   }
 };
 
@@ -92,7 +109,7 @@ struct ArcMotion {
     // ċ = φ n̂ × (c − o) = φ (cos β n̂ × R⊥ − sin β R⊥).
     const Eigen::Vector3d c_dot = angle * (cb * radius_side - sb * radius_across);
     twist.angular = frame.omega_body;
-    twist.linear = q.conjugate() * c_dot - frame.omega_body.cross(frame.pivot);
+    twist.linear = q.conjugate() * c_dot - frame.omega_cross_pivot;
   }
 };
 
@@ -118,7 +135,8 @@ struct CurveMotion {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
     exp_and_right_jacobian(rotation.value(tau), rotation.first(tau), turn, omega);
-    const Eigen::Quaterniond q = (q0 * turn).normalized();
+    // A product of unit quaternions: unit to rounding without normalising.
+    const Eigen::Quaterniond q = q0 * turn;
     pose = Posed::unchecked(q, position.value(tau) - q * pivot);
     twist.angular = omega;
     twist.linear = q.conjugate() * position.first(tau) - omega.cross(pivot);
