@@ -125,33 +125,29 @@ std::vector<LimitedSegment> speed_limit_segments(const std::vector<double>& acce
 
 namespace detail {
 
-SectionMotion section_motion(const Section& section) {
+void SectionMotions::append(const Section& section) {
   if (const auto* lin = std::get_if<LinSection>(&section)) {
-    if (lin->interpolation == Interpolation::screw) return ScrewMotion{lin->start, (lin->start.inverse() * lin->end).log()};
+    if (lin->interpolation == Interpolation::screw) {
+      entries_.push_back({Kind::screw, screws_.size()});
+      screws_.push_back(ScrewMotion{lin->start, (lin->start.inverse() * lin->end).log()});
+      return;
+    }
     const Eigen::Quaterniond q0 = lin->start.quaternion();
     const Eigen::Vector3d rotation = q0 * quaternion_log(Eigen::Quaterniond(q0.conjugate() * lin->end.quaternion()));
     const double theta = rotation.norm();
     const Eigen::Vector3d w_hat = theta > 0.0 ? Eigen::Vector3d(rotation / theta) : Eigen::Vector3d::UnitZ();
     const Eigen::Vector3d c0 = lin->start * lin->pivot;
-    return LineMotion(TurningFrame(q0, w_hat, theta, lin->pivot), c0, (lin->end * lin->pivot) - c0);
+    entries_.push_back({Kind::line, lines_.size()});
+    lines_.emplace_back(TurningFrame(q0, w_hat, theta, lin->pivot), c0, (lin->end * lin->pivot) - c0);
+    return;
   }
   if (const auto* curve = std::get_if<CurveSection>(&section)) {
-    // p(v₀ + τh) = Σ bᵢ τⁱ: b₀ = p(v₀), b₁ = h p′(v₀), b₂ = h² p″(v₀)/2, b₃ = h³ a₃.
-    const double h = curve->span();
-    const auto in_tau = [&](const Cubic3& p) {
-      Cubic3 out;
-      out.a[0] = p.value(curve->v0);
-      out.a[1] = h * p.first(curve->v0);
-      out.a[2] = (0.5 * h * h) * p.second(curve->v0);
-      out.a[3] = (h * h * h) * p.a[3];
-      return out;
-    };
-    CurveMotion m;
-    m.q0 = curve->q0;
-    m.position = in_tau(curve->position);
-    m.rotation = in_tau(curve->rotation);
-    m.pivot = curve->pivot;
-    return m;
+    // Sections of one curve come in a run: compare with the latest curve only.
+    if (curves_.empty() || !curves_.back().holds(*curve)) {
+      curves_.push_back(CurveMotion{curve->q0, curve->position, curve->rotation, curve->pivot});
+    }
+    entries_.push_back({Kind::curve, curves_.size() - 1, curve->v0, curve->span()});
+    return;
   }
   const auto& arc = std::get<ArcSection>(section);
   ArcMotion m;
@@ -162,7 +158,8 @@ SectionMotion section_motion(const Section& section) {
   m.radius_across = radius - along;
   m.radius_side = arc.normal.cross(m.radius_across);
   m.angle = arc.angle;
-  return m;
+  entries_.push_back({Kind::arc, arcs_.size()});
+  arcs_.push_back(m);
 }
 
 }  // namespace detail
@@ -211,7 +208,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening.
   for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
   trajectory.motions_.reserve(n);
-  for (const Section& section : sections) trajectory.motions_.push_back(detail::section_motion(section));
+  for (const Section& section : sections) trajectory.motions_.append(section);
   trajectory.inverse_lengths_.resize(n);
   for (std::size_t k = 0; k < n; ++k) trajectory.inverse_lengths_[k] = 1.0 / trajectory.lengths_[k];
   trajectory.section_s_.resize(n);
@@ -300,7 +297,7 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   // The section holding s, and τ within it.
   const std::size_t k = cursor.section = section_at(out.s, cursor.section);
   const double tau = std::clamp((out.s - section_s_[k]) * inverse_lengths_[k], 0.0, 1.0);
-  detail::motion_at(motions_[k], tau, out.pose, out.body_twist);
+  motions_.at(k, tau, out.pose, out.body_twist);
   out.body_twist = out.body_twist * (out.s_dot * inverse_lengths_[k]);
   return out;
 }

@@ -211,7 +211,8 @@ struct CurveSection {
     Eigen::Vector3d omega;
     detail::exp_and_right_jacobian(phi, phi_slope, turn, omega);
     omega *= h;
-    const Eigen::Quaterniond q = (q0 * turn).normalized();
+    // A product of unit quaternions: unit to rounding without normalising.
+    const Eigen::Quaterniond q = q0 * turn;
     pose_out = Posed::unchecked(q, c - q * pivot);
     twist_out = Twistd(q.conjugate() * (h * c_slope) - omega.cross(pivot), omega);
   }

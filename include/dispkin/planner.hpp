@@ -106,7 +106,7 @@ class Trajectory {
   // the hint `section` when that or the next one is it.
   std::size_t section_at(double s, std::size_t section) const noexcept;
 
-  std::vector<detail::SectionMotion> motions_;  // section k, ready to sample
+  detail::SectionMotions motions_;  // section k, ready to sample
   std::vector<double> lengths_;    // L_k
   std::vector<double> inverse_lengths_;  // 1 / L_k: sampling multiplies
   std::vector<double> section_s_;  // s at the start of section k

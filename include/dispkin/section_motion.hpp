@@ -8,7 +8,8 @@
 #pragma once
 
 #include <cmath>
-#include <variant>
+#include <cstddef>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -124,41 +125,68 @@ struct ScrewMotion {
   }
 };
 
-//! A curved section with its cubics re-expanded in τ (v = v₀ + τh): c(τ), φ(τ) and their
-//! τ-derivatives directly, R = R₀ exp(φ), ω_b = J_r(φ) φ′, v_b = Rᵀ c′ − ω_b × p.
+//! A cubic pose curve, shared by all the sections cut from it (they differ only in the part
+//! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
+//! per unit τ, as CurveSection::at.
 struct CurveMotion {
   Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
-  Cubic3 position, rotation;  //!< in τ
+  Cubic3 position, rotation;  //!< in v, as the CurveSection
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
 
-  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+  //! Whether `section` is cut from this curve.
+  bool holds(const CurveSection& section) const noexcept {
+    return section.q0.coeffs() == q0.coeffs() && section.position.a == position.a && section.rotation.a == rotation.a &&
+           section.pivot == pivot;
+  }
+
+  void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
-    exp_and_right_jacobian(rotation.value(tau), rotation.first(tau), turn, omega);
+    exp_and_right_jacobian(rotation.value(v), rotation.first(v), turn, omega);
+    omega *= h;
     // A product of unit quaternions: unit to rounding without normalising.
     const Eigen::Quaterniond q = q0 * turn;
-    pose = Posed::unchecked(q, position.value(tau) - q * pivot);
+    pose = Posed::unchecked(q, position.value(v) - q * pivot);
     twist.angular = omega;
-    twist.linear = q.conjugate() * position.first(tau) - omega.cross(pivot);
+    twist.linear = q.conjugate() * (h * position.first(v)) - omega.cross(pivot);
   }
 };
 
-//! One section ready to sample.
-using SectionMotion = std::variant<LineMotion, ArcMotion, ScrewMotion, CurveMotion>;
+//! The sampling forms of a path's sections, stored by kind so that each section costs only
+//! what its kind needs (a section of a curve: the part of the shared curve it runs over).
+class SectionMotions {
+ public:
+  void reserve(std::size_t sections) { entries_.reserve(sections); }
 
-//! The sampling form of a section (planning side).
-SectionMotion section_motion(const Section& section);
+  //! Appends the form of the next section (planning side; allocates).
+  void append(const Section& section);
 
-//! Pose and body twist per unit τ of `motion` at τ.
-inline void motion_at(const SectionMotion& motion, double tau, Posed& pose, Twistd& twist) noexcept {
-  // A switch, not std::visit: it inlines, and it cannot throw (the variant is never valueless).
-  switch (motion.index()) {
-    case 0: std::get_if<LineMotion>(&motion)->at(tau, pose, twist); return;
-    case 1: std::get_if<ArcMotion>(&motion)->at(tau, pose, twist); return;
-    case 2: std::get_if<ScrewMotion>(&motion)->at(tau, pose, twist); return;
-    default: std::get_if<CurveMotion>(&motion)->at(tau, pose, twist); return;
+  std::size_t size() const noexcept { return entries_.size(); }
+
+  //! Pose and body twist per unit τ of section k at τ.
+  void at(std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {
+    const Entry& e = entries_[k];
+    switch (e.kind) {
+      case Kind::line: lines_[e.index].at(tau, pose, twist); return;
+      case Kind::arc: arcs_[e.index].at(tau, pose, twist); return;
+      case Kind::screw: screws_[e.index].at(tau, pose, twist); return;
+      case Kind::curve: curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist); return;
+    }
   }
-}
+
+ private:
+  enum class Kind : unsigned char { line, arc, screw, curve };
+  struct Entry {
+    Kind kind;
+    std::size_t index;       // into the vector of its kind
+    double v0 = 0.0, span = 0.0;  // a curve's part: v = v₀ + τ h
+  };
+  std::vector<Entry> entries_;
+  std::vector<LineMotion> lines_;
+  std::vector<ArcMotion> arcs_;
+  std::vector<ScrewMotion> screws_;
+  std::vector<CurveMotion> curves_;
+};
 
 }  // namespace detail
 }  // namespace dispkin
