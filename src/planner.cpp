@@ -37,8 +37,7 @@ bool tangent_continuous(const Twistd& out_twist, double length_before, const Twi
 // where `before` ends, or the same circular motion (its body twist is then a function of the
 // pose alone, and the path joins its sections to 1e-9).
 bool continues(const CurveSection& before, const CurveSection& after) {
-  return before.v1 == after.v0 && before.q0.coeffs() == after.q0.coeffs() && before.position.a == after.position.a &&
-         before.rotation.a == after.rotation.a && before.pivot == after.pivot;
+  return before.v1 == after.v0 && detail::same_curve(before.q0, before.position, before.rotation, before.pivot, after);
 }
 bool continues(const ArcSection& before, const ArcSection& after) {
   return before.center == after.center && before.normal == after.normal && before.angle == after.angle &&
@@ -125,6 +124,21 @@ std::vector<LimitedSegment> speed_limit_segments(const std::vector<double>& acce
 
 namespace detail {
 
+void SectionMotions::reserve(const std::vector<Section>& sections) {
+  std::size_t lines = 0, arcs = 0, screws = 0;
+  for (const Section& s : sections) {
+    if (const auto* lin = std::get_if<LinSection>(&s)) {
+      ++(lin->interpolation == Interpolation::screw ? screws : lines);
+    } else if (std::holds_alternative<ArcSection>(s)) {
+      ++arcs;
+    }
+  }
+  entries_.reserve(sections.size());
+  lines_.reserve(lines);
+  arcs_.reserve(arcs);
+  screws_.reserve(screws);
+}
+
 void SectionMotions::append(const Section& section) {
   if (const auto* lin = std::get_if<LinSection>(&section)) {
     if (lin->interpolation == Interpolation::screw) {
@@ -207,7 +221,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
   // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening.
   for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
-  trajectory.motions_.reserve(n);
+  trajectory.motions_.reserve(sections);
   for (const Section& section : sections) trajectory.motions_.append(section);
   trajectory.inverse_lengths_.resize(n);
   for (std::size_t k = 0; k < n; ++k) trajectory.inverse_lengths_[k] = 1.0 / trajectory.lengths_[k];

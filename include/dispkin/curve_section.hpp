@@ -225,7 +225,8 @@ namespace detail {
 // gives ‖dJ_r(φ)[u]‖ ≤ g′(θ)|u|. Its own series below 10⁻³ (the closed form cancels).
 inline double jacobian_rate_bound(double theta) {
   if (theta < 1e-3) return 0.5 + theta / 3.0 + theta * theta / 8.0;
-  return (theta * std::exp(theta) - std::exp(theta) + 1.0) / (theta * theta);
+  const double e = std::exp(theta);  // once: with errno semantics the compiler calls exp twice
+  return (theta * e - e + 1.0) / (theta * theta);
 }
 
 // Bounds of |p′| and |p″| of a cubic over [m − δ, m + δ], by Taylor at the middle m (exact

@@ -53,7 +53,8 @@ struct TrajectorySample {
   double s_ddot = 0.0; //!< s̈, m/s²
 };
 
-//! A planned trajectory. Sampling is noexcept and allocation-free.
+//! A planned trajectory. Sampling is noexcept and allocation-free; a control loop samples
+//! consecutive cycles fastest with a Cursor (sample(t, cursor)).
 class Trajectory {
  public:
   double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }

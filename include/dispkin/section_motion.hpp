@@ -1,14 +1,16 @@
 //! The sampling forms of path sections: what Trajectory::sample evaluates, precomputed at
 //! planning time so that a sample costs at most two sine/cosine pairs (one per turning
 //! angle), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
-//! allocation-free).
+//! allocation-free). Internal to the planner (namespace detail).
 //!
 //! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
-//! same motion as the section's own pose()/twist() (to rounding).
+//! same motion as the section's own pose()/twist() (to rounding). Sections cut from one cubic
+//! curve share its form; lines and arcs keep one form each.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <vector>
 
 #include <Eigen/Core>
@@ -125,6 +127,20 @@ struct ScrewMotion {
   }
 };
 
+//! Whether n doubles are equal bit for bit (+0 and −0 differ).
+inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
+  return std::memcmp(a, b, n * sizeof(double)) == 0;
+}
+
+//! Whether the curve (R₀, c, φ, p) is the one `section` is cut from: the same coefficients,
+//! bit for bit (one block comparison each; a false "no" only costs sharing).
+inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
+                       const Eigen::Vector3d& pivot, const CurveSection& section) noexcept {
+  return same_bits(section.q0.coeffs().data(), q0.coeffs().data(), 4) &&
+         same_bits(section.position.a[0].data(), position.a[0].data(), 12) &&
+         same_bits(section.rotation.a[0].data(), rotation.a[0].data(), 12) && same_bits(section.pivot.data(), pivot.data(), 3);
+}
+
 //! A cubic pose curve, shared by all the sections cut from it (they differ only in the part
 //! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
 //! per unit τ, as CurveSection::at.
@@ -134,10 +150,7 @@ struct CurveMotion {
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
 
   //! Whether `section` is cut from this curve.
-  bool holds(const CurveSection& section) const noexcept {
-    return section.q0.coeffs() == q0.coeffs() && section.position.a == position.a && section.rotation.a == rotation.a &&
-           section.pivot == pivot;
-  }
+  bool holds(const CurveSection& section) const noexcept { return same_curve(q0, position, rotation, pivot, section); }
 
   void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond turn;
@@ -156,7 +169,8 @@ struct CurveMotion {
 //! what its kind needs (a section of a curve: the part of the shared curve it runs over).
 class SectionMotions {
  public:
-  void reserve(std::size_t sections) { entries_.reserve(sections); }
+  //! Room for the forms of `sections` (planning side).
+  void reserve(const std::vector<Section>& sections);
 
   //! Appends the form of the next section (planning side; allocates).
   void append(const Section& section);
