@@ -223,12 +223,10 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
   trajectory.motions_.reserve(sections);
   for (const Section& section : sections) trajectory.motions_.append(section);
-  trajectory.inverse_lengths_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) trajectory.inverse_lengths_[k] = 1.0 / trajectory.lengths_[k];
-  trajectory.section_s_.resize(n);
+  trajectory.starts_.resize(n);
   double s = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
-    trajectory.section_s_[k] = s;
+    trajectory.starts_[k] = {s, 1.0 / trajectory.lengths_[k]};
     s += trajectory.lengths_[k];
   }
 
@@ -240,7 +238,7 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
     if (k + 1 < n && tangent_continuous(sections[k], trajectory.lengths_[k], sections[k + 1], trajectory.lengths_[k + 1]))
       continue;
     const std::vector<LimitedSegment> segments = speed_limit_segments(accelerations, trajectory.lengths_, first, k + 1, limits);
-    double start_s = trajectory.section_s_[first];
+    double start_s = trajectory.starts_[first].s;
     for (const Profile& law : velocity_limited_law(segments, limits.acceleration, jerk)) {
       trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + law.duration(), start_s});
       time += law.duration();
@@ -280,21 +278,21 @@ std::size_t Trajectory::piece_at(double t, std::size_t piece) const noexcept {
 }
 
 std::size_t Trajectory::section_at(double s, std::size_t section) const noexcept {
-  const std::size_t last = section_s_.size() - 1;
+  const std::size_t last = starts_.size() - 1;
   // Section k is it when it starts at or before s (or is the first) and the next one starts
   // after s (or k is the last).
   const auto is_it = [&](std::size_t k) {
-    return (k == 0 || section_s_[k] <= s) && (k == last || s < section_s_[k + 1]);
+    return (k == 0 || starts_[k].s <= s) && (k == last || s < starts_[k + 1].s);
   };
   if (section <= last && is_it(section)) return section;
   if (section < last && is_it(section + 1)) return section + 1;
-  const auto next = std::upper_bound(section_s_.begin(), section_s_.end(), s);
-  const std::size_t k = next == section_s_.begin() ? 0 : static_cast<std::size_t>(next - section_s_.begin()) - 1;
+  const auto next = std::upper_bound(starts_.begin(), starts_.end(), s, [](double x, const SectionStart& k) { return x < k.s; });
+  const std::size_t k = next == starts_.begin() ? 0 : static_cast<std::size_t>(next - starts_.begin()) - 1;
   return std::min(k, last);
 }
 
 TrajectorySample Trajectory::sample(double t) const noexcept {
-  Cursor search{pieces_.size(), section_s_.size()};  // no hint: binary search
+  Cursor search{pieces_.size(), starts_.size()};  // no hint: binary search
   return sample(t, search);
 }
 
@@ -310,9 +308,10 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   out.s_ddot = law.a;
   // The section holding s, and τ within it.
   const std::size_t k = cursor.section = section_at(out.s, cursor.section);
-  const double tau = std::clamp((out.s - section_s_[k]) * inverse_lengths_[k], 0.0, 1.0);
+  const SectionStart& start = starts_[k];
+  const double tau = std::clamp((out.s - start.s) * start.inverse_length, 0.0, 1.0);
   motions_.at(k, tau, out.pose, out.body_twist);
-  out.body_twist = out.body_twist * (out.s_dot * inverse_lengths_[k]);
+  out.body_twist = out.body_twist * (out.s_dot * start.inverse_length);
   return out;
 }
 

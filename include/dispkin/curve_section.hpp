@@ -107,32 +107,34 @@ class GroupFactors {
   //! Throws like MetricGroup::weight (a group limit without a system velocity).
   GroupFactors(const MetricSetd& set, std::optional<double> system_velocity)
       : set_(&set), system_velocity_(system_velocity) {
-    weights_.reserve(set.groups().size());
+    groups_.reserve(set.groups().size());
     for (const auto& g : set.groups()) {
-      weights_.push_back(g.weight(system_velocity));
-      max_weight_ = std::max(max_weight_, weights_.back());
+      groups_.push_back({g.weight(system_velocity), 0.0});
+      max_weight_ = std::max(max_weight_, groups_.back().weight);
     }
-    reaches_.resize(weights_.size());
   }
 
   //! Makes reach() refer to `pivot` (body coordinates).
   void use_pivot(const Eigen::Vector3d& pivot) noexcept {
     if (has_pivot_ && pivot == pivot_) return;
-    for (std::size_t i = 0; i < reaches_.size(); ++i) reaches_[i] = relative_reach(set_->groups()[i], pivot);
+    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = relative_reach(set_->groups()[i], pivot);
     pivot_ = pivot;
     has_pivot_ = true;
   }
 
   const MetricSetd& set() const noexcept { return *set_; }
   std::optional<double> system_velocity() const noexcept { return system_velocity_; }
-  double weight(std::size_t group) const noexcept { return weights_[group]; }
+  double weight(std::size_t group) const noexcept { return groups_[group].weight; }
   double max_weight() const noexcept { return max_weight_; }
-  double reach(std::size_t group) const noexcept { return reaches_[group]; }
+  double reach(std::size_t group) const noexcept { return groups_[group].reach; }
 
  private:
+  struct Factors {
+    double weight, reach;
+  };
   const MetricSetd* set_;
   std::optional<double> system_velocity_;
-  std::vector<double> weights_, reaches_;
+  std::vector<Factors> groups_;
   double max_weight_ = 0.0;
   Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
   bool has_pivot_ = false;

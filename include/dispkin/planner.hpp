@@ -58,7 +58,7 @@ struct TrajectorySample {
 class Trajectory {
  public:
   double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
-  double length() const noexcept { return section_s_.empty() ? 0.0 : section_s_.back() + lengths_.back(); }
+  double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
   std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
@@ -108,9 +108,13 @@ class Trajectory {
   std::size_t section_at(double s, std::size_t section) const noexcept;
 
   detail::SectionMotions motions_;  // section k, ready to sample
-  std::vector<double> lengths_;    // L_k
-  std::vector<double> inverse_lengths_;  // 1 / L_k: sampling multiplies
-  std::vector<double> section_s_;  // s at the start of section k
+  // What sampling needs of section k: s at its start, and 1 / L_k (sampling multiplies).
+  struct SectionStart {
+    double s, inverse_length;
+  };
+
+  std::vector<double> lengths_;        // L_k
+  std::vector<SectionStart> starts_;   // of section k
   std::vector<Piece> pieces_;
   std::size_t rest_pieces_ = 0;
 };
