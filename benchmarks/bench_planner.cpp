@@ -1,5 +1,6 @@
 // Planning and sampling trajectories (issue 4 targets: a 1000-section path planned in
 // ≤ 100 µs, sampling ≤ 50 ns per sample).
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -38,26 +39,6 @@ void plan_circ_1000_sections(benchmark::State& state) {
 }
 BENCHMARK(plan_circ_1000_sections)->Unit(benchmark::kMicrosecond);
 
-void sample_trajectory(benchmark::State& state) {
-  const auto set = icosahedron_tool();
-  const bool circ = state.range(0) >= 1;
-  const bool in_order = state.range(0) == 2;  // a control loop: consecutive cycles
-  const auto path = circ ? dispkin::Path::circ(kStart, kVia, kEnd, V::Zero(), 2.2e-3) : dispkin::Path::lin(kStart, kEnd);
-  const auto traj = dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0});
-  std::vector<double> times(4096);
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    const std::size_t slot = in_order ? i : (i * 2654435761u) % 4096;
-    times[i] = traj.duration() * static_cast<double>(slot) / 4096.0;
-  }
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(traj.sample(times[i]));
-    i = (i + 1) & 4095;
-  }
-  state.SetLabel(in_order ? "CIRC, ~1000 sections, consecutive times" : circ ? "CIRC, ~1000 sections, random times" : "LIN, random times");
-}
-BENCHMARK(sample_trajectory)->Arg(0)->Arg(1)->Arg(2);
-
 // A SPLINE through five key poses, cut into about 1000 curved sections (tolerance chosen for
 // it), icosahedron set.
 std::vector<Posed> spline_keys() {
@@ -80,18 +61,39 @@ void build_spline_1000_sections(benchmark::State& state) {
 }
 BENCHMARK(build_spline_1000_sections)->Unit(benchmark::kMicrosecond);
 
-void sample_spline_trajectory(benchmark::State& state) {
+// Sampling: path 0 = LIN, 1 = CIRC (~1000 sections), 2 = SPLINE (~1000 sections); times
+// 0 = random (sample(t)), 1 = consecutive (sample(t)), 2 = consecutive with a cursor (a
+// control loop: sample(t, cursor)). 4096 times over the whole trajectory.
+void sample_trajectory(benchmark::State& state) {
   const auto set = icosahedron_tool();
-  const auto traj = dispkin::plan(dispkin::Path::spline(spline_keys(), V::Zero(), 8e-3), set, dispkin::Limits{0.1, 0.5, 5.0});
+  const int kind = static_cast<int>(state.range(0));
+  const int mode = static_cast<int>(state.range(1));
+  const auto path = kind == 0 ? dispkin::Path::lin(kStart, kEnd)
+                    : kind == 1 ? dispkin::Path::circ(kStart, kVia, kEnd, V::Zero(), 2.2e-3)
+                                : dispkin::Path::spline(spline_keys(), V::Zero(), 8e-3);
+  const auto traj = dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0});
   std::vector<double> times(4096);
-  for (std::size_t i = 0; i < times.size(); ++i) times[i] = traj.duration() * static_cast<double>((i * 2654435761u) % 4096) / 4096.0;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(traj.sample(times[i]));
-    i = (i + 1) & 4095;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::size_t slot = mode == 0 ? (i * 2654435761u) % 4096 : i;
+    times[i] = traj.duration() * static_cast<double>(slot) / 4096.0;
   }
-  state.SetLabel("SPLINE, ~1000 sections, random times");
+  std::size_t i = 0;
+  if (mode == 2) {
+    dispkin::Trajectory::Cursor cursor;
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(traj.sample(times[i], cursor));
+      i = (i + 1) & 4095;
+    }
+  } else {
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(traj.sample(times[i]));
+      i = (i + 1) & 4095;
+    }
+  }
+  const char* paths[] = {"LIN", "CIRC, ~1000 sections", "SPLINE, ~1000 sections"};
+  const char* modes[] = {"random times", "consecutive times", "consecutive times, cursor"};
+  state.SetLabel(std::string(paths[kind]) + ", " + modes[mode]);
 }
-BENCHMARK(sample_spline_trajectory);
+BENCHMARK(sample_trajectory)->ArgsProduct({{0, 1, 2}, {0, 1, 2}});
 
 }  // namespace

@@ -51,10 +51,12 @@ struct TrajectoryAccess {
     out.rest_pieces_ = runs;
     return out;
   }
-  static const std::vector<double>& section_starts(const Trajectory& t) { return t.section_s_; }
+  // s at the start of section k, and the section holding s.
+  static double section_start(const Trajectory& t, std::size_t k) { return t.starts_[k].s; }
+  static std::size_t section_at(const Trajectory& t, double s) { return t.section_at(s, t.starts_.size()); }
   // Pose and body twist per unit τ of section k at τ.
   static void section_state(const Trajectory& t, std::size_t k, double tau, Posed& pose, Twistd& per_tau) {
-    t.motions_[k].at(tau, pose, per_tau);
+    t.motions_.at(k, tau, pose, per_tau);
   }
 };
 
@@ -70,7 +72,6 @@ class SmoothParameter {
  public:
   SmoothParameter(const Trajectory& planned, double acceleration) : planned_(planned) {
     const std::vector<double>& lengths = planned.section_lengths();
-    const std::vector<double>& starts = TrajectoryAccess::section_starts(planned);
     const std::vector<double>& rests = planned.rest_positions();
     const std::size_t n = lengths.size();
     ell_.resize(n);
@@ -81,7 +82,7 @@ class SmoothParameter {
     Posed pose;
     Twistd out, in;
     for (std::size_t k = 0; k < n; ++k) {
-      const bool run_start = std::binary_search(rests.begin(), rests.end(), starts[k]);
+      const bool run_start = std::binary_search(rests.begin(), rests.end(), TrajectoryAccess::section_start(planned, k));
       ell_[k] = lengths[k];
       if (k > 0 && !run_start && lengths[k] > 0.0) {
         TrajectoryAccess::section_state(planned, k - 1, 1.0, pose, out);
@@ -92,7 +93,7 @@ class SmoothParameter {
       sigma_start_[k + 1] = sigma_start_[k] + ell_[k];
       // The DISP velocity limit of the section: the span of the plan's curve that holds it.
       double cap = std::numeric_limits<double>::infinity();
-      const double middle = starts[k] + 0.5 * lengths[k];
+      const double middle = TrajectoryAccess::section_start(planned, k) + 0.5 * lengths[k];
       for (const Trajectory::SpeedLimit& span : planned.speed_limits()) {
         if (span.start_s <= middle && middle <= span.start_s + span.length) cap = std::min(cap, span.limit);
       }
@@ -139,12 +140,9 @@ class SmoothParameter {
 
  private:
   double sigma_at(double s) const noexcept {
-    const std::vector<double>& starts = TrajectoryAccess::section_starts(planned_);
-    const auto next = std::upper_bound(starts.begin(), starts.end(), s);
-    std::size_t k = next == starts.begin() ? 0 : static_cast<std::size_t>(next - starts.begin()) - 1;
-    k = std::min(k, ell_.size() - 1);
+    const std::size_t k = TrajectoryAccess::section_at(planned_, s);
     const double length = planned_.section_lengths()[k];
-    return sigma_start_[k] + (length > 0.0 ? (s - starts[k]) / length * ell_[k] : 0.0);
+    return sigma_start_[k] + (length > 0.0 ? (s - TrajectoryAccess::section_start(planned_, k)) / length * ell_[k] : 0.0);
   }
 
   const Trajectory& planned_;
@@ -316,7 +314,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   // Path position s of a σ, for messages and the result.
   auto s_of = [&](double sigma) {
     const std::size_t k = smooth.section_at(sigma);
-    return TrajectoryAccess::section_starts(planned)[k] + (sigma - smooth.start(k)) * smooth.s_per_sigma(k);
+    return TrajectoryAccess::section_start(planned, k) + (sigma - smooth.start(k)) * smooth.s_per_sigma(k);
   };
 
   // The grid: each rest-to-rest run gets its share of the intervals.

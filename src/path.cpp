@@ -139,9 +139,13 @@ void Path::append(Section section) {
 }
 
 std::vector<double> Path::section_lengths(const MetricSetd& set, std::optional<double> system_velocity) const {
+  set.require_well_formed();
+  detail::require_system_velocity(system_velocity);
+  // The groups' weights and reaches are per path: once, not once per section.
+  detail::GroupFactors factors(set, system_velocity);
   std::vector<double> lengths;
   lengths.reserve(sections_.size());
-  for (const Section& s : sections_) lengths.push_back(section_length(s, set, system_velocity));
+  for (const Section& s : sections_) lengths.push_back(detail::section_bounds(s, factors).length);
   return lengths;
 }
 
@@ -169,15 +173,55 @@ double set_acceleration_bound(const MetricSetd& set, const Eigen::Vector3d& pivo
 
 }  // namespace
 
-double LinSection::acceleration_bound(const MetricSetd& set) const {
-  const Eigen::Vector3d pivot_middle = pose(0.5) * pivot;
-  if (interpolation == Interpolation::screw) {
-    const Twistd xi = twist(0.0);
-    const double speed = (xi.linear + xi.angular.cross(pivot)).norm(), omega = xi.angular.norm();
-    return set_acceleration_bound(set, pivot, pivot_middle, {speed, omega * speed, omega, 0.0});
+namespace {
+
+// The motion bounds of a LIN section (see LinSection::acceleration_bound) and its screw twist
+// (only for a screw).
+detail::MotionBounds lin_motion_bounds(const LinSection& lin, Twistd& screw) {
+  if (lin.interpolation == Interpolation::screw) {
+    screw = lin.twist(0.0);
+    const double speed = (screw.linear + screw.angular.cross(lin.pivot)).norm(), omega = screw.angular.norm();
+    return {speed, omega * speed, omega, 0.0};
   }
-  const double speed = ((end * pivot) - (start * pivot)).norm();
-  return set_acceleration_bound(set, pivot, pivot_middle, {speed, 0.0, rotation_angle(start, end), 0.0});
+  const double speed = ((lin.end * lin.pivot) - (lin.start * lin.pivot)).norm();
+  return {speed, 0.0, rotation_angle(lin.start, lin.end), 0.0};
+}
+
+}  // namespace
+
+double LinSection::acceleration_bound(const MetricSetd& set) const {
+  Twistd screw;
+  return set_acceleration_bound(set, pivot, pose(0.5) * pivot, lin_motion_bounds(*this, screw));
+}
+
+detail::SectionBounds LinSection::bounds(const detail::GroupFactors& factors) const {
+  // As length() (section_length) and acceleration_bound(), with the groups' weights and reaches
+  // at hand.
+  const MetricSetd& set = factors.set();
+  Twistd screw;
+  const detail::MotionBounds motion = lin_motion_bounds(*this, screw);
+  const Eigen::Vector3d pivot_middle = pose(0.5) * pivot;
+  double length = 0.0, acceleration = 0.0;
+  if (interpolation == Interpolation::screw) {
+    for (std::size_t i = 0; i < set.groups().size(); ++i)
+      length = std::max(length, factors.weight(i) * detail::group_max_speed(set.groups()[i], start, screw));
+  } else {
+    const detail::DecoupledSection<double> section(start, end, pivot);
+    for (std::size_t i = 0; i < set.groups().size(); ++i)
+      length = std::max(length, factors.weight(i) * detail::group_decoupled_length(set.groups()[i], section));
+  }
+  for (std::size_t i = 0; i < set.groups().size(); ++i)
+    acceleration = std::max(acceleration, detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
+  return {length, acceleration};
+}
+
+detail::SectionBounds detail::section_bounds(const Section& section, GroupFactors& factors) {
+  return std::visit(
+      [&](const auto& s) {
+        factors.use_pivot(s.pivot);
+        return s.bounds(factors);
+      },
+      section);
 }
 
 double ArcSection::acceleration_bound(const MetricSetd& set) const {

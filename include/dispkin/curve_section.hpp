@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -58,6 +59,24 @@ inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept;
 
 namespace detail {
 
+//! exp(φ) as a unit quaternion and J_r(φ) u, from one sine/cosine pair of θ/2 (θ = |φ|):
+//! sin θ = 2 sin(θ/2) cos(θ/2) serves J_r's C(θ). The series branches are those of
+//! quaternion_exp, coefficient_b and coefficient_c.
+inline void exp_and_right_jacobian(const Eigen::Vector3d& phi, const Eigen::Vector3d& u, Eigen::Quaterniond& exp_phi,
+                                   Eigen::Vector3d& jacobian_u) noexcept {
+  const double theta = phi.norm();
+  const double t2 = theta * theta;
+  const double s = std::sin(0.5 * theta), c = std::cos(0.5 * theta);
+  const double inverse = 1.0 / theta;  // one division for both closed forms
+  const double half_sine = theta < 1e-4 ? 0.5 - t2 / 48.0 : s * inverse;
+  const double b = theta < 1e-4 ? 0.5 - t2 / 24.0 : 2.0 * half_sine * half_sine;
+  const double cc = theta < 1e-2 ? 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362880.0
+                                 : (theta - 2.0 * s * c) * (inverse * inverse * inverse);
+  exp_phi = Eigen::Quaterniond(c, half_sine * phi.x(), half_sine * phi.y(), half_sine * phi.z());
+  const Eigen::Vector3d pu = phi.cross(u);
+  jacobian_u = u - b * pu + cc * phi.cross(pu);
+}
+
 //! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
 //! |ω| and angular acceleration |ω̇|.
 struct MotionBounds {
@@ -70,6 +89,62 @@ struct MotionBounds {
 //! `pivot_middle`, the pivot's world position at the middle of the section, plus |ċ|/2).
 inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& bounds);
+
+//! How far the group's body objects reach from the pivot (body coordinates): the largest
+//! |r − p| of its relative points and |c − p| + ρ of its relative spheres, 0 without any. It
+//! depends on the pivot only, not on the section.
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept;
+
+//! group_acceleration_bound with the group's relative_reach from the pivot already known.
+inline double group_acceleration_bound(const MetricGroup<double>& g, double reach, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& bounds) noexcept;
+
+//! What the section bounds need of each group of a set, once per path instead of once per
+//! section: its weight v_sys / v_g and its relative_reach from the pivot (recomputed only
+//! when a section has another pivot). Planning side; allocates.
+class GroupFactors {
+ public:
+  //! Throws like MetricGroup::weight (a group limit without a system velocity).
+  GroupFactors(const MetricSetd& set, std::optional<double> system_velocity)
+      : set_(&set), system_velocity_(system_velocity) {
+    groups_.reserve(set.groups().size());
+    for (const auto& g : set.groups()) {
+      groups_.push_back({g.weight(system_velocity), 0.0});
+      max_weight_ = std::max(max_weight_, groups_.back().weight);
+    }
+  }
+
+  //! Makes reach() refer to `pivot` (body coordinates).
+  void use_pivot(const Eigen::Vector3d& pivot) noexcept {
+    if (has_pivot_ && pivot == pivot_) return;
+    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = relative_reach(set_->groups()[i], pivot);
+    pivot_ = pivot;
+    has_pivot_ = true;
+  }
+
+  const MetricSetd& set() const noexcept { return *set_; }
+  std::optional<double> system_velocity() const noexcept { return system_velocity_; }
+  double weight(std::size_t group) const noexcept { return groups_[group].weight; }
+  double max_weight() const noexcept { return max_weight_; }
+  double reach(std::size_t group) const noexcept { return groups_[group].reach; }
+
+ private:
+  struct Factors {
+    double weight, reach;
+  };
+  const MetricSetd* set_;
+  std::optional<double> system_velocity_;
+  std::vector<Factors> groups_;
+  double max_weight_ = 0.0;
+  Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
+  bool has_pivot_ = false;
+};
+
+//! A section's length (weighted, see CurveSection::length) and acceleration bound
+//! (unweighted, see CurveSection::acceleration_bound), from one evaluation.
+struct SectionBounds {
+  double length, acceleration;
+};
 
 }  // namespace detail
 
@@ -99,15 +174,11 @@ struct CurveSection {
     return xi;
   }
 
-  //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and of exp.
+  //! Pose and body twist per unit τ at τ, sharing one evaluation of the polynomials and one
+  //! sine/cosine pair between exp and J_r.
   void at(double tau, Posed& pose_out, Twistd& twist_out) const noexcept {
-    const double h = span();
-    const double v = v0 + tau * h;
-    const Eigen::Vector3d phi = rotation.value(v);
-    const Eigen::Quaterniond q = (q0 * quaternion_exp(phi)).normalized();
-    const Eigen::Vector3d omega = h * right_jacobian_times(phi, rotation.first(v));
-    pose_out = Posed::unchecked(q, position.value(v) - q * pivot);
-    twist_out = Twistd(q.conjugate() * (h * position.first(v)) - omega.cross(pivot), omega);
+    const double v = v0 + tau * span();
+    pose_and_twist(position.value(v), position.first(v), rotation.value(v), rotation.first(v), pose_out, twist_out);
   }
 
   //! An upper bound of the speed of every object of the set per unit τ (never below the
@@ -127,6 +198,26 @@ struct CurveSection {
 
   //! Bounds over the section of |ċ|, |c̈|, |ω| ≤ |φ̇| and |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², per unit τ.
   detail::MotionBounds motion_bounds() const;
+
+  //! length() and acceleration_bound() together, sharing the motion bounds and the middle
+  //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
+  //! the groups' weights and reaches are per path).
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
+
+ private:
+  // Pose and body twist per unit τ where the curve has c, c′, φ, φ′ (per unit v).
+  void pose_and_twist(const Eigen::Vector3d& c, const Eigen::Vector3d& c_slope, const Eigen::Vector3d& phi,
+                      const Eigen::Vector3d& phi_slope, Posed& pose_out, Twistd& twist_out) const noexcept {
+    const double h = span();
+    Eigen::Quaterniond turn;
+    Eigen::Vector3d omega;
+    detail::exp_and_right_jacobian(phi, phi_slope, turn, omega);
+    omega *= h;
+    // A product of unit quaternions: unit to rounding without normalising.
+    const Eigen::Quaterniond q = q0 * turn;
+    pose_out = Posed::unchecked(q, c - q * pivot);
+    twist_out = Twistd(q.conjugate() * (h * c_slope) - omega.cross(pivot), omega);
+  }
 };
 
 // --- definitions (inline: the hexapod plugin uses curved sections without the umbrella) ---
@@ -136,7 +227,8 @@ namespace detail {
 // gives ‖dJ_r(φ)[u]‖ ≤ g′(θ)|u|. Its own series below 10⁻³ (the closed form cancels).
 inline double jacobian_rate_bound(double theta) {
   if (theta < 1e-3) return 0.5 + theta / 3.0 + theta * theta / 8.0;
-  return (theta * std::exp(theta) - std::exp(theta) + 1.0) / (theta * theta);
+  const double e = std::exp(theta);  // once: with errno semantics the compiler calls exp twice
+  return (theta * e - e + 1.0) / (theta * theta);
 }
 
 // Bounds of |p′| and |p″| of a cubic over [m − δ, m + δ], by Taylor at the middle m (exact
@@ -144,10 +236,30 @@ inline double jacobian_rate_bound(double theta) {
 struct DerivativeBounds {
   double first, second;
 };
-inline DerivativeBounds derivative_bounds(const Cubic3& p, double m, double delta) {
-  const double third = p.third().norm();
-  const double second_mid = p.second(m).norm();
-  return {p.first(m).norm() + second_mid * delta + 0.5 * third * delta * delta, second_mid + third * delta};
+
+// A cubic's value and derivatives at one parameter, evaluated once for all that needs them.
+struct CubicAt {
+  Eigen::Vector3d value, first, second;
+  double third_norm;
+};
+inline CubicAt cubic_at(const Cubic3& p, double v) noexcept { return {p.value(v), p.first(v), p.second(v), p.third().norm()}; }
+
+inline DerivativeBounds derivative_bounds(const CubicAt& at, double delta) noexcept {
+  const double second_mid = at.second.norm();
+  return {at.first.norm() + second_mid * delta + 0.5 * at.third_norm * delta * delta, second_mid + at.third_norm * delta};
+}
+inline DerivativeBounds derivative_bounds(const Cubic3& p, double m, double delta) noexcept {
+  return derivative_bounds(cubic_at(p, m), delta);
+}
+
+// The motion bounds of a section of span h from the curve at its middle (position c, rotation φ).
+inline MotionBounds motion_bounds_at_middle(const CubicAt& c, const CubicAt& phi, double h) {
+  const double delta = 0.5 * h;
+  const DerivativeBounds dc = derivative_bounds(c, delta);
+  const DerivativeBounds dphi = derivative_bounds(phi, delta);
+  const double theta_max = phi.value.norm() + dphi.first * delta;
+  return {h * dc.first, h * h * dc.second, h * dphi.first,
+          h * h * (dphi.second + jacobian_rate_bound(theta_max) * dphi.first * dphi.first)};
 }
 
 }  // namespace detail
@@ -160,31 +272,37 @@ inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept {
 
 inline double CurveSection::length(const MetricSetd& set, std::optional<double> system_velocity) const {
   set.require_well_formed();
+  detail::GroupFactors factors(set, system_velocity);
+  factors.use_pivot(pivot);
+  return bounds(factors).length;
+}
+
+inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
+  const MetricSetd& set = factors.set();
+  // The polynomials at the middle, once: the motion bounds, the middle pose and twist and the
+  // pivot's middle position all come from them.
   const double m = 0.5 * (v0 + v1);
-  const detail::MotionBounds motion = motion_bounds();
+  const detail::CubicAt c = detail::cubic_at(position, m), phi = detail::cubic_at(rotation, m);
+  const detail::MotionBounds motion = detail::motion_bounds_at_middle(c, phi, span());
   Posed middle;
   Twistd twist_middle;
-  at(0.5, middle, twist_middle);
-  const Eigen::Vector3d pivot_middle = position.value(m);
+  pose_and_twist(c.value, c.first, phi.value, phi.first, middle, twist_middle);
+  const Eigen::Vector3d& pivot_middle = c.value;
 
-  double best = 0.0;
-  for (const auto& g : set.groups()) {
-    const double rate = detail::group_acceleration_bound(g, pivot, pivot_middle, motion);
+  double length = 0.0, acceleration = 0.0;
+  for (std::size_t i = 0; i < set.groups().size(); ++i) {
+    const auto& g = set.groups()[i];
+    const double rate = detail::group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
     const double speed = detail::group_max_speed(g, middle, twist_middle);
-    best = std::max(best, g.weight(system_velocity) * (speed + 0.5 * rate));
+    length = std::max(length, factors.weight(i) * (speed + 0.5 * rate));
+    acceleration = std::max(acceleration, rate);
   }
-  return best;
+  return {length, acceleration};
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {
-  const double h = span();
   const double m = 0.5 * (v0 + v1);
-  const double delta = 0.5 * h;
-  const detail::DerivativeBounds c = detail::derivative_bounds(position, m, delta);
-  const detail::DerivativeBounds phi = detail::derivative_bounds(rotation, m, delta);
-  const double theta_max = rotation.value(m).norm() + phi.first * delta;
-  return {h * c.first, h * h * c.second, h * phi.first,
-          h * h * (phi.second + detail::jacobian_rate_bound(theta_max) * phi.first * phi.first)};
+  return detail::motion_bounds_at_middle(detail::cubic_at(position, m), detail::cubic_at(rotation, m), span());
 }
 
 inline double CurveSection::acceleration_bound(const MetricSetd& set) const {
@@ -197,13 +315,23 @@ inline double CurveSection::acceleration_bound(const MetricSetd& set) const {
 
 namespace detail {
 
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept {
+  double r = 0.0;
+  for (const auto& p : g.relative_points) r = std::max(r, (p - pivot).norm());
+  for (const auto& s : g.relative_spheres) r = std::max(r, (s.center - pivot).norm() + s.radius);
+  return r;
+}
+
 inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
-                                const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
-  // The largest distance of the group's body objects from the pivot, and of its absolute
-  // objects from the pivot anywhere on the section (at most |ċ|/2 from the middle).
-  double r_relative = 0.0, r_absolute = 0.0;
-  for (const auto& p : g.relative_points) r_relative = std::max(r_relative, (p - pivot).norm());
-  for (const auto& s : g.relative_spheres) r_relative = std::max(r_relative, (s.center - pivot).norm() + s.radius);
+                                       const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
+  return group_acceleration_bound(g, relative_reach(g, pivot), pivot_middle, b);
+}
+
+inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& b) noexcept {
+  // The largest distance of the group's absolute objects from the pivot anywhere on the
+  // section (at most |ċ|/2 from the middle); the body objects' reach is given.
+  double r_absolute = 0.0;
   bool has_absolute = false;
   for (const auto& p : g.absolute_points) {
     r_absolute = std::max(r_absolute, (p - pivot_middle).norm());

@@ -175,6 +175,19 @@ Scalar max_speed2(const PointColumns<Scalar>& points, const Eigen::Matrix<Scalar
                   const Eigen::Matrix<Scalar, 3, 1>& w) noexcept {
   if (points.empty()) return Scalar(0);
   const auto x = points.x(), y = points.y(), z = points.z();
+  if (points.size() <= 32) {
+    // A tool's handful of points: a plain loop (the same sums in the same order) is cheaper than
+    // setting up the array expression.
+    const Scalar *xs = x.data(), *ys = y.data(), *zs = z.data();
+    Scalar best(0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Scalar ex = v.x() + w.y() * zs[i] - w.z() * ys[i];
+      const Scalar ey = v.y() + w.z() * xs[i] - w.x() * zs[i];
+      const Scalar ez = v.z() + w.x() * ys[i] - w.y() * xs[i];
+      best = std::max(best, ex * ex + ey * ey + ez * ez);
+    }
+    return best;
+  }
   return ((v.x() + w.y() * z - w.z() * y).square() + (v.y() + w.z() * x - w.x() * z).square() +
           (v.z() + w.x() * y - w.y() * x).square())
       .maxCoeff();
@@ -299,16 +312,23 @@ template <typename Scalar>
 struct DecoupledSection {
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
 
-  DecoupledSection(const Pose<Scalar>& a, const Pose<Scalar>& b, const Vector3& pivot) noexcept {
-    const Vector3 ca = a * pivot;
-    delta_c = b * pivot - ca;
-    omega = quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion()));
+  DecoupledSection(const Pose<Scalar>& a, const Pose<Scalar>& b, const Vector3& pivot) noexcept
+      : DecoupledSection(a.quaternion(), b.quaternion(), a * pivot, b * pivot - a * pivot,
+                         quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion())), pivot) {}
+
+  // From its parts, when the caller knows them without a logarithm: the orientations at both
+  // ends, the pivot's start ca and travel Δc (world), and Ω = log(Raᵀ Rb) (body of a, angle
+  // in [0, π]).
+  DecoupledSection(const Eigen::Quaternion<Scalar>& qa, const Eigen::Quaternion<Scalar>& qb, const Vector3& ca,
+                   const Vector3& travel, const Vector3& rotation, const Vector3& pivot) noexcept {
+    delta_c = travel;
+    omega = rotation;
     theta = omega.norm();
     k = theta > Scalar(0) ? Vector3(omega / theta) : Vector3::UnitZ();
     pivot_body = pivot;
     // Body-frame views of Δc at both ends (Rb = Ra·exp(θk), so they differ by a turn about k).
-    d_a = a.quaternion().conjugate() * delta_c;
-    d_b = b.quaternion().conjugate() * delta_c;
+    d_a = qa.conjugate() * delta_c;
+    d_b = qb.conjugate() * delta_c;
     along = d_a.dot(k);
     d_a_across = d_a - along * k;
     d_b_across = d_b - along * k;
@@ -318,8 +338,8 @@ struct DecoupledSection {
     m_a = d_a.cross(omega);
     m_b = omega.cross(d_b);
     // World view for absolute points: g(τ) = Δc + θ ŵ × (x − c(τ)), affine in τ.
-    omega_world = a.quaternion() * omega;
-    w_hat = a.quaternion() * k;
+    omega_world = qa * omega;
+    w_hat = qa * k;
     pivot_start = ca;
   }
 

@@ -50,6 +50,9 @@ struct LinSection {
   //! the decoupled line has a constant pivot velocity and angular velocity; a screw's pivot
   //! turns about the screw axis (|c̈| = |ω × ċ|).
   double acceleration_bound(const MetricSetd& set) const;
+
+  //! length() and acceleration_bound() together (see CurveSection::bounds).
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
 };
 
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
@@ -64,9 +67,8 @@ struct ArcSection {
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
 
   Posed pose(double tau) const noexcept {
-    const Eigen::Vector3d c = center + Eigen::AngleAxisd(tau * angle, normal) * (start * pivot - center);
-    const Eigen::Quaterniond q =
-        (Eigen::Quaterniond(Eigen::AngleAxisd(tau * rotation_angle, rotation_axis)) * start.quaternion()).normalized();
+    const Eigen::Vector3d c = center + detail::axis_turn(normal, tau * angle) * (start * pivot - center);
+    const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, tau * rotation_angle) * start.quaternion()).normalized();
     return Posed::unchecked(q, c - q * pivot);
   }
 
@@ -89,9 +91,11 @@ struct ArcSection {
   //! position also differs by at most δ, adding θ δ through the rotation.
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     set.require_well_formed();
-    const Posed reference_end = reference_section_end();
-    const double reference = section_length(set, start, reference_end, Interpolation::decoupled, pivot, system_velocity);
-    return reference + (1.0 + std::abs(rotation_angle)) * deviation_bound() * max_weight(set, system_velocity);
+    detail::require_system_velocity(system_velocity);
+    require_finite(pivot, "pivot");
+    detail::GroupFactors factors(set, system_velocity);
+    factors.use_pivot(pivot);
+    return bounds(factors).length;
   }
 
   //! A bound of every object's acceleration per unit τ² (see CurveSection::acceleration_bound):
@@ -99,26 +103,53 @@ struct ArcSection {
   double acceleration_bound(const MetricSetd& set) const;
 
   //! δ = 2 φ ρ sin(φ/4): how far the pivot velocity along the arc strays from its middle value.
-  double deviation_bound() const noexcept {
-    const double radius = (start * pivot - center).norm();
-    return 2.0 * std::abs(angle) * radius * std::sin(std::abs(angle) / 4.0);
-  }
+  double deviation_bound() const noexcept { return deviation_bound((start * pivot - center).norm()); }
 
   //! The end pose of the reference (straight, constant-velocity) section.
   Posed reference_section_end() const noexcept {
     const Eigen::Vector3d c0 = start * pivot;
-    const Eigen::Vector3d mid = center + Eigen::AngleAxisd(0.5 * angle, normal) * (c0 - center);
-    const Eigen::Vector3d velocity = angle * normal.cross(mid - center);
-    const Eigen::Quaterniond q =
-        (Eigen::Quaterniond(Eigen::AngleAxisd(rotation_angle, rotation_axis)) * start.quaternion()).normalized();
-    return Posed::unchecked(q, c0 + velocity - q * pivot);
+    const Eigen::Quaterniond q = end_orientation();
+    return Posed::unchecked(q, c0 + middle_velocity(pivot_at_middle(c0)) - q * pivot);
+  }
+
+  //! length() and acceleration_bound() together (see CurveSection::bounds), sharing the
+  //! pivot's positions: its middle gives both the reference velocity and the absolute
+  //! objects' distances.
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
+    const MetricSetd& set = factors.set();
+    const Eigen::Vector3d c0 = start * pivot;
+    const Eigen::Vector3d middle = pivot_at_middle(c0);
+    // The reference section from its parts: its rotation is the arc's, θ ŵ seen from the start
+    // (no logarithm needed while |θ| ≤ π, the range of the logarithm).
+    const Eigen::Quaterniond q1 = end_orientation();
+    const Eigen::Vector3d rotation = std::abs(rotation_angle) <= 3.14159265358979323846
+                                         ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
+                                         : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
+    const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation, pivot);
+    const double radius = (c0 - center).norm();
+    const double phi = std::abs(angle);
+    const detail::MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
+    double length = 0.0, acceleration = 0.0;
+    for (std::size_t i = 0; i < set.groups().size(); ++i) {
+      const auto& g = set.groups()[i];
+      length = std::max(length, factors.weight(i) * detail::group_decoupled_length(g, reference));
+      acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
+    }
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation_bound(radius) * factors.max_weight(), acceleration};
   }
 
  private:
-  static double max_weight(const MetricSetd& set, std::optional<double> system_velocity) {
-    double w = 0.0;
-    for (const auto& g : set.groups()) w = std::max(w, g.weight(system_velocity));
-    return w;
+  double deviation_bound(double radius) const noexcept {
+    return 2.0 * std::abs(angle) * radius * std::sin(std::abs(angle) / 4.0);
+  }
+  // The pivot's world position at τ = ½, from its start c₀.
+  Eigen::Vector3d pivot_at_middle(const Eigen::Vector3d& c0) const noexcept {
+    return center + detail::axis_turn(normal, 0.5 * angle) * (c0 - center);
+  }
+  // The pivot's velocity per unit τ there, φ n × (c(½) − o): the reference section's.
+  Eigen::Vector3d middle_velocity(const Eigen::Vector3d& middle) const noexcept { return angle * normal.cross(middle - center); }
+  Eigen::Quaterniond end_orientation() const noexcept {
+    return (detail::axis_turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
   }
 };
 
@@ -152,6 +183,11 @@ inline double section_length(const Section& section, const MetricSetd& set,
 inline double section_acceleration_bound(const Section& section, const MetricSetd& set) {
   return std::visit([&](const auto& s) { return s.acceleration_bound(set); }, section);
 }
+
+namespace detail {
+//! Length and acceleration bound of any section from `factors` (whose pivot it sets).
+SectionBounds section_bounds(const Section& section, GroupFactors& factors);
+}  // namespace detail
 
 //! Geometry of a circle through three points (MATH: circumcentre), with the arc from the
 //! first to the last point passing through the middle one.

@@ -19,6 +19,7 @@
 #include "dispkin/path.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/profile.hpp"
+#include "dispkin/section_motion.hpp"
 
 namespace dispkin {
 
@@ -56,11 +57,12 @@ struct TrajectorySample {
   double s_ddot = 0.0; //!< s̈, m/s²
 };
 
-//! A planned trajectory. Sampling is noexcept and allocation-free.
+//! A planned trajectory. Sampling is noexcept and allocation-free; a control loop samples
+//! consecutive cycles fastest with a Cursor (sample(t, cursor)).
 class Trajectory {
  public:
   double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
-  double length() const noexcept { return section_s_.empty() ? 0.0 : section_s_.back() + lengths_.back(); }
+  double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
   std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
@@ -89,36 +91,27 @@ class Trajectory {
   //! (the body twist at ṡ = 1 m/s).
   void path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept;
 
+  //! Where a sequence of samples has got to: the time law and the section of the last sample.
+  //! A control loop keeps one per trajectory and passes it to sample(t, cursor), which then
+  //! finds the law and the section of a nearby time without searching. Any value is valid
+  //! (a default one, one left by another trajectory): it is only a hint.
+  struct Cursor {
+    std::size_t piece = 0;    //!< index of the time law of the last sample
+    std::size_t section = 0;  //!< index of the section of the last sample
+  };
+
   //! The state at time t (clamped to [0, duration]).
   TrajectorySample sample(double t) const noexcept;
-  //! out[i] = sample(times[i]).
+  //! The same state as sample(t), bit for bit, found from `cursor` (then moved to t): in
+  //! constant time when t lies in the law and section of the previous sample or the next
+  //! one, by binary search otherwise. Consecutive controller cycles are the fast case.
+  TrajectorySample sample(double t, Cursor& cursor) const noexcept;
+  //! out[i] = sample(times[i]), found with one cursor (fastest for increasing times).
   void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
 
  private:
   friend Trajectory plan(const Path&, const MetricSetd&, const Limits&, ProfileKind, const PlanOptions&);
   friend struct detail::TrajectoryAccess;  // re-timing: the same path under new time laws
-
-  // What sampling needs of a section, precomputed at planning time so that a sample costs one
-  // sine/cosine pair per rotation and no logarithm: the pivot on its line (c₀ + τΔc) or arc
-  // (about `normal` through `center` by τφ), the orientation turned by τθ about the world
-  // axis ŵ, t = c − R p. Screw sections keep T₀ and their constant twist ξ.
-  struct Motion {
-    enum class Kind { line, arc, screw, curve } kind = Kind::line;
-    Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
-    Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
-    Eigen::Vector3d center = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ();
-    double angle = 0.0;
-    Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
-    double theta = 0.0;
-    Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
-    Posed start;
-    Twistd xi;
-    CurveSection curve;  // a curved section samples its own polynomials
-
-    static Motion of(const Section& section);
-    //! Pose and body twist per unit τ at τ.
-    void at(double tau, Posed& pose, Twistd& twist) const noexcept;
-  };
 
   // One time law: over a segment of constant velocity limit, within a rest-to-rest run.
   struct Piece {
@@ -127,9 +120,23 @@ class Trajectory {
     double start_s;               // DISP arc length at its start
   };
 
-  std::vector<Motion> motions_;    // section k, ready to sample
-  std::vector<double> lengths_;    // L_k
-  std::vector<double> section_s_;  // s at the start of section k
+  // The law running at t: the first that ends after t (the last one for t ≥ duration), found
+  // from the hint `piece` when that or the next one is it.
+  std::size_t piece_at(double t, std::size_t piece) const noexcept;
+  // The section holding s: the last whose start is ≤ s (the first for s below it), found from
+  // the hint `section` when that or the next one is it.
+  std::size_t section_at(double s, std::size_t section) const noexcept;
+  // The pose and body twist per unit s at s, in the section section_at(s, hint), which it returns.
+  std::size_t section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_s) const noexcept;
+
+  detail::SectionMotions motions_;  // section k, ready to sample
+  // What sampling needs of section k: s at its start, and 1 / L_k (sampling multiplies).
+  struct SectionStart {
+    double s, inverse_length;
+  };
+
+  std::vector<double> lengths_;        // L_k
+  std::vector<SectionStart> starts_;   // of section k
   std::vector<Piece> pieces_;
   std::size_t rest_pieces_ = 0;
   std::vector<SpeedLimit> speed_limits_;

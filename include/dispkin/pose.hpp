@@ -89,6 +89,16 @@ Scalar half_sine_over_angle(Scalar theta) {
   return sin(theta / 2) / theta;
 }
 
+// The unit quaternion of a turn by `angle` (rad) about the unit `axis`: (cos ½α, sin ½α â),
+// one sine/cosine pair (cheaper than through an AngleAxis and its rotation matrix).
+template <typename Scalar>
+Eigen::Quaternion<Scalar> axis_turn(const Eigen::Matrix<Scalar, 3, 1>& axis, Scalar angle) noexcept {
+  using std::cos;
+  using std::sin;
+  const Scalar s = sin(angle / 2);
+  return Eigen::Quaternion<Scalar>(cos(angle / 2), s * axis.x(), s * axis.y(), s * axis.z());
+}
+
 template <typename Scalar>
 Eigen::Matrix<Scalar, 3, 3> hat(const Eigen::Matrix<Scalar, 3, 1>& w) {
   Eigen::Matrix<Scalar, 3, 3> m;

@@ -1,6 +1,8 @@
 // Python binding of dispkin/planner.hpp: Limits, plan, Trajectory.
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
@@ -42,7 +44,13 @@ py::array_t<double> sampled(const Sampled& traj, const py::object& times, std::v
   shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
   py::array_t<double> out(shape);
   double* data = out.mutable_data();
-  for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  if constexpr (std::is_same_v<Sampled, Trajectory>) {
+    // A cursor: consecutive times (the usual array) find their section without search.
+    Trajectory::Cursor cursor;
+    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
+  } else {
+    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  }
   return out;
 }
 

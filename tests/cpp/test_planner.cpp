@@ -1,6 +1,9 @@
 // The planner and MATH.md §7 oracle 4, the guarantee: along any planned trajectory, sampled
 // densely by finite differences, no point or sphere of the set moves faster than its limit.
+#include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -110,6 +113,77 @@ TEST(Planner, SamplesLieOnThePath) {
       const double tau = std::clamp(s / lengths[j], 0.0, 1.0);
       ASSERT_TRUE(now.pose.is_approx(section_pose(path.sections()[j], tau), 1e-12)) << i << " " << k;
     }
+  }
+}
+
+// The sampling forms' twists are the sections' own: ξ(τ) · ṡ / L_k, to rounding.
+TEST(Planner, SampledTwistIsTheSectionsTwist) {
+  Random rnd(205);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  for (int i = 0; i < 40; ++i) {
+    const Path path = random_path(rnd, i);
+    const Trajectory traj = plan(path, set, Limits{0.2, 1.0, 10.0});
+    const auto& lengths = traj.section_lengths();
+    for (int k = 0; k <= 100; ++k) {
+      const TrajectorySample now = traj.sample(traj.duration() * k / 100.0);
+      double s = now.s;
+      std::size_t j = 0;
+      while (j + 1 < lengths.size() && s > lengths[j]) s -= lengths[j++];
+      const double tau = std::clamp(s / lengths[j], 0.0, 1.0);
+      const Eigen::Matrix<double, 6, 1> expected = section_twist(path.sections()[j], tau).vector() * (now.s_dot / lengths[j]);
+      ASSERT_LE((now.body_twist.vector() - expected).norm(), 1e-12 * (1.0 + expected.norm())) << i << " " << k;
+    }
+  }
+}
+
+void expect_same_sample(const TrajectorySample& a, const TrajectorySample& b, const std::string& where) {
+  EXPECT_EQ(a.pose.quaternion().coeffs(), b.pose.quaternion().coeffs()) << where;
+  EXPECT_EQ(a.pose.translation(), b.pose.translation()) << where;
+  EXPECT_EQ(a.body_twist.vector(), b.body_twist.vector()) << where;
+  EXPECT_EQ(a.s, b.s) << where;
+  EXPECT_EQ(a.s_dot, b.s_dot) << where;
+  EXPECT_EQ(a.s_ddot, b.s_ddot) << where;
+}
+
+// sample(t, cursor) is sample(t), bit for bit, whatever the cursor holds: forwards at a
+// controller's cycle, backwards, at random, outside [0, T], at NaN, at every law and section
+// boundary, and with a cursor left by another trajectory.
+TEST(Planner, CursorSamplesEqualPlainSamples) {
+  Random rnd(206);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  const Trajectory other = plan(Path::circ(Posed(), Posed(Eigen::Quaterniond::Identity(), V(0.15, 0.2, 0)),
+                                           Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0))),
+                                set, Limits{0.2, 1.0, 10.0});
+  for (int i = 0; i < 24; ++i) {
+    const Trajectory traj = plan(random_path(rnd, i), set, Limits{0.2, 1.0, 10.0});
+    const double T = traj.duration();
+    std::vector<double> times;
+    for (int k = -5; k <= 1005; ++k) times.push_back(T * k / 1000.0);                  // forwards
+    for (int k = 1000; k >= 0; k -= 7) times.push_back(T * k / 1000.0);                // backwards
+    for (int k = 0; k < 300; ++k) times.push_back(rnd.uniform(-0.1 * T, 1.1 * T));    // random
+    for (double t : traj.characteristic_times()) {                                      // law phases
+      times.push_back(t);
+      times.push_back(std::nextafter(t, -1.0));
+      times.push_back(std::nextafter(t, 2.0 * T + 1.0));
+    }
+    times.push_back(std::numeric_limits<double>::quiet_NaN());
+    times.push_back(std::numeric_limits<double>::infinity());
+    times.push_back(-std::numeric_limits<double>::infinity());
+    Trajectory::Cursor cursor;
+    for (double t : times) expect_same_sample(traj.sample(t, cursor), traj.sample(t), "case " + std::to_string(i) + " t = " + std::to_string(t));
+    // A cursor from another trajectory (indices out of range here, or simply wrong).
+    for (int k = 0; k < 50; ++k) {
+      Trajectory::Cursor foreign;
+      other.sample(other.duration() * k / 50.0, foreign);
+      const double t = T * k / 50.0;
+      expect_same_sample(traj.sample(t, foreign), traj.sample(t), "foreign cursor, case " + std::to_string(i));
+    }
+    // The batch form uses a cursor too.
+    std::vector<TrajectorySample> batch(times.size());
+    traj.sample(times.data(), batch.data(), times.size());
+    for (std::size_t k = 0; k < times.size(); ++k) expect_same_sample(batch[k], traj.sample(times[k]), "batch");
   }
 }
 

@@ -99,7 +99,8 @@ TEST(Realtime, ProfileSamplingDoesNotAllocate) {
   EXPECT_TRUE(checksum >= 0.0);  // keeps the loop from being optimised away
 }
 
-// Sampling planned trajectories (LIN, screw, CIRC with ~1000 sections, a cornered chain):
+// Sampling planned trajectories (LIN, screw, CIRC with ~1000 sections, a cornered chain, a
+// blend, a SPLINE), at single times, in a batch and with a cursor:
 // no operator new, and Eigen's own no-malloc guard on.
 TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
   MetricSetd set;
@@ -130,8 +131,12 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
     Eigen::internal::set_is_malloc_allowed(false);
     for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).s_dot;
     traj.sample(times.data(), out.data(), times.size());
+    // With a cursor: forwards (the control loop), then backwards.
+    Trajectory::Cursor cursor;
+    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
+    for (int i = kTimes; i-- > 0;) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
     Eigen::internal::set_is_malloc_allowed(true);
-    EXPECT_EQ(allocations.load(), before) << "Trajectory::sample allocated";
+    EXPECT_EQ(allocations.load(), before) << "Trajectory::sample (plain, batch or with a cursor) allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
   }
   EXPECT_TRUE(checksum >= 0.0);

@@ -58,6 +58,19 @@ def test_guarantee_on_a_circ_and_a_cornered_chain():
     assert dispkin.plan(chain, tool, limits).piece_count == 2
 
 
+def test_sampling_does_not_depend_on_the_order_of_the_times():
+    """Sampling arrays follows the previous sample (a cursor): any order gives the same values."""
+    arc = dispkin.Path.circ(pose(0.3, 0, 0), pose(0, 0.3, 0, 0, 0, 30 * DEG), pose(-0.3, 0, 0, 0, 0, 90 * DEG))
+    traj = dispkin.plan(arc, tool_sphere(), dispkin.Limits(0.1, 1.0, 10.0))
+    times = np.concatenate([np.linspace(-0.1, 1.1, 2001), np.linspace(1.0, 0.0, 301)]) * traj.duration
+    shuffled = np.random.default_rng(4).permutation(times)
+    one_by_one = np.array([traj.sample([t])[0] for t in shuffled])
+    np.testing.assert_array_equal(traj.sample(shuffled), one_by_one)
+    order = np.argsort(shuffled, kind="stable")
+    np.testing.assert_array_equal(traj.sample(shuffled[order]), one_by_one[order])
+    np.testing.assert_array_equal(traj.sample_xyzuvw(times[::-1]), traj.sample_xyzuvw(times)[::-1])
+
+
 def test_kdl_eqradius_timing_exceeds_the_limit_dispkin_never_does():
     """Same moves: KDL-style path length max(|dp|, eqradius * angle) lets tool-sphere points run
     faster than commanded; dispkin's plan never does."""

@@ -1,0 +1,206 @@
+//! The sampling forms of path sections: what Trajectory::sample evaluates, precomputed at
+//! planning time so that a sample costs at most two sine/cosine pairs (one per turning
+//! angle), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
+//! allocation-free). Internal to the planner (namespace detail).
+//!
+//! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
+//! same motion as the section's own pose()/twist() (to rounding). Sections cut from one cubic
+//! curve share its form; lines and arcs keep one form each.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/curve_section.hpp"
+#include "dispkin/path.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+namespace detail {
+
+//! An orientation turning by α about a fixed world axis ŵ, q(α) = turn(ŵ, α) q₀, carrying
+//! the body point p (the pivot). With r = (0, ŵ) q₀ (a unit quaternion orthogonal to q₀):
+//!   q(α) = cos(α/2) q₀ + sin(α/2) r,
+//!   q(α) p = P∥ + cos α P⊥ + sin α ŵ × P⊥   (P = q₀ p split along ŵ and across it),
+//! and the body angular velocity per unit α, q(α)⁻¹ ŵ = q₀⁻¹ ŵ, is constant.
+struct TurningFrame {
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity(), r = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body
+  Eigen::Vector3d pivot_along = Eigen::Vector3d::Zero(), pivot_across = Eigen::Vector3d::Zero(),
+                  pivot_side = Eigen::Vector3d::Zero();  //!< P∥, P⊥, ŵ × P⊥ (world)
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   //!< θ q₀⁻¹ ŵ: ω_b per unit τ
+  Eigen::Vector3d omega_cross_pivot = Eigen::Vector3d::Zero();  //!< ω_b × p, constant too
+  double theta = 0.0;                                      //!< the turn over the section, rad
+
+  TurningFrame() = default;
+  TurningFrame(const Eigen::Quaterniond& start, const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& p) noexcept
+      : q0(start), w_hat(axis), pivot(p), theta(angle) {
+    r = Eigen::Quaterniond(0.0, axis.x(), axis.y(), axis.z()) * start;
+    const Eigen::Vector3d world = start * p;
+    pivot_along = world.dot(axis) * axis;
+    pivot_across = world - pivot_along;
+    pivot_side = axis.cross(pivot_across);
+    omega_body = angle * (start.conjugate() * axis);
+    omega_cross_pivot = omega_body.cross(p);
+  }
+
+  //! The cosine and sine of the turn τθ and the orientation, from one sine/cosine pair of τθ/2.
+  void at(double tau, Eigen::Quaterniond& q, double& cos_turn, double& sin_turn) const noexcept {
+    const double half = 0.5 * tau * theta;
+    const double s = std::sin(half), c = std::cos(half);
+    q = Eigen::Quaterniond(c * q0.coeffs() + s * r.coeffs());
+    cos_turn = 1.0 - 2.0 * s * s;
+    sin_turn = 2.0 * s * c;
+  }
+
+  //! q p for the turn with cosine c and sine s.
+  Eigen::Vector3d pivot_world(double c, double s) const noexcept { return pivot_along + c * pivot_across + s * pivot_side; }
+};
+
+//! A decoupled LIN section: the pivot at c₀ + τ Δc, the orientation turned by τθ about ŵ.
+//! The pivot velocity seen from the body, q(α)⁻¹ Δc = q₀⁻¹ turn(ŵ, −α) Δc, is
+//! q₀⁻¹ D∥ + cos α q₀⁻¹ D⊥ − sin α q₀⁻¹ (ŵ × D⊥) with D = Δc split along ŵ and across it.
+struct LineMotion {
+  TurningFrame frame;
+  Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
+  //! v_b = linear_fixed + cos α linear_cos + sin α linear_sin (ω_b × p folded into the first).
+  Eigen::Vector3d linear_fixed = Eigen::Vector3d::Zero(), linear_cos = Eigen::Vector3d::Zero(),
+                  linear_sin = Eigen::Vector3d::Zero();
+
+  LineMotion() = default;
+  LineMotion(const TurningFrame& turning, const Eigen::Vector3d& start, const Eigen::Vector3d& travel) noexcept
+      : frame(turning), c0(start), delta_c(travel) {
+    const Eigen::Quaterniond to_body = frame.q0.conjugate();
+    const Eigen::Vector3d along = travel.dot(frame.w_hat) * frame.w_hat, across = travel - along;
+    linear_fixed = to_body * along - frame.omega_cross_pivot;
+    linear_cos = to_body * across;
+    linear_sin = -(to_body * frame.w_hat.cross(across));
+  }
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond q;
+    double c, s;
+    frame.at(tau, q, c, s);
+    pose = Posed::unchecked(q, c0 + tau * delta_c - frame.pivot_world(c, s));
+    // Body twist: ω_b, v_b = q⁻¹ Δc − ω_b × p (the body origin is t = c − q p).
+    twist.angular = frame.omega_body;
+    twist.linear = linear_fixed + c * linear_cos + s * linear_sin;
+  }
+};
+
+//! A CIRC section: the pivot turned by τφ about the axis (centre o, normal n̂) from c₀, the
+//! orientation by τθ about ŵ. c(β) = o + R∥ + cos β R⊥ + sin β n̂ × R⊥ with R = c₀ − o.
+struct ArcMotion {
+  TurningFrame frame;
+  Eigen::Vector3d center_along = Eigen::Vector3d::Zero();  //!< o + R∥
+  Eigen::Vector3d radius_across = Eigen::Vector3d::Zero(), radius_side = Eigen::Vector3d::Zero();  //!< R⊥, n̂ × R⊥
+  double angle = 0.0;  //!< φ, rad
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond q;
+    double c, s;
+    frame.at(tau, q, c, s);
+    const double beta = tau * angle;
+    const double cb = std::cos(beta), sb = std::sin(beta);
+    pose = Posed::unchecked(q, center_along + cb * radius_across + sb * radius_side - frame.pivot_world(c, s));
+    // ċ = φ n̂ × (c − o) = φ (cos β n̂ × R⊥ − sin β R⊥).
+    const Eigen::Vector3d c_dot = angle * (cb * radius_side - sb * radius_across);
+    twist.angular = frame.omega_body;
+    twist.linear = q.conjugate() * c_dot - frame.omega_cross_pivot;
+  }
+};
+
+//! A screw section: T₀ exp(τ ξ), constant body twist ξ.
+struct ScrewMotion {
+  Posed start;
+  Twistd xi;
+
+  void at(double tau, Posed& pose, Twistd& twist) const noexcept {
+    pose = start * Posed::exp(xi * tau);
+    twist = xi;
+  }
+};
+
+//! Whether n doubles are equal bit for bit (+0 and −0 differ).
+inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
+  return std::memcmp(a, b, n * sizeof(double)) == 0;
+}
+
+//! Whether the curve (R₀, c, φ, p) is the one `section` is cut from: the same coefficients,
+//! bit for bit (one block comparison each; a false "no" only costs sharing).
+inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
+                       const Eigen::Vector3d& pivot, const CurveSection& section) noexcept {
+  return same_bits(section.q0.coeffs().data(), q0.coeffs().data(), 4) &&
+         same_bits(section.position.a[0].data(), position.a[0].data(), 12) &&
+         same_bits(section.rotation.a[0].data(), rotation.a[0].data(), 12) && same_bits(section.pivot.data(), pivot.data(), 3);
+}
+
+//! A cubic pose curve, shared by all the sections cut from it (they differ only in the part
+//! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
+//! per unit τ, as CurveSection::at.
+struct CurveMotion {
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
+  Cubic3 position, rotation;  //!< in v, as the CurveSection
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+
+  //! Whether `section` is cut from this curve.
+  bool holds(const CurveSection& section) const noexcept { return same_curve(q0, position, rotation, pivot, section); }
+
+  void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
+    Eigen::Quaterniond turn;
+    Eigen::Vector3d omega;
+    exp_and_right_jacobian(rotation.value(v), rotation.first(v), turn, omega);
+    omega *= h;
+    // A product of unit quaternions: unit to rounding without normalising.
+    const Eigen::Quaterniond q = q0 * turn;
+    pose = Posed::unchecked(q, position.value(v) - q * pivot);
+    twist.angular = omega;
+    twist.linear = q.conjugate() * (h * position.first(v)) - omega.cross(pivot);
+  }
+};
+
+//! The sampling forms of a path's sections, stored by kind so that each section costs only
+//! what its kind needs (a section of a curve: the part of the shared curve it runs over).
+class SectionMotions {
+ public:
+  //! Room for the forms of `sections` (planning side).
+  void reserve(const std::vector<Section>& sections);
+
+  //! Appends the form of the next section (planning side; allocates).
+  void append(const Section& section);
+
+  std::size_t size() const noexcept { return entries_.size(); }
+
+  //! Pose and body twist per unit τ of section k at τ.
+  void at(std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {
+    const Entry& e = entries_[k];
+    switch (e.kind) {
+      case Kind::line: lines_[e.index].at(tau, pose, twist); return;
+      case Kind::arc: arcs_[e.index].at(tau, pose, twist); return;
+      case Kind::screw: screws_[e.index].at(tau, pose, twist); return;
+      case Kind::curve: curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist); return;
+    }
+  }
+
+ private:
+  enum class Kind : unsigned char { line, arc, screw, curve };
+  struct Entry {
+    Kind kind;
+    std::size_t index;       // into the vector of its kind
+    double v0 = 0.0, span = 0.0;  // a curve's part: v = v₀ + τ h
+  };
+  std::vector<Entry> entries_;
+  std::vector<LineMotion> lines_;
+  std::vector<ArcMotion> arcs_;
+  std::vector<ScrewMotion> screws_;
+  std::vector<CurveMotion> curves_;
+};
+
+}  // namespace detail
+}  // namespace dispkin
