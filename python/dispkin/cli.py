@@ -312,7 +312,11 @@ def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -
 
 
 def _positive_int(text: str) -> int:
-    value = int(text)
+    # Not-a-number is reported here too: argparse would name this function in its message.
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {text!r}") from None
     if value < 1:
         raise argparse.ArgumentTypeError(f"must be a positive integer, got {value}")
     return value
