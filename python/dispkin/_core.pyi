@@ -1,6 +1,7 @@
 # Type stubs of the compiled module dispkin._core (python/src/*.cpp). Arrays are float64
 # numpy arrays; anything numpy can read as numbers of the right shape is accepted.
-import types
+# Hand-written for precise types; tests/python/test_stubs.py checks every name, parameter and
+# default against the stubs pybind11-stubgen generates from the module (`make stubs`).
 from typing import Dict, List, Optional, Protocol, Sequence, Tuple, Union, overload
 
 import numpy as np
@@ -10,8 +11,21 @@ _Array = npt.NDArray[np.float64]
 _ArrayLike = Union[npt.ArrayLike, Sequence[float]]
 
 __version__: str
-#: The submodule with box, icosahedron, icosphere, spherical_shell (wrapped by dispkin.shapes).
-shapes: types.ModuleType
+
+class _ShapesModule(Protocol):
+    """The submodule dispkin._core.shapes (re-exported by dispkin.shapes): point-set builders,
+    each returning an (N, 3) array of points in metres."""
+
+    @staticmethod
+    def box(size: _ArrayLike, center: _ArrayLike = (0.0, 0.0, 0.0)) -> _Array: ...
+    @staticmethod
+    def icosahedron(radius: float, center: _ArrayLike = (0.0, 0.0, 0.0), circumscribed: bool = True) -> _Array: ...
+    @staticmethod
+    def icosphere(radius: float, subdivisions: int, center: _ArrayLike = (0.0, 0.0, 0.0)) -> _Array: ...
+    @staticmethod
+    def spherical_shell(radius: float, count: int, pivot: _ArrayLike = (0.0, 0.0, 0.0)) -> _Array: ...
+
+shapes: _ShapesModule
 
 class Pose:
     def __init__(self, quaternion: _ArrayLike = (1.0, 0.0, 0.0, 0.0), translation: _ArrayLike = (0.0, 0.0, 0.0)) -> None: ...

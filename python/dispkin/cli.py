@@ -132,8 +132,8 @@ frames:
   tool: {xyzuvw: [0, 0, 0.12, 0, 0, 0]}      # the tool tip, platform coordinates
 metric_set:
   points:
-    - {shape: icosahedron, radius: 0.01, centre: [0, 0, 0.12]}   # around the tool tip
-    - {shape: icosahedron, radius: 0.03, centre: [0, 0, 0]}      # around the platform centre
+    - {shape: icosahedron, radius: 0.01, center: [0, 0, 0.12]}   # around the tool tip
+    - {shape: icosahedron, radius: 0.03, center: [0, 0, 0]}      # around the platform centre
 start: {xyzuvw: [0, 0, 0, 0, 0, 0]}          # the tool frame in the work frame (here: the base)
 moves:
   - lin: {to: {xyzuvw: [0.01, 0, 0, 0, 4, 0]}}
@@ -312,13 +312,19 @@ def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -
 
 
 def _positive_int(text: str) -> int:
-    value = int(text)
+    # Not-a-number is reported here too: argparse would name this function in its message.
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {text!r}") from None
     if value < 1:
         raise argparse.ArgumentTypeError(f"must be a positive integer, got {value}")
     return value
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of ``dispkin`` with its commands demo, check and plan (``--help``
+    documents every option)."""
     parser = argparse.ArgumentParser(
         prog="dispkin",
         description="Robot trajectories under a point-set speed limit (the Euclidean DISP metric).",

@@ -288,6 +288,10 @@ class Job:
         return []
 
 
+#: The keys of a metric_set.points entry that only a `shape` entry uses.
+_SHAPE_PARAMETERS = ("center", "centre", "radius", "size", "subdivisions", "count", "circumscribed")
+
+
 class _Builder:
     """Turns validated job data into library objects; every error names its key path."""
 
@@ -385,6 +389,10 @@ class _Builder:
         for i, entry in enumerate(m.get("points", [])):
             at: KeyPath = ("metric_set", "points", i)
             group = entry.get("group", 0)
+            if "shape" not in entry:  # the schema allows the shape keys everywhere; only shapes use them
+                for key in _SHAPE_PARAMETERS:
+                    if key in entry:
+                        raise self.fail(at + (key,), "a parameter of shapes only, not of a list of points")
             if "relative" in entry:
                 self.call(at + ("relative",), metric_set.add_relative, entry["relative"], group)
             elif "absolute" in entry and "shape" not in entry:
@@ -415,7 +423,10 @@ class _Builder:
 
     def shape(self, metric_set: MetricSet, entry: Dict[str, Any], at: KeyPath, group: int) -> None:
         kind = entry["shape"]
-        centre = entry.get("centre", (0.0, 0.0, 0.0))
+        # `center` as the API spells it; `centre`, the spelling of earlier job files, still reads.
+        if "center" in entry and "centre" in entry:
+            raise self.fail(at + ("centre",), "`centre` is an alias of `center`: give one of them, not both")
+        center = entry.get("center", entry.get("centre", (0.0, 0.0, 0.0)))
         absolute = bool(entry.get("absolute", False))
         unused = {"icosahedron": ("size", "subdivisions", "count"), "icosphere": ("size", "count", "circumscribed"),
                   "box": ("radius", "subdivisions", "count", "circumscribed"),
@@ -425,16 +436,16 @@ class _Builder:
             if key in entry:
                 raise self.fail(at + (key,), f"not a parameter of shape {kind!r}")
         if kind == "sphere":
-            self.call(at, metric_set.add_sphere, centre, entry["radius"], absolute, group)
+            self.call(at, metric_set.add_sphere, center, entry["radius"], absolute, group)
             return
         if kind == "icosahedron":
-            points = self.call(at, shapes.icosahedron, entry["radius"], centre, entry.get("circumscribed", True))
+            points = self.call(at, shapes.icosahedron, entry["radius"], center, entry.get("circumscribed", True))
         elif kind == "icosphere":
-            points = self.call(at, shapes.icosphere, entry["radius"], entry["subdivisions"], centre)
+            points = self.call(at, shapes.icosphere, entry["radius"], entry["subdivisions"], center)
         elif kind == "box":
-            points = self.call(at, shapes.box, entry["size"], centre)
+            points = self.call(at, shapes.box, entry["size"], center)
         else:
-            points = self.call(at, shapes.spherical_shell, entry["radius"], entry["count"], centre)
+            points = self.call(at, shapes.spherical_shell, entry["radius"], entry["count"], center)
         add = metric_set.add_absolute if absolute else metric_set.add_relative
         self.call(at, add, points, group)
 
@@ -601,8 +612,8 @@ def group_sets(metric_set: MetricSet) -> Dict[int, MetricSet]:
             one.add_relative(relative)
         if len(absolute):
             one.add_absolute(absolute)
-        for centre, radius, is_absolute in metric_set.spheres(group):
-            one.add_sphere(centre, radius, is_absolute)
+        for center, radius, is_absolute in metric_set.spheres(group):
+            one.add_sphere(center, radius, is_absolute)
         out[group] = one
     return out
 

@@ -83,6 +83,19 @@ upper bounds.)doc")
           "section.")
       .def("__repr__", [](const SectionHolder& s) { return std::string("Section(kind=\"") + section_kind(s) + "\")"; });
 
+  // Before Path, so that the signature of Path.ptp names the Python type, not the C++ one.
+  py::class_<JointPath>(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).")
+      .def_property_readonly("start", &JointPath::start, "q at u = 0.")
+      .def_property_readonly("end", &JointPath::end, "q at u = 1.")
+      .def(
+          "sample",
+          [](const JointPath& p, double u) {
+            require_finite(u, "u");
+            return p.sample(u);
+          },
+          py::arg("u"), "q(u) = q_a + u (q_b - q_a), u clamped to [0, 1].")
+      .def("__repr__", [](const JointPath& p) { return "JointPath(" + std::to_string(p.start().size()) + " joints)"; });
+
   py::class_<Path>(m, "Path", R"doc(
 A pose path (geometry only, no time): a chain of sections. Build it with Path.lin / Path.circ
 and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
@@ -148,18 +161,6 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
       .def_property_readonly("end", &Path::end, "The last pose.")
       .def("__len__", &Path::size, "Number of sections.")
       .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " sections)"; });
-
-  py::class_<JointPath>(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).")
-      .def_property_readonly("start", &JointPath::start, "q at u = 0.")
-      .def_property_readonly("end", &JointPath::end, "q at u = 1.")
-      .def(
-          "sample",
-          [](const JointPath& p, double u) {
-            require_finite(u, "u");
-            return p.sample(u);
-          },
-          py::arg("u"), "q(u) = q_a + u (q_b - q_a), u clamped to [0, 1].")
-      .def("__repr__", [](const JointPath& p) { return "JointPath(" + std::to_string(p.start().size()) + " joints)"; });
 }
 
 }  // namespace python

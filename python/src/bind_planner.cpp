@@ -107,10 +107,12 @@ void bind_planner(py::module_& m) {
              if (jerk) require_positive(*jerk, "jerk");
              return limits;
            }),
-           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none())
-      .def_readonly("velocity", &Limits::velocity)
-      .def_readonly("acceleration", &Limits::acceleration)
-      .def_readonly("jerk", &Limits::jerk)
+           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(),
+           "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each finite and "
+           "> 0; the jerk is required by the S-curve profile and refused by the trapezoid (plan checks).")
+      .def_readonly("velocity", &Limits::velocity, "The path velocity limit, m/s: no point of the metric set moves faster.")
+      .def_readonly("acceleration", &Limits::acceleration, "The path acceleration limit, m/s^2.")
+      .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")
       .def("__repr__", [](const Limits& l) {
         return "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
                ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None")) + ")";
@@ -157,7 +159,9 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
       .def(py::init([](const Trajectory& before, const Trajectory& after, double overlap, const py::object& pivot) {
              return OverlappedTrajectory(before, after, overlap, vector3(pivot, "pivot"));
            }),
-           py::arg("before"), py::arg("after"), py::arg("overlap"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"))
+           py::arg("before"), py::arg("after"), py::arg("overlap"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
+           "`after` started `overlap` seconds (0 <= overlap <= the shorter duration) before `before` ends; "
+           "`after` must start where `before` ends. `pivot`: the body point (metres) whose velocities add.")
       .def_property_readonly("duration", &OverlappedTrajectory::duration, "Seconds.")
       .def_property_readonly("overlap", &OverlappedTrajectory::overlap, "Seconds during which both moves run.")
       .def_property_readonly("overlap_start", &OverlappedTrajectory::overlap_start, "When the second move starts, seconds.")

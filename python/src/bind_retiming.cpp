@@ -106,10 +106,10 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       "range. No dynamics model: torques stay empty and acceleration_factor 0.");
 
   py::class_<RetimeResult>(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.")
-      .def_readonly("trajectory", &RetimeResult::trajectory)
-      .def_readonly("limits", &RetimeResult::limits)
-      .def_readonly("iterations", &RetimeResult::iterations)
-      .def_readonly("report", &RetimeResult::report);
+      .def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
+      .def_readonly("limits", &RetimeResult::limits, "The scaled limits it was planned with.")
+      .def_readonly("iterations", &RetimeResult::iterations, "Plans made (1: the original plan already fits).")
+      .def_readonly("report", &RetimeResult::report, "The joint-limit report of the final trajectory (within_limits is True).");
 
   py::class_<OptimalRetimeResult>(m, "OptimalRetimeResult", R"doc(
 What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
@@ -117,8 +117,9 @@ grid interval), the dense check of it (`report`), the largest joint velocity, ac
 torque ratios found by that check (each <= 1; torque = static + dynamic against the effort limit),
 the fraction by which the limits were tightened on the grid so that they also hold between grid
 points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc")
-      .def_readonly("trajectory", &OptimalRetimeResult::trajectory)
-      .def_readonly("report", &OptimalRetimeResult::report)
+      .def_readonly("trajectory", &OptimalRetimeResult::trajectory,
+                    "The re-timed trajectory: the same path, one constant-acceleration law per grid interval.")
+      .def_readonly("report", &OptimalRetimeResult::report, "The dense joint-limit check of `trajectory`.")
       .def_readonly("velocity_ratio", &OptimalRetimeResult::velocity_ratio, "max |qd_i| / qd_max_i at the checked samples.")
       .def_readonly("acceleration_ratio", &OptimalRetimeResult::acceleration_ratio,
                     "max |qdd_i| / qdd_max_i at the checked samples (0 without acceleration limits).")

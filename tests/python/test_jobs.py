@@ -42,6 +42,8 @@ BAD_JOBS = {
     "bad_hexapod_two_sources.yaml": ("machine.hexapod", 2, "expected exactly one of `file` | `description` | `symmetric`"),
     "bad_output_path.yaml": ("output.csv", 9, "a file name, not a path"),
     "bad_not_a_mapping.yaml": ("(job)", 1, "a job is a mapping"),
+    "bad_center_and_centre.yaml": ("metric_set.points[1].centre", 5, "`centre` is an alias of `center`: give one of them, not both"),
+    "bad_center_on_points.yaml": ("metric_set.points[0].center", 4, "a parameter of shapes only"),
 }
 
 
@@ -219,6 +221,27 @@ def test_blend_removes_the_stops_and_matches_the_api():
     traj = jobs.plan_job(job)
     assert traj.piece_count == 1 and [m.kind for m in job.moves] == ["lin", "circ", "lin"]
     assert traj.duration == pytest.approx(api.duration, rel=1e-12)
+
+
+def test_center_is_the_spelling_and_centre_its_alias(tmp_path):
+    """Job files spell `center` as the API does; `centre` (earlier job files) builds the same job."""
+    for example in ("blended_tool_move.yaml", "ur5e_lin_move.yaml"):
+        text = (ROOT / "examples" / "jobs" / example).read_text()
+        assert "center: [" in text and "centre" not in text
+        text = text.replace("urdf: ../../tests/", f"urdf: {ROOT}/tests/")  # the copy is elsewhere
+        (tmp_path / example).write_text(text.replace("center: [", "centre: ["))
+        center, centre = jobs.load_job(ROOT / "examples" / "jobs" / example), jobs.load_job(tmp_path / example)
+        assert center.metric_set.groups == centre.metric_set.groups
+        for group in center.metric_set.groups:
+            np.testing.assert_array_equal(center.metric_set.relative_points(group), centre.metric_set.relative_points(group))
+            assert [(c.tolist(), r, a) for c, r, a in center.metric_set.spheres(group)] == \
+                [(c.tolist(), r, a) for c, r, a in centre.metric_set.spheres(group)]
+        assert jobs.plan_job(center).duration == jobs.plan_job(centre).duration
+    # The centre is used, whichever the spelling: a tool tip 0.2 m off the flange is slower to turn.
+    job = (ROOT / "examples" / "jobs" / "blended_tool_move.yaml").read_text()
+    for key in ("center", "centre"):
+        (tmp_path / f"{key}.yaml").write_text(job.replace("center: [0, 0, 0.2]", f"{key}: [0, 0, 0.5]"))
+        assert jobs.plan_job(jobs.load_job(tmp_path / f"{key}.yaml")).duration > jobs.plan_job(jobs.load_job(ROOT / "examples" / "jobs" / "blended_tool_move.yaml")).duration
 
 
 def test_time_from_start_carries_nanoseconds():
