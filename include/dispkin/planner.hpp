@@ -30,9 +30,9 @@ struct TrajectoryAccess;
 //! System limits in the DISP metric: velocity (m/s), acceleration (m/s²), jerk (m/s³, for the
 //! S-curve). Each must be finite and positive.
 struct Limits {
-  double velocity = 0.0;
-  double acceleration = 0.0;
-  std::optional<double> jerk;
+  double velocity = 0.0;       //!< v_sys (m/s): no point of the set faster (groups: their own limit)
+  double acceleration = 0.0;   //!< |s̈| ≤ this (m/s²); the curvature rule lowers the speed where the path bends
+  std::optional<double> jerk;  //!< |s⃛| ≤ this (m/s³), S-curve only
 
   //! Throws std::invalid_argument naming the limit; the jerk is required for the S-curve
   //! and refused for the trapezoid (it would be silently ignored).
