@@ -316,22 +316,22 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   out.s = piece.start_s + law.s;
   out.s_dot = law.v;
   out.s_ddot = law.a;
-  cursor.section = section_state(out.s, cursor.section, out.pose, out.body_twist);
-  out.body_twist = out.body_twist * out.s_dot;
+  const std::size_t k = cursor.section = section_state(out.s, cursor.section, out.pose, out.body_twist);
+  out.body_twist = out.body_twist * (out.s_dot * starts_[k].inverse_length);  // per τ → per second
   return out;
 }
 
 void Trajectory::path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept {
   if (starts_.empty()) return;
-  section_state(s, starts_.size(), pose, twist_per_s);
+  const std::size_t k = section_state(s, starts_.size(), pose, twist_per_s);
+  twist_per_s = twist_per_s * starts_[k].inverse_length;
 }
 
-std::size_t Trajectory::section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_s) const noexcept {
+std::size_t Trajectory::section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_tau) const noexcept {
   const std::size_t k = section_at(s, hint);
   const SectionStart& start = starts_[k];
   const double tau = std::clamp((s - start.s) * start.inverse_length, 0.0, 1.0);
-  motions_.at(k, tau, pose, twist_per_s);
-  twist_per_s = twist_per_s * start.inverse_length;
+  motions_.at(k, tau, pose, twist_per_tau);
   return k;
 }
 

@@ -89,16 +89,13 @@ using detail::tracked_solution;
 using detail::joint_velocity;
 using detail::where;
 
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
-                                    const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
+namespace {
+
+// The checked instants of `trajectory` (options validated here): its characteristic points
+// and samples_between equidistant ones between consecutive ones.
+std::vector<double> checked_times(const Trajectory& trajectory, const JointCheckOptions& options) {
   require(options.samples_between >= 0, "samples_between", static_cast<long>(options.samples_between), "must be ≥ 0");
   require_positive(options.difference_step, "difference_step");
-  require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
-          "must equal the arm's dof " + std::to_string(arm.dof()));
-  require_finite(q_start, "q_start");
-  const JointLimits limits = arm.joint_limits();
-
-  // The checked instants: characteristic points and equidistant ones between them.
   const std::vector<double> marks = trajectory.characteristic_times();
   std::vector<double> times;
   for (std::size_t k = 0; k + 1 < marks.size(); ++k) {
@@ -106,6 +103,19 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
       times.push_back(marks[k] + (marks[k + 1] - marks[k]) * i / (options.samples_between + 1));
   }
   times.push_back(marks.back());
+  return times;
+}
+
+}  // namespace
+
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
+                                    const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
+  const std::vector<double> times = checked_times(trajectory, options);
+  require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
+          "must equal the arm's dof " + std::to_string(arm.dof()));
+  require_finite(q_start, "q_start");
+  const JointLimits limits = arm.joint_limits();
+
 
   JointLimitReport report;
   const double duration = trajectory.duration();
@@ -177,46 +187,40 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
                                     const JointCheckOptions& options) {
-  require(options.samples_between >= 0, "samples_between", static_cast<long>(options.samples_between), "must be ≥ 0");
-  require_positive(options.difference_step, "difference_step");
-  const std::vector<double> marks = trajectory.characteristic_times();
+  const std::vector<double> times = checked_times(trajectory, options);
   const double duration = trajectory.duration(), h = options.difference_step;
   auto leg_speeds = [&](const TrajectorySample& at) -> Eigen::VectorXd {
     return hexapod.leg_jacobian(at.pose) * at.body_twist.vector();
   };
   JointLimitReport report;
-  for (std::size_t m = 0; m < marks.size(); ++m) {
-    const int between = m + 1 < marks.size() ? options.samples_between : 0;
-    for (int i = 0; i <= between; ++i) {
-      const double t = m + 1 < marks.size() ? marks[m] + (marks[m + 1] - marks[m]) * i / (between + 1) : marks[m];
-      const TrajectorySample here = trajectory.sample(t);
-      JointSample sample;
-      sample.time = t;
-      sample.s = here.s;
-      sample.q = hexapod.leg_lengths(here.pose);
-      sample.qd = leg_speeds(here);
-      const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
-      sample.qdd = t_after > t_before
-                       ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
-                                         (t_after - t_before))
-                       : Eigen::VectorXd::Zero(6);
-      const std::size_t index = report.samples.size();
-      for (int k = 0; k < 6; ++k) {
-        const double excess = std::max(hexapod.leg_min()(k) - sample.q(k), sample.q(k) - hexapod.leg_max()(k));
-        if (excess > report.position_excess) {
-          report.position_excess = excess;
-          report.position_joint = k;
-          report.position_sample = index;
-        }
-        const double f = std::abs(sample.qd(k)) / hexapod.leg_speed()(k);
-        if (f > report.velocity_factor) {
-          report.velocity_factor = f;
-          report.velocity_joint = k;
-          report.velocity_sample = index;
-        }
+  for (const double t : times) {
+    const TrajectorySample here = trajectory.sample(t);
+    JointSample sample;
+    sample.time = t;
+    sample.s = here.s;
+    sample.q = hexapod.leg_lengths(here.pose);
+    sample.qd = leg_speeds(here);
+    const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
+    sample.qdd = t_after > t_before
+                     ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
+                                       (t_after - t_before))
+                     : Eigen::VectorXd::Zero(6);
+    const std::size_t index = report.samples.size();
+    for (int k = 0; k < 6; ++k) {
+      const double excess = std::max(hexapod.leg_min()(k) - sample.q(k), sample.q(k) - hexapod.leg_max()(k));
+      if (excess > report.position_excess) {
+        report.position_excess = excess;
+        report.position_joint = k;
+        report.position_sample = index;
       }
-      report.samples.push_back(std::move(sample));
+      const double f = std::abs(sample.qd(k)) / hexapod.leg_speed()(k);
+      if (f > report.velocity_factor) {
+        report.velocity_factor = f;
+        report.velocity_joint = k;
+        report.velocity_sample = index;
+      }
     }
+    report.samples.push_back(std::move(sample));
   }
   return report;
 }

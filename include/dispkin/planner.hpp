@@ -126,8 +126,9 @@ class Trajectory {
   // The section holding s: the last whose start is ≤ s (the first for s below it), found from
   // the hint `section` when that or the next one is it.
   std::size_t section_at(double s, std::size_t section) const noexcept;
-  // The pose and body twist per unit s at s, in the section section_at(s, hint), which it returns.
-  std::size_t section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_s) const noexcept;
+  // The pose and body twist per unit τ at s, in the section section_at(s, hint), which it
+  // returns (callers scale the twist once: by 1/L_k, or by ṡ/L_k when sampling).
+  std::size_t section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_tau) const noexcept;
 
   detail::SectionMotions motions_;  // section k, ready to sample
   // What sampling needs of section k: s at its start, and 1 / L_k (sampling multiplies).

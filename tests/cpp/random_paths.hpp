@@ -77,24 +77,29 @@ inline MetricSetd random_set(Random& rnd, double v_sys) {
   return set;
 }
 
-// Largest speed / limit ratio over the trajectory, by finite differences of the motion itself
-// (a chord over dt is never longer than the arc, so this never over-estimates).
+// The largest speed / limit ratio of the set's points and spheres over [t, t + dt], by the chord
+// of the motion itself (a chord over dt is never longer than the arc, so this never over-estimates).
+inline double chord_speed_ratio(const Trajectory& traj, const MetricSetd& set, double v_sys, double t, double dt) {
+  const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;
+  const Twistd xi = (p.inverse() * q).log() * (1.0 / dt);
+  double worst = 0;
+  for (const auto& g : set.groups()) {
+    const double limit = g.speed_limit.value_or(v_sys);
+    double speed = 0;
+    for (const V& r : g.relative_points) speed = std::max(speed, ((q * r) - (p * r)).norm() / dt);
+    for (const V& x : g.absolute_points) speed = std::max(speed, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
+    for (const auto& s : g.relative_spheres) speed = std::max(speed, sphere_speed(xi, s.center, s.radius));
+    for (const auto& s : g.absolute_spheres) speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
+    worst = std::max(worst, speed / limit);
+  }
+  return worst;
+}
+
+// Largest speed / limit ratio over the whole trajectory, in `steps` consecutive chords.
 inline double worst_speed_ratio(const Trajectory& traj, const MetricSetd& set, double v_sys, int steps) {
   const double dt = traj.duration() / steps;
   double worst = 0;
-  for (int i = 0; i < steps; ++i) {
-    const Posed p = traj.sample(i * dt).pose, q = traj.sample((i + 1) * dt).pose;
-    const Twistd xi = (p.inverse() * q).log() * (1.0 / dt);
-    for (const auto& g : set.groups()) {
-      const double limit = g.speed_limit.value_or(v_sys);
-      double speed = 0;
-      for (const V& r : g.relative_points) speed = std::max(speed, ((q * r) - (p * r)).norm() / dt);
-      for (const V& x : g.absolute_points) speed = std::max(speed, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
-      for (const auto& s : g.relative_spheres) speed = std::max(speed, sphere_speed(xi, s.center, s.radius));
-      for (const auto& s : g.absolute_spheres) speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
-      worst = std::max(worst, speed / limit);
-    }
-  }
+  for (int i = 0; i < steps; ++i) worst = std::max(worst, chord_speed_ratio(traj, set, v_sys, i * dt, dt));
   return worst;
 }
 
@@ -105,18 +110,7 @@ inline double worst_speed_ratio_at_random_times(const Trajectory& traj, const Me
   const double dt = traj.duration() * 1e-4;
   double worst = 0;
   for (int i = 0; i < count; ++i) {
-    const double t = rnd.uniform(0.0, traj.duration() - dt);
-    const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;
-    const Twistd xi = (p.inverse() * q).log() * (1.0 / dt);
-    for (const auto& g : set.groups()) {
-      const double limit = g.speed_limit.value_or(v_sys);
-      double speed = 0;
-      for (const V& r : g.relative_points) speed = std::max(speed, ((q * r) - (p * r)).norm() / dt);
-      for (const V& x : g.absolute_points) speed = std::max(speed, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
-      for (const auto& s : g.relative_spheres) speed = std::max(speed, sphere_speed(xi, s.center, s.radius));
-      for (const auto& s : g.absolute_spheres) speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
-      worst = std::max(worst, speed / limit);
-    }
+    worst = std::max(worst, chord_speed_ratio(traj, set, v_sys, rnd.uniform(0.0, traj.duration() - dt), dt));
   }
   return worst;
 }

@@ -1,8 +1,10 @@
 // The planner and MATH.md §7 oracle 4, the guarantee: along any planned trajectory, sampled
 // densely by finite differences, no point or sphere of the set moves faster than its limit.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -96,6 +98,14 @@ TEST(Planner, SampleReportsTheTwistOfTheMotion) {
   }
 }
 
+// The section holding path position s (by walking the lengths, independently of the
+// trajectory's own search) and τ within it.
+std::pair<std::size_t, double> section_and_tau(const std::vector<double>& lengths, double s) {
+  std::size_t j = 0;
+  while (j + 1 < lengths.size() && s > lengths[j]) s -= lengths[j++];
+  return {j, std::clamp(s / lengths[j], 0.0, 1.0)};
+}
+
 // The precomputed sampling form of each section reproduces the path's own geometry.
 TEST(Planner, SamplesLieOnThePath) {
   Random rnd(204);
@@ -107,10 +117,7 @@ TEST(Planner, SamplesLieOnThePath) {
     const auto& lengths = traj.section_lengths();
     for (int k = 0; k <= 100; ++k) {
       const TrajectorySample now = traj.sample(traj.duration() * k / 100.0);
-      double s = now.s;
-      std::size_t j = 0;
-      while (j + 1 < lengths.size() && s > lengths[j]) s -= lengths[j++];
-      const double tau = std::clamp(s / lengths[j], 0.0, 1.0);
+      const auto [j, tau] = section_and_tau(lengths, now.s);
       ASSERT_TRUE(now.pose.is_approx(section_pose(path.sections()[j], tau), 1e-12)) << i << " " << k;
     }
   }
@@ -127,10 +134,7 @@ TEST(Planner, SampledTwistIsTheSectionsTwist) {
     const auto& lengths = traj.section_lengths();
     for (int k = 0; k <= 100; ++k) {
       const TrajectorySample now = traj.sample(traj.duration() * k / 100.0);
-      double s = now.s;
-      std::size_t j = 0;
-      while (j + 1 < lengths.size() && s > lengths[j]) s -= lengths[j++];
-      const double tau = std::clamp(s / lengths[j], 0.0, 1.0);
+      const auto [j, tau] = section_and_tau(lengths, now.s);
       const Eigen::Matrix<double, 6, 1> expected = section_twist(path.sections()[j], tau).vector() * (now.s_dot / lengths[j]);
       ASSERT_LE((now.body_twist.vector() - expected).norm(), 1e-12 * (1.0 + expected.norm())) << i << " " << k;
     }

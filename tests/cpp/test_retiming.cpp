@@ -5,6 +5,7 @@
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"
+#include "retiming_moves.hpp"
 
 namespace dispkin {
 namespace {
@@ -13,29 +14,10 @@ using testing::message_of;
 using testing::runtime_message_of;
 using V = Eigen::Vector3d;
 
-serial::SerialArm ur5e() {
-  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link",
-                                           "tool0");
-}
-
-MetricSetd tool() {
-  MetricSetd set;
-  set.add_relative(shapes::icosahedron(0.05, V(0, 0, 0.1)));
-  return set;
-}
-
-struct Move {
-  Eigen::VectorXd q_start;
-  Path path;
-};
-
-Move lin_move(const serial::SerialArm& arm) {
-  Eigen::VectorXd q(6);
-  q << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
-  const Posed a = arm.forward(q);
-  const Posed b = Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V(0.25, -0.1, -0.1)) * a;
-  return {q, Path::lin(a, Posed(b.quaternion(), a.translation() + V(0.25, -0.1, -0.1)))};
-}
+using testing::lin_move;
+using testing::Move;
+using testing::tool;
+using testing::ur5e;
 
 // The check's joint velocities are the derivatives of its joint positions (and q follows the
 // branch of q_start continuously).
