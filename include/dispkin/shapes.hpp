@@ -150,17 +150,17 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisio
   return detail::placed(p, scale, center);
 }
 
-//! `count` points spread evenly ON the sphere of `radius` around `pivot` (a Fibonacci
+//! `count` points spread evenly ON the sphere of `radius` around `center` (a Fibonacci
 //! lattice): the patent's spherical shell of relative points around a pivot, which ties the
 //! angular speed about the pivot to the system velocity through the radius.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int count,
-                                                        const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+                                                        const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   using std::cos;
   using std::sin;
   using std::sqrt;
   require_positive(radius, "radius");
-  require_finite(pivot, "pivot");
+  require_finite(center, "center");
   require(count >= 4, "count", count, "must be at least 4 so the shell spans space");
   const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
   const Scalar golden_angle = pi * (Scalar(3) - sqrt(Scalar(5)));
@@ -170,7 +170,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int coun
     const Scalar z = Scalar(1) - Scalar(2) * (Scalar(i) + Scalar(0.5)) / Scalar(count);
     const Scalar r = sqrt(std::max(Scalar(0), Scalar(1) - z * z));
     const Scalar angle = golden_angle * Scalar(i);
-    out.push_back(pivot + radius * Eigen::Matrix<Scalar, 3, 1>(r * cos(angle), r * sin(angle), z));
+    out.push_back(center + radius * Eigen::Matrix<Scalar, 3, 1>(r * cos(angle), r * sin(angle), z));
   }
   return out;
 }

@@ -43,12 +43,12 @@ void bind_shapes(py::module_& m) {
       "(metres) around `center`.");
   s.def(
       "spherical_shell",
-      [](double radius, int count, const py::object& pivot) {
-        return to_array(shapes::spherical_shell<double>(radius, count, vector3(pivot, "pivot")));
+      [](double radius, int count, const py::object& center) {
+        return to_array(shapes::spherical_shell<double>(radius, count, vector3(center, "center")));
       },
-      py::arg("radius"), py::arg("count"), py::arg_v("pivot", origin, "(0, 0, 0)"),
+      py::arg("radius"), py::arg("count"), py::arg_v("center", origin, "(0, 0, 0)"),
       "`count` (>= 4) points, as a (count, 3) array, spread evenly on the sphere of `radius` "
-      "(metres) around `pivot` (a Fibonacci lattice).");
+      "(metres) around `center` (a Fibonacci lattice): the patent's shell around a pivot point.");
 }
 
 }  // namespace python

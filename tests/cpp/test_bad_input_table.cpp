@@ -189,7 +189,7 @@ std::vector<Row> rows() {
   row("shapes::spherical_shell", "negative radius", [] { shapes::spherical_shell(-1.0, 10); }, IA, "radius = -1");
   row("shapes::spherical_shell", "count too small", [] { shapes::spherical_shell(1.0, 3); }, IA, "count = 3");
   row("shapes::spherical_shell", "zero count", [] { shapes::spherical_shell(1.0, 0); }, IA, "count = 0");
-  row("shapes::spherical_shell", "NaN pivot", [] { shapes::spherical_shell(1.0, 10, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("shapes::spherical_shell", "NaN center", [] { shapes::spherical_shell(1.0, 10, Vector3d(nan_, 0, 0)); }, IA, "center = (nan, 0, 0)");
 
   // --- convex hull ---
   row("convex_hull_vertices", "NaN point", [] { convex_hull_vertices({Vector3d::Zero(), Vector3d::UnitX(), Vector3d::UnitY(), Vector3d(0, 0, nan_)}); }, IA,

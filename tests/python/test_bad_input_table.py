@@ -165,7 +165,7 @@ row("shapes.icosphere", "-inf center", lambda: shapes.icosphere(1.0, 1, [0, -INF
 row("shapes.spherical_shell", "negative radius", lambda: shapes.spherical_shell(-1.0, 10), V, "radius = -1")
 row("shapes.spherical_shell", "count too small", lambda: shapes.spherical_shell(1.0, 3), V, "count = 3")
 row("shapes.spherical_shell", "zero count", lambda: shapes.spherical_shell(1.0, 0), V, "count = 0")
-row("shapes.spherical_shell", "NaN pivot", lambda: shapes.spherical_shell(1.0, 10, [NAN, 0, 0]), V, "pivot = (nan, 0, 0)")
+row("shapes.spherical_shell", "NaN center", lambda: shapes.spherical_shell(1.0, 10, [NAN, 0, 0]), V, "center = (nan, 0, 0)")
 
 # --- convex hull --------------------------------------------------------------------------
 row("convex_hull_vertices", "NaN point", lambda: dispkin.convex_hull_vertices([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, NAN]]), V, "points[3] = (0, 0, nan): must be finite")

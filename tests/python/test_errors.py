@@ -63,7 +63,7 @@ def raises(match, call):
         (lambda: A.transform([[0, 0, 0], [0, NAN, 0]]), r"^points\[1\] = \(0, nan, 0\): must be finite"),
         (lambda: dispkin.section_length(well_formed(), A, B, "screw", pivot=(NAN, 0, 0)), r"^pivot = \(nan, 0, 0\): must be finite"),
         (lambda: shapes.icosphere(0.1, 1, center=(NAN, 0, 0)), r"^center = \(nan, 0, 0\): must be finite"),
-        (lambda: shapes.spherical_shell(0.1, 10, pivot=(0, 0, INF)), r"^pivot = \(0, 0, inf\): must be finite"),
+        (lambda: shapes.spherical_shell(0.1, 10, center=(0, 0, INF)), r"^center = \(0, 0, inf\): must be finite"),
     ],
 )
 def test_nan_and_inf_are_refused_naming_the_argument(call, match):
