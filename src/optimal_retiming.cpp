@@ -20,6 +20,21 @@
 // speeds are then σ̇ L_k/ℓ_k, so the DISP limits become σ̇ ≤ v_lim ℓ_k/L_k and |σ̈| ≤ a ℓ_k/L_k
 // per section, and the result goes back to s section by section (ṡ = σ̇ L_k/ℓ_k: the time law
 // in s steps at junctions exactly where the section lengths do, and the motion is smooth).
+//
+// Jerk limiting (limits.jerk = j). Each run's law σ(t) is replaced by its moving average over a
+// window T (jerk_filter.hpp): σ⃛ is then (σ̈(t) − σ̈(t−T))/T, and T is the smallest window that
+// keeps that ≤ j ρ, with ρ = dσ/ds the run's lowest (so s⃛ = σ⃛/ρ_k ≤ j in every section). The
+// other limits are made to survive the average before the grid is solved:
+//   - |σ̈| ≤ a ρ everywhere in the run: the average of accelerations within it stays within it;
+//   - the averaged σ̇ at t is the mean of σ̇ over [t − T, t], where σ lies within T·max σ̇ of the
+//     averaged position: every speed cap (the DISP velocity-limit curve in σ and the joint
+//     speeds q̇ᵢ = q′ᵢ σ̇) is lowered to its minimum over that reach around each interval, so
+//     the mean of the speeds is below the cap at the averaged position too;
+//   - joint accelerations and torques mix σ̈ and σ̇² with coefficients that vary along the
+//     path: they are left to the dense check and its tightening loop.
+// T and max σ̇ are not known before the solve: the reach is estimated from a solve without it
+// and widened and re-solved until the solve's own window and top speed stay within it (T never
+// exceeds 2a/j, and tightening only lowers the speeds, so this settles).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +43,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/retiming.hpp"
+#include "jerk_filter.hpp"
 #include "joint_following.hpp"
 #include "reachability.hpp"
 
@@ -286,6 +302,107 @@ void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, 
   }
 }
 
+// The cap on σ̇² from the joint velocity limits at one grid point (+∞ where none binds).
+double joint_speed_cap(const GridPoint& p, const JointBounds& bounds, double scale) {
+  double cap = std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < p.q.size(); ++k) {
+    if (std::isfinite(bounds.velocity(k)) && p.q1(k) != 0.0) {
+      const double v = scale * bounds.velocity(k) / std::abs(p.q1(k));
+      cap = std::min(cap, v * v);
+    }
+  }
+  return cap;
+}
+
+// The grid solution of one run as a law in time: σ at the grid points, σ̇ = √x, σ̈ = u, and the
+// time of each interval from its mean speed (exact for constant σ̈).
+detail::AccelerationSteps acceleration_steps(const std::vector<GridPoint>& grid, std::size_t first, std::size_t count,
+                                             const detail::Parameterisation& fastest) {
+  detail::AccelerationSteps steps;
+  steps.time.resize(count + 1);
+  steps.position.resize(count + 1);
+  steps.speed.resize(count + 1);
+  steps.acceleration.resize(count);
+  double time = 0.0;
+  for (std::size_t i = 0; i <= count; ++i) {
+    steps.time[i] = time;
+    steps.position[i] = grid[first + i].sigma;
+    steps.speed[i] = std::sqrt(fastest.x[i]);
+    if (i == count) break;
+    const double delta = grid[first + i + 1].sigma - grid[first + i].sigma;
+    steps.acceleration[i] = fastest.u[i];
+    time += 2.0 * delta / (std::sqrt(fastest.x[i]) + std::sqrt(fastest.x[i + 1]));
+  }
+  steps.speed.front() = steps.speed.back() = 0.0;
+  return steps;
+}
+
+// σ at time τ into a phase (its Taylor polynomial), and the state there.
+detail::JerkPhase advance(const detail::JerkPhase& p, double tau) {
+  detail::JerkPhase out = p;
+  out.duration = p.duration - tau;
+  out.position = p.position + tau * (p.speed + tau * (0.5 * p.acceleration + p.jerk * tau / 6.0));
+  out.speed = std::max(0.0, p.speed + tau * (p.acceleration + 0.5 * p.jerk * tau));
+  out.acceleration = p.acceleration + p.jerk * tau;
+  return out;
+}
+
+// A run's jerk-limited law in σ (constant-jerk phases ending at rest at `run_end`) as laws in
+// s: cut where sections begin (ds/dσ changes there: ṡ, s̈, s⃛ are σ̇, σ̈, σ⃛ times the section's
+// ds/dσ), at most Profile::max_phases phases per law.
+void append_jerk_laws(const SmoothParameter& smooth, std::vector<detail::JerkPhase> phases, double run_end,
+                      std::vector<Profile>& laws) {
+  const double run_start = phases.front().position;
+  // Cut at every section start inside the run; σ is non-decreasing, so by bisection on the
+  // phase's cubic.
+  std::vector<detail::JerkPhase> cut;
+  cut.reserve(phases.size() + smooth.sections());
+  std::size_t k = smooth.section_at(run_start) + 1;
+  for (std::size_t m = 0; m < phases.size(); ++m) {
+    detail::JerkPhase p = phases[m];
+    const double next = m + 1 < phases.size() ? phases[m + 1].position : run_end;
+    while (k < smooth.sections() && smooth.start(k) < run_end && smooth.start(k) <= p.position) ++k;
+    while (k < smooth.sections() && smooth.start(k) < next && smooth.start(k) < run_end) {
+      const double target = smooth.start(k);
+      double lo = 0.0, hi = p.duration;
+      for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * p.duration; ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (advance(p, mid).position < target ? lo : hi) = mid;
+      }
+      if (hi > 1e-12 * p.duration && hi < p.duration * (1.0 - 1e-12)) {
+        detail::JerkPhase head = p;
+        head.duration = hi;
+        cut.push_back(head);
+        p = advance(p, hi);
+        p.position = target;  // exactly on the section start
+      }
+      ++k;
+    }
+    cut.push_back(p);
+  }
+  // Group by section, at most max_phases per law.
+  std::size_t first = 0;
+  while (first < cut.size()) {
+    auto section_of = [&](const detail::JerkPhase& p) { return smooth.section_at(advance(p, 0.5 * p.duration).position); };
+    const std::size_t section = section_of(cut[first]);
+    std::size_t last = first + 1;
+    while (last < cut.size() && last - first < static_cast<std::size_t>(Profile::max_phases) && section_of(cut[last]) == section) ++last;
+    const double r = smooth.s_per_sigma(section);
+    double durations[Profile::max_phases], jerks[Profile::max_phases];
+    for (std::size_t m = first; m < last; ++m) {
+      durations[m - first] = cut[m].duration;
+      jerks[m - first] = r * cut[m].jerk;
+    }
+    const detail::JerkPhase& a = cut[first];
+    const double end_position = last < cut.size() ? cut[last].position : run_end;
+    const double end_speed = last < cut.size() ? cut[last].speed : 0.0;
+    const double end_acceleration = last < cut.size() ? cut[last].acceleration : 0.0;
+    laws.push_back(Profile::from_phases(durations, jerks, static_cast<int>(last - first), r * a.speed, r * a.acceleration,
+                                        r * std::max(0.0, end_position - a.position), r * end_speed, r * end_acceleration));
+    first = last;
+  }
+}
+
 std::string interval_text(double s0, double s1) {
   std::ostringstream out;
   out << "[" << s0 << ", " << s1 << "] m";
@@ -308,7 +425,11 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
     require(acceleration(k) > 0.0, "joint_acceleration[" + std::to_string(k) + "]", acceleration(k), "must be > 0");
   }
 
-  const Trajectory planned = plan(path, set, limits, ProfileKind::trapezoid);
+  // The plan gives the DISP velocity-limit curve and the rests (the same for both profiles).
+  if (limits.jerk) limits.validate(ProfileKind::scurve);
+  Limits unjerked = limits;
+  unjerked.jerk.reset();
+  const Trajectory planned = plan(path, set, unjerked, ProfileKind::trapezoid);
   const SmoothParameter smooth(planned, limits.acceleration);
   const JointBounds bounds = model.bounds(options);
   // Path position s of a σ, for messages and the result.
@@ -360,41 +481,171 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
     std::vector<Profile> laws;
     result.grid_s.clear();
     result.grid_speed.clear();
+    result.jerk_window = 0.0;
     for (const Run& run : runs) {
-      std::vector<detail::GridInterval> intervals;
-      intervals.reserve(run.count);
-      for (std::size_t i = run.first; i < run.first + run.count; ++i) {
-        const GridPoint &p = grid[i], &p_next = grid[i + 1];
-        const double delta = p_next.sigma - p.sigma;
-        double speed, accel;
-        smooth.limits_over(p.sigma, p_next.sigma, speed, accel);
-        detail::GridInterval interval{delta, detail::ConvexPolygon(accel, speed * speed)};
-        interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
-        at_start.clear();
-        at_end.clear();
-        append_limits(p, bounds, scale, at_start);
-        append_limits(p_next, bounds, scale, at_end);
-        for (const HalfPlane& h : at_start) interval.admissible.clip(h);
-        for (const HalfPlane& h : at_end) interval.admissible.clip({h.a + 2.0 * delta * h.b, h.b, h.c});
-        intervals.push_back(std::move(interval));
+      const double run_start = grid[run.first].sigma, run_end = grid[run.first + run.count].sigma;
+      // The grid problem of the run. With a jerk limit, `reach` > 0 widens every speed cap (the
+      // DISP velocity-limit curve and the joint speeds) to its minimum over ±reach around the
+      // interval, and the acceleration cap is the run's lowest: the moving average then keeps
+      // them (see jerk_filter.hpp and the file comment).
+      auto solve = [&](double reach, double run_acceleration) {
+        std::vector<detail::GridInterval> intervals;
+        intervals.reserve(run.count);
+        for (std::size_t i = run.first; i < run.first + run.count; ++i) {
+          const GridPoint &p = grid[i], &p_next = grid[i + 1];
+          const double delta = p_next.sigma - p.sigma;
+          double speed, accel;
+          smooth.limits_over(p.sigma, p_next.sigma, speed, accel);
+          if (reach > 0.0) {
+            double unused;
+            smooth.limits_over(std::max(run_start, p.sigma - reach), std::min(run_end, p_next.sigma + reach), speed, unused);
+          }
+          if (run_acceleration > 0.0) accel = run_acceleration;
+          detail::GridInterval interval{delta, detail::ConvexPolygon(accel, speed * speed)};
+          interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
+          at_start.clear();
+          at_end.clear();
+          append_limits(p, bounds, scale, at_start);
+          append_limits(p_next, bounds, scale, at_end);
+          for (const HalfPlane& h : at_start) interval.admissible.clip(h);
+          for (const HalfPlane& h : at_end) interval.admissible.clip({h.a + 2.0 * delta * h.b, h.b, h.c});
+          if (reach > 0.0) {
+            double joint_speed = std::numeric_limits<double>::infinity();  // σ̇² cap of the joint speeds nearby
+            for (std::size_t g = run.first; g <= run.first + run.count; ++g) {
+              if (grid[g].sigma >= p.sigma - reach && grid[g].sigma <= p_next.sigma + reach) {
+                joint_speed = std::min(joint_speed, joint_speed_cap(grid[g], bounds, scale));
+              }
+            }
+            if (std::isfinite(joint_speed)) {
+              interval.admissible.clip({0.0, 1.0, joint_speed});
+              interval.admissible.clip({2.0 * delta, 1.0, joint_speed});
+            }
+          }
+          intervals.push_back(std::move(interval));
+        }
+        detail::Parameterisation fastest = detail::fastest_parameterisation(std::move(intervals), 0.0, 0.0);
+        if (fastest.infeasible_interval >= 0) {
+          const std::size_t i = run.first + static_cast<std::size_t>(fastest.infeasible_interval);
+          throw std::runtime_error("no speed keeps every joint limit on the path interval " +
+                                   interval_text(s_of(grid[i].sigma), s_of(grid[i + 1].sigma)) +
+                                   " while still reaching the next rest");
+        }
+        for (std::size_t i = 0; i < run.count; ++i) {
+          if (!(fastest.x[i] + fastest.x[i + 1] > 0.0)) {
+            throw std::runtime_error("the joint limits allow no motion on the path interval " +
+                                     interval_text(s_of(grid[run.first + i].sigma), s_of(grid[run.first + i + 1].sigma)));
+          }
+        }
+        return fastest;
+      };
+      auto record_grid = [&](const detail::Parameterisation& fastest) {
+        for (std::size_t i = 0; i <= run.count; ++i) {
+          const double sigma = grid[run.first + i].sigma;
+          result.grid_s.push_back(s_of(sigma));
+          result.grid_speed.push_back(std::sqrt(fastest.x[i]) * smooth.s_per_sigma(smooth.section_at(sigma)));
+        }
+      };
+
+      if (limits.jerk) {
+        // The run's lowest σ per s: its acceleration and jerk caps in σ are a ρ and j ρ.
+        double rho = std::numeric_limits<double>::infinity();
+        for (std::size_t k = smooth.section_at(run_start); k < smooth.sections() && smooth.start(k) < run_end; ++k) {
+          if (smooth.ell(k) > 0.0) rho = std::min(rho, 1.0 / smooth.s_per_sigma(k));
+        }
+        const double top_acceleration = limits.acceleration * rho, run_jerk = *limits.jerk * rho;
+        auto top_speed = [](const detail::Parameterisation& p) {
+          return std::sqrt(*std::max_element(p.x.begin(), p.x.end()));
+        };
+        // The jerk-limited law under the acceleration cap A ≤ a ρ: its window and its duration.
+        struct Candidate {
+          double cap, window = 0.0, duration = std::numeric_limits<double>::infinity();
+          detail::Parameterisation fastest;
+          detail::AccelerationSteps steps;
+        };
+        auto jerk_limited = [&](double cap) {
+          Candidate c{cap};
+          const double longest = 2.0 * cap / run_jerk;  // 2A/j: a window that always suffices
+          // First without the reach: its window and its top speed (tightening only lowers the
+          // speeds) estimate the reach; widened and re-solved until the solve keeps to it.
+          c.fastest = solve(0.0, cap);
+          c.steps = acceleration_steps(grid, run.first, run.count, c.fastest);
+          double assumed = detail::smallest_window(c.steps, run_jerk, longest);
+          double speed_bound = top_speed(c.fastest);
+          for (int attempt = 0;; ++attempt) {
+            const double reach = assumed * speed_bound;
+            c.fastest = solve(reach, cap);
+            c.steps = acceleration_steps(grid, run.first, run.count, c.fastest);
+            c.window = detail::smallest_window(c.steps, run_jerk, longest);
+            const double top = top_speed(c.fastest);
+            if (c.window <= assumed && c.window * top <= reach) break;
+            if (attempt == 20) {
+              throw std::runtime_error("jerk limiting: the moving-average window did not settle on the path interval " +
+                                       interval_text(s_of(run_start), s_of(run_end)));
+            }
+            assumed = std::min(longest, std::max(c.window, 1.25 * assumed));
+            speed_bound = std::max(speed_bound, top);
+          }
+          c.duration = c.steps.time.back() + c.window;
+          return c;
+        };
+        // The window grows with the steps of σ̈, which grow with the acceleration the solve may
+        // use: where the jerk limit is low against the accelerations the joints allow, a lower
+        // cap A gives a shorter law (as the S-curve's peak acceleration stays below a_max when
+        // a/j is long against the move). A is chosen to minimise the duration: a coarse scan
+        // over three decades, then golden-section search between the best point's neighbours.
+        constexpr int scan = 10;
+        constexpr double decades = 3.0;
+        auto cap_at = [&](double e) { return top_acceleration * std::pow(10.0, -decades * e); };  // e ∈ [0, 1]
+        std::vector<Candidate> scanned;
+        scanned.reserve(scan + 1);
+        std::size_t best = 0;
+        for (int i = 0; i <= scan; ++i) {
+          scanned.push_back(jerk_limited(cap_at(static_cast<double>(i) / scan)));
+          if (scanned.back().duration < scanned[best].duration) best = scanned.size() - 1;
+        }
+        Candidate chosen = scanned[best];
+        {
+          double lo = std::max(0.0, (static_cast<double>(best) - 1.0) / scan), hi = std::min(1.0, (static_cast<double>(best) + 1.0) / scan);
+          constexpr double golden = 0.6180339887498949;
+          double e1 = hi - golden * (hi - lo), e2 = lo + golden * (hi - lo);
+          Candidate c1 = jerk_limited(cap_at(e1)), c2 = jerk_limited(cap_at(e2));
+          for (int iteration = 0; iteration < 12; ++iteration) {
+            if (c1.duration < chosen.duration) chosen = c1;
+            if (c2.duration < chosen.duration) chosen = c2;
+            if (c1.duration <= c2.duration) {
+              hi = e2;
+              e2 = e1;
+              c2 = std::move(c1);
+              e1 = hi - golden * (hi - lo);
+              c1 = jerk_limited(cap_at(e1));
+            } else {
+              lo = e1;
+              e1 = e2;
+              c1 = std::move(c2);
+              e2 = lo + golden * (hi - lo);
+              c2 = jerk_limited(cap_at(e2));
+            }
+          }
+          if (c1.duration < chosen.duration) chosen = c1;
+          if (c2.duration < chosen.duration) chosen = c2;
+        }
+        const detail::Parameterisation& fastest = chosen.fastest;
+        const detail::AccelerationSteps& steps = chosen.steps;
+        const double window = chosen.window;
+        result.jerk_window = std::max(result.jerk_window, window);
+        record_grid(fastest);
+        double end_time = 0.0;
+        const std::vector<detail::JerkPhase> phases = detail::moving_average(steps, window, end_time);
+        append_jerk_laws(smooth, phases, run_end, laws);
+        continue;
       }
-      const detail::Parameterisation fastest = detail::fastest_parameterisation(std::move(intervals), 0.0, 0.0);
-      if (fastest.infeasible_interval >= 0) {
-        const std::size_t i = run.first + static_cast<std::size_t>(fastest.infeasible_interval);
-        throw std::runtime_error("no speed keeps every joint limit on the path interval " +
-                                 interval_text(s_of(grid[i].sigma), s_of(grid[i + 1].sigma)) +
-                                 " while still reaching the next rest");
-      }
+
+      const detail::Parameterisation fastest = solve(0.0, 0.0);
+      record_grid(fastest);
       // Back to s: constant σ̈ over each grid interval, cut where sections begin (ṡ = σ̇ ds/dσ).
       for (std::size_t i = 0; i < run.count; ++i) {
         const double sigma0 = grid[run.first + i].sigma, sigma1 = grid[run.first + i + 1].sigma;
         const double x0 = fastest.x[i], u = fastest.u[i];
-        if (!(fastest.x[i] + fastest.x[i + 1] > 0.0)) {
-          throw std::runtime_error("the joint limits allow no motion on the path interval " +
-                                   interval_text(s_of(sigma0), s_of(sigma1)));
-        }
-        result.grid_s.push_back(s_of(sigma0));
-        result.grid_speed.push_back(std::sqrt(x0) * smooth.s_per_sigma(smooth.section_at(sigma0)));
         for (double a = sigma0; a < sigma1;) {
           const std::size_t k = smooth.section_at(a);
           double b = k + 1 < smooth.sections() ? std::min(sigma1, smooth.start(k + 1)) : sigma1;
@@ -417,9 +668,6 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
           a = b;
         }
       }
-      const double end = grid[run.first + run.count].sigma;
-      result.grid_s.push_back(s_of(end));
-      result.grid_speed.push_back(std::sqrt(fastest.x.back()) * smooth.s_per_sigma(smooth.section_at(end)));
     }
     result.trajectory = TrajectoryAccess::with_laws(planned, laws, runs.size());
 
