@@ -34,7 +34,14 @@
 //     path: they are left to the dense check and its tightening loop.
 // T and max σ̇ are not known before the solve: the reach is estimated from a solve without it
 // and widened and re-solved until the solve's own window and top speed stay within it (T never
-// exceeds 2a/j, and tightening only lowers the speeds, so this settles).
+// exceeds 2A/j, and tightening only lowers the speeds, so this settles).
+// The run takes the solve's duration plus T, and T grows with the steps of σ̈: the solve is
+// given an acceleration cap A ≤ aρ and a uniform speed cap V, both chosen by a scan and golden-
+// section search to minimise that sum (a low jerk limit wants a lower A, as the S-curve's peak
+// acceleration stays below a_max on short moves; a V below the joints' speed limits gives a
+// flat cruise where the speed would otherwise follow a joint limit up and down). This is not
+// the jerk-limited optimum (that problem is not convex in (σ̈, σ̇²)): measured against the seed's
+// scaling with S-curves it is up to 3 % slower where the jerk alone binds (benchmarks/RESULTS.md).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -488,7 +495,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
       // DISP velocity-limit curve and the joint speeds) to its minimum over ±reach around the
       // interval, and the acceleration cap is the run's lowest: the moving average then keeps
       // them (see jerk_filter.hpp and the file comment).
-      auto solve = [&](double reach, double run_acceleration) {
+      auto solve = [&](double reach, double run_acceleration, double run_speed = std::numeric_limits<double>::infinity()) {
         std::vector<detail::GridInterval> intervals;
         intervals.reserve(run.count);
         for (std::size_t i = run.first; i < run.first + run.count; ++i) {
@@ -501,6 +508,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
             smooth.limits_over(std::max(run_start, p.sigma - reach), std::min(run_end, p_next.sigma + reach), speed, unused);
           }
           if (run_acceleration > 0.0) accel = run_acceleration;
+          speed = std::min(speed, run_speed);
           detail::GridInterval interval{delta, detail::ConvexPolygon(accel, speed * speed)};
           interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
           at_start.clear();
@@ -556,24 +564,25 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
         auto top_speed = [](const detail::Parameterisation& p) {
           return std::sqrt(*std::max_element(p.x.begin(), p.x.end()));
         };
-        // The jerk-limited law under the acceleration cap A ≤ a ρ: its window and its duration.
+        // The jerk-limited law under the acceleration cap A ≤ a ρ and the speed cap V: its window
+        // and its duration.
         struct Candidate {
-          double cap, window = 0.0, duration = std::numeric_limits<double>::infinity();
+          double cap, speed, window, duration;
           detail::Parameterisation fastest;
           detail::AccelerationSteps steps;
         };
-        auto jerk_limited = [&](double cap) {
-          Candidate c{cap};
+        auto jerk_limited = [&](double cap, double speed) {
+          Candidate c{cap, speed, 0.0, std::numeric_limits<double>::infinity(), {}, {}};
           const double longest = 2.0 * cap / run_jerk;  // 2A/j: a window that always suffices
           // First without the reach: its window and its top speed (tightening only lowers the
           // speeds) estimate the reach; widened and re-solved until the solve keeps to it.
-          c.fastest = solve(0.0, cap);
+          c.fastest = solve(0.0, cap, speed);
           c.steps = acceleration_steps(grid, run.first, run.count, c.fastest);
           double assumed = detail::smallest_window(c.steps, run_jerk, longest);
           double speed_bound = top_speed(c.fastest);
           for (int attempt = 0;; ++attempt) {
             const double reach = assumed * speed_bound;
-            c.fastest = solve(reach, cap);
+            c.fastest = solve(reach, cap, speed);
             c.steps = acceleration_steps(grid, run.first, run.count, c.fastest);
             c.window = detail::smallest_window(c.steps, run_jerk, longest);
             const double top = top_speed(c.fastest);
@@ -588,28 +597,31 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
           c.duration = c.steps.time.back() + c.window;
           return c;
         };
-        // The window grows with the steps of σ̈, which grow with the acceleration the solve may
-        // use: where the jerk limit is low against the accelerations the joints allow, a lower
-        // cap A gives a shorter law (as the S-curve's peak acceleration stays below a_max when
-        // a/j is long against the move). A is chosen to minimise the duration: a coarse scan
-        // over three decades, then golden-section search between the best point's neighbours.
-        constexpr int scan = 10;
-        constexpr double decades = 3.0;
-        auto cap_at = [&](double e) { return top_acceleration * std::pow(10.0, -decades * e); };  // e ∈ [0, 1]
-        std::vector<Candidate> scanned;
-        scanned.reserve(scan + 1);
-        std::size_t best = 0;
-        for (int i = 0; i <= scan; ++i) {
-          scanned.push_back(jerk_limited(cap_at(static_cast<double>(i) / scan)));
-          if (scanned.back().duration < scanned[best].duration) best = scanned.size() - 1;
-        }
-        Candidate chosen = scanned[best];
-        {
-          double lo = std::max(0.0, (static_cast<double>(best) - 1.0) / scan), hi = std::min(1.0, (static_cast<double>(best) + 1.0) / scan);
+        // The window grows with the steps of σ̈: where the jerk limit is low against the
+        // accelerations the joints allow, a lower acceleration cap A gives a shorter law (as the
+        // S-curve's peak acceleration stays below a_max when a/j is long against the move), and a
+        // speed cap V below what the joints allow gives a flat cruise instead of a speed that
+        // follows a joint limit up and down (each change a step of σ̈). (A, V) are chosen to
+        // minimise the duration: for each V of a scan, a scan of A over three decades and a
+        // golden-section search between the best A's neighbours.
+        auto best_for_speed = [&](double speed) {
+          constexpr int scan = 8;
+          constexpr double decades = 3.0;
+          auto cap_at = [&](double e) { return top_acceleration * std::pow(10.0, -decades * e); };  // e ∈ [0, 1]
+          std::vector<Candidate> scanned;
+          scanned.reserve(scan + 1);
+          std::size_t best = 0;
+          for (int i = 0; i <= scan; ++i) {
+            scanned.push_back(jerk_limited(cap_at(static_cast<double>(i) / scan), speed));
+            if (scanned.back().duration < scanned[best].duration) best = scanned.size() - 1;
+          }
+          Candidate chosen = scanned[best];
+          double lo = std::max(0.0, (static_cast<double>(best) - 1.0) / scan);
+          double hi = std::min(1.0, (static_cast<double>(best) + 1.0) / scan);
           constexpr double golden = 0.6180339887498949;
           double e1 = hi - golden * (hi - lo), e2 = lo + golden * (hi - lo);
-          Candidate c1 = jerk_limited(cap_at(e1)), c2 = jerk_limited(cap_at(e2));
-          for (int iteration = 0; iteration < 12; ++iteration) {
+          Candidate c1 = jerk_limited(cap_at(e1), speed), c2 = jerk_limited(cap_at(e2), speed);
+          for (int iteration = 0; iteration < 8; ++iteration) {
             if (c1.duration < chosen.duration) chosen = c1;
             if (c2.duration < chosen.duration) chosen = c2;
             if (c1.duration <= c2.duration) {
@@ -617,13 +629,55 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
               e2 = e1;
               c2 = std::move(c1);
               e1 = hi - golden * (hi - lo);
-              c1 = jerk_limited(cap_at(e1));
+              c1 = jerk_limited(cap_at(e1), speed);
             } else {
               lo = e1;
               e1 = e2;
               c1 = std::move(c2);
               e2 = lo + golden * (hi - lo);
-              c2 = jerk_limited(cap_at(e2));
+              c2 = jerk_limited(cap_at(e2), speed);
+            }
+          }
+          if (c1.duration < chosen.duration) chosen = c1;
+          if (c2.duration < chosen.duration) chosen = c2;
+          return chosen;
+        };
+        // V as a fraction f of the top speed without a jerk limit (f = 1: no cap): a scan, then
+        // golden-section search between the best fraction's neighbours.
+        const double free_speed = top_speed(solve(0.0, top_acceleration));
+        const std::vector<double> fractions{1.0, 0.95, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3};
+        auto at_fraction = [&](double f) {
+          return best_for_speed(f >= 1.0 ? std::numeric_limits<double>::infinity() : f * free_speed);
+        };
+        std::size_t best = 0;
+        Candidate chosen = at_fraction(fractions[0]);
+        for (std::size_t i = 1; i < fractions.size(); ++i) {
+          Candidate c = at_fraction(fractions[i]);
+          if (c.duration < chosen.duration) {
+            chosen = std::move(c);
+            best = i;
+          }
+        }
+        {
+          double hi = fractions[best > 0 ? best - 1 : 0], lo = fractions[std::min(best + 1, fractions.size() - 1)];
+          constexpr double golden = 0.6180339887498949;
+          double f1 = hi - golden * (hi - lo), f2 = lo + golden * (hi - lo);
+          Candidate c1 = at_fraction(f1), c2 = at_fraction(f2);
+          for (int iteration = 0; iteration < 6; ++iteration) {
+            if (c1.duration < chosen.duration) chosen = c1;
+            if (c2.duration < chosen.duration) chosen = c2;
+            if (c1.duration <= c2.duration) {  // f1 > f2 here: keep [f2, hi]
+              lo = f2;
+              f2 = f1;
+              c2 = std::move(c1);
+              f1 = hi - golden * (hi - lo);
+              c1 = at_fraction(f1);
+            } else {
+              hi = f1;
+              f1 = f2;
+              c1 = std::move(c2);
+              f2 = lo + golden * (hi - lo);
+              c2 = at_fraction(f2);
             }
           }
           if (c1.duration < chosen.duration) chosen = c1;
