@@ -461,8 +461,6 @@ std::vector<Row> rows() {
       "joint_acceleration size = 2");
   row("retime_optimal", "zero joint acceleration", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(6); o.joint_acceleration(4) = 0; optimal(o); }, IA,
       "joint_acceleration[4] = 0");
-  row("retime_optimal", "jerk limit given", [=] {
-        retime_optimal(ur_path(), good_set(), limits(0.1, 1, 10), ur5e(), q_ur()); }, IA, "jerk = 10");
   row("retime_optimal", "hexapod, leg accelerations of the wrong size", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(3);
         const Hexapod h = hexapod();
         retime_optimal(Path::lin(h.home(), h.home() * Posed(Quaterniond::Identity(), Vector3d(0.01, 0, 0))), good_set(), limits(0.1, 1, std::nullopt), h, o); },
