@@ -716,8 +716,9 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
           const double v1 = r * std::sqrt(std::max(0.0, x0 + 2.0 * u * (b - sigma0)));
           const double distance = r * (b - a);
           // The trapezoid between v0 and v1 whose acceleration just covers the distance (a hair
-          // above, so that rounding cannot make the law infeasible).
-          const double acc = std::max(std::abs(v1 * v1 - v0 * v0) / (2.0 * distance) * (1.0 + 1e-9), 1e-12 * limits.acceleration);
+          // above, so that rounding cannot make the law infeasible). |v1 − v0| (v1 + v0), the form
+          // of the trapezoid's own check: v1² − v0² cancels when the speeds nearly agree.
+          const double acc = std::max(std::abs(v1 - v0) * (v1 + v0) / (2.0 * distance) * (1.0 + 1e-9), 1e-12 * limits.acceleration);
           laws.push_back(Profile::trapezoid(distance, std::max(v0, v1), acc, v0, v1));
           a = b;
         }
