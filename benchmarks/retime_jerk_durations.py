@@ -69,9 +69,12 @@ for name, path, v, a, jerks in CASES:
     for j in jerks:
         limits = dispkin.Limits(v, a, j)
         jerked = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="optimal")
-        scaled = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="scaling")
+        try:
+            scaled = f"{dispkin.retime(path, tool, limits, arm, Q0, profile='scurve', method='scaling').trajectory.duration:.4f} s"
+        except RuntimeError:
+            scaled = "does not converge"
         scurve = dispkin.plan(path, tool, limits, profile="scurve").duration
         d0, d1 = plain.trajectory.duration, jerked.trajectory.duration
         print(f"| {name} | {v:g} m/s, {a:g} m/s² | {j:g} | {d0:.4f} s | {theirs:.4f} s | {d1:.4f} s | "
               f"{jerked.jerk_window * 1e3:.1f} ms | +{(d1 / d0 - 1) * 100:.1f} % | {scurve:.4f} s | "
-              f"{scaled.trajectory.duration:.4f} s |")
+              f"{scaled} |")

@@ -478,6 +478,28 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
     }
   }
 
+  // The dense check of r.trajectory, with the whole torque against the effort limit.
+  auto measure = [&](OptimalRetimeResult& r) {
+    r.report = model.check(r.trajectory, q_start, options.check_samples_between);
+    if (r.report.position_excess > 0.0) {
+      const JointSample& at = r.report.samples[r.report.position_sample];
+      throw std::runtime_error("joint " + model.joint_name(r.report.position_joint) + " leaves its position range by " +
+                               std::to_string(r.report.position_excess) + " " + model.position_unit() + " at " +
+                               detail::where(at.time, at.s) + ": slowing down cannot help");
+    }
+    r.velocity_ratio = r.acceleration_ratio = r.torque_ratio = 0.0;
+    for (const JointSample& sample : r.report.samples) {
+      for (int k = 0; k < dof; ++k) {
+        r.velocity_ratio = std::max(r.velocity_ratio, std::abs(sample.qd(k)) / bounds.velocity(k));
+        r.acceleration_ratio = std::max(r.acceleration_ratio, std::abs(sample.qdd(k)) / bounds.acceleration(k));
+        if (sample.static_torque.size() == dof) {
+          const double torque = sample.static_torque(k) + sample.dynamic_torque(k);
+          r.torque_ratio = std::max(r.torque_ratio, std::abs(torque) / bounds.effort(k));
+        }
+      }
+    }
+  };
+
   OptimalRetimeResult result;
   // The grid solution sits exactly on its limits, and between grid points the coefficients
   // move by O(Δ²): 0.1 % headroom from the start spares the re-solve and re-check in most cases
@@ -726,30 +748,27 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
     }
     result.trajectory = TrajectoryAccess::with_laws(planned, laws, runs.size());
 
-    // The dense check, with the whole torque against the effort limit.
-    result.report = model.check(result.trajectory, q_start, options.check_samples_between);
-    if (result.report.position_excess > 0.0) {
-      const JointSample& at = result.report.samples[result.report.position_sample];
-      throw std::runtime_error("joint " + model.joint_name(result.report.position_joint) +
-                               " leaves its position range by " + std::to_string(result.report.position_excess) +
-                               " " + model.position_unit() + " at " + detail::where(at.time, at.s) +
-                               ": slowing down cannot help");
-    }
-    result.velocity_ratio = result.acceleration_ratio = result.torque_ratio = 0.0;
-    for (const JointSample& sample : result.report.samples) {
-      for (int k = 0; k < dof; ++k) {
-        result.velocity_ratio = std::max(result.velocity_ratio, std::abs(sample.qd(k)) / bounds.velocity(k));
-        result.acceleration_ratio = std::max(result.acceleration_ratio, std::abs(sample.qdd(k)) / bounds.acceleration(k));
-        if (sample.static_torque.size() == dof) {
-          const double torque = sample.static_torque(k) + sample.dynamic_torque(k);
-          result.torque_ratio = std::max(result.torque_ratio, std::abs(torque) / bounds.effort(k));
-        }
-      }
-    }
+    measure(result);
     const double worst = std::max({result.velocity_ratio, result.acceleration_ratio, result.torque_ratio});
     result.margin = 1.0 - scale;
     result.refinements = refinement;
-    if (worst <= 1.0) return result;
+    if (worst <= 1.0) {
+      // With a jerk limit, the planner's own S-curve law may already keep every joint limit and
+      // be faster than the averaged law (where the jerk alone binds, the S-curve is the optimum
+      // the average only approaches): then it is the result, under the same dense check.
+      if (limits.jerk) {
+        OptimalRetimeResult direct = result;
+        direct.trajectory = plan(path, set, limits, ProfileKind::scurve);
+        if (direct.trajectory.duration() < result.trajectory.duration()) {
+          measure(direct);
+          if (std::max({direct.velocity_ratio, direct.acceleration_ratio, direct.torque_ratio}) <= 1.0) {
+            direct.jerk_window = 0.0;
+            return direct;
+          }
+        }
+      }
+      return result;
+    }
     if (refinement == options.max_refinements) {
       throw std::runtime_error("optimal re-timing: the dense check still finds a joint limit exceeded by a factor " +
                                std::to_string(worst) + " after " + std::to_string(refinement) +

@@ -426,7 +426,7 @@ TEST(JerkLimitedRetiming, KeepsTheJerkAndEveryLimitDensely) {
         expect_disp_limits(r.trajectory, limits);
         expect_ends_at_rest(r.trajectory, limits);
         EXPECT_EQ(r.trajectory.piece_count(), m.path.size() == 1 ? 1u : 2u);
-        EXPECT_GT(r.jerk_window, 0.0);
+        EXPECT_GE(r.jerk_window, 0.0);  // 0: the plain S-curve plan keeps the joint limits and is faster
         EXPECT_LE(r.jerk_window, 2.0 * limits.acceleration / *limits.jerk * (1 + 1e-9));
         // Never faster than the fastest law without a jerk limit on the same grid.
         EXPECT_GE(r.trajectory.duration(), unjerked.trajectory.duration());
