@@ -138,8 +138,8 @@ def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
     print(f"{kind}: jerk-limited {traj.duration:.5f} s (window {jerked.jerk_window:.5f} s), jerk-free "
           f"{plain.trajectory.duration:.5f} s, toppra (no jerk) {theirs:.5f} s, scaling S-curve {scaled} s")
     assert traj.duration >= plain.trajectory.duration
-    # Not always faster than the scaling with S-curves (measured up to 3.2 % slower where the jerk
-    # alone binds; benchmarks/RESULTS.md): a guard on that measured state, not the goal.
+    # Not always faster than the scaling with S-curves (measured up to 3.5 % slower where the jerk
+    # binds more than the joints; benchmarks/RESULTS.md): a guard on that measured state, not the goal.
     assert scaled is None or traj.duration <= 1.05 * scaled
     assert 0.0 <= jerked.jerk_window <= 2 * limits.acceleration / limits.jerk
     # Third differences within sections.
