@@ -64,4 +64,17 @@ void BM_RetimeOptimal(benchmark::State& state) {
 }
 BENCHMARK(BM_RetimeOptimal)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 
+// The same with a jerk limit of 2000 m/s³ (the S-curve's): the jerk-free solve, the re-solves
+// with the speed caps tightened over the window's reach, the moving average, and the dense check.
+void BM_RetimeOptimalJerkLimited(benchmark::State& state) {
+  const Move& m = move();
+  dispkin::Limits limits = fast;
+  limits.jerk = 2000.0;
+  dispkin::OptimalRetimeOptions options;
+  options.grid_intervals = 100;
+  options.check_samples_between = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::retime_optimal(m.path, m.tool, limits, m.arm, m.q_start, options));
+}
+BENCHMARK(BM_RetimeOptimalJerkLimited)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
+
 }  // namespace

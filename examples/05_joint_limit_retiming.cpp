@@ -1,6 +1,6 @@
 // 05 — a UR5e move that is too fast for its joints, re-timed two ways: the seed's scaling loop
 // (slow the whole move until FVEL, FACC ≤ 1) and the optimal re-timing (slow down only where a
-// joint velocity or torque limit binds). The move: a LIN of 350 mm with a 30° turn of the tool,
+// joint velocity or torque limit binds), the latter also with a jerk limit. The move: a LIN of 350 mm with a 30° turn of the tool,
 // requested at 3 m/s and 400 m/s² for a 50 mm ball 100 mm out on the tool. (The Python twin,
 // 05_joint_limit_retiming.py, also plots joint speeds and torques against their limits.)
 #include <algorithm>
@@ -37,8 +37,17 @@ int main() {
   const dispkin::OptimalRetimeResult optimal = dispkin::retime_optimal(path, tool, fast, arm, q_start);
   std::printf("optimal:   %.3f s; largest joint speed / limit %.3f, torque / limit %.3f (checked at %zu samples)\n",
               optimal.trajectory.duration(), optimal.velocity_ratio, optimal.torque_ratio, optimal.report.samples.size());
+  // The same with a jerk limit on the tool points (2000 m/s³): each rest-to-rest run is averaged
+  // over a window T so that |s⃛| ≤ j; it costs about T.
+  dispkin::Limits smooth = fast;
+  smooth.jerk = 2000.0;
+  const dispkin::OptimalRetimeResult jerked = dispkin::retime_optimal(path, tool, smooth, arm, q_start);
+  std::printf("optimal, jerk ≤ %.0f m/s³: %.3f s (window %.1f ms); joint speed / limit %.3f, torque / limit %.3f\n",
+              *smooth.jerk, jerked.trajectory.duration(), jerked.jerk_window * 1e3, jerked.velocity_ratio,
+              jerked.torque_ratio);
   const bool ok = requested.duration() < optimal.trajectory.duration() &&
                   optimal.trajectory.duration() <= scaled.trajectory.duration() && optimal.velocity_ratio <= 1.0 &&
-                  optimal.torque_ratio <= 1.0;
+                  optimal.torque_ratio <= 1.0 && jerked.trajectory.duration() >= optimal.trajectory.duration() &&
+                  jerked.velocity_ratio <= 1.0 && jerked.torque_ratio <= 1.0;
   return ok ? 0 : 1;
 }

@@ -6,7 +6,8 @@ the tool points: the UR5e's joints cannot follow (joint speeds of 3.14 rad/s and
 - "scaling", the seed's loop: lower the whole move's speed and acceleration until the largest
   joint velocity and dynamic torque fit (FVEL, FACC ≤ 1);
 - "optimal": the fastest timing that keeps the tool-point limits and the joint velocities and
-  torques at once, slowing down only where a limit binds (reachability analysis over s).
+  torques at once, slowing down only where a limit binds (reachability analysis over s) — and
+  the same with a jerk limit on the tool points (profile="scurve").
 The plot (05_joint_limit_retiming.png) shows joint speeds and torques against their limits.
 (The C++ twin is 05_joint_limit_retiming.cpp.)
 """
@@ -40,9 +41,18 @@ print(f"optimal:   {optimal.trajectory.duration:.3f} s; largest joint speed / li
       f"torque / limit {optimal.torque_ratio:.3f}")
 assert requested.duration < optimal.trajectory.duration <= scaled.trajectory.duration
 
+# The same with a jerk limit on the tool points: each rest-to-rest run is averaged over a window T
+# so that |s'''| <= jerk; the DISP and joint limits still hold, at a cost of about T.
+smooth = dispkin.Limits(velocity=3.0, acceleration=400.0, jerk=2000.0)
+jerked = dispkin.retime(path, tool, smooth, arm, q_start, profile="scurve", method="optimal")
+print(f"optimal, jerk <= {smooth.jerk:g} m/s³: {jerked.trajectory.duration:.3f} s (window "
+      f"{jerked.jerk_window * 1e3:.1f} ms); joint speed / limit {jerked.velocity_ratio:.3f}, "
+      f"torque / limit {jerked.torque_ratio:.3f}")
+assert optimal.trajectory.duration <= jerked.trajectory.duration
+
 limits = arm.joint_limits
 runs = {}
-for name, result in (("scaling", scaled), ("optimal", optimal)):
+for name, result in (("scaling", scaled), ("optimal", optimal), ("optimal, jerk-limited", jerked)):
     samples = dispkin.check_joint_limits(result.trajectory, arm, q_start, samples_between=20).samples
     torque = samples["static_torque"] + samples["dynamic_torque"]
     assert np.all(np.abs(samples["qd"]) <= limits.velocity) and np.all(np.abs(torque) <= limits.effort)
@@ -54,7 +64,7 @@ if __name__ == "__main__":
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(2, 2, figsize=(11, 6), sharey="row", constrained_layout=True)
+    fig, axes = plt.subplots(2, 3, figsize=(15, 6), sharey="row", constrained_layout=True)
     for column, (name, (t, speed, torque)) in enumerate(runs.items()):
         for row, (values, label) in enumerate(((speed, "|q̇| / q̇max"), (torque, "|τ| / τmax"))):
             ax = axes[row, column]

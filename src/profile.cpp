@@ -301,4 +301,100 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   return p;
 }
 
+// --- explicit phases -------------------------------------------------------------------------
+
+Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
+                             double distance, double v_end, double a_end) {
+  require(count >= 1 && count <= max_phases, "count", static_cast<long>(count), "must be within [1, 7]");
+  for (int i = 0; i < count; ++i) {
+    require(std::isfinite(durations[i]) && durations[i] > 0.0, "durations[" + std::to_string(i) + "]", durations[i],
+            "must be finite and > 0");
+    require_finite(jerks[i], "jerks[" + std::to_string(i) + "]");
+  }
+  require_distance(distance);
+  require(std::isfinite(v_start) && v_start >= 0.0, "v_start", v_start, "must be finite and not negative");
+  require(std::isfinite(v_end) && v_end >= 0.0, "v_end", v_end, "must be finite and not negative");
+  require_finite(a_start, "a_start");
+  require_finite(a_end, "a_end");
+
+  Profile p;
+  p.kind_ = ProfileKind::scurve;
+  p.distance_ = distance;
+  p.start_ = {0.0, v_start, a_start, 0.0};
+  p.end_ = {distance, v_end, a_end, 0.0};
+  for (int i = 0; i < count; ++i) {
+    ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
+    phase.duration = durations[i];
+    phase.jerk = jerks[i];
+    phase.start.j = phase.end.j = jerks[i];
+    p.time_[static_cast<std::size_t>(i + 1)] = p.time_[static_cast<std::size_t>(i)] + durations[i];
+  }
+  p.count_ = count;
+  // Forward over the first half, backward over the second: they meet at phase `middle`.
+  const int middle = count / 2;
+  ProfileState x{0.0, v_start, a_start, 0.0};
+  double scale_v = std::max(v_start, v_end), scale_a = std::max(std::abs(a_start), std::abs(a_end));
+  for (int i = 0; i < middle; ++i) {
+    ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
+    const double d = phase.duration, j = phase.jerk;
+    phase.start = {x.s, x.v, x.a, j};
+    x.s += d * (x.v + d * (0.5 * x.a + j * d / 6.0));
+    x.v += d * (x.a + 0.5 * j * d);
+    x.a += j * d;
+    phase.end = {x.s, x.v, x.a, j};
+  }
+  ProfileState y{distance, v_end, a_end, 0.0};
+  for (int i = count - 1; i >= middle; --i) {
+    ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
+    const double d = phase.duration, j = phase.jerk;
+    phase.end = {y.s, y.v, y.a, j};
+    y.s -= d * (y.v - d * (0.5 * y.a - j * d / 6.0));
+    y.v -= d * (y.a - 0.5 * j * d);
+    y.a -= j * d;
+    phase.start = {y.s, y.v, y.a, j};
+  }
+  // The law's scales: the largest speed and acceleration any phase reaches, and its duration.
+  const double total = p.duration();
+  double peak = 0.0, scale_j = 0.0;
+  double lowest = std::min(v_start, v_end);
+  for (int i = 0; i < count; ++i) {
+    const ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
+    scale_a = std::max({scale_a, std::abs(phase.start.a), std::abs(phase.end.a)});
+    scale_j = std::max(scale_j, std::abs(phase.jerk));
+    scale_v = std::max({scale_v, phase.start.v, phase.end.v});
+    peak = std::max({peak, phase.start.v, phase.end.v});
+    lowest = std::min({lowest, phase.start.v, phase.end.v});
+    // Inside the phase ṡ is a parabola; its vertex, where a = 0, may be its lowest point.
+    if (phase.jerk != 0.0) {
+      const double at = -phase.start.a / phase.jerk;
+      if (at > 0.0 && at < phase.duration) {
+        const double v = phase.start.v + at * (phase.start.a + 0.5 * phase.jerk * at);
+        lowest = std::min(lowest, v);
+        peak = std::max(peak, v);
+      }
+    }
+  }
+  scale_v += scale_a * total;
+  const double tolerance = 1e-8;
+  const bool meet = std::abs(x.s - y.s) <= tolerance * (distance + scale_v * total) &&
+                    std::abs(x.v - y.v) <= tolerance * scale_v &&
+                    std::abs(x.a - y.a) <= tolerance * (scale_a + scale_j * total) +
+                                                  1e-12 * scale_v / std::max(total, std::numeric_limits<double>::min());
+  if (!meet) {
+    throw std::invalid_argument(describe("distance", distance,
+                                         "the phases do not lead from the start state (v = " + number(v_start) +
+                                             ", a = " + number(a_start) + ") to the end state (v = " + number(v_end) +
+                                             ", a = " + number(a_end) + "): integrated forward they reach s = " +
+                                             number(x.s) + ", v = " + number(x.v) + ", a = " + number(x.a) +
+                                             " where integrated backward they give s = " + number(y.s) +
+                                             ", v = " + number(y.v) + ", a = " + number(y.a)));
+  }
+  if (lowest < -tolerance * scale_v) {
+    throw std::invalid_argument(describe("v_start", v_start, "the phases make the velocity negative (down to " +
+                                                                 number(lowest) + "): s would move backwards"));
+  }
+  p.peak_velocity_ = peak;
+  return p;
+}
+
 }  // namespace dispkin

@@ -69,6 +69,17 @@ class Profile {
   static Profile scurve(double distance, double v_max, double a_max, double j_max, double v_start = 0.0,
                         double v_end = 0.0);
 
+  //! A law from explicit constant-jerk phases, for laws the two factories above do not make
+  //! (the jerk-limited optimal re-timing cuts its motion into such pieces): `count` phases
+  //! (1 … max_phases) of `durations[i]` > 0 and jerk `jerks[i]`, from (0, v_start, a_start) to
+  //! (distance, v_end, a_end). The states between phases are integrated forward from the start
+  //! and backward from the end (both ends are reproduced to rounding); the two halves must meet
+  //! within 10⁻⁸ of the law's scale, and ṡ must stay ≥ 0 (to the same tolerance) — otherwise
+  //! std::invalid_argument (the phases do not lead from the start state to the end state). The
+  //! kind is scurve; outside the law the boundary states hold with their acceleration.
+  static Profile from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
+                             double distance, double v_end, double a_end);
+
   //! Trapezoid (acceleration-limited) or S-curve (jerk-limited).
   ProfileKind kind() const noexcept { return kind_; }
   //! T, the time the law takes (0 for S = 0 with v_start = v_end).

@@ -14,7 +14,12 @@
 //!
 //! retime_optimal goes beyond the seed: the fastest path parameterisation that keeps the DISP
 //! limits and the joint velocity, acceleration and torque limits at once, slowing down only
-//! where a limit binds (reachability analysis over a grid of s, as in TOPP-RA).
+//! where a limit binds (reachability analysis over a grid of s, as in TOPP-RA). With a jerk
+//! limit (limits.jerk) it is followed by jerk limiting: each rest-to-rest run's law is replaced
+//! by its moving average over a window T ≤ 2a/j (a/j, the S-curve's, wherever the acceleration
+//! does not reverse within T), whose jerk is bounded by j; the speed caps are tightened
+//! beforehand to their minimum over the distance the window spans, so the DISP limits still
+//! hold rigorously, and the joint limits through the same dense check and refinement.
 //!
 //! The planned poses are the arm's tip (tip_link) poses in its base frame.
 #pragma once
@@ -113,7 +118,8 @@ struct OptimalRetimeOptions {
 
 //! What retime_optimal produced.
 struct OptimalRetimeResult {
-  //! The re-timed trajectory: the same path, one constant-acceleration law per grid interval.
+  //! The re-timed trajectory: the same path, one constant-acceleration law per grid interval
+  //! (with a jerk limit: constant-jerk laws of at most seven phases each).
   Trajectory trajectory;
   //! The dense check of `trajectory` (check_joint_limits at check_samples_between).
   JointLimitReport report;
@@ -124,15 +130,27 @@ struct OptimalRetimeResult {
   //! grid points too (0: not needed), and the re-solves that took.
   double margin = 0.0;
   int refinements = 0;
-  //! The grid positions s (m) and ṡ there (m/s).
+  //! The grid positions s (m) and ṡ there (m/s) (with a jerk limit: of the law before its
+  //! moving average).
   std::vector<double> grid_s, grid_speed;
+  //! With a jerk limit: the longest moving-average window T (s) of the rest-to-rest runs, the
+  //! time each run grew by; 0 without, and 0 when the trajectory is the plain S-curve plan
+  //! (plan(path, set, limits, scurve) keeps every joint limit and is faster than the average).
+  double jerk_window = 0.0;
 };
 
 //! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
 //! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the
 //! arm's joint velocity limits, `options.joint_acceleration` and the effort limits, followed
-//! from q_start. Time laws are piecewise-constant s̈ (no jerk limit: limits.jerk must be
-//! unset). Throws std::invalid_argument for bad options/limits, std::runtime_error where the
+//! from q_start. Without limits.jerk the time laws are piecewise-constant s̈ (one per grid
+//! interval and section). With limits.jerk they are piecewise-constant s⃛ with |s⃛| ≤ j inside
+//! every section (at a tangent junction ṡ steps with the section's ds/dσ, ≤ 1 %, as without a
+//! jerk limit; the motion itself is smooth there): each run is the jerk-free result, re-solved
+//! with speed caps tightened over the window's reach and its lowest acceleration cap, then
+//! averaged over a window T (jerk_window), so it takes T longer per run than that re-solve.
+//! If plan(path, set, limits, scurve) itself passes the same dense joint check and is faster,
+//! that plan is returned instead (jerk_window 0).
+//! Throws std::invalid_argument for bad options/limits, std::runtime_error where the
 //! path has no IK solution or is singular, where the static torque reaches a limit, where a
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,

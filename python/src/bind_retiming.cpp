@@ -113,12 +113,13 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
 
   py::class_<OptimalRetimeResult>(m, "OptimalRetimeResult", R"doc(
 What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
-grid interval), the dense check of it (`report`), the largest joint velocity, acceleration and
+grid interval; with a jerk limit constant-jerk laws), the dense check of it (`report`), the largest joint velocity, acceleration and
 torque ratios found by that check (each <= 1; torque = static + dynamic against the effort limit),
 the fraction by which the limits were tightened on the grid so that they also hold between grid
 points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc")
       .def_readonly("trajectory", &OptimalRetimeResult::trajectory,
-                    "The re-timed trajectory: the same path, one constant-acceleration law per grid interval.")
+                    "The re-timed trajectory: the same path, one constant-acceleration law per grid interval (with a jerk "
+                    "limit: constant-jerk laws).")
       .def_readonly("report", &OptimalRetimeResult::report, "The dense joint-limit check of `trajectory`.")
       .def_readonly("velocity_ratio", &OptimalRetimeResult::velocity_ratio, "max |qd_i| / qd_max_i at the checked samples.")
       .def_readonly("acceleration_ratio", &OptimalRetimeResult::acceleration_ratio,
@@ -127,6 +128,9 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                     "max |tau_i| / tau_max_i at the checked samples (0 without effort limits).")
       .def_readonly("margin", &OptimalRetimeResult::margin, "Fraction by which the grid limits were tightened.")
       .def_readonly("refinements", &OptimalRetimeResult::refinements, "Grid re-solves after a dense check overshoot.")
+      .def_readonly("jerk_window", &OptimalRetimeResult::jerk_window,
+                    "With a jerk limit (profile=\"scurve\"): the longest moving-average window (s) of the rest-to-rest "
+                    "runs, the time each run grew by; 0 without.")
       .def_property_readonly("grid_s", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_s.size()), r.grid_s.data()); }, "Grid positions s (m), (N+1,).")
       .def_property_readonly("grid_speed", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_speed.size()), r.grid_speed.data()); },
                              "Path speed at the grid positions (m/s), (N+1,).");
@@ -150,11 +154,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                                             max_iterations));
         }
         if (method != "optimal") throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
-        if (kind != ProfileKind::trapezoid) {
-          throw std::invalid_argument(describe("profile", profile,
-                                               "must be \"trapezoid\" with method \"optimal\" (its laws are piecewise-constant "
-                                               "acceleration; a jerk-limited optimal re-timing is not available)"));
-        }
+        limits.validate(kind);  // the S-curve needs a jerk limit, the trapezoid refuses one
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
@@ -170,11 +170,14 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       "Re-time `path` so that the robot keeps its joint limits.\n\n"
       "method=\"scaling\" (the seed's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
       "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
-      "method=\"optimal\" (profile=\"trapezoid\", limits without jerk): the fastest parameterisation under the "
-      "DISP limits and the joint velocity limits, `joint_acceleration` ((dof,) array, optional) and the effort "
-      "limits (if `torque_limits`) at once, over `grid_intervals` intervals of s, checked at `samples_between` "
-      "points between characteristic points and re-solved with tightened limits up to `max_iterations` times "
-      "if that check finds an overshoot; returns an OptimalRetimeResult.\n"
+      "method=\"optimal\": the fastest parameterisation under the DISP limits and the joint velocity limits, "
+      "`joint_acceleration` ((dof,) array, optional) and the effort limits (if `torque_limits`) at once, over "
+      "`grid_intervals` intervals of s, checked at `samples_between` points between characteristic points and "
+      "re-solved with tightened limits up to `max_iterations` times if that check finds an overshoot; returns an "
+      "OptimalRetimeResult. With profile=\"trapezoid\" (limits without jerk) its laws are piecewise-constant "
+      "acceleration; with profile=\"scurve\" (limits with jerk) each rest-to-rest run is then averaged over a "
+      "window (jerk_window) so that |s'''| <= jerk within every section, the speed caps tightened beforehand so "
+      "that the DISP limits still hold.\n"
       "RuntimeError if a position limit is violated, a static torque exceeds its limit, or it does not converge.");
 
   m.def(
@@ -186,9 +189,10 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
           throw std::invalid_argument(describe("method", method, "must be \"optimal\" for a Hexapod (its leg speeds enter "
                                                                  "plan() through Hexapod.joint_metric; no scaling loop)"));
         }
-        if (profile != "trapezoid") {
-          throw std::invalid_argument(describe("profile", profile,
-                                               "must be \"trapezoid\" with method \"optimal\" (piecewise-constant acceleration)"));
+        if (profile == "scurve" || profile == "trapezoid") {
+          limits.validate(profile == "scurve" ? ProfileKind::scurve : ProfileKind::trapezoid);
+        } else {
+          throw std::invalid_argument(describe("profile", profile, "must be \"scurve\" or \"trapezoid\""));
         }
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
@@ -202,7 +206,8 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       py::arg("max_iterations") = 6, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
       "The optimal re-timing for a Hexapod: the fastest timing that keeps the DISP limits, every leg within its "
       "speed (leg_speed) and, if given, `joint_acceleration` ((6,) leg accelerations, m/s^2); returns an "
-      "OptimalRetimeResult. RuntimeError if a leg leaves its length range on the way.");
+      "OptimalRetimeResult. profile=\"scurve\" (limits with jerk) limits the jerk as for an arm. RuntimeError if a "
+      "leg leaves its length range on the way.");
 }
 
 }  // namespace python

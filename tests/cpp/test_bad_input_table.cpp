@@ -265,6 +265,11 @@ std::vector<Row> rows() {
   row("Profile::scurve", "NaN j_max", [] { Profile::scurve(1, 1, 1, nan_); }, IA, "j_max = nan");
   row("Profile::scurve", "negative v_max", [] { Profile::scurve(1, -1, 1, 1); }, IA, "v_max = -1");
   row("Profile::scurve", "NaN distance", [] { Profile::scurve(nan_, 1, 1, 1); }, IA, "distance = nan");
+  row("Profile::from_phases", "zero phases", [] { const double d[] = {1.0}; Profile::from_phases(d, d, 0, 0, 0, 1, 1, 0); }, IA, "count = 0");
+  row("Profile::from_phases", "NaN duration", [] { const double d[] = {nan_}, j[] = {0.0}; Profile::from_phases(d, j, 1, 1, 0, 1, 1, 0); }, IA, "durations[0] = nan");
+  row("Profile::from_phases", "inf jerk", [] { const double d[] = {1.0}, j[] = {inf_}; Profile::from_phases(d, j, 1, 1, 0, 1, 1, 0); }, IA, "jerks[0] = inf");
+  row("Profile::from_phases", "negative v_start", [] { const double d[] = {1.0}, j[] = {0.0}; Profile::from_phases(d, j, 1, -1, 0, 1, 1, 0); }, IA, "v_start = -1");
+  row("Profile::from_phases", "end state not reached", [] { const double d[] = {1.0}, j[] = {0.0}; Profile::from_phases(d, j, 1, 1, 0, 2, 1, 0); }, IA, "distance = 2");
 
   // --- Limits / plan ---
   row("Limits::validate", "zero velocity", [] { limits(0, 1, 10).validate(ProfileKind::scurve); }, IA, "velocity = 0");
@@ -444,6 +449,8 @@ std::vector<Row> rows() {
         retime_by_scaling(ur_path(), good_set(), limits(0.1, 1, 10), ProfileKind::scurve, ur5e(), q_ur(), {}, 0); }, IA, "max_iterations = 0");
   // --- retime_optimal ---
   const auto optimal = [=](const OptimalRetimeOptions& o) { retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), q_ur(), o); };
+  row("retime_optimal", "NaN jerk", [=] { retime_optimal(ur_path(), good_set(), limits(0.1, 1, nan_), ur5e(), q_ur()); }, IA, "jerk = nan");
+  row("retime_optimal", "zero jerk", [=] { retime_optimal(ur_path(), good_set(), limits(0.1, 1, 0.0), ur5e(), q_ur()); }, IA, "jerk = 0");
   row("retime_optimal", "one grid interval", [=] { OptimalRetimeOptions o; o.grid_intervals = 1; optimal(o); }, IA, "grid_intervals = 1");
   row("retime_optimal", "NaN difference_step", [=] { OptimalRetimeOptions o; o.difference_step = nan_; optimal(o); }, IA, "difference_step = nan");
   row("retime_optimal", "negative check_samples_between", [=] { OptimalRetimeOptions o; o.check_samples_between = -1; optimal(o); }, IA,
@@ -454,8 +461,6 @@ std::vector<Row> rows() {
       "joint_acceleration size = 2");
   row("retime_optimal", "zero joint acceleration", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(6); o.joint_acceleration(4) = 0; optimal(o); }, IA,
       "joint_acceleration[4] = 0");
-  row("retime_optimal", "jerk limit given", [=] {
-        retime_optimal(ur_path(), good_set(), limits(0.1, 1, 10), ur5e(), q_ur()); }, IA, "jerk = 10");
   row("retime_optimal", "hexapod, leg accelerations of the wrong size", [=] { OptimalRetimeOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(3);
         const Hexapod h = hexapod();
         retime_optimal(Path::lin(h.home(), h.home() * Posed(Quaterniond::Identity(), Vector3d(0.01, 0, 0))), good_set(), limits(0.1, 1, std::nullopt), h, o); },

@@ -10,6 +10,7 @@
 
 #include "random_cases.hpp"
 #include "retiming_moves.hpp"
+#include "jerk_filter.hpp"
 #include "reachability.hpp"
 
 namespace dispkin {
@@ -291,10 +292,230 @@ TEST(OptimalRetiming, BadOptionsAreNamed) {
               o.joint_acceleration(2) = std::nan("");
             }).find("joint_acceleration[2]"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, 10.0}, arm, m.q_start); }).find("jerk"),
-            std::string::npos);
   EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), limits, arm, Eigen::VectorXd::Zero(4)); }).find("q_start size = 4"),
             std::string::npos);
+}
+
+// --- jerk limiting (issue 7 item 3, second half) ----------------------------------------------
+
+// The state of a moving-averaged law at t (phases and their start states).
+ProfileState jerk_law_at(const std::vector<detail::JerkPhase>& phases, double t) {
+  std::size_t m = 0;
+  double start = 0.0;
+  while (m + 1 < phases.size() && start + phases[m].duration <= t) start += phases[m++].duration;
+  const detail::JerkPhase& p = phases[m];
+  const double dt = t - start;
+  return {p.position + dt * (p.speed + dt * (0.5 * p.acceleration + p.jerk * dt / 6.0)),
+          p.speed + dt * (p.acceleration + 0.5 * p.jerk * dt), p.acceleration + p.jerk * dt, p.jerk};
+}
+
+// A trapezoid as acceleration steps (its three phases).
+detail::AccelerationSteps trapezoid_steps(const Profile& law) {
+  detail::AccelerationSteps steps;
+  for (int i = 0; i < law.phase_count(); ++i) {
+    steps.time.push_back(law.phase_start_time(i));
+    steps.position.push_back(law.phase(i).start.s);
+    steps.speed.push_back(law.phase(i).start.v);
+    steps.acceleration.push_back(law.phase(i).start.a);
+  }
+  steps.time.push_back(law.duration());
+  steps.position.push_back(law.distance());
+  steps.speed.push_back(0.0);
+  return steps;
+}
+
+// The moving average of a trapezoid over a/j is the S-curve under the same limits (its jerk
+// phases are the window sliding over the acceleration steps), and the smallest window is a/j.
+TEST(JerkFilter, MovingAverageOfATrapezoidIsTheSCurve) {
+  const double v = 0.5, a = 2.0, j = 20.0, distance = 1.0;
+  const detail::AccelerationSteps steps = trapezoid_steps(Profile::trapezoid(distance, v, a));
+  const double window = detail::smallest_window(steps, j, 2.0 * a / j);
+  EXPECT_NEAR(window, a / j, 1e-9);
+  double end = 0.0;
+  const std::vector<detail::JerkPhase> phases = detail::moving_average(steps, a / j, end);
+  const Profile scurve = Profile::scurve(distance, v, a, j);
+  EXPECT_NEAR(end, scurve.duration(), 1e-12);
+  for (int k = 0; k <= 500; ++k) {
+    const double t = end * k / 500.0;
+    const ProfileState x = jerk_law_at(phases, t), y = scurve.state_at(t);
+    ASSERT_NEAR(x.s, y.s, 1e-12) << "t = " << t;
+    ASSERT_NEAR(x.v, y.v, 1e-12) << "t = " << t;
+    ASSERT_NEAR(x.a, y.a, 1e-9) << "t = " << t;
+  }
+  const ProfileState last = jerk_law_at(phases, end);
+  EXPECT_NEAR(last.s, distance, 1e-15);
+  EXPECT_NEAR(last.v, 0.0, 1e-15);
+}
+
+// Without a cruise the acceleration steps from +a to −a: a window shorter than the acceleration
+// phase sees a step of 2a. Whatever window is returned keeps the jerk, and the law still ends at
+// rest at the end.
+TEST(JerkFilter, WindowKeepsTheJerkWhereTheAccelerationReverses) {
+  for (const double distance : {0.01, 0.05, 0.2}) {
+    const double v = 1.0, a = 2.0, j = 20.0;
+    const detail::AccelerationSteps steps = trapezoid_steps(Profile::trapezoid(distance, v, a));
+    const double window = detail::smallest_window(steps, j, 2.0 * a / j);
+    double end = 0.0;
+    const std::vector<detail::JerkPhase> phases = detail::moving_average(steps, window, end);
+    for (const detail::JerkPhase& p : phases) {
+      EXPECT_LE(std::abs(p.jerk), j * (1 + 1e-9));
+      EXPECT_LE(std::abs(p.acceleration), a * (1 + 1e-12));
+      EXPECT_GE(p.speed, 0.0);
+    }
+    const ProfileState last = jerk_law_at(phases, end);
+    EXPECT_NEAR(last.s, distance, 1e-15 + 1e-13 * distance);
+    EXPECT_NEAR(last.v, 0.0, 1e-12);
+    EXPECT_NEAR(last.a, 0.0, 1e-9);
+    // Never longer than the trapezoid plus 2a/j, never shorter than the S-curve.
+    EXPECT_LE(end, Profile::trapezoid(distance, v, a).duration() + 2.0 * a / j + 1e-12);
+    EXPECT_GE(end, Profile::scurve(distance, v, a, j).duration() - 1e-12);
+  }
+}
+
+// The largest |s⃛| by third differences of s sampled every h, over windows that stay within one
+// section (at tangent junctions ṡ steps with ds/dσ, by design: see optimal_retiming.cpp).
+double largest_sampled_jerk(const Trajectory& traj, double h) {
+  std::vector<double> junctions;
+  double s = 0.0;
+  for (std::size_t k = 0; k + 1 < traj.section_lengths().size(); ++k) junctions.push_back(s += traj.section_lengths()[k]);
+  double largest = 0.0;
+  for (double t = 0.0; t + 3.0 * h <= traj.duration(); t += h) {
+    double x[4];
+    for (int k = 0; k < 4; ++k) x[k] = traj.sample(t + k * h).s;
+    const bool crosses = std::any_of(junctions.begin(), junctions.end(), [&](double at) { return x[0] < at && at < x[3]; });
+    if (crosses) continue;
+    largest = std::max(largest, std::abs(x[3] - 3.0 * x[2] + 3.0 * x[1] - x[0]) / (h * h * h));
+  }
+  return largest;
+}
+
+// Ends reached: at the path's end, at rest, with zero acceleration (to the rounding of the
+// time: sample(duration()) lands a few ulp inside the last phase).
+void expect_ends_at_rest(const Trajectory& traj, const Limits& limits) {
+  const TrajectorySample end = traj.sample(traj.duration());
+  EXPECT_NEAR(end.s, traj.length(), 1e-12 * traj.length());
+  EXPECT_NEAR(end.s_dot, 0.0, 1e-12 * limits.velocity);
+  EXPECT_NEAR(end.s_ddot, 0.0, 1e-9 * limits.acceleration);
+}
+
+TEST(JerkLimitedRetiming, KeepsTheJerkAndEveryLimitDensely) {
+  const serial::SerialArm arm = ur5e();
+  const MetricSetd set = tool();
+  Eigen::VectorXd acceleration(6);
+  acceleration << 8, 8, 8, 12, 12, 12;
+  for (const Move& m : {lin_move(arm), corner_move(arm)}) {
+    // Held back by joint speeds, by torques and joint accelerations, and by the DISP limits alone.
+    for (Limits limits : {Limits{6.0, 100.0, 400.0}, Limits{1.5, 400.0, 150.0}, Limits{0.3, 2.0, 20.0}}) {
+      for (const Eigen::VectorXd& joint_acceleration : {acceleration, Eigen::VectorXd()}) {
+        OptimalRetimeOptions options;
+        options.joint_acceleration = joint_acceleration;
+        const OptimalRetimeResult r = retime_optimal(m.path, set, limits, arm, m.q_start, options);
+        const Ratios dense = dense_ratios(r.trajectory, arm, m.q_start, joint_acceleration, 20);
+        const double jerk = largest_sampled_jerk(r.trajectory, 1e-3);
+        Limits unjerked_limits = limits;
+        unjerked_limits.jerk.reset();
+        const OptimalRetimeResult unjerked = retime_optimal(m.path, set, unjerked_limits, arm, m.q_start, options);
+        std::printf("jerk-limited: %.4f s (unjerked %.4f s, window %.4f s, %d refinements); max sampled jerk %.3f of %.1f; "
+                    "dense ratios v %.6f a %.6f tau %.6f\n",
+                    r.trajectory.duration(), unjerked.trajectory.duration(), r.jerk_window, r.refinements, jerk, *limits.jerk,
+                    dense.velocity, dense.acceleration, dense.torque);
+        EXPECT_LE(jerk, *limits.jerk * (1 + 1e-6));
+        EXPECT_LE(dense.velocity, 1.0);
+        EXPECT_LE(dense.acceleration, 1.0);
+        EXPECT_LE(dense.torque, 1.0);
+        expect_disp_limits(r.trajectory, limits);
+        expect_ends_at_rest(r.trajectory, limits);
+        EXPECT_EQ(r.trajectory.piece_count(), m.path.size() == 1 ? 1u : 2u);
+        EXPECT_GE(r.jerk_window, 0.0);  // 0: the plain S-curve plan keeps the joint limits and is faster
+        EXPECT_LE(r.jerk_window, 2.0 * limits.acceleration / *limits.jerk * (1 + 1e-9));
+        // Never faster than the fastest law without a jerk limit on the same grid.
+        EXPECT_GE(r.trajectory.duration(), unjerked.trajectory.duration());
+        if (joint_acceleration.size()) continue;
+        // Against the seed's scaling with the S-curve (velocity and torque limits), where it converges.
+        try {
+          const RetimeResult scaled = retime_by_scaling(m.path, set, limits, ProfileKind::scurve, arm, m.q_start);
+          std::printf("  jerk-limited optimal %.4f s vs scaling (S-curve) %.4f s\n", r.trajectory.duration(),
+                      scaled.trajectory.duration());
+          // NOT always faster: the moving average of the grid law under a chosen (A, V) is not the
+          // jerk-limited optimum. Measured here: 1.7 % faster to 1.5 % slower than the scaling
+          // (3.5 % on example 05's move); where the plain S-curve plan keeps the joint limits it is
+          // the result. This bound guards that measured state (benchmarks/RESULTS.md), it is not
+          // the goal.
+          EXPECT_LE(r.trajectory.duration(), scaled.trajectory.duration() * 1.05);
+        } catch (const std::runtime_error& e) {
+          std::printf("  scaling (S-curve) fails: %s\n", e.what());
+        }
+      }
+    }
+  }
+}
+
+// Tangent junctions inside a run (a CIRC cut into sections): the jerk holds within every section,
+// ṡ steps at a junction only by the ratio of ds/dσ (≤ 1 %, the junction rule), and the DISP and
+// joint limits hold.
+TEST(JerkLimitedRetiming, PassesTangentJunctionsAtSpeed) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  const Posed a = arm.forward(m.q_start);
+  const Posed b(a.quaternion(), a.translation() + V(0.15, 0.15, 0.0));
+  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(0.3, V::UnitZ())) * a.quaternion(), a.translation() + V(0.3, 0.0, 0.0));
+  const Path path = Path::circ(a, b, c);
+  const Limits limits{2.0, 20.0, 100.0};
+  const OptimalRetimeResult r = retime_optimal(path, tool(), limits, arm, m.q_start);
+  ASSERT_GT(r.trajectory.section_count(), 1u);
+  const double jerk = largest_sampled_jerk(r.trajectory, 1e-3);
+  const Ratios dense = dense_ratios(r.trajectory, arm, m.q_start, Eigen::VectorXd(), 20);
+  std::printf("circ, %zu sections: %.4f s, max sampled jerk %.3f of %.1f, dense v %.6f tau %.6f\n",
+              r.trajectory.section_count(), r.trajectory.duration(), jerk, *limits.jerk, dense.velocity, dense.torque);
+  EXPECT_LE(jerk, *limits.jerk * (1 + 1e-6));
+  EXPECT_LE(std::max(dense.velocity, dense.torque), 1.0);
+  expect_disp_limits(r.trajectory, limits);
+  expect_ends_at_rest(r.trajectory, limits);
+  EXPECT_EQ(r.trajectory.piece_count(), 1u);
+  // Across each junction: the speed on both sides within 1 %.
+  double s = 0.0;
+  for (std::size_t k = 0; k + 1 < r.trajectory.section_count(); ++k) {
+    s += r.trajectory.section_lengths()[k];
+    double lo = 0.0, hi = r.trajectory.duration();
+    for (int i = 0; i < 100; ++i) (r.trajectory.sample(0.5 * (lo + hi)).s < s ? lo : hi) = 0.5 * (lo + hi);
+    const double before = r.trajectory.sample(lo - 1e-9).s_dot, after = r.trajectory.sample(hi + 1e-9).s_dot;
+    EXPECT_LE(std::abs(after - before), 0.0101 * std::max(before, after)) << "junction at s = " << s;
+  }
+}
+
+TEST(JerkLimitedRetiming, HexapodLegsKeepTheirSpeeds) {
+  constexpr double pi = 3.14159265358979323846;
+  const Hexapod h = Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01);
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.03, V(0, 0, 0.02)));
+  const Posed a = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.15, V::UnitX())), V(-0.02, 0.01, -0.01));
+  const Posed b = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
+  const Path path = Path::lin(a, b).then(Path::lin(b, h.home()));
+  const Limits limits{0.2, 2.0, 20.0};
+  const OptimalRetimeResult r = retime_optimal(path, set, limits, h);
+  JointCheckOptions dense;
+  dense.samples_between = 20;
+  const JointLimitReport check = check_joint_limits(r.trajectory, h, dense);
+  const double jerk = largest_sampled_jerk(r.trajectory, 1e-3);
+  Limits unjerked = limits;
+  unjerked.jerk.reset();
+  const double fastest = retime_optimal(path, set, unjerked, h).trajectory.duration();
+  std::printf("hexapod jerk-limited: %.4f s (unjerked %.4f s), leg speed / limit %.6f, max sampled jerk %.3f\n",
+              r.trajectory.duration(), fastest, check.velocity_factor, jerk);
+  EXPECT_LE(check.velocity_factor, 1.0);
+  EXPECT_LE(jerk, *limits.jerk * (1 + 1e-6));
+  EXPECT_GE(r.trajectory.duration(), fastest);
+  expect_disp_limits(r.trajectory, limits);
+  expect_ends_at_rest(r.trajectory, limits);
+}
+
+TEST(JerkLimitedRetiming, BadJerkIsNamed) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  for (const double jerk : {0.0, -1.0, std::nan("")}) {
+    EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, jerk}, arm, m.q_start); }).find("jerk"),
+              std::string::npos);
+  }
 }
 
 }  // namespace

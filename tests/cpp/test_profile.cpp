@@ -414,5 +414,55 @@ TEST(ProfileErrors, ScurveTooShort) {
   EXPECT_TRUE(starts_with(m, "distance = 0.9: too short to change the velocity from v_start = 0 to v_end = 1 under a_max = 1, j_max = 1: it needs at least 1")) << m;
 }
 
+// from_phases: the phases of an S-curve with boundary velocities give back the same law; phases
+// that do not lead to the stated end state, or that run backwards, are refused.
+TEST(Profile, FromPhasesRebuildsALaw) {
+  const Profile law = Profile::scurve(0.3, 0.5, 2.0, 20.0, 0.1, 0.05);
+  double durations[Profile::max_phases], jerks[Profile::max_phases];
+  const int n = law.phase_count();
+  for (int i = 0; i < n; ++i) {
+    durations[i] = law.phase(i).duration;
+    jerks[i] = law.phase(i).jerk;
+  }
+  const Profile copy = Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.3, 0.05, 0.0);
+  EXPECT_NEAR(copy.duration(), law.duration(), 1e-15);
+  for (int k = 0; k <= 200; ++k) {
+    const double t = law.duration() * k / 200.0;
+    const ProfileState a = law.state_at(t), b = copy.state_at(t);
+    ASSERT_NEAR(a.s, b.s, 1e-13);
+    ASSERT_NEAR(a.v, b.v, 1e-13);
+    ASSERT_NEAR(a.a, b.a, 1e-12);
+  }
+  // A piece of it that starts and ends mid-phase, with non-zero accelerations.
+  const double t0 = 0.3 * law.phase_start_time(1), t1 = law.duration() - 0.5 * law.phase(n - 1).duration;
+  const ProfileState a = law.state_at(t0), b = law.state_at(t1);
+  int m = 0;
+  double cut_durations[Profile::max_phases], cut_jerks[Profile::max_phases];
+  for (int i = 0; i < n; ++i) {
+    const double lo = std::max(t0, law.phase_start_time(i)), hi = std::min(t1, law.phase_start_time(i + 1));
+    if (hi > lo) {
+      cut_durations[m] = hi - lo;
+      cut_jerks[m++] = law.phase(i).jerk;
+    }
+  }
+  const Profile piece = Profile::from_phases(cut_durations, cut_jerks, m, a.v, a.a, b.s - a.s, b.v, b.a);
+  EXPECT_NEAR(piece.duration(), t1 - t0, 1e-15);
+  const ProfileState middle = piece.state_at(0.5 * (t1 - t0)), expected = law.state_at(0.5 * (t0 + t1));
+  EXPECT_NEAR(middle.s, expected.s - a.s, 1e-13);
+  EXPECT_NEAR(middle.v, expected.v, 1e-13);
+  EXPECT_EQ(piece.state_at(t1 - t0 + 1.0).a, b.a);  // the end state holds, with its acceleration
+
+  EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.31, 0.05, 0.0); }).find("do not lead"),
+            std::string::npos);
+  const double dip_d[] = {2.0}, dip_j[] = {2.0};  // ṡ = (t − 1)² − 0.01: below 0 around t = 1
+  EXPECT_NE(message_of([&] { Profile::from_phases(dip_d, dip_j, 1, 0.99, -2.0, 2.0 / 3.0 - 0.02, 0.99, 2.0); }).find("negative"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, 0, 0.1, 0.0, 0.3, 0.05, 0.0); }).find("count = 0"),
+            std::string::npos);
+  durations[1] = kNaN;
+  EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.3, 0.05, 0.0); }).find("durations[1]"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace dispkin

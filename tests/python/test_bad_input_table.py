@@ -446,7 +446,7 @@ row("check_joint_limits", "negative samples_between", lambda: dispkin.check_join
 row("check_joint_limits", "q_start of the wrong size", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), Q_UR[:5]), V, "q_start size = 5")
 row("check_joint_limits", "NaN q_start", lambda: dispkin.check_joint_limits(ur_trajectory(), ur5e(), [NAN] * 6), V, "q_start = (nan")
 row("retime", "unknown method", lambda: dispkin.retime(ur_path(), good_set(), LIMITS, ur5e(), Q_UR, method="fastest"), V, "method = \"fastest\"")
-row("retime", "optimal with an S-curve", lambda: dispkin.retime(ur_path(), good_set(), LIMITS, ur5e(), Q_UR, method="optimal"), V, "profile = \"scurve\"")
+row("retime", "optimal S-curve without a jerk limit", lambda: dispkin.retime(ur_path(), good_set(), TRAPEZOID_LIMITS, ur5e(), Q_UR, method="optimal"), V, "jerk is missing")
 row("retime", "optimal, 1 grid interval", lambda: dispkin.retime(ur_path(), good_set(), TRAPEZOID_LIMITS, ur5e(), Q_UR, profile="trapezoid", method="optimal", grid_intervals=1), V, "grid_intervals = 1")
 row("retime", "optimal, joint_acceleration of wrong size", lambda: dispkin.retime(ur_path(), good_set(), TRAPEZOID_LIMITS, ur5e(), Q_UR, profile="trapezoid", method="optimal", joint_acceleration=[1.0, 2.0]), V, "joint_acceleration size = 2")
 row("retime", "optimal, negative joint_acceleration", lambda: dispkin.retime(ur_path(), good_set(), TRAPEZOID_LIMITS, ur5e(), Q_UR, profile="trapezoid", method="optimal", joint_acceleration=[1.0, 1.0, -1.0, 1.0, 1.0, 1.0]), V, "joint_acceleration[2] = -1")

@@ -116,3 +116,59 @@ def test_hexapod_legs_are_the_joints():
     assert result.trajectory.duration <= metric.duration
     with pytest.raises(ValueError, match='method = "scaling"'):
         dispkin.retime(path, tool, fast, h, method="scaling")
+
+
+@pytest.mark.parametrize("kind", ["lin", "circ"])
+def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
+    """retime(profile="scurve", method="optimal"): |s'''| <= jerk within every section (third
+    differences of sampled s), the path speed under the plan's velocity-limit curve, the joint
+    limits dense, the path end reached at rest; never faster than the jerk-free optimum, and
+    compared with toppra (no jerk limit) and the seed's scaling with S-curves."""
+    arm, path, tool = arm_and_path(kind)
+    limits = dispkin.Limits(1.5, 400.0, 150.0)
+    jerked = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="optimal")
+    plain = dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0), arm, Q0, profile="trapezoid", method="optimal")
+    try:
+        scaled = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="scaling").trajectory.duration
+    except RuntimeError:  # the seed's loop does not converge on the CIRC (measured): nothing to compare
+        scaled = None
+    s_grid, q_grid = joint_path(arm, path, tool)
+    theirs = toppra_duration(arm, s_grid, q_grid, 100, True)
+    traj = jerked.trajectory
+    print(f"{kind}: jerk-limited {traj.duration:.5f} s (window {jerked.jerk_window:.5f} s), jerk-free "
+          f"{plain.trajectory.duration:.5f} s, toppra (no jerk) {theirs:.5f} s, scaling S-curve {scaled} s")
+    assert traj.duration >= plain.trajectory.duration
+    # Not always faster than the scaling with S-curves (measured up to 3.5 % slower where the jerk
+    # binds more than the joints; benchmarks/RESULTS.md): a guard on that measured state, not the goal.
+    assert scaled is None or traj.duration <= 1.05 * scaled
+    assert 0.0 <= jerked.jerk_window <= 2 * limits.acceleration / limits.jerk
+    # Third differences within sections.
+    h = 1e-3
+    t = np.arange(0.0, traj.duration - 3 * h, h)
+    s = np.stack([traj.path_position(t + k * h) for k in range(4)])
+    junctions = np.cumsum(traj.section_lengths())[:-1]
+    crosses = np.any((s[0][:, None] < junctions[None, :]) & (junctions[None, :] < s[3][:, None]), axis=1)
+    jerk = np.abs(s[3] - 3 * s[2] + 3 * s[1] - s[0]) / h**3
+    assert np.max(jerk[~crosses]) <= limits.jerk * (1 + 1e-6)
+    # DISP: the speed under the velocity-limit curve; the end reached at rest.
+    dense_t = np.linspace(0, traj.duration, 4001)
+    spans = traj.speed_limits()
+    x, v = traj.path_position(dense_t), traj.path_velocity(dense_t)
+    caps = np.array([spans[(spans[:, 0] <= y + 1e-12) & (y <= spans[:, 0] + spans[:, 1] + 1e-12), 2].min() for y in x])
+    assert np.all(v <= caps * (1 + 1e-12))
+    assert float(traj.path_position([traj.duration])[0]) == pytest.approx(traj.length, rel=1e-12)
+    # At rest, to the rounding of the time (sampling at the duration lands a few ulp inside the law).
+    assert abs(float(traj.path_velocity([traj.duration])[0])) <= 1e-12 * limits.velocity
+    # Joint limits densely.
+    dense = dispkin.check_joint_limits(traj, arm, Q0, samples_between=20)
+    assert np.all(np.abs(dense.samples["qd"]) <= arm.joint_limits.velocity)
+    torque = dense.samples["static_torque"] + dense.samples["dynamic_torque"]
+    assert np.all(np.abs(torque) <= arm.joint_limits.effort)
+
+
+def test_profile_must_match_the_jerk_limit():
+    arm, path, tool = arm_and_path("lin")
+    with pytest.raises(ValueError, match="jerk"):
+        dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0), arm, Q0, profile="scurve", method="optimal")
+    with pytest.raises(ValueError, match="jerk"):
+        dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0, 150.0), arm, Q0, profile="trapezoid", method="optimal")

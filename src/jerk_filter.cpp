@@ -1,0 +1,129 @@
+// Jerk limiting by a moving average (jerk_filter.hpp).
+#include "jerk_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dispkin::detail {
+namespace {
+
+// The interval holding t: the last knot ≤ t (clamped to [0, N − 1]).
+std::size_t interval_at(const AccelerationSteps& law, double t) {
+  const std::size_t n = law.acceleration.size();
+  const auto next = std::upper_bound(law.time.begin(), law.time.end(), t);
+  const std::size_t i = next == law.time.begin() ? 0 : static_cast<std::size_t>(next - law.time.begin()) - 1;
+  return std::min(i, n - 1);
+}
+
+// u(t): zero outside [t_0, t_N).
+double acceleration_at(const AccelerationSteps& law, double t) {
+  if (!(t >= law.time.front()) || t >= law.time.back()) return 0.0;
+  return law.acceleration[interval_at(law, t)];
+}
+
+// p(t) and ṗ(t), held at the ends.
+void state_at(const AccelerationSteps& law, double t, double& p, double& v) {
+  if (t <= law.time.front()) {
+    p = law.position.front();
+    v = 0.0;
+    return;
+  }
+  if (t >= law.time.back()) {
+    p = law.position.back();
+    v = 0.0;
+    return;
+  }
+  const std::size_t i = interval_at(law, t);
+  const double dt = t - law.time[i], u = law.acceleration[i];
+  p = law.position[i] + dt * (law.speed[i] + 0.5 * u * dt);
+  v = law.speed[i] + u * dt;
+}
+
+// ∫_a^b (p(τ) − p(t_0)) dτ, a ≤ b, piece by piece.
+double integral(const AccelerationSteps& law, double a, double b) {
+  const double t0 = law.time.front(), tn = law.time.back(), p0 = law.position.front();
+  double sum = 0.0;
+  if (b > tn) {  // held at the end
+    sum += (b - std::max(a, tn)) * (law.position.back() - p0);
+    b = std::max(a, tn);
+  }
+  a = std::max(a, t0);  // before the start the integrand is 0
+  if (!(b > a)) return sum;
+  for (std::size_t i = interval_at(law, a); i < law.acceleration.size() && law.time[i] < b; ++i) {
+    const double lo = std::max(a, law.time[i]) - law.time[i], hi = std::min(b, law.time[i + 1]) - law.time[i];
+    if (!(hi > lo)) continue;
+    const double u = law.acceleration[i], v = law.speed[i], p = law.position[i] - p0;
+    // ∫ p + v τ + u τ²/2 dτ from lo to hi.
+    auto antiderivative = [&](double tau) { return tau * (p + tau * (0.5 * v + u * tau / 6.0)); };
+    sum += antiderivative(hi) - antiderivative(lo);
+  }
+  return sum;
+}
+
+// max_t |u(t) − u(t−T)|: a step function whose steps are at the knots and the knots + T.
+double largest_step(const AccelerationSteps& law, double window) {
+  std::vector<double> times;
+  times.reserve(2 * law.time.size());
+  for (const double t : law.time) {
+    times.push_back(t);
+    times.push_back(t + window);
+  }
+  std::sort(times.begin(), times.end());
+  double largest = 0.0;
+  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+    if (!(times[k + 1] > times[k])) continue;
+    const double t = 0.5 * (times[k] + times[k + 1]);
+    largest = std::max(largest, std::abs(acceleration_at(law, t) - acceleration_at(law, t - window)));
+  }
+  return largest;
+}
+
+}  // namespace
+
+double smallest_window(const AccelerationSteps& law, double jerk, double upper) {
+  double lo = 0.0, hi = upper;
+  while (hi - lo > 1e-9 * upper) {
+    const double mid = 0.5 * (lo + hi);
+    (largest_step(law, mid) <= jerk * mid ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+std::vector<JerkPhase> moving_average(const AccelerationSteps& law, double window, double& end_time) {
+  const double t0 = law.time.front();
+  end_time = law.time.back() + window;
+  // The knots of the averaged law; those closer than rounding to the previous one merge.
+  std::vector<double> knots;
+  knots.reserve(2 * law.time.size());
+  for (const double t : law.time) {
+    knots.push_back(t);
+    knots.push_back(t + window);
+  }
+  std::sort(knots.begin(), knots.end());
+  const double merge = 1e-12 * (end_time - t0);
+  std::vector<double> kept;
+  kept.reserve(knots.size());
+  for (const double t : knots) {
+    if (kept.empty() || t - kept.back() > merge) kept.push_back(t);
+  }
+  kept.back() = end_time;  // the last knot is the end (a merged neighbour must not move it)
+  std::vector<JerkPhase> phases;
+  phases.reserve(kept.size());
+  const double p0 = law.position.front();
+  for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+    const double t = kept[k], d = kept[k + 1] - t, middle = t + 0.5 * d;
+    double p, v, p_before, v_before;
+    state_at(law, t, p, v);
+    state_at(law, t - window, p_before, v_before);
+    JerkPhase phase;
+    phase.duration = d;
+    phase.jerk = (acceleration_at(law, middle) - acceleration_at(law, middle - window)) / window;
+    phase.position = k == 0 ? p0 : p0 + integral(law, t - window, t) / window;
+    phase.speed = k == 0 ? 0.0 : (p - p_before) / window;
+    phase.acceleration = k == 0 ? 0.0 : (v - v_before) / window;
+    phases.push_back(phase);
+  }
+  return phases;
+}
+
+}  // namespace dispkin::detail
