@@ -436,12 +436,18 @@ TEST(JerkLimitedRetiming, KeepsTheJerkAndEveryLimitDensely) {
           const RetimeResult scaled = retime_by_scaling(m.path, set, limits, ProfileKind::scurve, arm, m.q_start);
           std::printf("  jerk-limited optimal %.4f s vs scaling (S-curve) %.4f s\n", r.trajectory.duration(),
                       scaled.trajectory.duration());
-          // NOT always faster: the moving average of the grid law under a chosen (A, V) is not the
-          // jerk-limited optimum. Measured here: 1.7 % faster to 1.5 % slower than the scaling
-          // (3.5 % on example 05's move); where the plain S-curve plan keeps the joint limits it is
-          // the result. This bound guards that measured state (benchmarks/RESULTS.md), it is not
-          // the goal.
-          EXPECT_LE(r.trajectory.duration(), scaled.trajectory.duration() * 1.05);
+          // Never slower than the scaling run with the same 0.1 % headroom on the joint limits (one of
+          // the candidates; the averaged law alone measured up to 3.5 % slower, benchmarks/RESULTS.md)
+          // where that result keeps them at the candidates' dense check.
+          JointLimits held_back = arm.joint_limits();
+          held_back.velocity *= 1 - 1e-3;
+          held_back.effort *= 1 - 1e-3;
+          const RetimeResult scaled_clear =
+              retime_by_scaling(m.path, set, limits, ProfileKind::scurve, arm.with_joint_limits(held_back), m.q_start);
+          const Ratios clear_dense = dense_ratios(scaled_clear.trajectory, arm, m.q_start, joint_acceleration, 10);
+          ASSERT_LE(std::max({clear_dense.velocity, clear_dense.acceleration, clear_dense.torque}), 1 - 1e-3);
+          EXPECT_LE(r.trajectory.duration(), scaled_clear.trajectory.duration());
+          std::printf("  scaling with the 0.1 %% headroom %.4f s\n", scaled_clear.trajectory.duration());
         } catch (const std::runtime_error& e) {
           std::printf("  scaling (S-curve) fails: %s\n", e.what());
         }

@@ -130,17 +130,20 @@ def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
     plain = dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0), arm, Q0, profile="trapezoid", method="optimal")
     try:
         scaled = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="scaling").trajectory.duration
+        # The seed's scaling with the joint limits 0.1 % lower (the standing headroom of the grid
+        # laws) is a candidate of the optimal method: the optimum is never slower than it.
+        joint = arm.joint_limits()
+        held_back = arm.with_joint_limits(velocity=joint.velocity * (1 - 1e-3), effort=joint.effort * (1 - 1e-3))
+        scaled_clear = dispkin.retime(path, tool, limits, held_back, Q0, profile="scurve", method="scaling").trajectory.duration
     except RuntimeError:  # the seed's loop does not converge on the CIRC (measured): nothing to compare
-        scaled = None
+        scaled, scaled_clear = None, None
     s_grid, q_grid = joint_path(arm, path, tool)
     theirs = toppra_duration(arm, s_grid, q_grid, 100, True)
     traj = jerked.trajectory
     print(f"{kind}: jerk-limited {traj.duration:.5f} s (window {jerked.jerk_window:.5f} s), jerk-free "
           f"{plain.trajectory.duration:.5f} s, toppra (no jerk) {theirs:.5f} s, scaling S-curve {scaled} s")
     assert traj.duration >= plain.trajectory.duration
-    # Not always faster than the scaling with S-curves (measured up to 3.5 % slower where the jerk
-    # binds more than the joints; benchmarks/RESULTS.md): a guard on that measured state, not the goal.
-    assert scaled is None or traj.duration <= 1.05 * scaled
+    assert scaled_clear is None or traj.duration <= scaled_clear
     assert 0.0 <= jerked.jerk_window <= 2 * limits.acceleration / limits.jerk
     # Third differences within sections.
     h = 1e-3
