@@ -1,0 +1,238 @@
+// PTP moves of a serial arm under the DISP limit: cutting, velocity-limit curve, sampling (ptp.hpp).
+#include "dispkin/ptp.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "dispkin/error.hpp"
+#include "dispkin/velocity_limit.hpp"
+
+namespace dispkin {
+namespace {
+
+constexpr int initial_sections = 8;
+constexpr int max_depth = 16;             // sections never shorter than 2⁻¹⁶ of the move
+constexpr double floor_fraction = 1e-2;   // V_floor and the least pace: 1 % of the move's fastest
+constexpr double junction_step = 1e-2;    // the planner's junction rule: h/L steps ≤ 1 %
+constexpr double staircase_step = 0.95;   // velocity-limit levels v_sys · 0.95ᵏ
+
+struct Cutter {
+  const serial::RevoluteChain& chain;
+  const Eigen::VectorXd& q_a;
+  const Eigen::VectorXd& delta;
+  const detail::GroupFactors& factors;
+  double tolerance;
+  double floor_pace = 0.0;  // V_floor per unit u: a section of span h compares with floor_pace · h
+
+  JointSection bounds(double u0, double u1) const {
+    return detail::joint_section_bounds(chain, q_a, delta, u0, u1, factors);
+  }
+  // Appends [u0, u1] cut until its bound is within the tolerance of its middle speed.
+  void cut(const JointSection& section, int depth, std::vector<JointSection>& out) const {
+    const double slack = section.length - section.middle_speed;
+    if (depth >= max_depth || slack <= tolerance * std::max(section.middle_speed, floor_pace * (section.u1 - section.u0))) {
+      out.push_back(section);
+      return;
+    }
+    const double um = 0.5 * (section.u0 + section.u1);
+    cut(bounds(section.u0, um), depth + 1, out);
+    cut(bounds(um, section.u1), depth + 1, out);
+  }
+};
+
+int depth_of(const JointSection& s) { return static_cast<int>(std::lround(-std::log2(s.u1 - s.u0))); }
+
+}  // namespace
+
+JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+                     const serial::SerialArm& arm, const PtpOptions& options) {
+  limits.validate(profile);
+  set.require_well_formed();
+  const int n = arm.dof();
+  require(n <= max_ptp_joints, "arm dof", n, "exceeds max_ptp_joints = " + std::to_string(max_ptp_joints));
+  const Eigen::VectorXd& q_a = path.start();
+  const Eigen::VectorXd& q_b = path.end();
+  require(q_a.size() == n, "q_a size", static_cast<long>(q_a.size()), "must be the arm's dof " + std::to_string(n));
+  require(q_b.size() == n, "q_b size", static_cast<long>(q_b.size()), "must be the arm's dof " + std::to_string(n));
+  require_finite(q_a, "q_a");
+  require_finite(q_b, "q_b");
+  require(q_a != q_b, "q_b", q_b, "equals q_a: a PTP move must move");
+  const JointLimits joint = arm.joint_limits();
+  const std::vector<std::string> names = arm.joint_names();
+  for (int i = 0; i < n; ++i) {
+    const std::string name = "joint \"" + names[static_cast<std::size_t>(i)] + "\"";
+    const Eigen::Vector2d range(joint.lower(i), joint.upper(i));
+    require(q_a(i) >= joint.lower(i) && q_a(i) <= joint.upper(i), "q_a[" + std::to_string(i) + "]", q_a(i),
+            "is outside the position limits [lower, upper] of " + name);
+    require(q_b(i) >= joint.lower(i) && q_b(i) <= joint.upper(i), "q_b[" + std::to_string(i) + "]", q_b(i),
+            "is outside the position limits [lower, upper] of " + name);
+  }
+  require(std::isfinite(options.tolerance) && options.tolerance > 0.0 && options.tolerance <= 0.5, "tolerance",
+          options.tolerance, "must be in (0, 0.5]");
+  const Eigen::VectorXd& qdd_max = options.joint_acceleration;
+  require(qdd_max.size() == 0 || qdd_max.size() == n, "joint_acceleration size", static_cast<long>(qdd_max.size()),
+          "must be 0 (none) or the arm's dof " + std::to_string(n));
+  for (Eigen::Index i = 0; i < qdd_max.size(); ++i)
+    require(qdd_max(i) > 0.0, "joint_acceleration[" + std::to_string(i) + "]", qdd_max(i), "must be > 0 (+inf: none)");
+
+  JointTrajectory out;
+  out.chain_ = arm.chain();
+  out.q_start_ = q_a;
+  out.q_end_ = q_b;
+  out.delta_ = q_b - q_a;
+
+  // Sections: a uniform start, then halving by the cutting rule (ptp.hpp).
+  detail::GroupFactors factors(set, limits.velocity);
+  factors.use_pivot(Eigen::Vector3d::Zero());
+  Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
+  std::vector<JointSection> initial;
+  double fastest = 0.0;
+  for (int k = 0; k < initial_sections; ++k) {
+    initial.push_back(cutter.bounds(double(k) / initial_sections, double(k + 1) / initial_sections));
+    fastest = std::max(fastest, initial.back().length * initial_sections);
+  }
+  cutter.floor_pace = floor_fraction * fastest;
+  std::vector<JointSection> sections;
+  for (const JointSection& s : initial) cutter.cut(s, 3, sections);
+
+  // The least pace L/h: a section where (almost) no point moves is lengthened to 1 % of the
+  // fastest pace, so u never runs more than 100 times faster there (lengthening only slows).
+  double pace = 0.0;
+  for (const JointSection& s : sections) pace = std::max(pace, s.length / (s.u1 - s.u0));
+  require(pace > 0.0, "path", q_b, "moves no point of the metric set: nothing bounds the DISP speed of this move");
+  const double least_pace = floor_fraction * pace;
+  const auto lengthen = [least_pace](JointSection& s) { s.length = std::max(s.length, least_pace * (s.u1 - s.u0)); };
+  for (JointSection& s : sections) lengthen(s);
+
+  // The junction rule: neighbours' h/L within 1 %; halve both where not (a few passes).
+  for (int pass = 0; pass < 2 * max_depth; ++pass) {
+    std::vector<bool> split(sections.size(), false);
+    bool any = false;
+    for (std::size_t k = 0; k + 1 < sections.size(); ++k) {
+      const double r0 = (sections[k].u1 - sections[k].u0) / sections[k].length;
+      const double r1 = (sections[k + 1].u1 - sections[k + 1].u0) / sections[k + 1].length;
+      if (std::abs(r0 - r1) > junction_step * std::max(r0, r1)) {
+        if (depth_of(sections[k]) < max_depth) split[k] = any = true;
+        if (depth_of(sections[k + 1]) < max_depth) split[k + 1] = any = true;
+      }
+    }
+    if (!any) break;
+    std::vector<JointSection> next;
+    next.reserve(2 * sections.size());
+    for (std::size_t k = 0; k < sections.size(); ++k) {
+      if (!split[k]) {
+        next.push_back(sections[k]);
+        continue;
+      }
+      const double um = 0.5 * (sections[k].u0 + sections[k].u1);
+      next.push_back(cutter.bounds(sections[k].u0, um));
+      next.push_back(cutter.bounds(um, sections[k].u1));
+      lengthen(next[next.size() - 2]);
+      lengthen(next.back());
+    }
+    sections.swap(next);
+  }
+  out.sections_ = sections;
+  out.starts_.resize(sections.size());
+  double s = 0.0;
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    out.starts_[k] = s;
+    s += sections[k].length;
+  }
+
+  // The velocity-limit curve (ptp.hpp): system velocity, joint velocities, curvature rule.
+  double joint_pace = std::numeric_limits<double>::infinity();  // min over joints of q̇maxᵢ / |Δqᵢ|
+  double joint_acceleration = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double dq = std::abs(out.delta_(i));
+    if (dq == 0.0) continue;
+    joint_pace = std::min(joint_pace, joint.velocity(i) / dq);
+    if (qdd_max.size()) joint_acceleration = std::min(joint_acceleration, qdd_max(i) / dq);
+  }
+  double a_law = limits.acceleration;
+  std::vector<LimitedSegment> segments;
+  for (const JointSection& section : sections) {
+    const double h = section.u1 - section.u0;
+    a_law = std::min(a_law, joint_acceleration * section.length / h);
+    double v = std::min(limits.velocity, joint_pace * section.length / h);
+    if (section.acceleration > 0.0) v = std::min(v, section.length * std::sqrt(limits.acceleration / section.acceleration));
+    double level = limits.velocity;
+    if (v < limits.velocity) {
+      level = limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
+      if (level > v) level = v;  // rounding of pow / log: never above the limit
+    }
+    if (!segments.empty() && segments.back().limit == level) {
+      segments.back().length += section.length;
+    } else {
+      segments.push_back({section.length, level});
+    }
+  }
+  out.law_acceleration_ = a_law;
+  const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
+  double time = 0.0, start_s = 0.0, span_s = 0.0;
+  for (const LimitedSegment& segment : segments) {
+    out.speed_limits_.push_back({span_s, segment.length, segment.limit});
+    span_s += segment.length;
+  }
+  for (const Profile& law : velocity_limited_law(segments, a_law, jerk)) {
+    out.pieces_.push_back(JointTrajectory::Piece{law, time, time + law.duration(), start_s});
+    time += law.duration();
+    start_s += law.distance();
+  }
+  return out;
+}
+
+template <typename Out>
+void JointTrajectory::joints_at(double u, Out& q) const noexcept {
+  // q_a + u Δq near the start, q_b − (1 − u) Δq near the end: both ends exact.
+  if (u <= 0.5) {
+    q = q_start_ + u * delta_;
+  } else {
+    q = q_end_ - (1.0 - u) * delta_;
+  }
+}
+
+JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
+  JointTrajectorySample out;
+  if (pieces_.empty()) return out;
+  const auto n = static_cast<Eigen::Index>(q_start_.size());
+  out.q.resize(n);
+  out.qd.resize(n);
+  out.qdd.resize(n);
+  if (!(t > 0.0)) t = 0.0;
+  std::size_t k = 0;
+  double tau = 0.0;
+  if (t >= duration()) {
+    out.s = length();
+    k = sections_.size() - 1;
+    tau = 1.0;
+  } else {
+    const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
+    const Piece& piece = it == pieces_.end() ? pieces_.back() : *it;
+    const ProfileState law = piece.profile.state_at(t - piece.start_time);
+    out.s = piece.start_s + law.s;
+    out.s_dot = law.v;
+    out.s_ddot = law.a;
+    const auto next = std::upper_bound(starts_.begin(), starts_.end(), out.s);
+    k = next == starts_.begin() ? 0 : static_cast<std::size_t>(next - starts_.begin()) - 1;
+    tau = std::clamp((out.s - starts_[k]) / sections_[k].length, 0.0, 1.0);
+  }
+  const JointSection& section = sections_[k];
+  const double h = section.u1 - section.u0;
+  out.u = tau == 1.0 ? section.u1 : section.u0 + h * tau;
+  joints_at(out.u, out.q);
+  // u per unit s is h / L in section k: q̇ = Δq (h/L) ṡ, q̈ = Δq (h/L) s̈.
+  const double rate = h / section.length;
+  out.qd = delta_ * (rate * out.s_dot);
+  out.qdd = delta_ * (rate * out.s_ddot);
+  detail::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
+  return out;
+}
+
+void JointTrajectory::sample(const double* times, JointTrajectorySample* out, std::size_t count) const noexcept {
+  for (std::size_t i = 0; i < count; ++i) out[i] = sample(times[i]);
+}
+
+}  // namespace dispkin
