@@ -88,12 +88,13 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   factors.use_pivot(Eigen::Vector3d::Zero());
   Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
   std::vector<JointSection> initial;
-  double fastest = 0.0;
+  double fastest = 0.0, fastest_bound = 0.0;  // the largest exact middle pace, and bound pace
   for (int k = 0; k < initial_sections; ++k) {
     initial.push_back(cutter.bounds(double(k) / initial_sections, double(k + 1) / initial_sections));
-    fastest = std::max(fastest, initial.back().length * initial_sections);
+    fastest = std::max(fastest, initial.back().middle_speed * initial_sections);
+    fastest_bound = std::max(fastest_bound, initial.back().length * initial_sections);
   }
-  cutter.floor_pace = floor_fraction * fastest;
+  cutter.floor_pace = floor_fraction * (fastest > 0.0 ? fastest : fastest_bound);
   std::vector<JointSection> sections;
   for (const JointSection& s : initial) cutter.cut(s, 3, sections);
 

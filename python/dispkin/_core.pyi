@@ -227,7 +227,7 @@ def plan(
     *,
     robot: Optional[SerialArm] = None,
     joint_acceleration: Optional[_ArrayLike] = None,
-    tolerance: float = 0.001,
+    tolerance: float = 0.01,
 ) -> JointTrajectory: ...
 
 class JointTrajectory:

@@ -169,7 +169,7 @@ time and no joint faster than its velocity limit. Sample it at any times (second
         return plan(path, set, limits, kind, robot.cast<const serial::SerialArm&>(), options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::kw_only(),
-      py::arg("robot") = py::none(), py::arg("joint_acceleration") = py::none(), py::arg("tolerance") = 1e-3,
+      py::arg("robot") = py::none(), py::arg("joint_acceleration") = py::none(), py::arg("tolerance") = 1e-2,
       "Plan the PTP move `path` (Path.ptp(q_a, q_b)) on `robot` (a SerialArm, required) under the metric set and "
       "limits: the tool's points and spheres never faster than their limits, the joints never faster than the "
       "arm's velocity limits (and `joint_acceleration`, rad/s^2 per joint, if given), all joints arriving together. "
