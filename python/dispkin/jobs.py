@@ -895,8 +895,8 @@ def summarize(job: Job, trajectory: Trajectory, samples: JobSamples) -> Dict[str
                                  "acceleration_factor": float(report.acceleration_factor),
                                  "position_excess": float(report.position_excess),
                                  "within_limits": bool(report.within_limits)}
-        ratios["joint velocity (URDF)"] = float(report.velocity_factor)
-        ratios["joint effort (URDF)"] = float(report.acceleration_factor)
+        ratios["joint velocity (URDF)"] = summary["joints"]["velocity_factor"]
+        ratios["joint effort (URDF)"] = summary["joints"]["acceleration_factor"]
     name, ratio = max(ratios.items(), key=lambda item: item[1])
     summary["binding"] = name if ratio >= BINDING_FRACTION else (
         "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)")
