@@ -563,8 +563,9 @@ class _Builder:
         """(q_a, q_b, end pose) of a PTP move: the target as joints (radians / metres) or as a
         pose (the IK solution nearest to the joints at the move's start)."""
         if job.get("hexapod") is not None:
-            raise self.fail(at + ("ptp",), "PTP moves are planned for serial arms only: a hexapod's leg-space line has no "
-                            "DISP bound in dispkin yet (its platform would leave the straight path unpredictably). Use a lin move.")
+            raise self.fail(at + ("ptp",), "PTP moves are planned for serial arms only: dispkin has no DISP bound for a "
+                            "straight line in a hexapod's leg space yet. Use a lin move (the platform on a line; the legs "
+                            "follow by inverse kinematics).")
         arm = job.get("arm")
         if arm is None:
             raise self.fail(at + ("ptp",), "a PTP move moves joints: it needs machine.serial_arm")
