@@ -17,6 +17,7 @@ constexpr int max_depth = 16;             // sections never shorter than 2⁻¹�
 constexpr double floor_fraction = 1e-2;   // V_floor and the least pace: 1 % of the move's fastest
 constexpr double junction_step = 1e-2;    // the planner's junction rule: h/L steps ≤ 1 %
 constexpr double staircase_step = 0.95;   // velocity-limit levels v_sys · 0.95ᵏ
+constexpr double rate_share = 0.9;        // of a joint acceleration limit for Δq r s̈; the rest for Δq m r ṡ²
 
 struct Cutter {
   const serial::RevoluteChain& chain;
@@ -136,38 +137,60 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
     sections.swap(next);
   }
   out.sections_ = sections;
-  out.starts_.resize(sections.size());
-  double s = 0.0;
-  for (std::size_t k = 0; k < sections.size(); ++k) {
-    out.starts_[k] = s;
-    s += sections[k].length;
-  }
 
-  // The velocity-limit curve (ptp.hpp): system velocity, joint velocities, curvature rule.
-  double joint_pace = std::numeric_limits<double>::infinity();  // min over joints of q̇maxᵢ / |Δqᵢ|
-  double joint_acceleration = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < n; ++i) {
-    const double dq = std::abs(out.delta_(i));
-    if (dq == 0.0) continue;
-    joint_pace = std::min(joint_pace, joint.velocity(i) / dq);
-    if (qdd_max.size()) joint_acceleration = std::min(joint_acceleration, qdd_max(i) / dq);
+  // The rate u per unit s (ptp.hpp): at each junction the smaller of the two sections' h/L, linear
+  // in u inside a section, so never above its own h/L. Inside section k, with r₀, r₁ its end rates
+  // and m = (r₁ − r₀)/h: du/ds = r₀ + m (u − u_k), hence s-length ∫ du / r = h ln(r₁/r₀) / (r₁ − r₀).
+  const std::size_t count = sections.size();
+  std::vector<double> ratio(count), rate(count + 1);
+  for (std::size_t k = 0; k < count; ++k) ratio[k] = (sections[k].u1 - sections[k].u0) / sections[k].length;
+  rate[0] = ratio[0];
+  rate[count] = ratio[count - 1];
+  for (std::size_t k = 1; k < count; ++k) rate[k] = std::min(ratio[k - 1], ratio[k]);
+  out.rates_.resize(count);
+  double s = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double h = sections[k].u1 - sections[k].u0;
+    const double r0 = rate[k], r1 = rate[k + 1];
+    const double slope = (r1 - r0) / h;
+    const double span = r1 == r0 ? h / r0 : h * std::log1p((r1 - r0) / r0) / (r1 - r0);
+    out.rates_[k] = {s, span, r0, slope};
+    s += span;
   }
+  out.length_ = s;
+
+  // The velocity-limit curve (ptp.hpp): system velocity, joint velocities, curvature rule, and
+  // with joint acceleration limits the share of q̈ that the changing rate takes.
+  std::vector<double> dq(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) dq[static_cast<std::size_t>(i)] = std::abs(out.delta_(i));
   double a_law = limits.acceleration;
   std::vector<LimitedSegment> segments;
-  for (const JointSection& section : sections) {
-    const double h = section.u1 - section.u0;
-    a_law = std::min(a_law, joint_acceleration * section.length / h);
-    double v = std::min(limits.velocity, joint_pace * section.length / h);
-    if (section.acceleration > 0.0) v = std::min(v, section.length * std::sqrt(limits.acceleration / section.acceleration));
+  for (std::size_t k = 0; k < count; ++k) {
+    const JointSection& section = sections[k];
+    const JointTrajectory::SectionRate& r = out.rates_[k];
+    const double r_max = std::max(rate[k], rate[k + 1]);
+    // A point accelerates at most at ṡ² (A/L² + |m|) (ptp.hpp).
+    const double bend = (section.acceleration > 0.0 ? section.acceleration / (section.length * section.length) : 0.0) + std::abs(r.slope);
+    double v = limits.velocity;
+    if (bend > 0.0) v = std::min(v, std::sqrt(limits.acceleration / bend));
+    for (int i = 0; i < n; ++i) {
+      const double d = dq[static_cast<std::size_t>(i)];
+      if (d == 0.0) continue;
+      v = std::min(v, joint.velocity(i) / (d * r_max));
+      if (qdd_max.size()) {
+        a_law = std::min(a_law, rate_share * qdd_max(i) / (d * r_max));
+        if (r.slope != 0.0) v = std::min(v, std::sqrt((1.0 - rate_share) * qdd_max(i) / (d * std::abs(r.slope) * r_max)));
+      }
+    }
     double level = limits.velocity;
     if (v < limits.velocity) {
       level = limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
       if (level > v) level = v;  // rounding of pow / log: never above the limit
     }
     if (!segments.empty() && segments.back().limit == level) {
-      segments.back().length += section.length;
+      segments.back().length += r.span;
     } else {
-      segments.push_back({section.length, level});
+      segments.push_back({r.span, level});
     }
   }
   out.law_acceleration_ = a_law;
@@ -204,11 +227,9 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
   out.qdd.resize(n);
   if (!(t > 0.0)) t = 0.0;
   std::size_t k = 0;
-  double tau = 0.0;
   if (t >= duration()) {
     out.s = length();
     k = sections_.size() - 1;
-    tau = 1.0;
   } else {
     const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
     const Piece& piece = it == pieces_.end() ? pieces_.back() : *it;
@@ -216,18 +237,25 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
     out.s = piece.start_s + law.s;
     out.s_dot = law.v;
     out.s_ddot = law.a;
-    const auto next = std::upper_bound(starts_.begin(), starts_.end(), out.s);
-    k = next == starts_.begin() ? 0 : static_cast<std::size_t>(next - starts_.begin()) - 1;
-    tau = std::clamp((out.s - starts_[k]) / sections_[k].length, 0.0, 1.0);
+    const auto next = std::upper_bound(rates_.begin(), rates_.end(), out.s, [](double x, const SectionRate& r) { return x < r.s; });
+    k = next == rates_.begin() ? 0 : static_cast<std::size_t>(next - rates_.begin()) - 1;
   }
   const JointSection& section = sections_[k];
-  const double h = section.u1 - section.u0;
-  out.u = tau == 1.0 ? section.u1 : section.u0 + h * tau;
+  const SectionRate& r = rates_[k];
+  // Inside section k: u − u_k = r₀ (e^{m s′} − 1)/m and du/ds = r₀ e^{m s′}, s′ = s − s_k.
+  double rate = r.rate, u = section.u1;
+  if (t < duration()) {
+    const double ds = std::clamp(out.s - r.s, 0.0, r.span);
+    const double ms = r.slope * ds;
+    const double advance = r.slope == 0.0 ? r.rate * ds : r.rate * std::expm1(ms) / r.slope;
+    u = std::min(section.u0 + advance, section.u1);
+    rate = r.rate * std::exp(ms);
+  }
+  out.u = u;
   joints_at(out.u, out.q);
-  // u per unit s is h / L in section k: q̇ = Δq (h/L) ṡ, q̈ = Δq (h/L) s̈.
-  const double rate = h / section.length;
+  // q̇ = Δq (du/ds) ṡ, q̈ = Δq ((du/ds) s̈ + m (du/ds) ṡ²).
   out.qd = delta_ * (rate * out.s_dot);
-  out.qdd = delta_ * (rate * out.s_ddot);
+  out.qdd = delta_ * (rate * (out.s_ddot + r.slope * out.s_dot * out.s_dot));
   detail::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
   return out;
 }

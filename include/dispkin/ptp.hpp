@@ -21,20 +21,24 @@
 //! V(½) per unit u of the initial eight sections) times the section's span h_k: sections that crawl are not
 //! resolved finer than 1 % of the move's pace. Sections where (almost) no point moves are
 //! lengthened to that 1 % pace (lengthening only slows down). Then neighbouring sections are
-//! halved until their u per unit s (h_k / L_k) differs by at most 1 % (the planner's junction
-//! rule: the joint velocities Δq · h_k ṡ / L_k then step by at most 1 % of themselves at a
-//! section boundary, never in direction). No section is shorter than 2⁻¹⁶ in u.
+//! halved until their h_k / L_k differ by at most 1 % (the planner's junction rule; here it keeps
+//! the rate below from dropping by more than 1 % at a junction). No section is shorter than 2⁻¹⁶.
 //!
-//! Time law and velocity-limit curve: s runs over Σ L_k; section k is traversed at τ = (s − s_k)
-//! / L_k, so q̇ = Δq · (h_k / L_k) ṡ and q̈ = Δq · (h_k / L_k) s̈. Per section the speed limit is
-//!   min( v_sys,  L_k · minᵢ q̇maxᵢ / (h_k |Δqᵢ|),  L_k √(a / A_k) )
-//! (the system velocity; the joint velocity limits; the planner's curvature rule, A_k the largest
-//! unweighted A_g), rounded down to a staircase of 5 % steps (v_sys, 0.95 v_sys, …; the planner's
-//! rule with a finer step because a joint limit, not a curvature, usually binds), and the time law
-//! is velocity_limited_law over those segments, rest to rest: the speed drops only where a section
-//! is slower. The joint acceleration limits (optional) lower the law's acceleration limit to
-//! min(a, min_k minᵢ q̈maxᵢ L_k / (h_k |Δqᵢ|)). Every joint moves on the line, so all of them
-//! start and end together (a synchronized PTP).
+//! Time law and velocity-limit curve: s is the DISP arc length. The rate du/ds is continuous: at
+//! each section junction it is the smaller of the two sections' h_k / L_k (at the ends their own),
+//! linear in u inside a section (du/ds = r₀ + m (u − u_k)), so never above h_k / L_k there: every
+//! object of the set moves at most at ṡ · (its weight)⁻¹, and the joint velocities
+//! q̇ = Δq (du/ds) ṡ are continuous; q̈ = Δq ((du/ds) s̈ + m (du/ds) ṡ²). Per section the speed
+//! limit is the smallest of v_sys; q̇maxᵢ / (|Δqᵢ| r_max) (the joint velocity limits, r_max the
+//! section's larger end rate); √(a / (A_k / L_k² + |m|)) (the planner's curvature rule: a point
+//! accelerates at most at ṡ² (A_k / L_k² + |m|) from the path's bending and the changing rate,
+//! A_k the largest unweighted A_g); with joint acceleration limits √(0.1 q̈maxᵢ / (|Δqᵢ| |m| r_max))
+//! (a tenth of q̈max for the rate's change). It is rounded down to a staircase of 5 % steps
+//! (v_sys, 0.95 v_sys, …; the planner's rule with a finer step because a joint limit, not a
+//! curvature, usually binds), and the time law is velocity_limited_law over those segments, rest to
+//! rest: the speed drops only where a section is slower. Joint acceleration limits (optional) also
+//! lower the law's acceleration limit to min(a, min_k minᵢ 0.9 q̈maxᵢ / (|Δqᵢ| r_max)). Every joint
+//! moves on the line, so all of them start and end together (a synchronized PTP).
 #pragma once
 
 #include <cstddef>
@@ -94,7 +98,8 @@ struct JointTrajectorySample {
 class JointTrajectory {
  public:
   double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
-  double length() const noexcept { return sections_.empty() ? 0.0 : starts_.back() + sections_.back().length; }
+  //! s at the end: Σ over sections of ∫ du / (du/ds), at least Σ L_k.
+  double length() const noexcept { return length_; }
   int dof() const noexcept { return static_cast<int>(q_start_.size()); }
   const Eigen::VectorXd& start() const noexcept { return q_start_; }
   const Eigen::VectorXd& end() const noexcept { return q_end_; }
@@ -123,10 +128,16 @@ class JointTrajectory {
   template <typename Out>
   void joints_at(double u, Out& q) const noexcept;
 
+  // The rate du/ds in section k: r₀ + m (u − u_k), from s = `s` over `span` of s.
+  struct SectionRate {
+    double s, span, rate, slope;
+  };
+
   serial::RevoluteChain chain_;
   Eigen::VectorXd q_start_, q_end_, delta_;
   std::vector<JointSection> sections_;
-  std::vector<double> starts_;  // s at the start of section k
+  std::vector<SectionRate> rates_;
+  double length_ = 0.0;
   std::vector<Piece> pieces_;
   std::vector<Trajectory::SpeedLimit> speed_limits_;
   double law_acceleration_ = 0.0;
