@@ -106,7 +106,8 @@ def test_sections_bound_the_dense_speed():
             q = q_a + u * (q_b - q_a)
             twist = arm.body_jacobian(q) @ (q_b - q_a) * (u1 - u0)
             assert dispkin.max_point_speed(s, arm.forward(q), twist, 0.5) <= length * (1 + 1e-12)
-    assert traj.length == pytest.approx(sections[:, 2].sum(), rel=1e-12)
+    # s runs at a rate du/ds at most h/L of each section, within 1 % of it (the junction rule).
+    assert sections[:, 2].sum() <= traj.length <= 1.01 * sections[:, 2].sum()
 
 
 def test_joint_limits_bind_and_hold():
