@@ -19,4 +19,5 @@
 #if defined(DISPKIN_HAS_SERIAL)  // set by dispkin::dispkin when the serial-arm plugin is built
 #include "dispkin/serial/serial_arm.hpp"
 #include "dispkin/retiming.hpp"
+#include "dispkin/ptp.hpp"
 #endif

@@ -242,11 +242,19 @@ def run_check(job_file: str, out: TextIO) -> int:
         print(f"  metric set group {group}: {len(ms.relative_points(group))} relative + {len(ms.absolute_points(group))} "
               f"absolute points, {len(ms.spheres(group))} sphere(s), limit "
               f"{(str(limit) + ' m/s') if limit is not None else 'the system velocity'}", file=out)
-    lengths = job.path.section_lengths(ms, job.limits.velocity)
-    print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
-          f"at the system velocity", file=out)
+    if job.path is not None:
+        lengths = job.path.section_lengths(ms, job.limits.velocity)
+        print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
+              f"at the system velocity", file=out)
+    else:
+        ptp = sum(part.kind == "ptp" for part in job.parts)
+        print(f"  path: {len(job.moves)} move(s) in {len(job.parts)} part(s) planned one after the other "
+              f"({ptp} PTP move(s) on the arm, at rest at both ends)", file=out)
     for i, move in enumerate(job.moves):
         blend = f", blend {move.blend:g} m" if move.blend else ""
+        if move.kind == "ptp":
+            print(f"    move {i}: ptp, ends at joints {np.round(move.path.end, 6).tolist()} (rad)", file=out)
+            continue
         end = move.path.end.to_xyzuvw()
         end[3:] = np.degrees(end[3:])
         print(f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {np.round(end, 6).tolist()} (m, degrees)", file=out)

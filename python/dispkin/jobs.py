@@ -20,7 +20,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._core import Hexapod, Limits, MetricSet, Path, Pose, Trajectory, WorkToolFrames, max_point_speed, plan
+from ._core import Hexapod, JointPath, Limits, MetricSet, Path, Pose, Trajectory, WorkToolFrames, max_point_speed, plan
 from . import shapes
 
 #: The JSON Schema of job files (draft 2020-12), shipped next to this module.
@@ -235,11 +235,26 @@ def validate(source: _Source) -> None:
 
 @dataclasses.dataclass
 class Move:
-    """One move of a job as built: its kind, its Path, the blend with the previous move (m)."""
+    """One move of a job as built: its kind, its Path (a JointPath for a PTP move), the blend
+    with the previous move (m)."""
 
     kind: str
-    path: Path
+    path: Union[Path, JointPath]
     blend: Optional[float]
+
+
+@dataclasses.dataclass
+class Part:
+    """A stretch of a job planned as one: a run of Cartesian moves (lin, circ, spline) joined
+    into one Path, or one PTP move (a JointPath, at rest at both ends)."""
+
+    #: "path" or "ptp".
+    kind: str
+    path: Union[Path, JointPath]
+    #: The arm's joints at the part's start (serial-arm jobs; None otherwise).
+    q_start: Optional[np.ndarray]
+    #: Indices of its moves in Job.moves.
+    moves: List[int]
 
 
 @dataclasses.dataclass
@@ -252,8 +267,9 @@ class Job:
     name: str
     #: The points whose speed is limited, including a hexapod's leg group (rule (a)).
     metric_set: MetricSet
-    #: The moves joined into one path (platform / flange poses in base coordinates).
-    path: Path
+    #: The moves joined into one path (platform / flange poses in base coordinates); None when
+    #: the job has PTP moves (then see `parts`).
+    path: Optional[Path]
     #: The moves one by one.
     moves: List[Move]
     limits: Limits
@@ -272,6 +288,13 @@ class Job:
     #: Output period (s) and file names (relative to the output directory).
     sample_period: float = DEFAULT_SAMPLE_PERIOD
     outputs: Dict[str, str] = dataclasses.field(default_factory=dict)
+    #: The job in stretches planned as one: Cartesian runs and PTP moves, in order.
+    parts: List[Part] = dataclasses.field(default_factory=list)
+
+    @property
+    def has_ptp(self) -> bool:
+        """Whether a move is a PTP move (the job is then planned part by part)."""
+        return any(part.kind == "ptp" for part in self.parts)
 
     @property
     def machine(self) -> str:
@@ -458,19 +481,47 @@ class _Builder:
             return job["arm"].forward(job["q_start"])
         raise self.fail((), "missing required key `start` (only a machine gives a default start pose)")
 
-    def moves(self, job: Dict[str, Any], start: Pose) -> Tuple[Path, List[Move]]:
+    def moves(self, job: Dict[str, Any], start: Pose) -> Tuple[Optional[Path], List[Move], List[Part]]:
         frames, pivot = job["frames"], job["pivot"]
+        arm = job.get("arm")
+        q_current = job.get("q_start")  # serial arm: the joints at `current` are the IK branch nearest to it
         current = start
         built: List[Move] = []
+        parts: List[Part] = []
+        run: List[Tuple[int, Path, Any, Any]] = []  # the Cartesian moves since the last PTP move
+
+        def close_run() -> None:
+            nonlocal q_current
+            if not run:
+                return
+            whole = self.call(("moves", run[0][0], built[run[0][0]].kind), run[0][2], *run[0][3])  # a copy: then() appends in place
+            for i, path, _, _ in run[1:]:
+                blend = built[i].blend
+                self.call(("moves", i, "blend") if blend is not None else ("moves", i), whole.then, path, blend=blend)
+            q_run = self.joints_at(arm, ("moves", run[0][0]), whole.start, q_current) if arm is not None else None
+            parts.append(Part("path", whole, q_run, [i for i, _, _, _ in run]))
+            if arm is not None:  # the joints at the run's end: the branch followed along its geometry
+                poses = [Pose.from_matrix(m) for m in np.asarray(whole.sample(np.linspace(0.0, 1.0, 201)))]
+                q_current = self.call(("moves", run[-1][0]), arm.follow, poses, q_run)[-1]
+            run.clear()
+
         for i, move in enumerate(self.data["moves"]):
             at: KeyPath = ("moves", i)
             blend = move.get("blend")
             if blend is not None and i == 0:
                 raise self.fail(at + ("blend",), f"{blend}: the first move has no previous move to blend with")
             if "ptp" in move:
-                raise self.fail(at + ("ptp",), "PTP moves are not supported: the planner times Cartesian paths "
-                                "(lin, circ, spline) under the point-set limit; a joint-space PTP move has no "
-                                "point-speed plan yet. Use a lin move to the same pose.")
+                if blend is not None:
+                    raise self.fail(at + ("blend",), f"{blend}: a PTP move starts and ends at rest; it does not blend with the previous move")
+                close_run()
+                q_a, q_b, end = self.ptp(job, at, current, q_current)
+                path = self.call(at + ("ptp",), Path.ptp, q_a, q_b)
+                built.append(Move("ptp", path, None))
+                parts.append(Part("ptp", path, q_a, [i]))
+                current, q_current = end, q_b
+                continue
+            if blend is not None and built[-1].kind == "ptp":
+                raise self.fail(at + ("blend",), f"{blend}: the previous move is a PTP move, which ends at rest; nothing to blend with")
             if "lin" in move:
                 lin = move["lin"]
                 if "to" in lin:
@@ -491,16 +542,49 @@ class _Builder:
                 constructor, arguments = Path.spline, ([current, *through, end], pivot)
                 kind = "spline"
             path = self.call(at + (kind,), constructor, *arguments)
-            if i == 0:
-                first_copy = self.call(at + (kind,), constructor, *arguments)
             built.append(Move(kind, path, blend))
+            run.append((i, path, constructor, arguments))
             current = end
-        # Path.then appends in place: the joined path starts from a second copy of the first move,
-        # so that Job.moves keeps each move on its own.
-        whole = first_copy
-        for i, move in enumerate(built[1:], start=1):
-            self.call(("moves", i, "blend") if move.blend is not None else ("moves", i), whole.then, move.path, blend=move.blend)
-        return whole, built
+        close_run()
+        whole_path = parts[0].path if len(parts) == 1 and parts[0].kind == "path" else None
+        return whole_path, built, parts
+
+    def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
+        """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the
+        inverse-kinematics solution (within the limits) nearest to it."""
+        if arm.forward(q_reference).is_approx(pose, 1e-9):
+            return np.asarray(q_reference, dtype=float)
+        solutions = self.call(key_path, arm.inverse, pose)
+        if not solutions:
+            raise self.fail(key_path, "the arm cannot reach this pose within its joint limits (no inverse-kinematics solution)")
+        return np.asarray(_core.SerialArm.nearest(solutions, q_reference))
+
+    def ptp(self, job: Dict[str, Any], at: KeyPath, current: Pose, q_current: Optional[np.ndarray]) -> Tuple[np.ndarray, np.ndarray, Pose]:
+        """(q_a, q_b, end pose) of a PTP move: the target as joints (radians / metres) or as a
+        pose (the IK solution nearest to the joints at the move's start)."""
+        if job.get("hexapod") is not None:
+            raise self.fail(at + ("ptp",), "PTP moves are planned for serial arms only: dispkin has no DISP bound for a "
+                            "straight line in a hexapod's leg space yet. Use a lin move (the platform on a line; the legs "
+                            "follow by inverse kinematics).")
+        arm = job.get("arm")
+        if arm is None:
+            raise self.fail(at + ("ptp",), "a PTP move moves joints: it needs machine.serial_arm")
+        q_a = self.joints_at(arm, at, current, q_current)
+        ptp = self.data["moves"][at[1]]["ptp"]
+        if "joints" in ptp:
+            q_b = np.asarray(ptp["joints"], dtype=float)
+            if q_b.size != arm.dof:
+                raise self.fail(at + ("ptp", "joints"), f"{tuple(q_b.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_b.size}")
+            limits = arm.joint_limits
+            for k in range(arm.dof):
+                if not limits.lower[k] <= q_b[k] <= limits.upper[k]:
+                    raise self.fail(at + ("ptp", "joints", k), f"{q_b[k]!r}: outside the position limits [{limits.lower[k]:g}, {limits.upper[k]:g}] of joint {arm.joint_names[k]!r}")
+        else:
+            target = self.pose(at + ("ptp", "to"), job["frames"])
+            q_b = self.joints_at(arm, at + ("ptp", "to"), target, q_a)
+        if np.array_equal(q_a, q_b):
+            raise self.fail(at + ("ptp",), "the target equals the joints at the move's start: a PTP move must move")
+        return q_a, q_b, arm.forward(q_b)
 
     def relative_end(self, current: Pose, key_path: KeyPath, frames: Optional[WorkToolFrames]) -> Pose:
         """`by`: translation added in base (or work) coordinates, rotation about the tool's own axes."""
@@ -544,22 +628,89 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     builder.frames(job)
     metric_set = builder.metric_set(job)
     start = builder.start(job)
-    path_, moves = builder.moves(job, start)
+    path_, moves, parts = builder.moves(job, start)
     limits, profile = builder.limits()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
-               profile=profile, **job)
+               profile=profile, parts=parts, **job)
 
 
 # --- planning and sampling ---------------------------------------------------------------------
 
 
-def plan_job(job: Job) -> Trajectory:
+class JobTrajectory:
+    """A job's trajectory when it has PTP moves: its parts (Cartesian runs planned as one
+    Trajectory, PTP moves as a JointTrajectory) one after the other in time; every PTP move
+    starts and ends at rest, so the parts join at rest. Samples like a Trajectory (poses, body
+    twists, s-dot; s counts on across the parts)."""
+
+    def __init__(self, parts: List[Tuple[Part, Any]]):
+        #: (Part, its Trajectory or JointTrajectory), in order.
+        self.parts = parts
+        durations = [float(t.duration) for _, t in parts]
+        #: When each part starts (s).
+        self.start_times = np.concatenate([[0.0], np.cumsum(durations)[:-1]])
+        lengths = [float(t.length) for _, t in parts]
+        self._start_s = np.concatenate([[0.0], np.cumsum(lengths)[:-1]])
+        #: Seconds.
+        self.duration = float(np.sum(durations))
+        #: The DISP arc length of all parts, m.
+        self.length = float(np.sum(lengths))
+        #: Rest-to-rest pieces: a Cartesian run's own, one per PTP move.
+        self.piece_count = int(sum(t.piece_count if p.kind == "path" else 1 for p, t in parts))
+
+    def part_indices(self, times: np.ndarray) -> np.ndarray:
+        """The part each time belongs to (a time on a junction: the later part, both at rest there)."""
+        t = np.clip(np.atleast_1d(np.asarray(times, dtype=float)), 0.0, self.duration)
+        return np.clip(np.searchsorted(self.start_times, t, side="right") - 1, 0, len(self.parts) - 1)
+
+    def _gather(self, times: Any, method: str, tail: Tuple[int, ...]) -> np.ndarray:
+        t = np.clip(np.atleast_1d(np.asarray(times, dtype=float)), 0.0, self.duration)
+        which = self.part_indices(t)
+        out = np.zeros((len(t),) + tail)
+        for k, (_, traj) in enumerate(self.parts):
+            mask = which == k
+            if np.any(mask):
+                out[mask] = np.asarray(getattr(traj, method)(t[mask] - self.start_times[k])).reshape((-1,) + tail)
+        return out
+
+    def sample(self, times: Any) -> np.ndarray:
+        """Poses at `times`, (N, 4, 4)."""
+        return self._gather(times, "sample", (4, 4))
+
+    def sample_xyzuvw(self, times: Any) -> np.ndarray:
+        """Poses at `times`, (N, 6) XYZUVW (m, radians)."""
+        return self._gather(times, "sample_xyzuvw", (6,))
+
+    def body_twist(self, times: Any) -> np.ndarray:
+        """Body twists (v, omega) at `times`, (N, 6)."""
+        return self._gather(times, "body_twist", (6,))
+
+    def path_velocity(self, times: Any) -> np.ndarray:
+        """s-dot at `times`, (N,), m/s."""
+        return self._gather(times, "path_velocity", ())
+
+    def path_position(self, times: Any) -> np.ndarray:
+        """s at `times`, (N,), m, counted from the job's start."""
+        t = np.atleast_1d(np.asarray(times, dtype=float))
+        return self._gather(t, "path_position", ()) + self._start_s[self.part_indices(t)]
+
+
+def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     """The job's trajectory: plan(job.path, job.metric_set, job.limits, job.profile), with the
-    hexapod as joint metric when the job asks for rule (b)."""
+    hexapod as joint metric when the job asks for rule (b). A job with PTP moves is planned
+    part by part (a JobTrajectory): each Cartesian run as one path, each PTP move on the arm."""
     joint_metric = job.hexapod if job.joint_metric else None
     try:
-        return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)
+        if not job.has_ptp:
+            return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)
+        planned = []
+        for part in job.parts:
+            if part.kind == "ptp":
+                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)))
+            else:
+                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)))
+        return JobTrajectory(planned)
     except (ValueError, RuntimeError) as error:
         raise JobError(f"{job.file}: planning failed: {error}") from error
 
@@ -634,8 +785,29 @@ def _joint_positions(job: Job, poses: np.ndarray, q_reference: np.ndarray) -> np
         raise JobError(f"{job.file}: the serial arm cannot follow the trajectory: {error}") from error
 
 
-def sample_job(job: Job, trajectory: Trajectory, period: Optional[float] = None) -> JobSamples:
-    """Sample the job's trajectory every `period` seconds (default: the job's sample_period)."""
+def _cartesian_joint_states(job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Joint positions, velocities and accelerations along a Cartesian trajectory at `t`."""
+    poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
+    n = len(t)
+    positions = _joint_positions(job, poses, q_reference)
+    velocities = _joint_velocities(job, poses, twists, positions)
+    # Accelerations: central differences of the analytic velocity, one-sided at the ends.
+    before, after = np.maximum(t - ACCELERATION_STEP, 0.0), np.minimum(t + ACCELERATION_STEP, trajectory.duration)
+    rates = []
+    for times in (before, after):
+        p, xi = np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times))
+        q = None
+        if job.arm is not None:  # the same branch: each neighbour follows from its sample
+            q = np.array([_joint_positions(job, p[k : k + 1], positions[k])[0] for k in range(n)])
+        rates.append(_joint_velocities(job, p, xi, q))
+    accelerations = (rates[1] - rates[0]) / (after - before)[:, None]
+    return positions, velocities, accelerations
+
+
+def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: Optional[float] = None) -> JobSamples:
+    """Sample the job's trajectory every `period` seconds (default: the job's sample_period).
+    PTP moves give their joints directly (q, q-dot, q-double-dot of the joint line); Cartesian
+    moves follow the inverse-kinematics branch continuous from the joints at their start."""
     t = sample_times(trajectory.duration, period or job.sample_period)
     poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
     n = len(t)
@@ -643,18 +815,22 @@ def sample_job(job: Job, trajectory: Trajectory, period: Optional[float] = None)
         empty = np.zeros((n, 0))
         positions = velocities = accelerations = effort = empty
     else:
-        positions = _joint_positions(job, poses, job.q_start if job.arm is not None else None)
-        velocities = _joint_velocities(job, poses, twists, positions)
-        # Accelerations: central differences of the analytic velocity, one-sided at the ends.
-        before, after = np.maximum(t - ACCELERATION_STEP, 0.0), np.minimum(t + ACCELERATION_STEP, trajectory.duration)
-        rates = []
-        for times in (before, after):
-            p, xi = np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times))
-            q = None
-            if job.arm is not None:  # the same branch: each neighbour follows from its sample
-                q = np.array([_joint_positions(job, p[k : k + 1], positions[k])[0] for k in range(n)])
-            rates.append(_joint_velocities(job, p, xi, q))
-        accelerations = (rates[1] - rates[0]) / (after - before)[:, None]
+        if isinstance(trajectory, JobTrajectory):
+            dof = job.arm.dof
+            positions, velocities, accelerations = np.zeros((n, dof)), np.zeros((n, dof)), np.zeros((n, dof))
+            which = trajectory.part_indices(t)
+            for k, (part, traj) in enumerate(trajectory.parts):
+                mask = which == k
+                if not np.any(mask):
+                    continue
+                local = np.clip(t[mask] - trajectory.start_times[k], 0.0, traj.duration)
+                if part.kind == "ptp":
+                    states = (traj.joint_positions(local), traj.joint_velocities(local), traj.joint_accelerations(local))
+                else:
+                    states = _cartesian_joint_states(job, traj, local, part.q_start)
+                positions[mask], velocities[mask], accelerations[mask] = states
+        else:
+            positions, velocities, accelerations = _cartesian_joint_states(job, trajectory, t, job.q_start if job.arm is not None else None)
         if job.arm is not None:
             effort = np.array([job.arm.torques(q, qd, qdd) for q, qd, qdd in zip(positions, velocities, accelerations)])
         else:
@@ -712,18 +888,54 @@ def summarize(job: Job, trajectory: Trajectory, samples: JobSamples) -> Dict[str
                            "within_limits": bool(check.ok)}
         ratios["leg speed"] = leg_ratio
     if job.arm is not None:
-        report = _core.check_joint_limits(trajectory, job.arm, job.q_start)
-        summary["joints"] = {"velocity_factor": float(report.velocity_factor),
-                             "acceleration_factor": float(report.acceleration_factor),
-                             "position_excess": float(report.position_excess),
-                             "within_limits": bool(report.within_limits)}
-        ratios["joint velocity (URDF)"] = float(report.velocity_factor)
-        ratios["joint effort (URDF)"] = float(report.acceleration_factor)
+        if isinstance(trajectory, JobTrajectory):
+            summary["joints"] = _joint_report_of_parts(job, trajectory)
+        else:
+            report = _core.check_joint_limits(trajectory, job.arm, job.q_start)
+            summary["joints"] = {"velocity_factor": float(report.velocity_factor),
+                                 "acceleration_factor": float(report.acceleration_factor),
+                                 "position_excess": float(report.position_excess),
+                                 "within_limits": bool(report.within_limits)}
+        ratios["joint velocity (URDF)"] = summary["joints"]["velocity_factor"]
+        ratios["joint effort (URDF)"] = summary["joints"]["acceleration_factor"]
     name, ratio = max(ratios.items(), key=lambda item: item[1])
     summary["binding"] = name if ratio >= BINDING_FRACTION else (
         "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)")
     summary["highest_ratio"] = {"limit": name, "ratio": ratio}
     return summary
+
+
+def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any]:
+    """The seed's factors over a job with PTP moves: check_joint_limits on each Cartesian run
+    (from the joints at its start); for a PTP move FVEL = max |q-dot_i| / q-dot-max_i and FACC =
+    max |tau_dyn,i| / (tau-max_i - |tau_sta,i|) at 1 ms samples of its joint line (which stays
+    inside the position limits: both ends do, and the range is a box)."""
+    arm = job.arm
+    limits = arm.joint_limits
+    velocity_factor = acceleration_factor = position_excess = 0.0
+    for part, traj in trajectory.parts:
+        if part.kind == "path":
+            report = _core.check_joint_limits(traj, arm, part.q_start)
+            velocity_factor = max(velocity_factor, float(report.velocity_factor))
+            acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
+            position_excess = max(position_excess, float(report.position_excess))
+            continue
+        t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / 1e-3)) + 1))
+        q, qd, qdd = traj.joint_positions(t), traj.joint_velocities(t), traj.joint_accelerations(t)
+        stated = np.isfinite(limits.velocity)
+        if np.any(stated):
+            velocity_factor = max(velocity_factor, float(np.max(np.abs(qd[:, stated]) / limits.velocity[stated])))
+        if len(limits.effort) and np.any(np.isfinite(limits.effort)):
+            effort = np.asarray(limits.effort)
+            for qk, qdk, qddk in zip(q, qd, qdd):
+                static = np.asarray(arm.static_torques(qk))
+                dynamic = np.asarray(arm.torques(qk, qdk, qddk)) - static
+                room = effort - np.abs(static)
+                finite = np.isfinite(effort)
+                acceleration_factor = max(acceleration_factor, float(np.max(np.abs(dynamic[finite]) / room[finite])))
+    return {"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
+            "position_excess": position_excess,
+            "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)}
 
 
 def summary_text(summary: Dict[str, Any]) -> str:

@@ -17,6 +17,7 @@ void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, Works
 void bind_frames(pybind11::module_& m);      // bind_frames.cpp: WorkToolFrames
 void bind_serial(pybind11::module_& m);      // bind_serial.cpp: SerialArm, JointLimits, InverseResult (if built)
 void bind_retiming(pybind11::module_& m);    // bind_retiming.cpp: check_joint_limits, retime (if built)
+void bind_ptp(pybind11::module_& m);         // bind_ptp.cpp: JointTrajectory, plan(JointPath, ..., robot=) (if built)
 
 }  // namespace python
 }  // namespace dispkin

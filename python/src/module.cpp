@@ -21,5 +21,6 @@ PYBIND11_MODULE(_core, m) {
 #if defined(DISPKIN_HAS_SERIAL)
   dispkin::python::bind_serial(m);
   dispkin::python::bind_retiming(m);
+  dispkin::python::bind_ptp(m);
 #endif
 }

@@ -79,7 +79,9 @@ inline MetricSetd random_set(Random& rnd, double v_sys) {
 
 // The largest speed / limit ratio of the set's points and spheres over [t, t + dt], by the chord
 // of the motion itself (a chord over dt is never longer than the arc, so this never over-estimates).
-inline double chord_speed_ratio(const Trajectory& traj, const MetricSetd& set, double v_sys, double t, double dt) {
+// Any trajectory whose sample(t) has a pose: Trajectory, JointTrajectory.
+template <typename Traj>
+inline double chord_speed_ratio(const Traj& traj, const MetricSetd& set, double v_sys, double t, double dt) {
   const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;
   const Twistd xi = (p.inverse() * q).log() * (1.0 / dt);
   double worst = 0;
@@ -96,7 +98,8 @@ inline double chord_speed_ratio(const Trajectory& traj, const MetricSetd& set, d
 }
 
 // Largest speed / limit ratio over the whole trajectory, in `steps` consecutive chords.
-inline double worst_speed_ratio(const Trajectory& traj, const MetricSetd& set, double v_sys, int steps) {
+template <typename Traj>
+inline double worst_speed_ratio(const Traj& traj, const MetricSetd& set, double v_sys, int steps) {
   const double dt = traj.duration() / steps;
   double worst = 0;
   for (int i = 0; i < steps; ++i) worst = std::max(worst, chord_speed_ratio(traj, set, v_sys, i * dt, dt));
@@ -105,7 +108,8 @@ inline double worst_speed_ratio(const Trajectory& traj, const MetricSetd& set, d
 
 // The same oracle at `count` random times (a chord over dt = duration·1e-4 each): the sweeps'
 // cheaper check, which over many cases still visits every part of every law.
-inline double worst_speed_ratio_at_random_times(const Trajectory& traj, const MetricSetd& set, double v_sys, int count,
+template <typename Traj>
+inline double worst_speed_ratio_at_random_times(const Traj& traj, const MetricSetd& set, double v_sys, int count,
                                                 Random& rnd) {
   const double dt = traj.duration() * 1e-4;
   double worst = 0;

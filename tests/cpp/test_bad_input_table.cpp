@@ -35,6 +35,7 @@
 #include <dispkin/profile.hpp>
 #include <dispkin/shapes.hpp>
 #if defined(DISPKIN_HAS_SERIAL)
+#include <dispkin/ptp.hpp>
 #include <dispkin/retiming.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 #endif
@@ -473,6 +474,27 @@ std::vector<Row> rows() {
         ur5e().with_joint_limits(l); }, IA, "effort size = 2");
   row("SerialArm::with_joint_limits", "negative velocity", [=] { JointLimits l = ur5e().joint_limits(); l.velocity(1) = -1;
         ur5e().with_joint_limits(l); }, IA, "joint \"shoulder_lift_joint\" velocity = -1");
+  // --- plan(JointPath, ..., SerialArm): PTP moves (ptp.hpp) ---
+  const auto q6 = [](double x) { return Eigen::VectorXd::Constant(6, x); };
+  const auto ptp = [=](const JointPath& move, const MetricSetd& set, const Limits& l, const PtpOptions& o) {
+    plan(move, set, l, l.jerk ? ProfileKind::scurve : ProfileKind::trapezoid, ur5e(), o);
+  };
+  row("JointPath", "q_end of another size", [=] { JointPath(q6(0), Eigen::VectorXd::Zero(5)); }, IA, "q_end size = 5: must equal q_start size 6");
+  row("JointPath", "NaN q_end", [=] { Eigen::VectorXd q = q6(0); q(2) = nan_; JointPath(q6(0), q); }, IA, "q_end = (0, 0, nan, 0, 0, 0): must be finite");
+  row("plan (PTP)", "q_a of the wrong size for the arm", [=] { ptp(JointPath(Eigen::VectorXd::Zero(5), Eigen::VectorXd::Ones(5)), good_set(), limits(0.1, 1, 10), {}); }, IA,
+      "q_a size = 5: must be the arm's dof 6");
+  row("plan (PTP)", "q_b outside the joint range", [=] { Eigen::VectorXd q = q6(0.1); q(1) = 7.0; ptp(JointPath(q6(0), q), good_set(), limits(0.1, 1, 10), {}); }, IA,
+      "q_b[1] = 7: is outside the position limits [lower, upper] of joint \"shoulder_lift_joint\"");
+  row("plan (PTP)", "q_b equal to q_a", [=] { ptp(JointPath(q6(0.1), q6(0.1)), good_set(), limits(0.1, 1, 10), {}); }, IA, "equals q_a: a PTP move must move");
+  row("plan (PTP)", "zero velocity", [=] { ptp(JointPath(q6(0), q6(0.1)), good_set(), limits(0.0, 1, 10), {}); }, IA, "velocity = 0");
+  row("plan (PTP)", "collinear set", [=] { ptp(JointPath(q6(0), q6(0.1)), collinear_set(), limits(0.1, 1, 10), {}); }, IA,
+      "metric_set = \"MetricSet\": is not well-formed");
+  row("plan (PTP)", "zero tolerance", [=] { PtpOptions o; o.tolerance = 0.0; ptp(JointPath(q6(0), q6(0.1)), good_set(), limits(0.1, 1, 10), o); }, IA,
+      "tolerance = 0: must be in (0, 0.5]");
+  row("plan (PTP)", "joint_acceleration of the wrong size", [=] { PtpOptions o; o.joint_acceleration = Eigen::VectorXd::Ones(3);
+        ptp(JointPath(q6(0), q6(0.1)), good_set(), limits(0.1, 1, 10), o); }, IA, "joint_acceleration size = 3");
+  row("plan (PTP)", "NaN joint acceleration", [=] { PtpOptions o; o.joint_acceleration = q6(1.0); o.joint_acceleration(4) = nan_;
+        ptp(JointPath(q6(0), q6(0.1)), good_set(), limits(0.1, 1, 10), o); }, IA, "joint_acceleration[4] = nan: must be > 0");
   row("retime_optimal", "q_start of the wrong size", [=] {
         retime_optimal(ur_path(), good_set(), limits(0.1, 1, std::nullopt), ur5e(), Eigen::VectorXd::Zero(5)); }, IA, "q_start size = 5");
 #endif

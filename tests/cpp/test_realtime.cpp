@@ -26,7 +26,9 @@ std::atomic<long> eigen_assert_failures{0};
 #include "dispkin/profile.hpp"
 #include "dispkin/shapes.hpp"
 #ifdef DISPKIN_HAS_SERIAL
+#include "dispkin/ptp.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
+#include "ptp_moves.hpp"
 #include "serial_test_chains.hpp"
 #endif
 
@@ -194,6 +196,38 @@ TEST(Realtime, ClosedFormInverseKinematicsDoesNotAllocate) {
     EXPECT_EQ(eigen_assert_failures.load(), 0) << robot.name << ": Eigen allocated during analytic_inverse";
     EXPECT_GE(total, 500) << robot.name;  // every pose is reachable: at least one solution each
   }
+}
+
+// A PTP move of the UR5e and the KR6-like arm (both profiles), sampled at single times and in a
+// batch: q, q̇, q̈ in inline JointVectors, the pose and twist by the product of exponentials —
+// no operator new, Eigen's no-malloc guard on.
+TEST(Realtime, JointTrajectorySamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  set.add_sphere(Eigen::Vector3d(0.3, 0, 0.3), 0.05, Frame::absolute);
+  Eigen::VectorXd q_a(6), q_b(6);
+  q_a << 0.1, -1.2, 1.3, -1.0, -1.2, 0.2;
+  q_b << 1.4, -0.6, 0.7, -1.6, -0.9, 1.1;
+  std::vector<JointTrajectory> trajectories;
+  for (const serial::SerialArm& arm : {testing::ur5e_arm(), testing::kr6_arm()}) {
+    trajectories.push_back(plan(JointPath(q_a, q_b), set, Limits{0.5, 2.0, 20.0}, ProfileKind::scurve, arm));
+    trajectories.push_back(plan(JointPath(q_b, q_a), set, Limits{0.5, 2.0, std::nullopt}, ProfileKind::trapezoid, arm));
+  }
+  constexpr int kTimes = 20000;
+  std::vector<double> times(kTimes);
+  std::vector<JointTrajectorySample> out(kTimes);
+  double checksum = 0.0;
+  for (const JointTrajectory& traj : trajectories) {
+    for (int i = 0; i < kTimes; ++i) times[static_cast<std::size_t>(i)] = traj.duration() * (1.2 * i / kTimes - 0.1);
+    const long before = allocations.load();
+    Eigen::internal::set_is_malloc_allowed(false);
+    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).qd.norm();
+    traj.sample(times.data(), out.data(), times.size());
+    Eigen::internal::set_is_malloc_allowed(true);
+    EXPECT_EQ(allocations.load(), before) << "JointTrajectory::sample allocated";
+    EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
+  }
+  EXPECT_TRUE(checksum > 0.0);
 }
 #endif
 

@@ -15,6 +15,11 @@
 
 #include "random_cases.hpp"
 #include "random_paths.hpp"
+#ifdef DISPKIN_HAS_SERIAL
+#include <dispkin/ptp.hpp>
+
+#include "ptp_moves.hpp"
+#endif
 
 namespace dispkin {
 namespace {
@@ -111,6 +116,39 @@ TEST(Sweep, HexapodInverseThenForward) {
   }
   record("hexapod_round_trip_leg_error", n, worst);
 }
+
+#ifdef DISPKIN_HAS_SERIAL
+// The guarantee for PTP moves (ptp.hpp) of one serial test arm: random joint lines inside its
+// ranges, random sets and limits, both profiles, 32 random instants per case; the joint velocity
+// limits and the exact end too. A PTP plan cuts about 10³ joint sections (each a forward
+// kinematics and a set evaluation), some 100 times the work of a LIN plan: this family runs
+// DISPKIN_SWEEP_COUNT / 100 cases (at least 10), 10³ in `make test`, 10⁵ in `make sweep`.
+void ptp_sweep(const serial::SerialArm& arm, const std::string& name, unsigned long salt) {
+  Random rnd(salt);
+  const int n = std::max(10, sweep_count() / 100);
+  const Eigen::VectorXd joint_speed = arm.joint_limits().velocity;
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 2.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const JointPath move = testing::random_ptp(rnd, arm);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
+    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const JointTrajectory traj = plan(move, set, limits, kind, arm);
+    const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
+    worst = std::max(worst, ratio);
+    ASSERT_LE(ratio, 1.0 + 1e-6) << name << " case " << i;
+    const JointTrajectorySample s = traj.sample(rnd.uniform(0.0, traj.duration()));
+    ASSERT_LE((s.qd.cwiseAbs().array() / joint_speed.array()).maxCoeff(), 1.0 + 1e-9) << name << " case " << i;
+    ASSERT_EQ(Eigen::VectorXd(traj.sample(traj.duration()).q), move.end()) << name << " case " << i;
+  }
+  record("ptp_guarantee_" + name, n, worst);
+}
+
+TEST(Sweep, PtpGuaranteeUr5e) { ptp_sweep(testing::ur5e_arm(), "ur5e", 9400); }
+TEST(Sweep, PtpGuaranteeKr6) { ptp_sweep(testing::kr6_arm(), "kr6", 9401); }
+#endif
 
 }  // namespace
 }  // namespace dispkin

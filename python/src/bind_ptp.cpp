@@ -1,0 +1,180 @@
+// Python binding of dispkin/ptp.hpp: JointTrajectory and plan(JointPath, ..., robot=SerialArm).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "dispkin/error.hpp"
+#include "dispkin/ptp.hpp"
+
+namespace dispkin {
+namespace python {
+
+namespace {
+
+ProfileKind ptp_profile_kind(const std::string& name) {
+  if (name == "scurve") return ProfileKind::scurve;
+  if (name == "trapezoid") return ProfileKind::trapezoid;
+  throw std::invalid_argument(describe("profile", name, "must be \"scurve\" or \"trapezoid\""));
+}
+
+// Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail).
+template <typename Write>
+py::array_t<double> sampled(const JointTrajectory& traj, const py::object& times, std::vector<py::ssize_t> tail,
+                            py::ssize_t columns, Write write) {
+  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
+  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
+  std::vector<double> t(a.data(), a.data() + a.size());
+  for (double x : t) require_finite(x, "times");
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
+  shape.insert(shape.end(), tail.begin(), tail.end());
+  py::array_t<double> out(shape);
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  return out;
+}
+
+}  // namespace
+
+void bind_ptp(py::module_& m) {
+  py::class_<JointTrajectory> cls(m, "JointTrajectory", R"doc(
+A planned PTP move of a serial arm: every joint on the line from q_a to q_b, all arriving
+together, timed so that no point or sphere of the metric set moves faster than its limit at any
+time and no joint faster than its velocity limit. Sample it at any times (seconds, clamped to
+[0, duration]); the ends are exactly q_a and q_b, at rest.)doc");
+  cls.def_property_readonly("duration", &JointTrajectory::duration, "Seconds.")
+      .def_property_readonly("length", &JointTrajectory::length, "The DISP arc length (sum of the section bounds), metres.")
+      .def_property_readonly("dof", &JointTrajectory::dof, "Number of joints.")
+      .def_property_readonly("start", &JointTrajectory::start, "q_a (rad).")
+      .def_property_readonly("end", &JointTrajectory::end, "q_b (rad).")
+      .def_property_readonly("law_count", &JointTrajectory::law_count, "Time laws: one per segment of the velocity-limit curve.")
+      .def_property_readonly("law_acceleration", &JointTrajectory::law_acceleration,
+                             "The acceleration limit of the time law (m/s^2): the DISP one, lowered by joint acceleration limits.")
+      .def(
+          "sections",
+          [](const JointTrajectory& t) {
+            Eigen::MatrixXd out(static_cast<Eigen::Index>(t.sections().size()), 5);
+            for (std::size_t k = 0; k < t.sections().size(); ++k) {
+              const JointSection& s = t.sections()[k];
+              out.row(static_cast<Eigen::Index>(k)) << s.u0, s.u1, s.length, s.acceleration, s.middle_speed;
+            }
+            return out;
+          },
+          "The joint sections as (K, 5) rows (u0, u1, length, acceleration bound, speed at the middle): the "
+          "section bound L (m per unit of the section parameter) is never below the fastest weighted speed of the "
+          "set over the section.")
+      .def(
+          "speed_limits",
+          [](const JointTrajectory& t) {
+            Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
+            for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
+              const Trajectory::SpeedLimit& span = t.speed_limits()[k];
+              out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
+            }
+            return out;
+          },
+          "The velocity-limit curve as (K, 3) rows (start s, length, limit): the system velocity, lowered where a "
+          "joint velocity limit or the curvature rule binds.")
+      .def(
+          "sample",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {4, 4}, 16, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+            });
+          },
+          py::arg("times"), "Tool poses at `times` as (N, 4, 4) homogeneous matrices.")
+      .def(
+          "sample_xyzuvw",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {6}, 6, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
+            });
+          },
+          py::arg("times"), "Tool poses at `times` as (N, 6) XYZUVW (metres, radians).")
+      .def(
+          "body_twist",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {6}, 6, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+            });
+          },
+          py::arg("times"), "Body twists (v, omega) of the tool at `times`, (N, 6), m/s and rad/s.")
+      .def(
+          "joint_positions",
+          [](const JointTrajectory& t, const py::object& times) {
+            const int n = t.dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.q;
+            });
+          },
+          py::arg("times"), "q at `times`, (N, dof), rad.")
+      .def(
+          "joint_velocities",
+          [](const JointTrajectory& t, const py::object& times) {
+            const int n = t.dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qd;
+            });
+          },
+          py::arg("times"), "q-dot at `times`, (N, dof), rad/s.")
+      .def(
+          "joint_accelerations",
+          [](const JointTrajectory& t, const py::object& times) {
+            const int n = t.dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qdd;
+            });
+          },
+          py::arg("times"), "q-double-dot at `times`, (N, dof), rad/s^2.")
+      .def(
+          "parameter",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.u; });
+          },
+          py::arg("times"), "u at `times`, (N,): q = q_a + u (q_b - q_a).")
+      .def(
+          "path_position",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.s; });
+          },
+          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
+      .def(
+          "path_velocity",
+          [](const JointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.s_dot; });
+          },
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
+      .def("__repr__", [](const JointTrajectory& t) {
+        return "JointTrajectory(duration=" + float_repr(t.duration()) + ", joints=" + std::to_string(t.dof()) +
+               ", sections=" + std::to_string(t.sections().size()) + ")";
+      });
+
+  m.def(
+      "plan",
+      [](const JointPath& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
+         const py::object& robot, const std::optional<Eigen::VectorXd>& joint_acceleration, double tolerance) {
+        const ProfileKind kind = ptp_profile_kind(profile);
+        if (robot.is_none() || !py::isinstance<serial::SerialArm>(robot)) {
+          throw std::invalid_argument(describe("robot", std::string(py::repr(robot)),
+                                               "must be a SerialArm: a PTP move (JointPath) is planned on an arm"));
+        }
+        PtpOptions options;
+        if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
+        options.tolerance = tolerance;
+        return plan(path, set, limits, kind, robot.cast<const serial::SerialArm&>(), options);
+      },
+      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::kw_only(),
+      py::arg("robot") = py::none(), py::arg("joint_acceleration") = py::none(), py::arg("tolerance") = 1e-2,
+      "Plan the PTP move `path` (Path.ptp(q_a, q_b)) on `robot` (a SerialArm, required) under the metric set and "
+      "limits: the tool's points and spheres never faster than their limits, the joints never faster than the "
+      "arm's velocity limits (and `joint_acceleration`, rad/s^2 per joint, if given), all joints arriving together. "
+      "`tolerance`: the section bounds' slack over the sampled speed. Returns a JointTrajectory.");
+}
+
+}  // namespace python
+}  // namespace dispkin
