@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -124,6 +125,29 @@ class GroupFactors {
 
   const MetricSetd& set() const noexcept { return *set_; }
   std::optional<double> system_velocity() const noexcept { return system_velocity_; }
+
+  //! axis_turn(axis, angle), the same quaternion bit for bit, remembered for the last two pairs
+  //! asked: the sections of one CIRC repeat their turns (the pivot's half turn about the normal,
+  //! the orientation's turn), so a path evaluates them once per CIRC, not once per section.
+  Eigen::Quaterniond turn(const Eigen::Vector3d& axis, double angle) const noexcept {
+    for (const TurnMemo& m : turns_) {
+      if (m.known && same_bits(m.axis.data(), axis.data(), 3) && same_bits(&m.angle, &angle, 1)) return m.turn;
+    }
+    TurnMemo& m = turns_[next_turn_];
+    next_turn_ = 1 - next_turn_;
+    m = {axis, angle, axis_turn(axis, angle), true};
+    return m.turn;
+  }
+  //! std::sin(x), remembered for the last x asked (an arc's deviation bound, the same for all
+  //! the sections of one CIRC).
+  double sine(double x) const noexcept {
+    if (!sine_known_ || !same_bits(&sine_of_, &x, 1)) {
+      sine_of_ = x;
+      sine_ = std::sin(x);
+      sine_known_ = true;
+    }
+    return sine_;
+  }
   double weight(std::size_t group) const noexcept { return groups_[group].weight; }
   double max_weight() const noexcept { return max_weight_; }
   double reach(std::size_t group) const noexcept { return groups_[group].reach; }
@@ -138,6 +162,22 @@ class GroupFactors {
   double max_weight_ = 0.0;
   Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
   bool has_pivot_ = false;
+  // Bit-for-bit equality (+0 and −0 differ, so a remembered result is exactly the one asked).
+  static bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
+    return std::memcmp(a, b, n * sizeof(double)) == 0;
+  }
+  struct TurnMemo {
+    Eigen::Vector3d axis;
+    double angle;
+    Eigen::Quaterniond turn;
+    bool known;
+  };
+  // Memos of pure functions: filling them does not change what the object answers.
+  mutable TurnMemo turns_[2] = {{Eigen::Vector3d::Zero(), 0.0, Eigen::Quaterniond::Identity(), false},
+                                {Eigen::Vector3d::Zero(), 0.0, Eigen::Quaterniond::Identity(), false}};
+  mutable int next_turn_ = 0;
+  mutable double sine_of_ = 0.0, sine_ = 0.0;
+  mutable bool sine_known_ = false;
 };
 
 //! A section's length (weighted, see CurveSection::length) and acceleration bound

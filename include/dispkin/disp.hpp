@@ -4,6 +4,7 @@
 //! bad input (a set that is not well-formed, a missing system velocity for a group limit).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -177,15 +178,20 @@ Scalar max_speed2(const PointColumns<Scalar>& points, const Eigen::Matrix<Scalar
   const auto x = points.x(), y = points.y(), z = points.z();
   if (points.size() <= 32) {
     // A tool's handful of points: a plain loop (the same sums in the same order) is cheaper than
-    // setting up the array expression.
+    // setting up the array expression. The squared speeds go to a buffer first and the maximum
+    // is taken after: without -ffast-math GCC vectorises only a loop without the max reduction.
     const Scalar *xs = x.data(), *ys = y.data(), *zs = z.data();
-    Scalar best(0);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const Scalar ex = v.x() + w.y() * zs[i] - w.z() * ys[i];
-      const Scalar ey = v.y() + w.z() * xs[i] - w.x() * zs[i];
-      const Scalar ez = v.z() + w.x() * ys[i] - w.y() * xs[i];
-      best = std::max(best, ex * ex + ey * ey + ez * ez);
+    const std::size_t n = points.size();
+    Scalar speed2[32];
+    const Scalar vx = v.x(), vy = v.y(), vz = v.z(), wx = w.x(), wy = w.y(), wz = w.z();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Scalar ex = vx + wy * zs[i] - wz * ys[i];
+      const Scalar ey = vy + wz * xs[i] - wx * zs[i];
+      const Scalar ez = vz + wx * ys[i] - wy * xs[i];
+      speed2[i] = ex * ex + ey * ey + ez * ez;
     }
+    Scalar best(0);
+    for (std::size_t i = 0; i < n; ++i) best = std::max(best, speed2[i]);
     return best;
   }
   return ((v.x() + w.y() * z - w.z() * y).square() + (v.y() + w.z() * x - w.x() * z).square() +
@@ -353,20 +359,35 @@ struct DecoupledSection {
     const Scalar* zs = points.z().data();
     Scalar ends2(0);
     Scalar inside_q2(-1);  // the peak grows with ‖q‖: keep the largest ‖q‖² with the peak inside
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const Scalar rx = xs[i] - pivot_body.x(), ry = ys[i] - pivot_body.y(), rz = zs[i] - pivot_body.z();
-      const Scalar qx = omega.y() * rz - omega.z() * ry;
-      const Scalar qy = omega.z() * rx - omega.x() * rz;
-      const Scalar qz = omega.x() * ry - omega.y() * rx;
-      const Scalar ax = d_a.x() + qx, ay = d_a.y() + qy, az = d_a.z() + qz;
-      const Scalar bx = d_b.x() + qx, by = d_b.y() + qy, bz = d_b.z() + qz;
-      ends2 = std::max(ends2, std::max(ax * ax + ay * ay + az * az, bx * bx + by * by + bz * bz));
-      // A plain loop: GCC vectorises a floating max reduction only under -ffast-math, and an
-      // Eigen array expression with select measured 2.5× slower (benchmarks/RESULTS.md).
-      const bool inside = qx * m_a.x() + qy * m_a.y() + qz * m_a.z() >= Scalar(0) &&
-                          qx * m_b.x() + qy * m_b.y() + qz * m_b.z() >= Scalar(0);
-      const Scalar q2 = inside ? qx * qx + qy * qy + qz * qz : Scalar(-1);
-      inside_q2 = std::max(inside_q2, q2);
+    // A plain loop in blocks: GCC vectorises a floating max reduction only under -ffast-math
+    // (and an Eigen array expression with select measured 2.5× slower, benchmarks/RESULTS.md),
+    // so each block writes its points' values to buffers in a loop it vectorises and the maxima
+    // are taken after, in the same order as one loop would.
+    constexpr std::size_t block = 16;
+    Scalar end2_of[block], q2_of[block];
+    const Scalar px = pivot_body.x(), py = pivot_body.y(), pz = pivot_body.z();
+    const Scalar ox = omega.x(), oy = omega.y(), oz = omega.z();
+    const Scalar dax = d_a.x(), day = d_a.y(), daz = d_a.z(), dbx = d_b.x(), dby = d_b.y(), dbz = d_b.z();
+    const Scalar max_ = m_a.x(), may = m_a.y(), maz = m_a.z(), mbx = m_b.x(), mby = m_b.y(), mbz = m_b.z();
+    for (std::size_t first = 0; first < points.size(); first += block) {
+      const std::size_t n = std::min(block, points.size() - first);
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t i = first + j;
+        const Scalar rx = xs[i] - px, ry = ys[i] - py, rz = zs[i] - pz;
+        const Scalar qx = oy * rz - oz * ry;
+        const Scalar qy = oz * rx - ox * rz;
+        const Scalar qz = ox * ry - oy * rx;
+        const Scalar ax = dax + qx, ay = day + qy, az = daz + qz;
+        const Scalar bx = dbx + qx, by = dby + qy, bz = dbz + qz;
+        const Scalar a2 = ax * ax + ay * ay + az * az, b2 = bx * bx + by * by + bz * bz;
+        end2_of[j] = a2 < b2 ? b2 : a2;  // std::max(a2, b2)
+        const bool inside = (qx * max_ + qy * may + qz * maz >= Scalar(0)) & (qx * mbx + qy * mby + qz * mbz >= Scalar(0));
+        q2_of[j] = inside ? qx * qx + qy * qy + qz * qz : Scalar(-1);
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        ends2 = std::max(ends2, end2_of[j]);
+        inside_q2 = std::max(inside_q2, q2_of[j]);
+      }
     }
     if (inside_q2 < Scalar(0)) return ends2;
     using std::sqrt;

@@ -118,10 +118,12 @@ struct ArcSection {
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
     const MetricSetd& set = factors.set();
     const Eigen::Vector3d c0 = start * pivot;
-    const Eigen::Vector3d middle = pivot_at_middle(c0);
+    // The turns (and the sine of the deviation bound) are those of every section of the CIRC:
+    // `factors` remembers them (the same values as pivot_at_middle and end_orientation give).
+    const Eigen::Vector3d middle = center + factors.turn(normal, 0.5 * angle) * (c0 - center);
     // The reference section from its parts: its rotation is the arc's, θ ŵ seen from the start
     // (no logarithm needed while |θ| ≤ π, the range of the logarithm).
-    const Eigen::Quaterniond q1 = end_orientation();
+    const Eigen::Quaterniond q1 = (factors.turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
     const Eigen::Vector3d rotation = std::abs(rotation_angle) <= 3.14159265358979323846
                                          ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
                                          : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
@@ -135,7 +137,8 @@ struct ArcSection {
       length = std::max(length, factors.weight(i) * detail::group_decoupled_length(g, reference));
       acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
     }
-    return {length + (1.0 + std::abs(rotation_angle)) * deviation_bound(radius) * factors.max_weight(), acceleration};
+    const double deviation = 2.0 * std::abs(angle) * radius * factors.sine(std::abs(angle) / 4.0);  // deviation_bound(radius)
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation * factors.max_weight(), acceleration};
   }
 
  private:

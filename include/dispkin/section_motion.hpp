@@ -1,6 +1,7 @@
 //! The sampling forms of path sections: what Trajectory::sample evaluates, precomputed at
 //! planning time so that a sample costs at most two sine/cosine pairs (one per turning
-//! angle), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
+//! angle; short polynomials for the small turns of arc sections, power series for a curve's
+//! rotation up to 1 rad), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
 //! allocation-free). Internal to the planner (namespace detail).
 //!
 //! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
@@ -22,6 +23,63 @@
 
 namespace dispkin {
 namespace detail {
+
+//! Angles up to which sin_cos uses its polynomials: |x| ≤ 1/8 rad. A CIRC section's pivot
+//! turns by at most its tolerance (≤ 0.1 rad) and its orientation by a share of the whole turn,
+//! so the sections of arcs (and short LINs) take this branch; larger turns call std::sin and
+//! std::cos.
+constexpr double small_angle = 0.125;
+
+//! sin x and cos x. For |x| ≤ small_angle their Taylor polynomials (to x⁹ and x¹⁰: the first
+//! terms left out, x¹¹/11! and x¹²/12!, are below 3·10⁻¹⁷ and 10⁻¹⁹ relative there, a
+//! fraction of an ulp), cheaper than the library pair on the sampling path and within 2 ulp
+//! of std::sin and std::cos (SectionMotion.SmallAngleSineCosine). Otherwise the library's.
+inline void sin_cos(double x, double& sine, double& cosine) noexcept {
+  if (!(std::abs(x) <= small_angle)) {
+    sine = std::sin(x);
+    cosine = std::cos(x);
+    return;
+  }
+  const double x2 = x * x;
+  sine = x * (1.0 + x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (-1.0 / 5040.0 + x2 * (1.0 / 362880.0)))));
+  cosine = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24.0 + x2 * (-1.0 / 720.0 + x2 * (1.0 / 40320.0 + x2 * (-1.0 / 3628800.0)))));
+}
+
+//! Rotation angles up to which exp_and_right_jacobian_sampled uses power series: θ ≤ 1 rad.
+constexpr double series_angle = 1.0;
+
+//! exp(φ) and J_r(φ) u as exp_and_right_jacobian, for sampling: for θ = |φ| ≤ series_angle
+//! from power series in θ² (all four coefficients are even functions of θ), so no square
+//! root, sine, cosine or division is on the sampling path:
+//!   cos(θ/2) = Σ (−y)ᵏ/(2k)!,  sin(θ/2)/θ = ½ Σ (−y)ᵏ/(2k+1)!   (y = θ²/4, k ≤ 7),
+//!   B = (1 − cos θ)/θ² = 2 (sin(θ/2)/θ)²,  C = (θ − sin θ)/θ³ = Σ (−θ²)ᵏ/(2k+3)!  (k ≤ 8).
+//! The first terms left out are below 10⁻¹⁸ relative at θ = 1; C is then more accurate than its
+//! closed form, which cancels for small θ. Within 10⁻¹⁵ of a long-double evaluation
+//! (SectionMotion.SeriesExpAndRightJacobian). Larger angles: exp_and_right_jacobian.
+inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eigen::Vector3d& u, Eigen::Quaterniond& exp_phi,
+                                           Eigen::Vector3d& jacobian_u) noexcept {
+  const double t2 = phi.squaredNorm();
+  if (!(t2 <= series_angle * series_angle)) {
+    exp_and_right_jacobian(phi, u, exp_phi, jacobian_u);
+    return;
+  }
+  // Coefficients 1/n! (exact to rounding), summed in Estrin's order (pairs, then pairs of pairs)
+  // so that the three sums are short chains: they lie on the sampling path's critical path.
+  const double y = 0.25 * t2, y2 = y * y, y4 = y2 * y2;
+  const double cos_half = (1.0 - y * (1.0 / 2.0)) + y2 * (1.0 / 24.0 - y * (1.0 / 720.0)) +
+                          y4 * ((1.0 / 40320.0 - y * (1.0 / 3628800.0)) + y2 * (1.0 / 479001600.0 - y * (1.0 / 87178291200.0)));
+  const double half_sine =
+      0.5 * ((1.0 - y * (1.0 / 6.0)) + y2 * (1.0 / 120.0 - y * (1.0 / 5040.0)) +
+             y4 * ((1.0 / 362880.0 - y * (1.0 / 39916800.0)) + y2 * (1.0 / 6227020800.0 - y * (1.0 / 1307674368000.0))));
+  const double t4 = t2 * t2, t8 = t4 * t4;
+  const double cc = (1.0 / 6.0 - t2 * (1.0 / 120.0)) + t4 * (1.0 / 5040.0 - t2 * (1.0 / 362880.0)) +
+                    t8 * ((1.0 / 39916800.0 - t2 * (1.0 / 6227020800.0)) + t4 * (1.0 / 1307674368000.0 - t2 * (1.0 / 355687428096000.0)) +
+                          t8 * (1.0 / 121645100408832000.0));
+  const double b = 2.0 * half_sine * half_sine;
+  exp_phi = Eigen::Quaterniond(cos_half, half_sine * phi.x(), half_sine * phi.y(), half_sine * phi.z());
+  const Eigen::Vector3d pu = phi.cross(u);
+  jacobian_u = u - b * pu + cc * phi.cross(pu);
+}
 
 //! An orientation turning by α about a fixed world axis ŵ, q(α) = turn(ŵ, α) q₀, carrying
 //! the body point p (the pivot). With r = (0, ŵ) q₀ (a unit quaternion orthogonal to q₀):
@@ -52,8 +110,8 @@ struct TurningFrame {
 
   //! The cosine and sine of the turn τθ and the orientation, from one sine/cosine pair of τθ/2.
   void at(double tau, Eigen::Quaterniond& q, double& cos_turn, double& sin_turn) const noexcept {
-    const double half = 0.5 * tau * theta;
-    const double s = std::sin(half), c = std::cos(half);
+    double s, c;
+    sin_cos(0.5 * tau * theta, s, c);
     q = Eigen::Quaterniond(c * q0.coeffs() + s * r.coeffs());
     cos_turn = 1.0 - 2.0 * s * s;
     sin_turn = 2.0 * s * c;
@@ -106,8 +164,8 @@ struct ArcMotion {
     Eigen::Quaterniond q;
     double c, s;
     frame.at(tau, q, c, s);
-    const double beta = tau * angle;
-    const double cb = std::cos(beta), sb = std::sin(beta);
+    double sb, cb;
+    sin_cos(tau * angle, sb, cb);
     pose = Posed::unchecked(q, center_along + cb * radius_across + sb * radius_side - frame.pivot_world(c, s));
     // ċ = φ n̂ × (c − o) = φ (cos β n̂ × R⊥ − sin β R⊥).
     const Eigen::Vector3d c_dot = angle * (cb * radius_side - sb * radius_across);
@@ -155,7 +213,7 @@ struct CurveMotion {
   void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
-    exp_and_right_jacobian(rotation.value(v), rotation.first(v), turn, omega);
+    exp_and_right_jacobian_sampled(rotation.value(v), rotation.first(v), turn, omega);
     omega *= h;
     // A product of unit quaternions: unit to rounding without normalising.
     const Eigen::Quaterniond q = q0 * turn;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <dispkin/planner.hpp>
+#include <dispkin/section_motion.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"
@@ -251,6 +252,129 @@ TEST(PlannerBadInput, Limits) {
   MetricSetd line;
   line.add_relative(std::vector<V>{V::Zero(), V::UnitX()});
   EXPECT_NE(message_of([&] { plan(path, line, Limits{0.1, 1.0, 1.0}); }).find("not well-formed"), std::string::npos);
+}
+
+
+// The sampling forms' cheap sine and cosine: within 2 ulp of the library's for small angles
+// (their Taylor polynomials), the library's own beyond.
+TEST(SectionMotion, SmallAngleSineCosine) {
+  Random rnd(207);
+  const double limit = detail::small_angle;
+  std::vector<double> xs{0.0, -0.0, limit, -limit, 1e-300, 5e-324, 1e-8, std::nextafter(limit, 0.0)};
+  for (int i = 0; i < 100000; ++i) xs.push_back(rnd.uniform(-limit, limit));
+  for (int i = 0; i < 1000; ++i) xs.push_back(limit * std::pow(10.0, -rnd.uniform(0.0, 12.0)));
+  const double ulp = std::numeric_limits<double>::epsilon();
+  for (double x : xs) {
+    double s, c;
+    detail::sin_cos(x, s, c);
+    ASSERT_LE(std::abs(s - std::sin(x)), 2.0 * ulp * std::abs(std::sin(x))) << x;
+    ASSERT_LE(std::abs(c - std::cos(x)), 2.0 * ulp * std::abs(std::cos(x))) << x;
+  }
+  // Beyond the small angles: the library's values, bit for bit; NaN stays NaN.
+  for (double x : {std::nextafter(limit, 1.0), -0.2, 1.0, 3.0, -100.0}) {
+    double s, c;
+    detail::sin_cos(x, s, c);
+    EXPECT_EQ(s, std::sin(x)) << x;
+    EXPECT_EQ(c, std::cos(x)) << x;
+  }
+  double s, c;
+  detail::sin_cos(std::numeric_limits<double>::quiet_NaN(), s, c);
+  EXPECT_TRUE(std::isnan(s) && std::isnan(c));
+}
+
+// exp(φ) and J_r(φ) u of a curve's sampling form (power series in θ² for θ ≤ 1) against a
+// long-double evaluation of the closed forms (their own series below 0.05 rad, where the closed
+// forms cancel): within 10⁻¹⁵. Beyond 1 rad: the closed forms, bit for bit.
+TEST(SectionMotion, SeriesExpAndRightJacobian) {
+  using LV = Eigen::Matrix<long double, 3, 1>;
+  Random rnd(208);
+  const auto reference = [](const V& phi, const V& u, Eigen::Matrix<long double, 4, 1>& q, LV& ju) {
+    const LV p = phi.cast<long double>(), w = u.cast<long double>();
+    const long double t = p.norm(), t2 = t * t;
+    long double cos_half, half_sine, b, cc;
+    if (t >= 0.05L) {
+      cos_half = std::cos(t / 2);
+      half_sine = std::sin(t / 2) / t;
+      b = (1 - std::cos(t)) / t2;
+      cc = (t - std::sin(t)) / (t2 * t);
+    } else {
+      // Series to θ²⁰: the first term left out is below 10⁻²⁶ here.
+      cos_half = half_sine = b = cc = 0;
+      long double power = 1;  // θ^(2k)
+      for (int k = 0; k <= 10; ++k) {
+        const long double sign = k % 2 ? -1 : 1;
+        long double f2k = 1;  // (2k)!, then (2k + 1)!, (2k + 2)!, (2k + 3)!
+        for (int n = 2; n <= 2 * k; ++n) f2k *= n;
+        const long double f2k1 = f2k * (2 * k + 1), f2k2 = f2k1 * (2 * k + 2), f2k3 = f2k2 * (2 * k + 3);
+        cos_half += sign * power / (f2k * std::pow(4.0L, k));
+        half_sine += sign * power / (f2k1 * std::pow(4.0L, k) * 2);
+        b += sign * power / f2k2;
+        cc += sign * power / f2k3;
+        power *= t2;
+      }
+    }
+    q << cos_half, half_sine * p.x(), half_sine * p.y(), half_sine * p.z();
+    const LV pu = p.cross(w);
+    ju = w - b * pu + cc * p.cross(pu);
+  };
+  for (int i = 0; i < 20000; ++i) {
+    // Angles spread over [10⁻⁸, 1] (and exactly 0 and 1): every term of the series matters somewhere.
+    const double theta = i == 0 ? 0.0 : i == 1 ? 1.0 : std::pow(10.0, -rnd.uniform(0.0, 8.0));
+    const V phi = theta * rnd.unit_vector(), u = rnd.vector(2.0);
+    Eigen::Quaterniond q;
+    V ju;
+    detail::exp_and_right_jacobian_sampled(phi, u, q, ju);
+    Eigen::Matrix<long double, 4, 1> q_ref;
+    LV ju_ref;
+    reference(phi, u, q_ref, ju_ref);
+    const Eigen::Matrix<long double, 4, 1> q_got(q.w(), q.x(), q.y(), q.z());
+    ASSERT_LE(static_cast<double>((q_got - q_ref).norm()), 1e-15) << "theta " << theta;
+    ASSERT_LE(static_cast<double>((ju.cast<long double>() - ju_ref).norm()), 1e-15 * u.norm()) << "theta " << theta;
+  }
+  for (double theta : {std::nextafter(1.0, 2.0), 1.5, 3.0}) {
+    const V phi = theta * rnd.unit_vector(), u = rnd.vector(1.0);
+    Eigen::Quaterniond q, q_closed;
+    V ju, ju_closed;
+    detail::exp_and_right_jacobian_sampled(phi, u, q, ju);
+    detail::exp_and_right_jacobian(phi, u, q_closed, ju_closed);
+    EXPECT_EQ(q.coeffs(), q_closed.coeffs()) << theta;
+    EXPECT_EQ(ju, ju_closed) << theta;
+  }
+}
+
+// The benchmark's paths (benchmarks/bench_planner.cpp) sample through the cheap forms: every
+// CIRC section's turns are small angles, the SPLINE's rotation stays within the series' range;
+// and their samples still lie on the path to 1e-12 with the sections' own twists.
+TEST(SectionMotion, CheapFormsOnLongPaths) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  const auto turn = [](double a) { return Eigen::Quaterniond(Eigen::AngleAxisd(a, V(0.3, 0.2, 1.0).normalized())); };
+  const Posed end(turn(0.8), V(0.3, 0.1, 0.05)), via(Eigen::Quaterniond::Identity(), V(0.15, 0.2, 0.0));
+  const std::vector<Path> paths{
+      Path::circ(Posed(), via, end, V::Zero(), 2.2e-3),
+      Path::spline({Posed(), Posed(turn(0.2), V(0.1, 0.1, 0.0)), Posed(turn(0.4), V(0.2, 0.0, 0.05)), end,
+                    Posed(turn(0.8), V(0.4, 0.0, 0.0))},
+                   V::Zero(), 8e-3)};
+  for (const Path& path : paths) {
+    const Trajectory traj = plan(path, set, Limits{0.1, 0.5, 5.0});
+    for (const Section& section : path.sections()) {
+      if (const auto* arc = std::get_if<ArcSection>(&section)) {
+        ASSERT_LE(std::abs(arc->angle), detail::small_angle);
+        ASSERT_LE(std::abs(0.5 * arc->rotation_angle), detail::small_angle);
+      } else if (const auto* curve = std::get_if<CurveSection>(&section)) {
+        for (double v : {curve->v0, 0.5 * (curve->v0 + curve->v1), curve->v1}) ASSERT_LE(curve->rotation.value(v).norm(), detail::series_angle);
+      }
+    }
+    const auto& lengths = traj.section_lengths();
+    Trajectory::Cursor cursor;
+    for (int k = 0; k <= 4000; ++k) {
+      const TrajectorySample now = traj.sample(traj.duration() * k / 4000.0, cursor);
+      const auto [j, tau] = section_and_tau(lengths, now.s);
+      ASSERT_TRUE(now.pose.is_approx(section_pose(path.sections()[j], tau), 1e-12)) << k;
+      const Eigen::Matrix<double, 6, 1> expected = section_twist(path.sections()[j], tau).vector() * (now.s_dot / lengths[j]);
+      ASSERT_LE((now.body_twist.vector() - expected).norm(), 1e-12 * (1.0 + expected.norm())) << k;
+    }
+  }
 }
 
 }  // namespace
