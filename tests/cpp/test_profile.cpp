@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -301,6 +302,62 @@ TEST(Profile, TinyDistance) {
     EXPECT_EQ(s.phase_count(), 4);  // no constant acceleration, no cruise
     EXPECT_NEAR(s.duration(), std::cbrt(32.0 * S), 1e-15 * std::cbrt(32.0 * S));
   }
+}
+
+// The stated numeric range (README, "Numeric range"): distances 1e-7 … 1e4 m, speeds 1e-6 …
+// 1e3 m/s, accelerations 1e-6 … 1e4 m/s², jerks 1e-6 … 1e6 m/s³ (durations up to 1e10 s). At
+// every corner of that box, rest to rest and between boundary velocities, both laws keep every
+// invariant of satisfies_limits (limits to 1e-12, end state to 1e-9 relative).
+TEST(Profile, InvariantsHoldAtTheCornersOfTheNumericRange) {
+  int laws = 0;
+  double longest = 0.0;
+  for (const double S : {1e-7, 1e4})
+    for (const double v : {1e-6, 1e3})
+      for (const double a : {1e-6, 1e4})
+        for (const double j : {1e-6, 1e6})
+          for (const double boundary : {0.0, 0.5}) {
+            const double u = boundary * v;
+            const Limits c{S, v, a, j, u, u};
+            // Boundary velocities need room to change: skip corners where even the direct
+            // change does not fit (the laws refuse those, tested elsewhere).
+            for (const bool scurve : {false, true}) {
+              std::optional<Profile> law;
+              try {
+                law = scurve ? Profile::scurve(S, v, a, j, u, u) : Profile::trapezoid(S, v, a, u, u);
+              } catch (const std::invalid_argument& e) {
+                ASSERT_GT(u, 0.0) << e.what();  // rest to rest always fits
+                ASSERT_NE(std::string(e.what()).find("too short"), std::string::npos) << e.what();
+                continue;
+              }
+              ASSERT_TRUE(satisfies_limits(*law, c, scurve));
+              ++laws;
+              longest = std::max(longest, law->duration());
+            }
+          }
+  EXPECT_GE(laws, 32);           // every rest-to-rest corner at least
+  EXPECT_GT(longest, 1e9);       // 1e4 m at 1e-6 m/s: 1e10 s
+  EXPECT_TRUE(std::isfinite(longest));
+}
+
+// Fuzz finding 7: far below the stated range (S = 1e-110 m, v_end = S) the S-curve's peak search
+// stopped after 200 Newton steps, far from its root, and the law overshot S by 4e3 S.
+TEST(Profile, ScurvePeakSearchConvergesForTinyDistancesWithBoundaryVelocities) {
+  for (const double S : {1e-110, 1e-150}) {
+    for (const double u : {S, 0.5 * S}) {
+      const Limits c{S, 1.0, 1.0, 1.0, 0.0, u};
+      ASSERT_TRUE(satisfies_limits(Profile::scurve(S, 1.0, 1.0, 1.0, 0.0, u), c, true)) << S;
+      const Limits d{S, 1.0, 1.0, 1.0, u, 0.0};
+      ASSERT_TRUE(satisfies_limits(Profile::scurve(S, 1.0, 1.0, 1.0, u, 0.0), d, true)) << S;
+    }
+  }
+}
+
+// Outside the numeric range a law whose duration would overflow is refused, naming the limits.
+TEST(Profile, OverflowingDurationsAreRefused) {
+  EXPECT_NE(message_of([] { Profile::trapezoid(1.0, 1e-308, 1.0); }).find("v_max = 1e-308"), std::string::npos);
+  EXPECT_NE(message_of([] { Profile::trapezoid(1e300, 1e-12, 1.0); }).find("duration overflows"), std::string::npos);
+  EXPECT_NE(message_of([] { Profile::scurve(1.0, 1.0, 1.0, 1e-308); }).find("j_max = 1e-308"), std::string::npos);
+  EXPECT_NE(message_of([] { Profile::scurve(1.0, 1.0, 1e-308, 1.0); }).find("duration overflows"), std::string::npos);
 }
 
 TEST(Profile, ScurveStructures) {
