@@ -260,10 +260,10 @@ std::vector<Row> rows() {
       "clamped, returns (1, 1) (documented: \"u clamped to [0, 1]\")");
 
   // --- Profile ---
-  row("Profile::trapezoid", "v_max whose duration overflows (1e-308 m/s)", [] { Profile::trapezoid(1, 1e-308, 1); }, IA,
-      "v_max = 1e-308: with a_max = 1 over distance = 1: the law's duration overflows");
-  row("Profile::scurve", "j_max whose duration overflows (1e-308 m/s^3)", [] { Profile::scurve(1, 1, 1, 1e-308); }, IA,
-      "v_max = 1: with a_max = 1, j_max = 1e-308 over distance = 1: the law's duration overflows");
+  row("Profile::trapezoid", "v_max whose duration overflows (10 m at 1e-308 m/s)", [] { Profile::trapezoid(10, 1e-308, 1); }, IA,
+      "v_max = 1e-308: with a_max = 1 over distance = 10: the law's duration overflows");
+  row("Profile::scurve", "v_max whose duration overflows (10 m at 1e-308 m/s)", [] { Profile::scurve(10, 1e-308, 1, 1); }, IA,
+      "v_max = 1e-308: with a_max = 1, j_max = 1 over distance = 10: the law's duration overflows");
   row("Profile::trapezoid", "NaN distance", [] { Profile::trapezoid(nan_, 1, 1); }, IA, "distance = nan");
   row("Profile::trapezoid", "negative distance", [] { Profile::trapezoid(-1, 1, 1); }, IA, "distance = -1");
   row("Profile::trapezoid", "+inf distance", [] { Profile::trapezoid(inf_, 1, 1); }, IA, "distance = inf");
