@@ -63,16 +63,18 @@ sanitize: deps
 
 # libFuzzer targets (tests/fuzz, clang from Debian via scripts/install-fuzz-deps.sh, which only
 # this target calls): built with ASan + UBSan in FUZZ_BUILD, each run for FUZZ_SECONDS from its
-# seed corpus (scripts/run-fuzzers.sh; FUZZERS selects targets). Any finding fails.
+# seed corpus (scripts/run-fuzzers.sh; FUZZERS selects targets, FUZZ_RUNS=N stops each after N
+# executions instead). Any finding fails. The job-file fuzzer fuzz_jobs runs the Python package
+# (hence `python`) under atheris, installed into the venv from requirements-fuzz.txt.
 FUZZ_BUILD ?= build/fuzz
 FUZZ_SECONDS ?= 60
 FUZZERS ?=
-fuzz: deps
+fuzz: deps python
 	@scripts/install-fuzz-deps.sh
 	cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
 	  -DDISPKIN_BUILD_FUZZERS=ON -DDISPKIN_BUILD_TESTS=OFF -DDISPKIN_BUILD_EXAMPLES=OFF -DDISPKIN_BUILD_BENCHMARKS=OFF
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
-	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) scripts/run-fuzzers.sh $(FUZZERS)
+	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh $(FUZZERS)
 
 # The sweeps at 10⁷ cases per family (issue 9): their own Release build directory, only the
 # tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.

@@ -179,11 +179,11 @@ void SectionMotions::append(const Section& section) {
 }  // namespace detail
 
 void Limits::validate(ProfileKind kind) const {
-  require_positive(velocity, "velocity");
-  require_positive(acceleration, "acceleration");
+  require_limit(velocity, "velocity");
+  require_limit(acceleration, "acceleration");
   if (kind == ProfileKind::scurve) {
     if (!jerk) throw std::invalid_argument("jerk is missing: the S-curve profile needs a jerk limit (or use the trapezoid)");
-    require_positive(*jerk, "jerk");
+    require_limit(*jerk, "jerk");
   } else if (jerk) {
     throw std::invalid_argument(describe("jerk", *jerk, "is not used by the trapezoidal profile; leave it unset"));
   }

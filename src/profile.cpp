@@ -40,6 +40,20 @@ void require_boundary_velocity(double v, const char* name, double v_max) {
   }
 }
 
+// Limits far below the distance (1e-308 m/s over 1 m) give a law whose duration overflows: refused
+// naming the limits. The user-facing limits (Limits, MetricSet) are kept inside dispkin's numeric
+// range, where this cannot happen; the laws themselves take any positive limit (re-timing
+// builds them from derived accelerations), so they check their result instead.
+// j_max: NaN for the trapezoid.
+void require_finite_duration(const Profile& law, double distance, double v_max, double a_max, double j_max) {
+  if (std::isfinite(law.duration())) return;
+  const std::string jerk = std::isnan(j_max) ? "" : ", j_max = " + number(j_max);
+  throw std::invalid_argument(describe("v_max", v_max,
+                                       "with a_max = " + number(a_max) + jerk + " over distance = " + number(distance) +
+                                           ": the law's duration overflows the double range (limits outside "
+                                           "dispkin's numeric range [1e-12, 1e12])"));
+}
+
 [[noreturn]] void throw_too_short(double distance, double needed, double v_start, double v_end,
                                   const std::string& limits, const std::string& beyond) {
   throw std::invalid_argument(describe("distance", distance,
@@ -148,7 +162,10 @@ Peak scurve_peak(double distance, double v_max, double a_max, double j_max, doub
   double lo = 0.0;
   double hi = std::sqrt(v_max - lowest);
   double w = 0.5 * hi;
-  for (int iteration = 0; iteration < 200 && hi - lo > 2.0 * std::numeric_limits<double>::epsilon() * hi; ++iteration) {
+  // Newton from above converges only linearly when the root is far below hi (D(w) − S behaves
+  // like w³ near a root at w ≈ 0: a factor ≈ 2/3 per step), which a root at 1e-40 (S ≈ 1e-110 m)
+  // needs ≈ 230 steps for: the cap leaves room down to the smallest doubles.
+  for (int iteration = 0; iteration < 4000 && hi - lo > 2.0 * std::numeric_limits<double>::epsilon() * hi; ++iteration) {
     const double f = excess(w);
     if (f == 0.0) break;
     (f < 0.0 ? lo : hi) = w;
@@ -248,6 +265,7 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   p.add_phase(cruise, 0.0, 0.0, 0.0);
   p.add_phase((peak - v_end) / a_max, 0.0, -a_max, -a_max);
   p.integrate(v_start, v_end, cruise_index);
+  require_finite_duration(p, distance, v_max, a_max, std::numeric_limits<double>::quiet_NaN());
   return p;
 }
 
@@ -298,6 +316,7 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   p.add_phase(down.hold_time, 0.0, -da, -da);
   p.add_phase(down.jerk_time, j_max, -da, 0.0);
   p.integrate(v_start, v_end, cruise_index);
+  require_finite_duration(p, distance, v_max, a_max, j_max);
   return p;
 }
 

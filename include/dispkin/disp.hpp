@@ -126,7 +126,7 @@ namespace detail {
 // A system velocity, when given, must be a speed even if no group needs it.
 template <typename Scalar>
 void require_system_velocity(const std::optional<Scalar>& system_velocity) {
-  if (system_velocity) require_positive(*system_velocity, "system_velocity");
+  if (system_velocity) require_limit(*system_velocity, "system_velocity");
 }
 
 }  // namespace detail

@@ -85,4 +85,35 @@ void require_positive(Scalar value, std::string_view argument) {
           "must be finite and greater than zero");
 }
 
+//! dispkin's accepted numeric range (README, "Numeric range"): inputs beyond it are refused
+//! where they would overflow to an infinite or NaN result; inside it every result is finite.
+//! The stated tolerances hold over the narrower tested range the README gives.
+namespace numeric_range {
+//! Largest |coordinate| of a pose's translation (m): pose products, inverses and pivots of
+//! translations up to 1e12 m stay far from overflow (1e308).
+constexpr double max_translation = 1e12;
+//! Speed, acceleration and jerk limits of a plan or metric set (m/s, m/s², m/s³): in
+//! [min_limit, max_limit], so that durations, ramps and their products stay finite.
+constexpr double min_limit = 1e-12;
+constexpr double max_limit = 1e12;
+}  // namespace numeric_range
+
+//! A speed, acceleration or jerk limit inside numeric_range [min_limit, max_limit].
+template <typename Scalar>
+void require_limit(Scalar value, std::string_view argument) {
+  using std::isfinite;
+  require(static_cast<bool>(isfinite(value)) && value >= Scalar(numeric_range::min_limit) &&
+              value <= Scalar(numeric_range::max_limit),
+          argument, value, "must be in [1e-12, 1e12] (finite, positive, inside dispkin's numeric range)");
+}
+
+//! A translation whose coordinates are finite and at most numeric_range::max_translation.
+template <typename Derived>
+void require_translation(const Eigen::DenseBase<Derived>& value, std::string_view argument) {
+  require_finite(value, argument);
+  using Scalar = typename Derived::Scalar;
+  require(value.derived().cwiseAbs().maxCoeff() <= Scalar(numeric_range::max_translation), argument, value,
+          "must have coordinates within ±1e12 m (dispkin's numeric range)");
+}
+
 }  // namespace dispkin

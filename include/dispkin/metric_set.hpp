@@ -110,7 +110,7 @@ struct MetricGroup {
           << ", and its lengths are weighted by system_velocity / " << *speed_limit;
       throw std::invalid_argument(why.str());
     }
-    require_positive(*system_velocity, "system_velocity");
+    require_limit(*system_velocity, "system_velocity");
     return *system_velocity / *speed_limit;
   }
 };
@@ -204,7 +204,7 @@ class MetricSet {
 
   //! Give group `group` its own speed limit (it is created if it does not exist yet).
   void set_group_speed(int group, Scalar speed) {
-    require_positive(speed, "speed");
+    require_limit(speed, "speed");
     group_for(group).speed_limit = speed;
   }
 

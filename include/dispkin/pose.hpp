@@ -159,7 +159,7 @@ class Pose {
   Pose(const Quaternion& quaternion, const Vector3& translation) : t_(translation) {
     const Eigen::Matrix<Scalar, 4, 1> wxyz(quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z());
     require_finite(wxyz, "quaternion (w, x, y, z)");
-    require_finite(translation, "translation");
+    require_translation(translation, "translation");
     using std::abs;
     const Scalar norm = quaternion.norm();
     if (!(abs(norm - Scalar(1)) <= unit_quaternion_tolerance<Scalar>())) {
@@ -188,7 +188,8 @@ class Pose {
   //! origin): x_w = R (x_b − p) + p + (X, Y, Z). With p = 0 this is the plain T = (R, XYZ).
   static Pose from_xyzuvw(const Vector6& xyzuvw, const Vector3& pivot = Vector3::Zero()) {
     require_finite(xyzuvw, "xyzuvw");
-    require_finite(pivot, "pivot");
+    require_translation(xyzuvw.template head<3>(), "xyzuvw (X, Y, Z)");
+    require_translation(pivot, "pivot");
     const Quaternion q = Quaternion(Eigen::AngleAxis<Scalar>(xyzuvw(3), Vector3::UnitX())) *
                          Quaternion(Eigen::AngleAxis<Scalar>(xyzuvw(4), Vector3::UnitY())) *
                          Quaternion(Eigen::AngleAxis<Scalar>(xyzuvw(5), Vector3::UnitZ()));
@@ -199,7 +200,7 @@ class Pose {
   //! The inverse of from_xyzuvw: U, W in (−π, π], V in [−π/2, π/2]. At gimbal lock
   //! (cos V < gimbal_lock_tolerance()) V = ±π/2 as computed, W = 0 and U carries the rotation.
   Vector6 to_xyzuvw(const Vector3& pivot = Vector3::Zero()) const {
-    require_finite(pivot, "pivot");
+    require_translation(pivot, "pivot");
     using std::atan2;
     using std::sqrt;
     const Matrix3 r = rotation();
@@ -276,7 +277,7 @@ class Pose {
   //! The pose with orientation `orientation` and the same world position of the body point
   //! `pivot`: R' p + t' = R p + t (a rotation commanded about a pivot point).
   Pose rotated_about_pivot(const Pose& orientation, const Vector3& pivot) const {
-    require_finite(pivot, "pivot");
+    require_translation(pivot, "pivot");
     const Vector3 anchor = *this * pivot;
     return unchecked(orientation.q_, anchor - orientation.q_ * pivot);
   }

@@ -95,7 +95,14 @@ class _Source:
         except UnicodeDecodeError as error:
             raise JobError(f"{path}: not a UTF-8 text file: {error}") from error
         self.marks: Dict[Tuple[str, ...], Tuple[int, int]] = {}
-        loader = _Loader(text)
+        try:
+            # The reader checks for non-printable characters when it is made: inside the try.
+            loader = _Loader(text)
+        except yaml.reader.ReaderError as error:  # a control character: where, from its position
+            before = text[: error.position]
+            line, column = before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
+            raise JobError(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
+                           (), line) from error
         try:
             node = loader.get_single_node()
             if node is None:
@@ -165,7 +172,7 @@ def _schema_error_message(error: Any) -> Tuple[KeyPath, str]:
     key_path: KeyPath = tuple(error.absolute_path)
     if error.validator == "additionalProperties" and isinstance(error.instance, dict):
         allowed = set(error.schema.get("properties", {}))
-        extra = sorted(k for k in error.instance if k not in allowed)
+        extra = sorted((k for k in error.instance if k not in allowed), key=str)  # YAML keys may be numbers
         if extra:
             known = ", ".join(sorted(allowed))
             return key_path + (str(extra[0]),), f"unknown key (allowed here: {known})"

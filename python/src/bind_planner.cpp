@@ -102,14 +102,14 @@ void bind_planner(py::module_& m) {
   py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only).")
       .def(py::init([](double velocity, double acceleration, std::optional<double> jerk) {
              Limits limits{velocity, acceleration, jerk};
-             require_positive(velocity, "velocity");
-             require_positive(acceleration, "acceleration");
-             if (jerk) require_positive(*jerk, "jerk");
+             require_limit(velocity, "velocity");
+             require_limit(acceleration, "acceleration");
+             if (jerk) require_limit(*jerk, "jerk");
              return limits;
            }),
            py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(),
-           "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each finite and "
-           "> 0; the jerk is required by the S-curve profile and refused by the trapezoid (plan checks).")
+           "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
+           "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the trapezoid (plan checks).")
       .def_readonly("velocity", &Limits::velocity, "The path velocity limit, m/s: no point of the metric set moves faster.")
       .def_readonly("acceleration", &Limits::acceleration, "The path acceleration limit, m/s^2.")
       .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")

@@ -3,6 +3,7 @@
 // that it reads only the path we need and reports every problem by link or joint name.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <mutex>
@@ -47,7 +48,51 @@ class CapturingOutput : public console_bridge::OutputHandler {
 
 std::mutex parse_mutex;
 
+// urdfdom (Debian 3.0) hands the text of an attribute value it cannot parse to console_bridge
+// as a printf format: a '%' there ("%n", "%s") makes urdf::parseURDF write or read memory it
+// does not own (fuzz finding 5, a crash in vfprintf). A '%' has no place in a robot description
+// outside comments, so it is refused before urdfdom sees the text, spelled out or as a numeric
+// character reference (&#37;, &#x25;), which the XML parser turns into one.
+void require_no_percent_sign(const std::string& xml) {
+  int line = 1;
+  std::size_t line_start = 0;
+  auto refuse = [&](std::size_t at, const std::string& what) {
+    throw std::invalid_argument(describe("URDF", "line " + std::to_string(line) + ", column " + std::to_string(at - line_start + 1),
+                                         "contains " + what +
+                                             " outside a comment; urdfdom would pass it to printf as a format (remove it)"));
+  };
+  for (std::size_t i = 0; i < xml.size(); ++i) {
+    const char c = xml[i];
+    if (c == '\n') {
+      ++line;
+      line_start = i + 1;
+    } else if (c == '<' && xml.compare(i, 4, "<!--") == 0) {
+      const std::size_t end = xml.find("-->", i + 4);
+      const std::size_t stop = end == std::string::npos ? xml.size() : end + 3;
+      for (; i + 1 < stop; ++i) {
+        if (xml[i] == '\n') {
+          ++line;
+          line_start = i + 1;
+        }
+      }
+    } else if (c == '%') {
+      refuse(i, "'%'");
+    } else if (c == '&' && xml.compare(i, 2, "&#") == 0) {
+      const bool hex = i + 2 < xml.size() && (xml[i + 2] == 'x' || xml[i + 2] == 'X');
+      const std::size_t digits = i + (hex ? 3 : 2);
+      const std::size_t end = xml.find(';', digits);
+      if (end == std::string::npos || end == digits || end - digits > 16) continue;
+      const std::string number = xml.substr(digits, end - digits);
+      char* rest = nullptr;
+      const unsigned long value = std::strtoul(number.c_str(), &rest, hex ? 16 : 10);
+      if (*rest != '\0') continue;
+      if (value == 37) refuse(i, "a character reference to '%'");
+    }
+  }
+}
+
 urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& messages) {
+  require_no_percent_sign(xml);
   const std::lock_guard<std::mutex> lock(parse_mutex);
   CapturingOutput capture;
   console_bridge::useOutputHandler(&capture);

@@ -18,9 +18,9 @@ namespace testing {
 using V = Eigen::Vector3d;
 
 // A random path: a LIN (decoupled or screw), a CIRC, a chain with a corner, a SPLINE, or a
-// chain of LINs blended at their via points.
-inline Path random_path(Random& rnd, int family) {
-  const Posed a = rnd.pose(0.5);
+// chain of LINs blended at their via points; it starts near `offset` (m, world coordinates).
+inline Path random_path(Random& rnd, int family, const V& offset = V::Zero()) {
+  const Posed a = Posed(Eigen::Quaterniond::Identity(), offset) * rnd.pose(0.5);
   const V pivot = rnd.vector(0.1);
   switch (family % 6) {
     case 0:

@@ -125,6 +125,11 @@ std::vector<Row> rows() {
       "translation = (inf, 0, 0)");
   row("Pose(quaternion, translation)", "-inf translation", [] { Posed(Quaterniond::Identity(), Vector3d(0, -inf_, 0)); }, IA,
       "translation = (0, -inf, 0)");
+  row("Pose(quaternion, translation)", "translation beyond the numeric range (1e13 m)",
+      [] { Posed(Quaterniond::Identity(), Vector3d(0, 0, 1e13)); }, IA, "translation = (0, 0, 1e+13): must have coordinates within ±1e12 m");
+  row("Pose::from_xyzuvw", "X beyond the numeric range (1e300 m)",
+      [] { Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 1e300, 0, 0, 0, 0, 0).finished()); }, IA,
+      "xyzuvw (X, Y, Z) = (1e+300, 0, 0): must have coordinates within ±1e12 m");
   row("Pose(quaternion, translation)", "zero quaternion", [] { Posed(Quaterniond(0, 0, 0, 0), Vector3d::Zero()); }, IA,
       "quaternion (w, x, y, z) = (0, 0, 0, 0): must be a unit quaternion");
   row("Pose(quaternion, translation)", "non-unit quaternion", [] { Posed(Quaterniond(2, 0, 0, 0), Vector3d::Zero()); }, IA,
@@ -154,6 +159,8 @@ std::vector<Row> rows() {
   row("MetricSet::add_relative", "NaN point", [] { MetricSetd s; s.add_relative(std::vector<Vector3d>{Vector3d::Zero(), Vector3d(nan_, 0, 0)}); }, IA,
       "points[1] = (nan, 0, 0)");
   row("MetricSet::add_relative", "+inf point", [] { MetricSetd s; s.add_relative(Vector3d(0, inf_, 0)); }, IA, "points[0] = (0, inf, 0)");
+  row("MetricSet::set_group_speed", "speed above the numeric range (1e13)", [] { MetricSetd s; s.set_group_speed(1, 1e13); }, IA,
+      "speed = 1e+13: must be in [1e-12, 1e12]");
   row("MetricSet::add_relative", "negative group", [] { MetricSetd s; s.add_relative(Vector3d::Zero(), -1); }, IA, "group = -1");
   row("MetricSet::add_absolute", "-inf point", [] { MetricSetd s; s.add_absolute(Vector3d(0, 0, -inf_)); }, IA, "points[0] = (0, 0, -inf)");
   row("MetricSet::add_absolute", "negative group", [] { MetricSetd s; s.add_absolute(Vector3d::Zero(), -3); }, IA, "group = -3");
@@ -254,6 +261,10 @@ std::vector<Row> rows() {
       "clamped, returns (1, 1) (documented: \"u clamped to [0, 1]\")");
 
   // --- Profile ---
+  row("Profile::trapezoid", "v_max whose duration overflows (10 m at 1e-308 m/s)", [] { Profile::trapezoid(10, 1e-308, 1); }, IA,
+      "v_max = 1e-308: with a_max = 1 over distance = 10: the law's duration overflows");
+  row("Profile::scurve", "v_max whose duration overflows (10 m at 1e-308 m/s)", [] { Profile::scurve(10, 1e-308, 1, 1); }, IA,
+      "v_max = 1e-308: with a_max = 1, j_max = 1 over distance = 10: the law's duration overflows");
   row("Profile::trapezoid", "NaN distance", [] { Profile::trapezoid(nan_, 1, 1); }, IA, "distance = nan");
   row("Profile::trapezoid", "negative distance", [] { Profile::trapezoid(-1, 1, 1); }, IA, "distance = -1");
   row("Profile::trapezoid", "+inf distance", [] { Profile::trapezoid(inf_, 1, 1); }, IA, "distance = inf");
@@ -277,6 +288,10 @@ std::vector<Row> rows() {
   row("Limits::validate", "negative acceleration", [] { limits(1, -1, 10).validate(ProfileKind::scurve); }, IA, "acceleration = -1");
   row("Limits::validate", "NaN velocity", [] { limits(nan_, 1, 10).validate(ProfileKind::scurve); }, IA, "velocity = nan");
   row("Limits::validate", "+inf acceleration", [] { limits(1, inf_, 10).validate(ProfileKind::scurve); }, IA, "acceleration = inf");
+  row("Limits::validate", "velocity below the numeric range (1e-13)", [] { limits(1e-13, 1, 10).validate(ProfileKind::scurve); }, IA,
+      "velocity = 1e-13: must be in [1e-12, 1e12]");
+  row("Limits::validate", "jerk above the numeric range (1e13)", [] { limits(1, 1, 1e13).validate(ProfileKind::scurve); }, IA,
+      "jerk = 1e+13: must be in [1e-12, 1e12]");
   row("Limits::validate", "zero jerk", [] { limits(1, 1, 0.0).validate(ProfileKind::scurve); }, IA, "jerk = 0");
   row("Limits::validate", "negative jerk", [] { limits(1, 1, -5.0).validate(ProfileKind::scurve); }, IA, "jerk = -5");
   row("Limits::validate", "scurve without jerk", [] { limits(1, 1, std::nullopt).validate(ProfileKind::scurve); }, IA, "jerk is missing: the S-curve profile needs a jerk limit");
@@ -412,6 +427,9 @@ std::vector<Row> rows() {
   row("SerialArm::from_urdf_file", "negative mass", [] { SerialArm::from_urdf_file(urdf + "arm_bad_negative_mass.urdf", "base", "l1"); }, IA,
       "link \"l1\" inertial mass = -1");
   row("SerialArm::from_urdf_string", "empty text", [] { SerialArm::from_urdf_string("", "base", "link2"); }, IA, "URDF: not a valid robot description");
+  row("SerialArm::from_urdf_string", "'%' in an attribute (urdfdom printf format)",
+      [] { SerialArm::from_urdf_string("<robot name=\"r\"><link name=\"a%n\"/></robot>", "a", "b"); }, IA,
+      "URDF = \"line 1, column 30\": contains '%' outside a comment");
   row("SerialArm::from_urdf_string", "empty base link", [] { SerialArm::from_urdf_string("<robot/>", "", "link2"); }, IA, "base_link = \"\": must name a link");
   row("SerialArm::from_urdf_string", "tip equal to base", [] { SerialArm::from_urdf_string("<robot/>", "a", "a"); }, IA, "tip_link = \"a\": must differ from base_link");
   row("SerialArm::forward", "wrong size q (3)", [arm] { arm().forward(Eigen::Vector3d::Zero()); }, IA, "q = (0, 0, 0): expected 2 joint values, got 3");

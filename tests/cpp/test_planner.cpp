@@ -45,6 +45,44 @@ TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
   }
 }
 
+// The guarantee at the edges of the stated numeric range (README, "Numeric range"): every path
+// family 1e4 m from the origin (absolute points of the set near the origin, so their lever is
+// 1e4 m), under the smallest and the largest stated limits (1e-6 m/s, m/s², m/s³; 1e3 m/s,
+// 1e4 m/s², 1e6 m/s³) and mixes of them. Durations reach 1e6 s.
+TEST(Planner, TheGuaranteeAtTheNumericRangeEdges) {
+  Random rnd(207);
+  const V far(1e4, -1e4, 1e4);
+  const Limits edges[] = {{1e-6, 1e-6, 1e-6}, {1e3, 1e4, 1e6}, {1e-6, 1e4, 1e6}, {1e3, 1e-6, 1e-6}};
+  double longest = 0.0;
+  for (int i = 0; i < 48; ++i) {
+    Limits limits = edges[(i / 6) % 4];
+    const ProfileKind kind = (i / 24) % 2 ? ProfileKind::scurve : ProfileKind::trapezoid;
+    if (kind == ProfileKind::trapezoid) limits.jerk.reset();
+    const MetricSetd set = random_set(rnd, limits.velocity);
+    const Path path = random_path(rnd, i % 6, far);
+    const Trajectory traj = plan(path, set, limits, kind);
+    ASSERT_TRUE(std::isfinite(traj.duration()) && traj.duration() > 0.0) << "case " << i;
+    longest = std::max(longest, traj.duration());
+    const double worst = worst_speed_ratio(traj, set, limits.velocity, 10000);
+    ASSERT_LE(worst, 1.0 + 1e-6) << "case " << i << " family " << i % 6 << " v " << limits.velocity;
+    ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-9)) << "case " << i;
+  }
+  EXPECT_GT(longest, 1e5);
+
+  // The smallest stated moves: 1e-7 m and 1e-7 rad, LIN both ways, at the smallest and largest
+  // limits (200 chords: a chord of ~1e-9 m keeps the oracle's rounding below 1e-7 relative).
+  for (int i = 0; i < 8; ++i) {
+    Limits limits = edges[i % 4];
+    limits.jerk.reset();
+    const MetricSetd set = random_set(rnd, limits.velocity);
+    const Posed a = rnd.pose(0.5);
+    const Path path = Path::lin(a, rnd.nearby(a, 1e-7, 1e-7), i < 4 ? Interpolation::screw : Interpolation::decoupled);
+    const Trajectory traj = plan(path, set, limits, ProfileKind::trapezoid);
+    ASSERT_TRUE(std::isfinite(traj.duration()) && traj.duration() > 0.0) << "tiny case " << i;
+    ASSERT_LE(worst_speed_ratio(traj, set, limits.velocity, 200), 1.0 + 1e-6) << "tiny case " << i;
+  }
+}
+
 // Not needlessly slow: on a long screw move the fastest point cruises at the limit.
 TEST(Planner, FastestPointReachesTheLimitWhileCruising) {
   Random rnd(202);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -301,6 +302,104 @@ TEST(Profile, TinyDistance) {
     EXPECT_EQ(s.phase_count(), 4);  // no constant acceleration, no cruise
     EXPECT_NEAR(s.duration(), std::cbrt(32.0 * S), 1e-15 * std::cbrt(32.0 * S));
   }
+}
+
+// The invariants a law keeps whatever its scale: finite duration; every phase boundary and 4096
+// samples within 0 ≤ ṡ ≤ v, |s̈| ≤ a, |s⃛| ≤ j (1e-12 relative), 0 ≤ s ≤ S; s never decreasing;
+// the end state exact; the phases' own integration (long double) ending at S to 1e-8 of the
+// law's scale. Not checked, unlike satisfies_limits: continuity of state_at across a phase
+// boundary, which at t = 1e10 s (one ulp 2e-6 s) cannot resolve a jerk phase of 1e-12 s.
+::testing::AssertionResult keeps_invariants_at_scale(const Profile& p, const Limits& c) {
+  const double T = p.duration();
+  if (!(T >= 0.0) || !std::isfinite(T)) return fails(c, "duration " + std::to_string(T));
+  const double s_scale = std::max(c.distance, p.peak_velocity() * T);
+  auto within = [&](const ProfileState& x) {
+    return x.v >= -kLimitTolerance * c.v_max && x.v <= c.v_max * (1 + kLimitTolerance) &&
+           std::abs(x.a) <= c.a_max * (1 + kLimitTolerance) && std::abs(x.j) <= c.j_max * (1 + kLimitTolerance) &&
+           x.s >= 0.0 && x.s <= c.distance * (1 + kLimitTolerance);
+  };
+  long double s = 0, v = c.v_start, a = 0;
+  for (int i = 0; i < p.phase_count(); ++i) {
+    const ProfilePhase& ph = p.phase(i);
+    if (!(ph.duration > 0.0)) return fails(c, "phase of zero or negative duration");
+    if (!within(ph.start) || !within(ph.end)) return fails(c, "limit exceeded at a phase boundary");
+    const long double d = ph.duration, j = ph.jerk;
+    if (p.kind() == ProfileKind::trapezoid) a = ph.start.a;
+    s += d * (v + d * (a / 2 + j * d / 6));
+    v += d * (a + j * d / 2);
+    a += j * d;
+  }
+  if (std::abs(static_cast<double>(s) - c.distance) > 1e-8 * s_scale)
+    return fails(c, "integrated end position " + std::to_string(static_cast<double>(s)));
+  const ProfileState end = p.state_at(T);
+  if (end.s != c.distance || end.v != c.v_end) return fails(c, "end state");
+  double last_s = 0.0;
+  for (int k = 0; k <= 4096; ++k) {
+    const ProfileState x = p.state_at(T * k / 4096);
+    if (!within(x)) return fails(c, "limit exceeded at t = " + std::to_string(T * k / 4096));
+    if (x.s < last_s) return fails(c, "s decreases at t = " + std::to_string(T * k / 4096));
+    last_s = x.s;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// The stated numeric range (README, "Numeric range"): distances 1e-7 … 1e4 m, speeds 1e-6 …
+// 1e3 m/s, accelerations 1e-6 … 1e4 m/s², jerks 1e-6 … 1e6 m/s³ (durations up to 1e10 s). At
+// every corner of that box, rest to rest and between boundary velocities, both laws keep their
+// invariants (keeps_invariants_at_scale).
+TEST(Profile, InvariantsHoldAtTheCornersOfTheNumericRange) {
+  int laws = 0;
+  double longest = 0.0;
+  for (const double S : {1e-7, 1e4})
+    for (const double v : {1e-6, 1e3})
+      for (const double a : {1e-6, 1e4})
+        for (const double j : {1e-6, 1e6})
+          for (const double boundary : {0.0, 0.5}) {
+            const double u = boundary * v;
+            const Limits c{S, v, a, j, u, u};
+            for (const bool scurve : {false, true}) {
+              std::optional<Profile> law;
+              try {
+                law = scurve ? Profile::scurve(S, v, a, j, u, u) : Profile::trapezoid(S, v, a, u, u);
+              } catch (const std::invalid_argument& e) {
+                ASSERT_GT(u, 0.0) << e.what();  // rest to rest always fits
+                ASSERT_NE(std::string(e.what()).find("too short"), std::string::npos) << e.what();
+                continue;
+              }
+              ASSERT_TRUE(keeps_invariants_at_scale(*law, c)) << (scurve ? "S-curve" : "trapezoid");
+              ++laws;
+              longest = std::max(longest, law->duration());
+            }
+          }
+  EXPECT_GE(laws, 32);      // every rest-to-rest corner at least
+  EXPECT_GT(longest, 1e9);  // 1e4 m at 1e-6 m/s: 1e10 s
+  EXPECT_TRUE(std::isfinite(longest));
+}
+
+// Fuzz finding 7: far below the stated range (S = 1e-110 m, v_end = S) the S-curve's peak search
+// stopped after 200 Newton steps, far from its root, and the law overshot S by 4e3 S.
+TEST(Profile, ScurvePeakSearchConvergesForTinyDistancesWithBoundaryVelocities) {
+  for (const double S : {1e-110, 1e-150}) {
+    for (const double u : {S, 0.5 * S}) {
+      const Limits c{S, 1.0, 1.0, 1.0, 0.0, u};
+      ASSERT_TRUE(satisfies_limits(Profile::scurve(S, 1.0, 1.0, 1.0, 0.0, u), c, true)) << S;
+      const Limits d{S, 1.0, 1.0, 1.0, u, 0.0};
+      ASSERT_TRUE(satisfies_limits(Profile::scurve(S, 1.0, 1.0, 1.0, u, 0.0), d, true)) << S;
+    }
+  }
+}
+
+// Outside the numeric range a law whose duration would overflow is refused, naming the limits
+// (10 m at 1e-308 m/s: 1e309 s). Tiny accelerations and jerks alone do not overflow: the
+// duration grows like their inverse square or cube root.
+TEST(Profile, OverflowingDurationsAreRefused) {
+  EXPECT_EQ(message_of([] { Profile::trapezoid(10.0, 1e-308, 1.0); }),
+            "v_max = 1e-308: with a_max = 1 over distance = 10: the law's duration overflows the double range "
+            "(limits outside dispkin's numeric range [1e-12, 1e12])");
+  EXPECT_NE(message_of([] { Profile::trapezoid(1e300, 1e-12, 1.0); }).find("duration overflows"), std::string::npos);
+  EXPECT_NE(message_of([] { Profile::scurve(10.0, 1e-308, 1.0, 1.0); }).find("v_max = 1e-308: with a_max = 1, j_max = 1"),
+            std::string::npos);
+  EXPECT_TRUE(std::isfinite(Profile::scurve(1.0, 1.0, 1e-308, 1e-308).duration()));
 }
 
 TEST(Profile, ScurveStructures) {

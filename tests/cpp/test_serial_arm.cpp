@@ -494,6 +494,37 @@ TEST(SerialArmErrors, JointCycleIsRefused) {
             "link = \"l2\": is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"l2\"");
 }
 
+// Fuzz finding 5: urdfdom used the text of an attribute it could not parse as a printf format, so
+// "%n" there crashed inside urdf::parseURDF. A '%' outside comments, spelled out or as a character
+// reference, is refused before urdfdom sees the text; inside a comment it is harmless and kept.
+TEST(SerialArmErrors, PercentSignOutsideCommentsIsRefused) {
+  const std::string arm = R"(<robot name="r">
+  <link name="base_link"/> <link name="tool0"/>
+  <joint name="j1" type="continuous"><parent link="base_link"/><child link="tool0"/>
+    <origin xyz="ORIGIN"/><axis xyz="0 0 1"/></joint>
+</robot>)";
+  auto with = [&](const std::string& origin, const std::string& before = "") {
+    std::string xml = arm;
+    xml.replace(xml.find("ORIGIN"), 6, origin);
+    return before + xml;
+  };
+  EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(with("n%n 0 0"), "base_link", "tool0"); }),
+            "URDF = \"line 4, column 19\": contains '%' outside a comment; urdfdom would pass it to printf as a format "
+            "(remove it)");
+  EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with("%s%s%s 0 0"), "base_link", "tool0"); }).find("'%'"),
+            std::string::npos);
+  for (const char* reference : {"&#37;n 0 0", "&#x25;n 0 0", "&#X0025;s 0 0", "&#037;n 0 0"}) {
+    EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with(reference), "base_link", "tool0"); })
+                  .find("a character reference to '%'"),
+              std::string::npos)
+        << reference;
+  }
+  // In a comment (before the robot, or spanning lines) a '%' is fine; the arm loads.
+  const SerialArm ok = SerialArm::from_urdf_string(with("0 0 0.5", "<!-- 100% \n scale: 50% -->\n"), "base_link", "tool0");
+  EXPECT_EQ(ok.dof(), 1);
+  EXPECT_NEAR(ok.forward(Eigen::VectorXd::Zero(1)).translation().z(), 0.5, 1e-15);
+}
+
 TEST(SerialArmErrors, BadLinksAndArguments) {
   const std::string file = urdf_dir + "arm_planar_two_link.urdf";
   EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "nowhere", "link2"); }).find("base_link = \"nowhere\""),

@@ -9,9 +9,11 @@
 //! Numeric range: finite inputs far outside any physical scale (|x| > 1e12 or 0 < |x| < 1e-12,
 //! e.g. a translation of 1e308 m or a speed limit of 1e-308 m/s) still must not crash, trip a
 //! sanitizer or throw a foreign exception, but an infinite output they cause by overflow is not
-//! counted: dispkin has no stated numeric range yet (issue 9, item 6) and its noexcept pose
-//! arithmetic cannot refuse them. DISPKIN_FUZZ_STRICT=1 counts those too. NaN and infinite
-//! inputs are always in play: they must be refused, whatever else the input holds.
+//! counted. dispkin's accepted range (README, "Numeric range") refuses such translations and
+//! limits at the constructors and laws, but not every argument of every function (the noexcept
+//! pose arithmetic, Pose::exp of a huge twist, points of a metric set); DISPKIN_FUZZ_STRICT=1
+//! counts those too. NaN and infinite inputs are always in play: they must be refused, whatever
+//! else the input holds.
 #pragma once
 
 #include <cmath>

@@ -104,6 +104,27 @@ def test_yaml_floats_with_exponent_are_numbers(tmp_path):
     assert jobs.load_job(job).limits.acceleration == 1.0
 
 
+def test_control_character_is_a_job_error(tmp_path):
+    # Found by tests/fuzz/fuzz_jobs.py: PyYAML's reader refuses a control character when the
+    # loader is made, which escaped as yaml.reader.ReaderError instead of a JobError.
+    job = tmp_path / "ctrl.yaml"
+    job.write_text("name: x\nlimits: {velocity: 0.1,\x1a acceleration: 1.0}\n")
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(job)
+    assert str(info.value) == (f"{job}:2:24: not valid YAML: special characters are not allowed (character #x001a)")
+    assert info.value.line == 2
+
+
+def test_unknown_numeric_key_is_a_job_error(tmp_path):
+    # Found by tests/fuzz/fuzz_jobs.py: unknown keys were sorted for the message, and a YAML key
+    # that is a number cannot be compared with the names (TypeError).
+    job = tmp_path / "number_key.yaml"
+    job.write_text((EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml").read_text().replace("acceleration: 1.0", "acceleration: 1.0, 0: 1, zz: 2"))
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(job)
+    assert "limits.0: unknown key (allowed here: acceleration, jerk, profile, velocity)" in str(info.value)
+
+
 # --- valid jobs ------------------------------------------------------------------------------
 
 

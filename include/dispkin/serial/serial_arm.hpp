@@ -125,6 +125,11 @@ class SerialArm : public Kinematics {
   //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates (equal
   //! up to 2π, every joint within 1e-7) are removed. An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
+  //! Every solution (each 2π copy too) is checked by forward kinematics to inverse_tolerance:
+  //! on the product-of-exponentials chain() first, by forward() when that check lands within
+  //! 1e-11 of the tolerance. Thread safety: const and without shared mutable state (the KDL
+  //! solvers are made per call, the analytic IK caches its chain analysis per thread), so
+  //! one arm may be used from several threads at once.
   InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
 
   //! The geometric Jacobian J(q) (6 × dof, KDL ChainJntToJacSolver): rows (v, ω), the linear
