@@ -132,7 +132,7 @@ def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
         scaled = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="scaling").trajectory.duration
         # The seed's scaling with the joint limits 0.1 % lower (the standing headroom of the grid
         # laws) is a candidate of the optimal method: the optimum is never slower than it.
-        joint = arm.joint_limits()
+        joint = arm.joint_limits
         held_back = arm.with_joint_limits(velocity=joint.velocity * (1 - 1e-3), effort=joint.effort * (1 - 1e-3))
         scaled_clear = dispkin.retime(path, tool, limits, held_back, Q0, profile="scurve", method="scaling").trajectory.duration
     except RuntimeError:  # the seed's loop does not converge on the CIRC (measured): nothing to compare
