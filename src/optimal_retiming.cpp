@@ -43,7 +43,8 @@
 // the jerk-limited optimum (that problem is not convex in (σ̈, σ̇²)): measured against the seed's
 // scaling with S-curves it is up to 3.5 % slower where the jerk binds more than the joints, and
 // up to 12 % faster where the joints bind (benchmarks/RESULTS.md). The planner's own S-curve law
-// is taken instead where it passes the dense joint check and is faster.
+// and the seed's scaling (with the standing headroom) are taken instead where they pass the
+// dense joint check with that headroom and are faster.
 #include <algorithm>
 #include <cmath>
 #include <limits>
