@@ -60,15 +60,21 @@ double integral(const AccelerationSteps& law, double a, double b) {
   return sum;
 }
 
-// max_t |u(t) − u(t−T)|: a step function whose steps are at the knots and the knots + T.
-double largest_step(const AccelerationSteps& law, double window) {
-  std::vector<double> times;
-  times.reserve(2 * law.time.size());
+// The knots of the law averaged over `window`: the law's knots and the same shifted by it, sorted.
+std::vector<double> averaged_knots(const AccelerationSteps& law, double window) {
+  std::vector<double> knots;
+  knots.reserve(2 * law.time.size());
   for (const double t : law.time) {
-    times.push_back(t);
-    times.push_back(t + window);
+    knots.push_back(t);
+    knots.push_back(t + window);
   }
-  std::sort(times.begin(), times.end());
+  std::sort(knots.begin(), knots.end());
+  return knots;
+}
+
+// max_t |u(t) − u(t−T)|: a step function whose steps are at the averaged law's knots.
+double largest_step(const AccelerationSteps& law, double window) {
+  const std::vector<double> times = averaged_knots(law, window);
   double largest = 0.0;
   for (std::size_t k = 0; k + 1 < times.size(); ++k) {
     if (!(times[k + 1] > times[k])) continue;
@@ -93,13 +99,7 @@ std::vector<JerkPhase> moving_average(const AccelerationSteps& law, double windo
   const double t0 = law.time.front();
   end_time = law.time.back() + window;
   // The knots of the averaged law; those closer than rounding to the previous one merge.
-  std::vector<double> knots;
-  knots.reserve(2 * law.time.size());
-  for (const double t : law.time) {
-    knots.push_back(t);
-    knots.push_back(t + window);
-  }
-  std::sort(knots.begin(), knots.end());
+  const std::vector<double> knots = averaged_knots(law, window);
   const double merge = 1e-12 * (end_time - t0);
   std::vector<double> kept;
   kept.reserve(knots.size());

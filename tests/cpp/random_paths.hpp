@@ -80,6 +80,14 @@ inline MetricSetd random_set(Random& rnd, double v_sys) {
 // The largest speed / limit ratio of the set's points and spheres over [t, t + dt], by the chord
 // of the motion itself (a chord over dt is never longer than the arc, so this never over-estimates).
 // Any trajectory whose sample(t) has a pose: Trajectory, JointTrajectory.
+// Random DISP limits at the system velocity v for a profile kind: a ∈ [0.2, 5], and for an S-curve
+// j ∈ [1, 50] (drawn in that order).
+inline Limits random_limits(Random& rnd, double v, ProfileKind kind) {
+  Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
+  if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+  return limits;
+}
+
 template <typename Traj>
 inline double chord_speed_ratio(const Traj& traj, const MetricSetd& set, double v_sys, double t, double dt) {
   const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;

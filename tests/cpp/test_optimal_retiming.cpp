@@ -230,16 +230,31 @@ TEST(OptimalRetiming, StaticOverloadIsAnErrorNotATrajectory) {
             std::string::npos);
 }
 
-// A hexapod: the legs are the joints. A fast move that the joint metric (issue 5) slows down as
-// a whole is re-timed to leg speeds ≤ their limits at every checked instant, and is faster.
-TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
+// A symmetric 6-6 hexapod with a tool icosahedron, moving from a tilted pose through another
+// back home (two LIN moves, a rest between them).
+struct HexapodMove {
+  Hexapod hexapod;
+  MetricSetd set;
+  Path path;
+};
+
+HexapodMove hexapod_move() {
   constexpr double pi = 3.14159265358979323846;
   const Hexapod h = Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01);
   MetricSetd set;
   set.add_relative(shapes::icosahedron(0.03, V(0, 0, 0.02)));
   const Posed a = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.15, V::UnitX())), V(-0.02, 0.01, -0.01));
   const Posed b = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
-  const Path path = Path::lin(a, b).then(Path::lin(b, h.home()));
+  return {h, set, Path::lin(a, b).then(Path::lin(b, h.home()))};
+}
+
+// A hexapod: the legs are the joints. A fast move that the joint metric (issue 5) slows down as
+// a whole is re-timed to leg speeds ≤ their limits at every checked instant, and is faster.
+TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
+  const HexapodMove move = hexapod_move();
+  const Hexapod& h = move.hexapod;
+  const MetricSetd& set = move.set;
+  const Path& path = move.path;
   const Limits fast{0.2, 2.0, std::nullopt};
   Eigen::VectorXd leg_acceleration = Eigen::VectorXd::Constant(6, 1e-3);
   for (const Eigen::VectorXd& acceleration : {Eigen::VectorXd(), leg_acceleration}) {
@@ -490,13 +505,10 @@ TEST(JerkLimitedRetiming, PassesTangentJunctionsAtSpeed) {
 }
 
 TEST(JerkLimitedRetiming, HexapodLegsKeepTheirSpeeds) {
-  constexpr double pi = 3.14159265358979323846;
-  const Hexapod h = Hexapod::symmetric(0.15, 20 * pi / 180, 0.10, 20 * pi / 180, 0.20, 0.15, 0.32, 0.01);
-  MetricSetd set;
-  set.add_relative(shapes::icosahedron(0.03, V(0, 0, 0.02)));
-  const Posed a = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.15, V::UnitX())), V(-0.02, 0.01, -0.01));
-  const Posed b = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
-  const Path path = Path::lin(a, b).then(Path::lin(b, h.home()));
+  const HexapodMove move = hexapod_move();
+  const Hexapod& h = move.hexapod;
+  const MetricSetd& set = move.set;
+  const Path& path = move.path;
   const Limits limits{0.2, 2.0, 20.0};
   const OptimalRetimeResult r = retime_optimal(path, set, limits, h);
   JointCheckOptions dense;

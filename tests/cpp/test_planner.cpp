@@ -24,6 +24,7 @@ using testing::message_of;
 using testing::Random;
 using testing::random_path;
 using testing::random_set;
+using testing::random_limits;
 using testing::worst_speed_ratio;
 
 TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
@@ -34,8 +35,7 @@ TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
     const MetricSetd set = random_set(rnd, v);
     const Path path = random_path(rnd, i);
     const ProfileKind kind = i % 2 ? ProfileKind::scurve : ProfileKind::trapezoid;
-    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
-    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const Limits limits = random_limits(rnd, v, kind);
     const Trajectory traj = plan(path, set, limits, kind);
     ASSERT_GT(traj.duration(), 0.0);
     const double worst = worst_speed_ratio(traj, set, v, 10000);

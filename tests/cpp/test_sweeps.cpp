@@ -46,8 +46,7 @@ void guarantee_sweep(int family, unsigned long salt) {
     const MetricSetd set = testing::random_set(rnd, v);
     const Path path = testing::random_path(rnd, family);
     const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
-    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
-    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const Limits limits = testing::random_limits(rnd, v, kind);
     const Trajectory traj = plan(path, set, limits, kind);
     const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
     worst = std::max(worst, ratio);
@@ -133,8 +132,7 @@ void ptp_sweep(const serial::SerialArm& arm, const std::string& name, unsigned l
     const MetricSetd set = testing::random_set(rnd, v);
     const JointPath move = testing::random_ptp(rnd, arm);
     const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
-    Limits limits{v, rnd.uniform(0.2, 5.0), std::nullopt};
-    if (kind == ProfileKind::scurve) limits.jerk = rnd.uniform(1.0, 50.0);
+    const Limits limits = testing::random_limits(rnd, v, kind);
     const JointTrajectory traj = plan(move, set, limits, kind, arm);
     const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
     worst = std::max(worst, ratio);
