@@ -62,6 +62,16 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 namespace dispkin {
 namespace {
 
+// Runs `body` with Eigen's no-malloc guard on and returns how often operator new was called.
+template <typename Body>
+long allocations_during(Body&& body) {
+  const long before = allocations.load();
+  Eigen::internal::set_is_malloc_allowed(false);
+  body();
+  Eigen::internal::set_is_malloc_allowed(true);
+  return allocations.load() - before;
+}
+
 // Eigen's guard works: a dynamic matrix made while malloc is disallowed is seen.
 TEST(Realtime, EigenGuardSeesAllocations) {
   const long before = eigen_assert_failures.load();
@@ -129,16 +139,15 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
   double checksum = 0.0;
   for (const Trajectory& traj : trajectories) {
     for (int i = 0; i < kTimes; ++i) times[static_cast<std::size_t>(i)] = traj.duration() * (1.2 * i / kTimes - 0.1);
-    const long before = allocations.load();
-    Eigen::internal::set_is_malloc_allowed(false);
-    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).s_dot;
-    traj.sample(times.data(), out.data(), times.size());
-    // With a cursor: forwards (the control loop), then backwards.
-    Trajectory::Cursor cursor;
-    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
-    for (int i = kTimes; i-- > 0;) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
-    Eigen::internal::set_is_malloc_allowed(true);
-    EXPECT_EQ(allocations.load(), before) << "Trajectory::sample (plain, batch or with a cursor) allocated";
+    const long allocated = allocations_during([&] {
+      for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).s_dot;
+      traj.sample(times.data(), out.data(), times.size());
+      // With a cursor: forwards (the control loop), then backwards.
+      Trajectory::Cursor cursor;
+      for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
+      for (int i = kTimes; i-- > 0;) checksum += traj.sample(times[static_cast<std::size_t>(i)], cursor).s_dot;
+    });
+    EXPECT_EQ(allocated, 0) << "Trajectory::sample (plain, batch or with a cursor) allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
   }
   EXPECT_TRUE(checksum >= 0.0);
@@ -154,11 +163,10 @@ TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
   const Limits limits{0.1, 0.5, 5.0};
   const OverlappedTrajectory o(plan(Path::lin(a, via), set, limits), plan(Path::lin(via, b), set, limits), 0.2);
   double checksum = 0.0;
-  const long before = allocations.load();
-  Eigen::internal::set_is_malloc_allowed(false);
-  for (int i = 0; i < 20000; ++i) checksum += o.sample(o.duration() * (1.2 * i / 20000 - 0.1)).s_dot;
-  Eigen::internal::set_is_malloc_allowed(true);
-  EXPECT_EQ(allocations.load(), before) << "OverlappedTrajectory::sample allocated";
+  const long allocated = allocations_during([&] {
+    for (int i = 0; i < 20000; ++i) checksum += o.sample(o.duration() * (1.2 * i / 20000 - 0.1)).s_dot;
+  });
+  EXPECT_EQ(allocated, 0) << "OverlappedTrajectory::sample allocated";
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum >= 0.0);
 }
@@ -185,14 +193,13 @@ TEST(Realtime, ClosedFormInverseKinematicsDoesNotAllocate) {
     }
     serial::IkSolutionSet set;
     int total = 0;
-    const long before = allocations.load();
-    Eigen::internal::set_is_malloc_allowed(false);
-    for (const Posed& pose : poses) {
-      serial::analytic_inverse(robot.chain, family, pose, set);
-      total += set.count;
-    }
-    Eigen::internal::set_is_malloc_allowed(true);
-    EXPECT_EQ(allocations.load(), before) << robot.name << ": analytic_inverse (IkSolutionSet) allocated";
+    const long allocated = allocations_during([&] {
+      for (const Posed& pose : poses) {
+        serial::analytic_inverse(robot.chain, family, pose, set);
+        total += set.count;
+      }
+    });
+    EXPECT_EQ(allocated, 0) << robot.name << ": analytic_inverse (IkSolutionSet) allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << robot.name << ": Eigen allocated during analytic_inverse";
     EXPECT_GE(total, 500) << robot.name;  // every pose is reachable: at least one solution each
   }
@@ -219,12 +226,11 @@ TEST(Realtime, JointTrajectorySamplingDoesNotAllocate) {
   double checksum = 0.0;
   for (const JointTrajectory& traj : trajectories) {
     for (int i = 0; i < kTimes; ++i) times[static_cast<std::size_t>(i)] = traj.duration() * (1.2 * i / kTimes - 0.1);
-    const long before = allocations.load();
-    Eigen::internal::set_is_malloc_allowed(false);
-    for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).qd.norm();
-    traj.sample(times.data(), out.data(), times.size());
-    Eigen::internal::set_is_malloc_allowed(true);
-    EXPECT_EQ(allocations.load(), before) << "JointTrajectory::sample allocated";
+    const long allocated = allocations_during([&] {
+      for (int i = 0; i < kTimes; ++i) checksum += traj.sample(times[static_cast<std::size_t>(i)]).qd.norm();
+      traj.sample(times.data(), out.data(), times.size());
+    });
+    EXPECT_EQ(allocated, 0) << "JointTrajectory::sample allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
   }
   EXPECT_TRUE(checksum > 0.0);
