@@ -450,6 +450,33 @@ std::string interval_text(double s0, double s1) {
   return out.str();
 }
 
+// Golden-section search for the shortest `duration` of `evaluate(x)` over [lo, hi] in `iterations`
+// steps, starting from `best` (a scan's winner); returns the best candidate seen.
+template <typename Candidate, typename Evaluate>
+Candidate golden_section(double lo, double hi, int iterations, Candidate best, Evaluate&& evaluate) {
+  constexpr double golden = 0.6180339887498949;
+  double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);  // x1 ≤ x2
+  Candidate c1 = evaluate(x1), c2 = evaluate(x2);
+  for (int iteration = 0;; ++iteration) {
+    if (c1.duration < best.duration) best = c1;
+    if (c2.duration < best.duration) best = c2;
+    if (iteration == iterations) return best;
+    if (c1.duration <= c2.duration) {  // the minimum lies in [lo, x2]
+      hi = x2;
+      x2 = x1;
+      c2 = std::move(c1);
+      x1 = hi - golden * (hi - lo);
+      c1 = evaluate(x1);
+    } else {  // in [x1, hi]
+      lo = x1;
+      x1 = x2;
+      c1 = std::move(c2);
+      x2 = lo + golden * (hi - lo);
+      c2 = evaluate(x2);
+    }
+  }
+}
+
 // The fastest timing of `path` for `model` (see the file comment); options already checked.
 OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
                                    const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
@@ -671,32 +698,10 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
             scanned.push_back(jerk_limited(cap_at(static_cast<double>(i) / scan), speed));
             if (scanned.back().duration < scanned[best].duration) best = scanned.size() - 1;
           }
-          Candidate chosen = scanned[best];
-          double lo = std::max(0.0, (static_cast<double>(best) - 1.0) / scan);
-          double hi = std::min(1.0, (static_cast<double>(best) + 1.0) / scan);
-          constexpr double golden = 0.6180339887498949;
-          double e1 = hi - golden * (hi - lo), e2 = lo + golden * (hi - lo);
-          Candidate c1 = jerk_limited(cap_at(e1), speed), c2 = jerk_limited(cap_at(e2), speed);
-          for (int iteration = 0; iteration < 8; ++iteration) {
-            if (c1.duration < chosen.duration) chosen = c1;
-            if (c2.duration < chosen.duration) chosen = c2;
-            if (c1.duration <= c2.duration) {
-              hi = e2;
-              e2 = e1;
-              c2 = std::move(c1);
-              e1 = hi - golden * (hi - lo);
-              c1 = jerk_limited(cap_at(e1), speed);
-            } else {
-              lo = e1;
-              e1 = e2;
-              c1 = std::move(c2);
-              e2 = lo + golden * (hi - lo);
-              c2 = jerk_limited(cap_at(e2), speed);
-            }
-          }
-          if (c1.duration < chosen.duration) chosen = c1;
-          if (c2.duration < chosen.duration) chosen = c2;
-          return chosen;
+          // Between the best A's neighbours.
+          return golden_section(std::max(0.0, (static_cast<double>(best) - 1.0) / scan),
+                                std::min(1.0, (static_cast<double>(best) + 1.0) / scan), 8, scanned[best],
+                                [&](double e) { return jerk_limited(cap_at(e), speed); });
         };
         // V as a fraction f of the top speed without a jerk limit (f = 1: no cap): a scan, then
         // golden-section search between the best fraction's neighbours.
@@ -714,31 +719,9 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
             best = i;
           }
         }
-        {
-          double hi = fractions[best > 0 ? best - 1 : 0], lo = fractions[std::min(best + 1, fractions.size() - 1)];
-          constexpr double golden = 0.6180339887498949;
-          double f1 = hi - golden * (hi - lo), f2 = lo + golden * (hi - lo);
-          Candidate c1 = at_fraction(f1), c2 = at_fraction(f2);
-          for (int iteration = 0; iteration < 6; ++iteration) {
-            if (c1.duration < chosen.duration) chosen = c1;
-            if (c2.duration < chosen.duration) chosen = c2;
-            if (c1.duration <= c2.duration) {  // f1 > f2 here: keep [f2, hi]
-              lo = f2;
-              f2 = f1;
-              c2 = std::move(c1);
-              f1 = hi - golden * (hi - lo);
-              c1 = at_fraction(f1);
-            } else {
-              hi = f1;
-              f1 = f2;
-              c1 = std::move(c2);
-              f2 = lo + golden * (hi - lo);
-              c2 = at_fraction(f2);
-            }
-          }
-          if (c1.duration < chosen.duration) chosen = c1;
-          if (c2.duration < chosen.duration) chosen = c2;
-        }
+        // Between the best fraction's neighbours (fractions fall: the one after is the lower end).
+        chosen = golden_section(fractions[std::min(best + 1, fractions.size() - 1)], fractions[best > 0 ? best - 1 : 0], 6,
+                                std::move(chosen), at_fraction);
         const detail::Parameterisation& fastest = chosen.fastest;
         const detail::AccelerationSteps& steps = chosen.steps;
         const double window = chosen.window;
