@@ -11,6 +11,7 @@ debian_packages=(
   libqhull-dev           # convex hulls
   nlohmann-json3-dev     # hexapod description files (JSON, header-only)
   liburdfdom-dev         # URDF parsing (serial-arm plugin)
+  libtinyxml-dev         # urdfdom's XML parser: the URDF joint graph is checked first
   liborocos-kdl-dev      # chains, Jacobians, dynamics (serial-arm plugin)
   libgtest-dev           # C++ tests
   libbenchmark-dev       # C++ benchmarks

@@ -18,7 +18,6 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs)
 venv=${VENV:-.venv}
 if [ -n "${FUZZ_RUNS:-}" ]; then stop=(-runs="$FUZZ_RUNS"); seconds="(${FUZZ_RUNS} runs)"; else stop=(-max_total_time="$seconds"); fi
-export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
 
 failed=0

@@ -50,7 +50,7 @@ std::vector<int> qhull_vertex_indices(std::vector<coordT>& coordinates, int dim)
 
 std::vector<Eigen::Vector3d> convex_hull_vertices(const std::vector<Eigen::Vector3d>& points) {
   for (std::size_t i = 0; i < points.size(); ++i)
-    if (!points[i].allFinite()) require_finite(points[i], "points[" + std::to_string(i) + "]");
+    if (!within_translation_range(points[i])) require_translation(points[i], "points[" + std::to_string(i) + "]");
   if (points.size() <= 3) return points;
 
   // Principal axes decide the dimension of the hull: Qhull refuses flat input in 3-D. The

@@ -48,8 +48,8 @@ Hexapod::Hexapod(const Joints& base_joints, const Joints& platform_joints, const
       leg_max_(leg_max),
       leg_speed_(leg_speed),
       home_(home) {
-  require_finite(base_joints, "base_joints");
-  require_finite(platform_joints, "platform_joints");
+  require_translation(base_joints, "base_joints");
+  require_translation(platform_joints, "platform_joints");
   require(spans_plane(base_joints), "base_joints", base_joints,
           "must not be collinear (the joints must span a plane)");
   require(spans_plane(platform_joints), "platform_joints", platform_joints,
@@ -376,7 +376,7 @@ Eigen::Matrix<double, 6, 1> xyzuvw_for_new_pivot(const Eigen::Matrix<double, 6, 
   // T = from_xyzuvw(v, p_old): t = XYZ_old + p_old − R p_old; about p_new the same t needs
   // XYZ_new = t − p_new + R p_new = XYZ_old + (R − I)(p_new − p_old).
   const Posed pose = Posed::from_xyzuvw(xyzuvw, old_pivot);
-  require_finite(new_pivot, "new_pivot");
+  require_translation(new_pivot, "new_pivot");
   Eigen::Matrix<double, 6, 1> out = xyzuvw;
   out.head<3>() += pose.rotation() * (new_pivot - old_pivot) - (new_pivot - old_pivot);
   return out;

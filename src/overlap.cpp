@@ -10,7 +10,7 @@ namespace dispkin {
 
 OverlappedTrajectory::OverlappedTrajectory(Trajectory before, Trajectory after, double overlap, const Eigen::Vector3d& pivot)
     : before_(std::move(before)), after_(std::move(after)), overlap_(overlap), pivot_(pivot) {
-  require_finite(pivot, "pivot");
+  require_translation(pivot, "pivot");
   const double shorter = std::min(before_.duration(), after_.duration());
   require(std::isfinite(overlap) && overlap >= 0.0 && overlap <= shorter, "overlap", overlap,
           "must be between 0 and the shorter move's duration (" + std::to_string(shorter) + " s)");

@@ -55,7 +55,7 @@ CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Ve
 }
 
 Path Path::lin(const Posed& a, const Posed& b, Interpolation interpolation, const Eigen::Vector3d& pivot) {
-  require_finite(pivot, "pivot");
+  require_translation(pivot, "pivot");
   require_pose_distinct(a, b, "b");
   Path path;
   path.append(LinSection{a, b, interpolation, pivot});
@@ -64,7 +64,7 @@ Path Path::lin(const Posed& a, const Posed& b, Interpolation interpolation, cons
 }
 
 Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::Vector3d& pivot, double tolerance) {
-  require_finite(pivot, "pivot");
+  require_translation(pivot, "pivot");
   require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance,
           "must be in (0, 0.1]");
   const CircleThroughPoints circle = circle_through(a * pivot, via * pivot, b * pivot);

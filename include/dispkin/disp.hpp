@@ -456,7 +456,7 @@ Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const
                       std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   set.require_well_formed();
   detail::require_system_velocity(system_velocity);
-  require_finite(pivot, "pivot");
+  require_translation(pivot, "pivot");
   Scalar best(0);
   if (interpolation == Interpolation::screw) {
     // Constant body twist: every object's speed is constant along the section (§5), so the

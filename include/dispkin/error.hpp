@@ -107,6 +107,14 @@ void require_limit(Scalar value, std::string_view argument) {
           argument, value, "must be in [1e-12, 1e12] (finite, positive, inside dispkin's numeric range)");
 }
 
+//! Whether every coordinate is finite and at most numeric_range::max_translation (the fast
+//! test before require_translation in loops over many points).
+template <typename Derived>
+bool within_translation_range(const Eigen::DenseBase<Derived>& value) {
+  using Scalar = typename Derived::Scalar;
+  return value.allFinite() && value.derived().cwiseAbs().maxCoeff() <= Scalar(numeric_range::max_translation);
+}
+
 //! A translation whose coordinates are finite and at most numeric_range::max_translation.
 template <typename Derived>
 void require_translation(const Eigen::DenseBase<Derived>& value, std::string_view argument) {

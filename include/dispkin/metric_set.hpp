@@ -174,10 +174,10 @@ class MetricSet {
   void add_absolute(const Vector3& point, int group = 0) { add_points({point}, Frame::absolute, group); }
   void add_absolute(const std::vector<Vector3>& points, int group = 0) { add_points(points, Frame::absolute, group); }
 
-  //! Points in the given frame. Every point must be finite.
+  //! Points in the given frame. Every coordinate must be finite and within ±1e12 m.
   void add_points(const std::vector<Vector3>& points, Frame frame, int group = 0) {
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!points[i].allFinite()) require_finite(points[i], "points[" + std::to_string(i) + "]");
+      if (!within_translation_range(points[i])) require_translation(points[i], "points[" + std::to_string(i) + "]");
     }
     Group& g = group_for(group);
     auto& target = frame == Frame::relative ? g.relative_points : g.absolute_points;
@@ -191,9 +191,10 @@ class MetricSet {
 
   //! A sphere (handled exactly, MATH.md §4), relative (body) or absolute (world) centre.
   void add_sphere(const Vector3& center, Scalar radius, Frame frame = Frame::relative, int group = 0) {
-    require_finite(center, "center");
+    require_translation(center, "center");
     using std::isfinite;
-    require(isfinite(radius) && radius >= Scalar(0), "radius", radius, "must be finite and not negative");
+    require(isfinite(radius) && radius >= Scalar(0) && radius <= Scalar(numeric_range::max_translation), "radius", radius,
+            "must be finite and not negative, at most 1e12 m (dispkin's numeric range)");
     Group& g = group_for(group);
     (frame == Frame::relative ? g.relative_spheres : g.absolute_spheres).push_back({center, radius});
     auto& span = frame == Frame::relative ? relative_span_ : absolute_span_;

@@ -92,7 +92,7 @@ struct ArcSection {
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     set.require_well_formed();
     detail::require_system_velocity(system_velocity);
-    require_finite(pivot, "pivot");
+    require_translation(pivot, "pivot");
     detail::GroupFactors factors(set, system_velocity);
     factors.use_pivot(pivot);
     return bounds(factors).length;

@@ -55,7 +55,7 @@ Scalar icosahedron_circumradius_ratio() {
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> box(const Eigen::Matrix<Scalar, 3, 1>& size,
                                             const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
-  require_finite(center, "center");
+  require_translation(center, "center");
   require(size.allFinite() && (size.array() > Scalar(0)).all(), "size", size, "edge lengths must be finite and positive");
   std::vector<Eigen::Matrix<Scalar, 3, 1>> corners;
   corners.reserve(8);
@@ -129,7 +129,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(Scalar radius,
                                                     const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero(),
                                                     bool circumscribed = true) {
   require_positive(radius, "radius");
-  require_finite(center, "center");
+  require_translation(center, "center");
   const Scalar scale = circumscribed ? radius * icosahedron_circumradius_ratio<Scalar>() : radius;
   return detail::placed(detail::unit_icosahedron<Scalar>(), scale, center);
 }
@@ -141,7 +141,7 @@ template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisions,
                                                   const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   require_positive(radius, "radius");
-  require_finite(center, "center");
+  require_translation(center, "center");
   require(subdivisions >= 0 && subdivisions <= 7, "subdivisions", subdivisions,
           "must be between 0 and 7 (7 gives 163842 vertices)");
   Polyhedron<Scalar> p = detail::unit_icosahedron<Scalar>();
@@ -160,7 +160,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int coun
   using std::sin;
   using std::sqrt;
   require_positive(radius, "radius");
-  require_finite(center, "center");
+  require_translation(center, "center");
   require(count >= 4, "count", count, "must be at least 4 so the shell spans space");
   const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
   const Scalar golden_angle = pi * (Scalar(3) - sqrt(Scalar(5)));

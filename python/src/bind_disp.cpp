@@ -82,7 +82,7 @@ void bind_disp(py::module_& m) {
       [](const py::object& twist, const py::object& center, double radius) {
         const Twistd xi = checked_twist(twist);
         const Eigen::Vector3d c = vector3(center, "center");
-        require_finite(c, "center");
+        require_translation(c, "center");
         require(std::isfinite(radius) && radius >= 0.0, "radius", radius, "must be finite and not negative");
         return sphere_speed<double>(xi, c, radius);
       },
@@ -104,7 +104,7 @@ void bind_disp(py::module_& m) {
         require_finite(tau, "tau");
         const Interpolation kind = interpolation_from_string(interpolation);
         const Eigen::Vector3d p = vector3(pivot, "pivot");
-        require_finite(p, "pivot");
+        require_translation(p, "pivot");
         return interpolate<double>(a, b, tau, kind, p);
       },
       py::arg("pose_a"), py::arg("pose_b"), py::arg("tau"), py::arg("interpolation") = "decoupled",

@@ -25,6 +25,7 @@
 
 #include "dispkin/error.hpp"
 #include "serial_arm_model.hpp"
+#include "urdf_joint_graph.hpp"
 
 namespace dispkin {
 namespace serial {
@@ -93,6 +94,7 @@ void require_no_percent_sign(const std::string& xml) {
 
 urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& messages) {
   require_no_percent_sign(xml);
+  require_acyclic_joints(xml);
   const std::lock_guard<std::mutex> lock(parse_mutex);
   CapturingOutput capture;
   console_bridge::useOutputHandler(&capture);
@@ -107,9 +109,9 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& message
   messages = capture.messages;
   if (!model) return model;
   // urdfdom links own their children (shared_ptr) and point to their parent weakly, so a URDF
-  // whose joints form a cycle — which urdfdom accepts, and which we refuse below — leaves a
-  // ring of links that own each other and are never freed. The handle we return cuts every
-  // child list when it is released, which frees any such ring.
+  // whose joints form a cycle would leave a ring of links that own each other and are never
+  // freed. require_acyclic_joints refuses such documents first; should urdfdom ever read a
+  // graph differently, the handle we return still cuts every child list when it is released.
   return urdf::ModelInterfaceSharedPtr(model.get(), [owner = model](urdf::ModelInterface*) mutable {
     for (auto& named_link : owner->links_) {
       named_link.second->child_links.clear();

@@ -163,12 +163,18 @@ std::vector<Row> rows() {
       "speed = 1e+13: must be in [1e-12, 1e12]");
   row("MetricSet::add_relative", "negative group", [] { MetricSetd s; s.add_relative(Vector3d::Zero(), -1); }, IA, "group = -1");
   row("MetricSet::add_absolute", "-inf point", [] { MetricSetd s; s.add_absolute(Vector3d(0, 0, -inf_)); }, IA, "points[0] = (0, 0, -inf)");
+  row("MetricSet::add_absolute", "point beyond the numeric range (1e13 m)", [] { MetricSetd s; s.add_absolute(Vector3d(0, 1e13, 0)); }, IA,
+      "points[0] = (0, 1e+13, 0): must have coordinates within ±1e12 m");
   row("MetricSet::add_absolute", "negative group", [] { MetricSetd s; s.add_absolute(Vector3d::Zero(), -3); }, IA, "group = -3");
   row("MetricSet::add_points", "NaN point", [] { MetricSetd s; s.add_points({Vector3d(nan_, 0, 0)}, Frame::absolute); }, IA, "points[0] = (nan, 0, 0)");
   row("MetricSet::add_sphere", "NaN center", [] { MetricSetd s; s.add_sphere(Vector3d(nan_, 0, 0), 0.1); }, IA, "center = (nan, 0, 0)");
   row("MetricSet::add_sphere", "negative radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), -0.1); }, IA, "radius = -0.1");
   row("MetricSet::add_sphere", "NaN radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), nan_); }, IA, "radius = nan");
   row("MetricSet::add_sphere", "+inf radius", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), inf_); }, IA, "radius = inf");
+  row("MetricSet::add_sphere", "center beyond the numeric range (1e13 m)", [] { MetricSetd s; s.add_sphere(Vector3d(-1e13, 0, 0), 0.1); }, IA,
+      "center = (-1e+13, 0, 0): must have coordinates within ±1e12 m");
+  row("MetricSet::add_sphere", "radius beyond the numeric range (1e13 m)", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), 1e13); }, IA,
+      "radius = 1e+13: must be finite and not negative, at most 1e12 m");
   row("MetricSet::add_sphere", "negative group", [] { MetricSetd s; s.add_sphere(Vector3d::Zero(), 0.1, Frame::relative, -1); }, IA, "group = -1");
   row("MetricSet::set_group_speed", "zero speed", [] { MetricSetd s; s.set_group_speed(1, 0.0); }, IA, "speed = 0");
   row("MetricSet::set_group_speed", "negative speed", [] { MetricSetd s; s.set_group_speed(1, -1.0); }, IA, "speed = -1");
@@ -185,6 +191,7 @@ std::vector<Row> rows() {
   row("shapes::box", "negative edge", [] { shapes::box<double>(Vector3d(1, -1, 1)); }, IA, "size = (1, -1, 1)");
   row("shapes::box", "NaN edge", [] { shapes::box<double>(Vector3d(1, 1, nan_)); }, IA, "size = (1, 1, nan)");
   row("shapes::box", "+inf center", [] { shapes::box<double>(Vector3d(1, 1, 1), Vector3d(inf_, 0, 0)); }, IA, "center = (inf, 0, 0)");
+  row("shapes::box", "center beyond the numeric range (1e13 m)", [] { shapes::box<double>(Vector3d(1, 1, 1), Vector3d(0, 0, 1e13)); }, IA, "center = (0, 0, 1e+13): must have coordinates within ±1e12 m");
   row("shapes::icosahedron", "zero radius", [] { shapes::icosahedron(0.0); }, IA, "radius = 0");
   row("shapes::icosahedron", "negative radius", [] { shapes::icosahedron(-1.0); }, IA, "radius = -1");
   row("shapes::icosahedron", "NaN radius", [] { shapes::icosahedron(nan_); }, IA, "radius = nan");
@@ -204,6 +211,8 @@ std::vector<Row> rows() {
       "points[3] = (0, 0, nan): must be finite");
   row("convex_hull_vertices", "+inf point", [] { convex_hull_vertices({Vector3d::Zero(), Vector3d::UnitX(), Vector3d::UnitY(), Vector3d(inf_, 0, 1)}); }, IA,
       "points[3] = (inf, 0, 1): must be finite");
+  row("convex_hull_vertices", "point beyond the numeric range (1e13 m)", [] { convex_hull_vertices({Vector3d::Zero(), Vector3d::UnitX(), Vector3d::UnitY(), Vector3d(0, 0, 1e13)}); }, IA,
+      "points[3] = (0, 0, 1e+13): must have coordinates within ±1e12 m");
 
   // --- DISP functions ---
   row("disp_distance", "empty set", [] { disp_distance(MetricSetd(), A, B); }, IA, "metric_set = \"MetricSet\": is not well-formed: the set is empty");
@@ -220,6 +229,7 @@ std::vector<Row> rows() {
   row("section_length", "empty set", [] { section_length(MetricSetd(), A, B, Interpolation::decoupled); }, IA, "metric_set = \"MetricSet\": is not well-formed");
   row("section_length", "collinear set", [] { section_length(collinear_set(), A, B, Interpolation::screw); }, IA, "metric_set = \"MetricSet\": is not well-formed");
   row("section_length", "NaN pivot", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("section_length", "pivot beyond the numeric range (1e13 m)", [] { section_length(good_set(), A, B, Interpolation::screw, Vector3d(0, 1e13, 0)); }, IA, "pivot = (0, 1e+13, 0): must have coordinates within ±1e12 m");
   row("section_length", "zero system_velocity", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d::Zero(), 0.0); }, IA, "system_velocity = 0");
   row("section_length", "+inf system_velocity", [] { section_length(good_set(), A, B, Interpolation::decoupled, Vector3d::Zero(), inf_); }, IA, "system_velocity = inf");
   row("max_point_speed", "negative system_velocity", [] { max_point_speed(good_set(), A, XI, -2.0); }, IA, "system_velocity = -2");
@@ -228,6 +238,9 @@ std::vector<Row> rows() {
 
   // --- Path / JointPath ---
   row("Path::lin", "NaN pivot", [] { Path::lin(A, B, Interpolation::decoupled, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  // Fuzz finding 11: a LIN pivot of 6.3e257 m was accepted and Path::sample returned infinities.
+  row("Path::lin", "pivot beyond the numeric range (6.3e257 m)", [] { Path::lin(A, B, Interpolation::decoupled, Vector3d(117, 6.3e257, 117)); }, IA,
+      "pivot = (117, 6.3e+257, 117): must have coordinates within ±1e12 m");
   row("Path::lin", "coinciding poses", [] { Path::lin(A, A); }, IA, "b = (0, 0, 0): start and end poses coincide");
   row("Path::circ", "collinear via", [] { Path::circ(A, Posed::from_xyzuvw(v6(0.05, 0, 0, 0, 0, 0)), Posed::from_xyzuvw(v6(0.1, 0, 0, 0, 0, 0))); }, IA, "via = (0.05, 0, 0): is collinear with the start and end points");
   row("Path::circ", "via equals start", [] { Path::circ(A, A, C); }, IA, "via = (0, 0, 0): coincides with the start point");
@@ -235,10 +248,12 @@ std::vector<Row> rows() {
   row("Path::circ", "negative tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), -1e-3); }, IA, "tolerance = -0.001");
   row("Path::circ", "NaN tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), nan_); }, IA, "tolerance = nan");
   row("Path::circ", "NaN pivot", [] { Path::circ(A, B, C, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::circ", "pivot beyond the numeric range (1e13 m)", [] { Path::circ(A, B, C, Vector3d(1e13, 0, 0)); }, IA, "pivot = (1e+13, 0, 0): must have coordinates within ±1e12 m");
   row("Path::spline", "two poses", [] { Path::spline({A, B}); }, IA, "poses = 2: key poses given: a SPLINE needs at least three");
   row("Path::spline", "repeated key pose", [] { Path::spline({A, B, B, C}); }, IA, "poses[2] = (0.1, 0, 0): coincides with the key pose before it");
   row("Path::spline", "zero tolerance", [] { Path::spline({A, B, C}, Vector3d::Zero(), 0.0); }, IA, "tolerance = 0");
   row("Path::spline", "NaN pivot", [] { Path::spline({A, B, C}, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
+  row("Path::spline", "pivot beyond the numeric range (1e13 m)", [] { Path::spline({A, B, C}, Vector3d(0, 0, -1e13)); }, IA, "pivot = (0, 0, -1e+13): must have coordinates within ±1e12 m");
   row("Path::then (blend)", "negative blend", [] { Path::lin(A, B).then(Path::lin(B, C), -0.01); }, IA, "before = -0.01: must be a positive distance");
   row("Path::then (blend)", "NaN after", [] { Path::lin(A, B).then(Path::lin(B, C), 0.01, nan_); }, IA, "after = nan: must be a positive distance");
   row("Path::then (blend)", "blend over half the next move", [] { Path::lin(A, B).then(Path::lin(B, C), 0.01, 0.08); }, IA, "after = 0.08: exceeds half of the move after the via point");
@@ -323,6 +338,8 @@ std::vector<Row> rows() {
         Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "base_joints = (nan, -0.02604722665, 0");
   row("Hexapod(...)", "+inf platform joint", [] { Hexapod h = hexapod(); Hexapod::Joints p = h.platform_joints(); p(2, 5) = inf_;
         Hexapod(h.base_joints(), p, h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "platform_joints = (0.0642787609687, -0.0766044443119, 0");
+  row("Hexapod(...)", "base joint beyond the numeric range (1e13 m)", [] { Hexapod h = hexapod(); Hexapod::Joints b = h.base_joints(); b(1, 2) = 1e13;
+        Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "must have coordinates within ±1e12 m");
   row("Hexapod(...)", "collinear base joints", [] { Hexapod h = hexapod(); Hexapod::Joints b = Hexapod::Joints::Zero(); b.row(0).setLinSpaced(0.0, 1.0);
         Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA,
       "base_joints = (0, 0, 0, 0.2, 0, 0, 0.4, 0, 0, 0.6, 0, 0, 0.8, 0, 0, 1, 0, 0): must not be collinear");

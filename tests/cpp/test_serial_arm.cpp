@@ -491,7 +491,30 @@ TEST(SerialArmErrors, JointCycleIsRefused) {
   <joint name="j2" type="continuous"><parent link="l2"/><child link="l2"/><axis xyz="0 0 1"/></joint>
 </robot>)";
   EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(xml, "base_link", "l2"); }),
-            "link = \"l2\": is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"l2\"");
+            "link = \"l2\": is its own ancestor: the URDF's joints form a cycle \"l2\" -(j2)-> \"l2\"");
+}
+
+// Fuzz finding 6: a cycle that leaves no root link is refused by urdfdom itself, which then
+// leaked the ring of links it had built (LeakSanitizer). The joint graph is read first now, so
+// urdfdom never sees a cycle: under `make sanitize` this test fails if anything leaks.
+TEST(SerialArmErrors, JointCycleIsRefusedBeforeUrdfdomReadsIt) {
+  const std::string two = R"(<robot name="r"><link name="base_link"/><link name="tool0"/>
+  <joint name="j" type="continuous"><parent link="base_link"/><child link="tool0"/><axis xyz="0 0 1"/></joint>
+  <joint name="k" type="continuous"><parent link="tool0"/><child link="base_link"/></joint></robot>)";
+  EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(two, "base_link", "tool0"); }),
+            "link = \"base_link\": is its own ancestor: the URDF's joints form a cycle "
+            "\"base_link\" -(j)-> \"tool0\" -(k)-> \"base_link\"");
+  // A longer cycle hanging off a proper tree (a root exists, so urdfdom would accept it).
+  const std::string branch = R"(<robot name="r">
+  <link name="base_link"/><link name="a"/><link name="b"/><link name="c"/><link name="tool0"/>
+  <joint name="j0" type="fixed"><parent link="base_link"/><child link="tool0"/></joint>
+  <joint name="j1" type="fixed"><parent link="base_link"/><child link="a"/></joint>
+  <joint name="j2" type="fixed"><parent link="a"/><child link="b"/></joint>
+  <joint name="j3" type="fixed"><parent link="b"/><child link="c"/></joint>
+  <joint name="j4" type="fixed"><parent link="c"/><child link="a"/></joint></robot>)";
+  EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(branch, "base_link", "tool0"); }),
+            "link = \"a\": is its own ancestor: the URDF's joints form a cycle "
+            "\"a\" -(j2)-> \"b\" -(j3)-> \"c\" -(j4)-> \"a\"");
 }
 
 // Fuzz finding 5: urdfdom used the text of an attribute it could not parse as a printf format, so
