@@ -94,13 +94,18 @@ void require_no_percent_sign(const std::string& xml) {
 
 urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& messages) {
   require_no_percent_sign(xml);
-  require_acyclic_joints(xml);
+  // TinyXML 2.6.2 (urdfdom's XML parser, and ours in require_acyclic_joints) steps over a UTF-8
+  // lead byte by the length it announces, so a text ending inside such a sequence ("…\xe6") was
+  // read up to 3 bytes past its terminating NUL (fuzz finding 12, ASan heap-buffer-overflow).
+  // Both parsers read the text as a C string: NULs appended keep those reads inside the buffer.
+  const std::string padded = xml + std::string(4, '\0');
+  require_acyclic_joints(padded);
   const std::lock_guard<std::mutex> lock(parse_mutex);
   CapturingOutput capture;
   console_bridge::useOutputHandler(&capture);
   urdf::ModelInterfaceSharedPtr model;
   try {
-    model = urdf::parseURDF(xml);
+    model = urdf::parseURDF(padded);
   } catch (...) {
     console_bridge::restorePreviousOutputHandler();
     throw;

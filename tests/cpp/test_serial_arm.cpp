@@ -517,6 +517,19 @@ TEST(SerialArmErrors, JointCycleIsRefusedBeforeUrdfdomReadsIt) {
             "\"a\" -(j2)-> \"b\" -(j3)-> \"c\" -(j4)-> \"a\"");
 }
 
+// Fuzz finding 12: TinyXML (urdfdom's XML parser, and the joint-graph check's) reads past the end
+// of a text that ends inside a UTF-8 sequence (here "link\xe6\xe6\xe6\xe6"); ASan saw the
+// read beyond the buffer. The text is now handed over with NULs appended: refused, no overflow
+// (under `make sanitize` an over-read fails this test).
+TEST(SerialArmErrors, TextEndingInsideAUtf8SequenceIsRefusedWithoutOverread) {
+  std::ifstream in(std::string(DISPKIN_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_urdf/finding_12_utf8_lead_byte_at_end.urdf",
+                   std::ios::binary);
+  ASSERT_TRUE(in.good());
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text = text.substr(text.find('\n') + 1);  // the fuzzer's "@base tip" line
+  EXPECT_THROW(SerialArm::from_urdf_string(text, "base_link", "flange"), std::invalid_argument);
+}
+
 // Fuzz finding 5: urdfdom used the text of an attribute it could not parse as a printf format, so
 // "%n" there crashed inside urdf::parseURDF. A '%' outside comments, spelled out or as a character
 // reference, is refused before urdfdom sees the text; inside a comment it is harmless and kept.
