@@ -172,6 +172,35 @@ TEST(AnalyticIk, RoundTripJaco2) {
   round_trip({"jaco2_j2n6s300", testing::kinova_jaco2_j2n6s300()}, testing::case_count(10000), 616);
 }
 
+// ---- known failures from the 10⁶-case sweep (2026-12-01), DISABLED until fixed ----------------
+// DISPKIN_TEST_COUNT=1000000 found them (cases 223777 and 907128 of the Jaco2, 980207 of the
+// IRB 6640, 258496 of the UR10e). Each q must be among the solutions of its own forward pose
+// (within 1e-8 rad). The Jaco2's offset-wrist search misses the branch (nearest 0.25 / 0.42 rad);
+// the other two are recovered to 1.35e-8 / 1.69e-8 rad only. Enable with
+// --gtest_also_run_disabled_tests; remove DISABLED_ once the IK recovers them.
+void expect_recovered(const RevoluteChain& chain, const std::vector<double>& values) {
+  const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  const Posed pose = serial::forward(chain, q);
+  const auto solutions = analytic_inverse(chain, recognise(chain), pose);
+  expect_valid(chain, solutions, pose, "known failure");
+  EXPECT_LE(nearest(solutions, q), 1e-8) << "q = " << q.transpose();
+}
+
+TEST(AnalyticIk, DISABLED_Jaco2BranchesMissedAtTenToTheSix) {
+  const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
+  expect_recovered(chain, {1.0469634549364839, -1.6647826946422717, 1.631455433552631, -2.7145206529352741, 2.567617817491584,
+                           1.7505595985547453});
+  expect_recovered(chain, {-0.35661326099923718, 1.6218906481103508, -1.435561695166276, 2.8427429571840488, -2.73737895636493,
+                           2.717056279081123});
+}
+
+TEST(AnalyticIk, DISABLED_SphericalWristPrecisionAtTenToTheSix) {
+  expect_recovered(testing::abb_irb6640(), {2.565125829596667, 2.1784534595310143, 1.7442027598209684, -1.2371096416500587,
+                                            -0.0010193461385461511, 2.542921501272037});
+  expect_recovered(testing::ur10e(), {0.79550211916179192, 0.081528709381517572, -3.1025192361107496, -0.48995297551697314,
+                                      -1.7766982119133321, -2.9535425524234951});
+}
+
 // ---- an independent oracle: EAIK's solution counts (tests/data/analytic_ik_reference.txt) ----
 
 TEST(AnalyticIk, SolutionCountsMatchEaik) {
