@@ -118,10 +118,9 @@ bool within_translation_range(const Eigen::DenseBase<Derived>& value) {
 //! A translation whose coordinates are finite and at most numeric_range::max_translation.
 template <typename Derived>
 void require_translation(const Eigen::DenseBase<Derived>& value, std::string_view argument) {
+  if (within_translation_range(value)) return;
   require_finite(value, argument);
-  using Scalar = typename Derived::Scalar;
-  require(value.derived().cwiseAbs().maxCoeff() <= Scalar(numeric_range::max_translation), argument, value,
-          "must have coordinates within ±1e12 m (dispkin's numeric range)");
+  throw std::invalid_argument(describe(argument, value, "must have coordinates within ±1e12 m (dispkin's numeric range)"));
 }
 
 }  // namespace dispkin

@@ -112,18 +112,9 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& message
   }
   console_bridge::restorePreviousOutputHandler();
   messages = capture.messages;
-  if (!model) return model;
-  // urdfdom links own their children (shared_ptr) and point to their parent weakly, so a URDF
-  // whose joints form a cycle would leave a ring of links that own each other and are never
-  // freed. require_acyclic_joints refuses such documents first; should urdfdom ever read a
-  // graph differently, the handle we return still cuts every child list when it is released.
-  return urdf::ModelInterfaceSharedPtr(model.get(), [owner = model](urdf::ModelInterface*) mutable {
-    for (auto& named_link : owner->links_) {
-      named_link.second->child_links.clear();
-      named_link.second->child_joints.clear();
-    }
-    owner.reset();
-  });
+  // No cycle reaches urdfdom (require_acyclic_joints reads the same text with the same
+  // parser), so its links, which own their children, are freed with the model.
+  return model;
 }
 
 std::string joint_label(const urdf::Joint& joint) { return "joint \"" + joint.name + "\""; }
@@ -261,8 +252,9 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
   const urdf::LinkConstSharedPtr tip = urdf->getLink(tip_link);
   require(tip != nullptr, "tip_link", tip_link, "is not a link of robot \"" + urdf->getName() + "\"");
 
-  // The path tip → base through the parent joints, then reversed. urdfdom accepts a joint
-  // whose parent is its own child (or a longer cycle), so the walk stops at a repeated link.
+  // The path tip → base through the parent joints, then reversed. Cycles were refused before
+  // urdfdom parsed the text (which accepts some); the walk still stops at a repeated link, so
+  // it cannot run forever whatever urdfdom builds.
   std::vector<urdf::LinkConstSharedPtr> path{tip};
   std::set<std::string> visited{tip_link};
   while (path.back()->name != base_link) {
