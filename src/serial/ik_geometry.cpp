@@ -131,6 +131,19 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
   return g;
 }
 
+Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept {
+  if (geometry.layout == PositionLayout::parallel_23) {
+    // e₂e₃ keeps the component along ω₂: ω₂ · e₁⁻¹ y = ω₂ · x (subproblem 4 in −q₁).
+    const Eigen::Vector3d& p1 = chain.points[0];
+    return subproblem4_harmonic(chain.axes[1], chain.axes[0], y - p1, chain.axes[1].dot(x - p1));
+  }
+  // e₁e₂ fix the shoulder o: ‖e₃ x − o‖ = ‖y − o‖ (subproblem 3 in q₃).
+  const Eigen::Vector3d& o = geometry.shoulder;
+  const Eigen::Vector3d& p3 = chain.points[2];
+  return subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
+}
+
 PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
                                  const Eigen::Vector3d& y) noexcept {
   PositionSolutions out;
@@ -141,9 +154,9 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
   const Eigen::Vector3d& p2 = chain.points[1];
   const Eigen::Vector3d& p3 = chain.points[2];
   if (geometry.layout == PositionLayout::parallel_23) {
-    // e₂e₃ keeps the component along ω₂: ω₂ · e₁⁻¹ y = ω₂ · x (subproblem 4 in −q₁); then the
-    // distance to axis 2 fixes q₃ (subproblem 3) and q₂ turns it into place (subproblem 1).
-    const Angles q1 = subproblem4(w2, w1, y - p1, w2.dot(x - p1));
+    // q₁ by subproblem 4 (first_positioning_harmonic); then the distance to axis 2 fixes q₃
+    // (subproblem 3) and q₂ turns it into place (subproblem 1).
+    const Angles q1 = solve_harmonic(first_positioning_harmonic(chain, geometry, x, y));
     out.margin.fill(q1.margin);
     if (!q1.exists) return out;
     for (int l1 = 0; l1 < 2; ++l1) {
@@ -162,9 +175,9 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
       }
     }
   } else if (geometry.layout == PositionLayout::intersecting_12) {
-    // e₁e₂ fix the shoulder o: ‖e₃ x − o‖ = ‖y − o‖ (subproblem 3), then subproblem 2.
+    // q₃ by subproblem 3 (first_positioning_harmonic), then q₁, q₂ by subproblem 2.
     const Eigen::Vector3d& o = geometry.shoulder;
-    const Angles q3 = subproblem3(w3, x - p3, o - p3, (y - o).squaredNorm());
+    const Angles q3 = solve_harmonic(first_positioning_harmonic(chain, geometry, x, y));
     out.margin.fill(q3.margin);
     if (!q3.exists) return out;
     for (int l3 = 0; l3 < 2; ++l3) {

@@ -63,6 +63,12 @@ struct PositionSolutions {
 PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
                                  const Eigen::Vector3d& y) noexcept;
 
+//! The positioning stage's first subproblem (q₁ by subproblem 4 for parallel_23, q₃ by
+//! subproblem 3 for intersecting_12; the layout must be one of them): no branch exists where
+//! its discriminant is negative.
+Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept;
+
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
 struct PoseError {
   double position = 0.0;

@@ -27,11 +27,14 @@
 // coarser sampling showed.
 // Every root becomes a full q (q₄, q₅ by subproblem 1), is polished by Newton on the full pose
 // and kept only if forward kinematics reproduces the pose to 1e-10.
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
 #include "ik_internal.hpp"
+#include "trig_polynomial.hpp"
 
 namespace dispkin {
 namespace serial {
@@ -113,6 +116,20 @@ class OffsetWristSearch {
   bool evaluate(double theta, std::size_t branch, double& value) const {
     double margin;
     return evaluate(theta, branch, value, margin);
+  }
+
+  // Where the positioning stage's first subproblem stops or starts being solvable, sorted in
+  // [−π, π): beyond these no branch exists. Its discriminant A² + B² − C² is a trigonometric
+  // polynomial of degree 2 in θ (A, B, C are affine in the wrist point, which turns with θ), so
+  // these are exact however narrow the gap or the island between them; a sampling of the
+  // margin alone misses a gap narrower than its spacing where the margin drops steeply (the
+  // wrist circle grazing axis 1: two of the 10⁶-case round trips on the Jaco2 did).
+  std::vector<double> first_subproblem_ends() const {
+    const TrigPolynomial discriminant = TrigPolynomial::interpolate([&](double theta) {
+      const Eigen::Vector3d y = wrist_point_.at({std::cos(theta), std::sin(theta)});
+      return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y).discriminant();
+    });
+    return sign_changes(discriminant, 1e-10);
   }
 
   // The positioning margin of branch b (≥ 0 where it exists).
@@ -461,12 +478,34 @@ void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
                                                  const Posed& pose, int samples) {
   const OffsetWristSearch search(chain, geometry, pose);
-  const int n = samples;
-  const double step = 2.0 * pi / n;
+  // The samples: `samples` equally spaced, and one inside every interval between two ends of
+  // the first subproblem's solvability that none of them falls in (a gap the equal spacing
+  // would straddle, an island it would miss); the runs, gaps and islands below then see it.
+  const double step = 2.0 * pi / samples;
+  std::vector<double> thetas(static_cast<std::size_t>(samples));
+  for (int j = 0; j < samples; ++j) thetas[static_cast<std::size_t>(j)] = -pi + j * step;
+  const std::vector<double> ends = search.first_subproblem_ends();
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const double lo = ends[i];
+    const double hi = i + 1 < ends.size() ? ends[i + 1] : ends.front() + 2.0 * pi;
+    const double first_sample_after = -pi + (std::floor((lo + pi) / step) + 1.0) * step;
+    if (first_sample_after >= hi) thetas.push_back(wrap_angle(0.5 * (lo + hi)));
+  }
+  std::sort(thetas.begin(), thetas.end());
+  if (thetas.back() == pi) {  // wrap_angle's (−π, π] against the samples' [−π, π)
+    thetas.pop_back();
+    thetas.insert(thetas.begin(), -pi);
+  }
+  const int n = static_cast<int>(thetas.size());
   std::vector<Sample> table(static_cast<std::size_t>(n));
-  for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(-pi + j * step);
-  auto at = [&](int j) -> const Sample& { return table[static_cast<std::size_t>(((j % n) + n) % n)]; };
-  auto theta_of = [&](int j) { return -pi + j * step; };  // j beyond [0, n): the next / previous turn
+  for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(thetas[static_cast<std::size_t>(j)]);
+  auto wrapped = [&](int j) { return static_cast<std::size_t>(((j % n) + n) % n); };
+  auto at = [&](int j) -> const Sample& { return table[wrapped(j)]; };
+  // j beyond [0, n): the same sample a turn later / earlier.
+  auto theta_of = [&](int j) {
+    const int turns = j >= 0 ? j / n : -((n - 1 - j) / n);
+    return thetas[wrapped(j)] + 2.0 * pi * turns;
+  };
 
   SolutionList out;
   std::vector<Point> run;

@@ -105,8 +105,19 @@ struct Angles {
 //! candidate admitted this way is only kept if the full pose error is ≤ 1e-10 afterwards.
 constexpr double tangency_slack = 1e-9;
 
-//! A cos θ + B sin θ = C. `scale` is the size of A, B, C for a well-posed problem (used to
-//! tell a degenerate A = B = 0 from a small one).
+//! The harmonic equation A cos θ + B sin θ = C; `scale` is the size of A, B, C for a
+//! well-posed problem (it tells a degenerate A = B = 0 from a small one).
+struct Harmonic {
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+  double scale = 1.0;
+  //! A² + B² − C²: ≥ 0 exactly where the equation has a solution. Where A, B, C are affine in
+  //! cos φ, sin φ of some parameter φ, this is a trigonometric polynomial of degree 2 in φ.
+  double discriminant() const noexcept { return a * a + b * b - c * c; }
+};
+
+//! Solves A cos θ + B sin θ = C.
 inline Angles solve_harmonic(double a, double b, double c, double scale) noexcept {
   Angles out;
   const double r = std::sqrt(a * a + b * b);
@@ -130,6 +141,8 @@ inline Angles solve_harmonic(double a, double b, double c, double scale) noexcep
   return out;
 }
 
+inline Angles solve_harmonic(const Harmonic& h) noexcept { return solve_harmonic(h.a, h.b, h.c, h.scale); }
+
 //! Subproblem 1: the θ with R(k, θ) p = q (least squares in the plane normal to k), as
 //! cosine and sine. If p or q lies on the axis θ is free; 0 is returned.
 inline CosSin subproblem1_cs(const Eigen::Vector3d& k, const Eigen::Vector3d& p, const Eigen::Vector3d& q) noexcept {
@@ -149,24 +162,26 @@ inline double subproblem1(const Eigen::Vector3d& k, const Eigen::Vector3d& p, co
 
 //! Subproblem 3 (distance): θ with ‖R(k, θ) u − v‖² = δ², u and v relative to a point on the
 //! axis (the distance is given squared: the callers have it so, and it enters squared).
-inline Angles subproblem3(const Eigen::Vector3d& k, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
-                          double delta_squared) noexcept {
+inline Harmonic subproblem3_harmonic(const Eigen::Vector3d& k, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                                     double delta_squared) noexcept {
   const double ku = k.dot(u);
   const Eigen::Vector3d up = u - ku * k;
-  const double a = v.dot(up);
-  const double b = v.dot(k.cross(u));
   const double u2 = u.squaredNorm(), v2 = v.squaredNorm();
-  const double c = 0.5 * (u2 + v2 - delta_squared) - ku * k.dot(v);
-  return solve_harmonic(a, b, c, std::sqrt(u2 * v2) + 1e-300);
+  return {v.dot(up), v.dot(k.cross(u)), 0.5 * (u2 + v2 - delta_squared) - ku * k.dot(v), std::sqrt(u2 * v2) + 1e-300};
+}
+inline Angles subproblem3(const Eigen::Vector3d& k, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                          double delta_squared) noexcept {
+  return solve_harmonic(subproblem3_harmonic(k, u, v, delta_squared));
 }
 
 //! Subproblem 4 (projection, IK-Geo): θ with h · R(k, θ) p = d.
-inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p, double d) noexcept {
+inline Harmonic subproblem4_harmonic(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p,
+                                     double d) noexcept {
   const double kp = k.dot(p);
-  const double a = h.dot(p - kp * k);
-  const double b = h.dot(k.cross(p));
-  const double c = d - kp * k.dot(h);
-  return solve_harmonic(a, b, c, std::sqrt(h.squaredNorm() * p.squaredNorm()) + 1e-300);
+  return {h.dot(p - kp * k), h.dot(k.cross(p)), d - kp * k.dot(h), std::sqrt(h.squaredNorm() * p.squaredNorm()) + 1e-300};
+}
+inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p, double d) noexcept {
+  return solve_harmonic(subproblem4_harmonic(h, k, p, d));
 }
 
 //! Subproblem 2's two solutions (θ₁, θ₂) labelled by the sign of the out-of-plane component.
