@@ -1,9 +1,9 @@
 // Recovery sweep of the offset-wrist search (issue 6: ≥ 99.99 % of round trips recovered).
 // Round trips on the Kinova Jaco2 j2n6s300: q uniform in (−π, π]⁶, forward, offset-wrist
 // inverse with the given number of samples; "found" exactly as in the RoundTripJaco2 test (the
-// original q within max(1e-8, 1e-15 / σ_min(J)) modulo 2π), every returned solution checked by
-// forward kinematics to ik_pose_tolerance, and every `dense_every`-th case compared with a
-// 3600-sample search (solution count). Seed and count from DISPKIN_TEST_SEED / DISPKIN_TEST_COUNT.
+// original q within recovery_bound, max(1e-8, 8 u L / σ_min(J)), modulo 2π), every returned
+// solution checked by forward kinematics to ik_pose_tolerance, and every `dense_every`-th case
+// compared with a 3600-sample search (solution count). Seed and count from DISPKIN_TEST_SEED / DISPKIN_TEST_COUNT.
 //
 //   DISPKIN_TEST_SEED=1 DISPKIN_TEST_COUNT=20000 build/ik/benchmarks/dispkin_ik_recovery 180 100
 //
@@ -16,6 +16,7 @@
 
 #include <dispkin/serial/analytic_ik.hpp>
 
+#include "../tests/cpp/ik_recovery_bound.hpp"
 #include "../tests/cpp/random_cases.hpp"
 #include "../tests/cpp/serial_test_chains.hpp"
 
@@ -34,23 +35,6 @@ double pose_error(const serial::RevoluteChain& chain, const Eigen::VectorXd& q, 
   const Posed t = serial::forward(chain, q);
   const Eigen::Quaterniond d = pose.quaternion().conjugate() * t.quaternion();
   return std::max((t.translation() - pose.translation()).norm(), 2.0 * std::atan2(d.vec().norm(), std::abs(d.w())));
-}
-
-// The space Jacobian of the product of exponentials (its smallest singular value sets how well
-// a pose known to rounding fixes q).
-Eigen::Matrix<double, 6, 6> jacobian(const serial::RevoluteChain& chain, const Eigen::VectorXd& q) {
-  Eigen::Matrix<double, 6, 6> j;
-  Posed t;
-  const Posed tip = serial::forward(chain, q);
-  for (int i = 0; i < 6; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Eigen::Vector3d w = t.quaternion() * chain.axes[k];
-    const Eigen::Vector3d p = t * chain.points[k];
-    j.block<3, 1>(0, i) = w.cross(tip.translation() - p);
-    j.block<3, 1>(3, i) = w;
-    t = t * serial::rotation_about_line(chain.axes[k], chain.points[k], q(i));
-  }
-  return j;
 }
 
 }  // namespace
@@ -75,10 +59,10 @@ int main(int argc, char** argv) {
       nearest = std::min(nearest, joint_gap(s, q));
       if (!(pose_error(chain, s, pose) <= serial::ik_pose_tolerance)) ++inexact;
     }
-    const double sigma_min = Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(jacobian(chain, q)).singularValues()(5);
-    if (!(nearest <= std::max(1e-8, 1e-15 / sigma_min))) {
+    const double bound = dispkin::testing::recovery_bound(chain, q);
+    if (!(nearest <= bound)) {
       ++missed;
-      std::printf("missed case %d: nearest %.3g, sigma_min %.3g, q =", n, nearest, sigma_min);
+      std::printf("missed case %d: nearest %.3g, bound %.3g, q =", n, nearest, bound);
       for (int i = 0; i < 6; ++i) std::printf(" %.17g", q(i));
       std::printf("\n");
     }

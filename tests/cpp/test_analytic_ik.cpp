@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "dispkin/serial/analytic_ik.hpp"
+#include "ik_recovery_bound.hpp"
 #include "random_cases.hpp"
 #include "serial_test_chains.hpp"
 
@@ -117,41 +118,6 @@ TEST(AnalyticIk, OtherChainsAreGeneral) {
   EXPECT_EQ(recognise(skew), IkFamily::general);
 }
 
-// The space Jacobian of the product of exponentials (for constructing singular q).
-Eigen::Matrix<double, 6, 6> jacobian(const RevoluteChain& chain, const Eigen::VectorXd& q) {
-  Eigen::Matrix<double, 6, 6> j;
-  Posed t;
-  const Posed tip = serial::forward(chain, q);
-  for (int i = 0; i < 6; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Eigen::Vector3d w = t.quaternion() * chain.axes[k];
-    const Eigen::Vector3d p = t * chain.points[k];
-    j.block<3, 1>(0, i) = w.cross(tip.translation() - p);
-    j.block<3, 1>(3, i) = w;
-    t = t * serial::rotation_about_line(chain.axes[k], chain.points[k], q(i));
-  }
-  return j;
-}
-
-// The sum of the chain's link lengths (joint point to joint point, then to the tip): a bound
-// on its reach, and the size of the numbers its forward kinematics rounds.
-double link_length_sum(const RevoluteChain& chain) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < chain.points.size(); ++i) sum += (chain.points[i + 1] - chain.points[i]).norm();
-  return sum + (chain.tip_at_zero.translation() - chain.points.back()).norm() + chain.points.front().norm();
-}
-
-// How closely a pose fixes q. Forward kinematics rounds the tip to a few ulps of the arm's size:
-// ε = 8 u L (u = 2⁻⁵², L = link_length_sum; the polish stops at residuals of 1e-15 m on the
-// 3.5 m IRB 6640). A pose error ε moves q by up to ε / σ_min(J(q)) along J's most singular
-// direction, so "q is among the solutions" means within max(1e-8, ε / σ_min): 1e-8 rad except
-// where q is within ~1e-7 of a singularity. Such cases are counted and must stay rare (≤ 0.1 %).
-double recovery_bound(const RevoluteChain& chain, const Eigen::VectorXd& q) {
-  const double pose_precision = 8.0 * std::numeric_limits<double>::epsilon() * link_length_sum(chain);
-  const double sigma_min = Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(jacobian(chain, q)).singularValues()(5);
-  return std::max(1e-8, pose_precision / sigma_min);
-}
-
 // The core sweep: forward(q) → inverse contains q (within recovery_bound) and every solution
 // reproduces the pose.
 void round_trip(const testing::NamedChain& named, int count, unsigned long salt) {
@@ -167,7 +133,7 @@ void round_trip(const testing::NamedChain& named, int count, unsigned long salt)
     expect_valid(named.chain, solutions, pose, named.name + " case " + std::to_string(n));
     const double gap = nearest(solutions, q);
     worst_gap = std::max(worst_gap, gap);
-    const double bound = recovery_bound(named.chain, q);
+    const double bound = testing::recovery_bound(named.chain, q);
     if (bound > 1e-8) ++ill_conditioned;
     if (!(gap <= bound)) {
       ++missed;
@@ -202,7 +168,7 @@ void expect_recovered(const RevoluteChain& chain, const std::vector<double>& val
   const Posed pose = serial::forward(chain, q);
   const auto solutions = analytic_inverse(chain, recognise(chain), pose);
   expect_valid(chain, solutions, pose, "known failure");
-  EXPECT_LE(nearest(solutions, q), bound > 0.0 ? bound : recovery_bound(chain, q)) << "q = " << q.transpose();
+  EXPECT_LE(nearest(solutions, q), bound > 0.0 ? bound : testing::recovery_bound(chain, q)) << "q = " << q.transpose();
 }
 
 TEST(AnalyticIk, Jaco2BranchesOfTheTenToTheSixSweep) {
@@ -411,7 +377,7 @@ TEST(AnalyticIk, OffsetWristTouchingRootsAreFound) {
     auto det = [&](double q5) {
       Eigen::VectorXd r = q;
       r(4) = q5;
-      return jacobian(chain, r).determinant();
+      return testing::space_jacobian(chain, r).determinant();
     };
     // A sign change of det J along q₅ away from the positioning stage's own boundaries.
     const double a = q(4), b = q(4) + 0.3;
