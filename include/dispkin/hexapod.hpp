@@ -150,6 +150,10 @@ class Hexapod : public Kinematics {
   //! that keeps the group within its speed keeps every leg within its limit.
   void add_leg_speed_group(MetricSetd& set, int group) const;
 
+  // Leg speeds along a path (rule (b)): leg_rate_bounds, leg_section_lengths and joint_metric
+  // sample path sections, so they are part of the umbrella library dispkin::dispkin
+  // (src/hexapod_along_path.cpp); dispkin::hexapod alone has the rest of this class.
+
   //! The patent's leg-speed rule (b), the joint-space metric: upper bounds r_i ≥ max over
   //! τ ∈ [0, 1] of |dℓ_i/dτ| along one section (m per unit τ), dℓ_i/dτ = (leg_jacobian row i) ·
   //! (section_twist per unit τ), exact at every τ.
