@@ -74,9 +74,10 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
 
   // Positioning stage: axes 2 ∥ 3 as distinct lines with axis 1 crossing their direction, or a
   // shoulder point 1 ∩ 2 off axis 3.
+  g.axes_12_meet = meet(a1, a2, tolerance, g.shoulder);
   if (parallel(a2, a3, tolerance) && !parallel(a1, a2, tolerance) && parallel_gap(a2, a3) > tolerance) {
     g.layout = PositionLayout::parallel_23;
-  } else if (meet(a1, a2, tolerance, g.shoulder) && distance_to_line(g.shoulder, a3) > tolerance) {
+  } else if (g.axes_12_meet && distance_to_line(g.shoulder, a3) > tolerance) {
     g.layout = PositionLayout::intersecting_12;
   }
 
@@ -142,6 +143,17 @@ Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeome
   const Eigen::Vector3d& o = geometry.shoulder;
   const Eigen::Vector3d& p3 = chain.points[2];
   return subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
+}
+
+bool elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                    const Eigen::Vector3d& y, Harmonic& out) noexcept {
+  if (geometry.layout != PositionLayout::parallel_23 || !geometry.axes_12_meet) return false;
+  // q₃ keeps ‖e₃ x − o‖ = ‖e₁⁻¹ y − o‖ for any point o of axis 2; o on axis 1 too makes the
+  // right side ‖y − o‖, whatever q₁ is.
+  const Eigen::Vector3d& o = geometry.shoulder;
+  const Eigen::Vector3d& p3 = chain.points[2];
+  out = subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
+  return true;
 }
 
 PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,

@@ -27,7 +27,8 @@ enum class PositionLayout { none, parallel_23, intersecting_12 };
 //! What the solvers need to know about a 6R chain's axes (base frame, q = 0).
 struct ChainGeometry {
   PositionLayout layout = PositionLayout::none;
-  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();  //!< axes 1 ∩ 2 (intersecting_12)
+  bool axes_12_meet = false;                           //!< axes 1 and 2 meet (intersecting_12 always)
+  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();  //!< axes 1 ∩ 2
   bool wrist_meets = false;                            //!< axes 4, 5, 6 meet in one point
   Eigen::Vector3d wrist_centre = Eigen::Vector3d::Zero();
   bool axes_45_meet = false;                           //!< axes 4 and 5 meet (offset wrist)
@@ -68,6 +69,12 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
 //! its discriminant is negative.
 Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
                                     const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept;
+
+//! The elbow subproblem (q₃ by subproblem 3) of the parallel_23 layout as an equation of x and
+//! y alone, which it is where axes 1 and 2 meet (the Jaco2); false (and `out` untouched) for
+//! other chains, whose elbow equation depends on q₁'s branch.
+bool elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                    const Eigen::Vector3d& y, Harmonic& out) noexcept;
 
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
 struct PoseError {

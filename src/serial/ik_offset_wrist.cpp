@@ -118,18 +118,35 @@ class OffsetWristSearch {
     return evaluate(theta, branch, value, margin);
   }
 
-  // Where the positioning stage's first subproblem stops or starts being solvable, sorted in
-  // [−π, π): beyond these no branch exists. Its discriminant A² + B² − C² is a trigonometric
-  // polynomial of degree 2 in θ (A, B, C are affine in the wrist point, which turns with θ), so
-  // these are exact however narrow the gap or the island between them; a sampling of the
-  // margin alone misses a gap narrower than its spacing where the margin drops steeply (the
-  // wrist circle grazing axis 1: two of the 10⁶-case round trips on the Jaco2 did).
-  std::vector<double> first_subproblem_ends() const {
-    const TrigPolynomial discriminant = TrigPolynomial::interpolate([&](double theta) {
-      const Eigen::Vector3d y = wrist_point_.at({std::cos(theta), std::sin(theta)});
-      return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y).discriminant();
+  // Where the positioning stage's first subproblem (and, where it is an equation of θ alone, the
+  // elbow's) stops or starts being solvable, sorted in [−π, π): between two of these the
+  // branches that exist do not change. Each discriminant A² + B² − C² is a trigonometric
+  // polynomial of degree 2 in θ (A, B, C are affine in the wrist point, or in its squared
+  // distance from the shoulder, and the wrist point turns with θ), so these are exact however
+  // narrow the gap or island between them. A sampling of the margins alone misses a gap or an
+  // island narrower than its spacing where a margin moves steeply (the wrist circle grazing
+  // axis 1): two of the 10⁶ round trips on the Jaco2 did at 180 samples, one of 10⁵ at 120.
+  std::vector<double> positioning_ends() const {
+    auto ends_of = [&](auto harmonic) {
+      return sign_changes(TrigPolynomial::interpolate([&](double theta) {
+                            return harmonic(wrist_point_.at({std::cos(theta), std::sin(theta)})).discriminant();
+                          }),
+                          1e-10);
+    };
+    std::vector<double> ends = ends_of([&](const Eigen::Vector3d& y) {
+      return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y);
     });
-    return sign_changes(discriminant, 1e-10);
+    Harmonic elbow;
+    if (elbow_harmonic(chain_, geometry_, geometry_.point_45, wrist_point_.a, elbow)) {
+      const std::vector<double> more = ends_of([&](const Eigen::Vector3d& y) {
+        Harmonic h;
+        elbow_harmonic(chain_, geometry_, geometry_.point_45, y, h);
+        return h;
+      });
+      ends.insert(ends.end(), more.begin(), more.end());
+      std::sort(ends.begin(), ends.end());
+    }
+    return ends;
   }
 
   // The positioning margin of branch b (≥ 0 where it exists).
@@ -478,13 +495,13 @@ void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
                                                  const Posed& pose, int samples) {
   const OffsetWristSearch search(chain, geometry, pose);
-  // The samples: `samples` equally spaced, and one inside every interval between two ends of
-  // the first subproblem's solvability that none of them falls in (a gap the equal spacing
-  // would straddle, an island it would miss); the runs, gaps and islands below then see it.
+  // The samples: `samples` equally spaced, and one inside every interval between two
+  // positioning ends that none of them falls in (a gap the equal spacing would straddle, an
+  // island it would miss); the runs, gaps and islands below then see it.
   const double step = 2.0 * pi / samples;
   std::vector<double> thetas(static_cast<std::size_t>(samples));
   for (int j = 0; j < samples; ++j) thetas[static_cast<std::size_t>(j)] = -pi + j * step;
-  const std::vector<double> ends = search.first_subproblem_ends();
+  const std::vector<double> ends = search.positioning_ends();
   for (std::size_t i = 0; i < ends.size(); ++i) {
     const double lo = ends[i];
     const double hi = i + 1 < ends.size() ? ends[i + 1] : ends.front() + 2.0 * pi;
