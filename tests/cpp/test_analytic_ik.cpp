@@ -181,6 +181,25 @@ TEST(AnalyticIk, Jaco2BranchesOfTheTenToTheSixSweep) {
                    1e-8);
 }
 
+// An island of the positioning stage 0.0105 rad wide between an end of the elbow subproblem and
+// one of the shoulder's, with the root 5e-4 rad inside: 120 equally spaced samples (0.052 rad
+// apart) put none in it and missed the branch (benchmarks/ik_recovery.cpp, seed 4, case 19031)
+// until the elbow's ends were found exactly too.
+TEST(AnalyticIk, Jaco2IslandBetweenElbowAndShoulderEnds) {
+  const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
+  Eigen::VectorXd q(6);
+  q << 1.1101388494471571, -1.5565864857674949, -1.5374292563295284, 1.7241341869531084, 1.4674326162968603,
+      -2.0135446598924558;
+  const Posed pose = serial::forward(chain, q);
+  for (int samples : {60, 120, 180}) {
+    serial::OffsetWristOptions options;
+    options.samples = samples;
+    const auto solutions = serial::offset_wrist_inverse(chain, pose, options);
+    expect_valid(chain, solutions, pose, "island");
+    EXPECT_LE(nearest(solutions, q), 1e-8) << samples << " samples";
+  }
+}
+
 TEST(AnalyticIk, NearSingularCasesOfTheTenToTheSixSweep) {
   expect_recovered(testing::abb_irb6640(), {2.565125829596667, 2.1784534595310143, 1.7442027598209684, -1.2371096416500587,
                                             -0.0010193461385461511, 2.542921501272037});
