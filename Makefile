@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python stubs test test-cpp test-python demo bench sanitize sweep fuzz clean
+.PHONY: all deps build python stubs test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz clean
 
 all: build
 
@@ -53,13 +53,34 @@ demo: python
 # ASan, frees with plain free(): KDL solvers whose Eigen members are created in our code then
 # fail with "free on address which was not malloc()-ed". ASan's malloc is 16-byte aligned on
 # x86-64 like glibc's, so keeping Eigen on plain malloc is correct and matches the library.
+SANITIZE_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DEIGEN_MALLOC_ALREADY_ALIGNED=1
 SANITIZE_BUILD ?= build/sanitize
 sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON -DDISPKIN_SWEEP_COUNT=1000 \
-	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DEIGEN_MALLOC_ALREADY_ALIGNED=1"
+	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)"
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  DISPKIN_TEST_COUNT=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
+
+# The Python suite against a module built with the same sanitizers: the extension, with the
+# library inside it, is compiled with ASan + UBSan into SANITIZE_PY (pip --target, no
+# dependencies: numpy and the rest come from the venv), and the venv's interpreter runs pytest
+# with that directory first on its path and the sanitizer runtimes preloaded (an interpreter
+# built without ASan cannot load an ASan library otherwise). Leak detection is off: CPython
+# keeps its own objects alive until exit by design.
+SANITIZE_PY ?= build/sanitize-python
+sanitize-python: deps
+	rm -rf $(SANITIZE_PY)/site
+	$(VENV)/bin/python -m pip install -q --no-build-isolation --no-deps --target $(SANITIZE_PY)/site \
+	  -C build-dir=$(SANITIZE_PY)/build -C cmake.build-type=RelWithDebInfo \
+	  -C cmake.define.CMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" .
+	PYTHONPATH=$(abspath $(SANITIZE_PY)/site) \
+	  LD_PRELOAD="$$(gcc -print-file-name=libasan.so) $$(gcc -print-file-name=libubsan.so)" \
+	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
+	  $(VENV)/bin/python -m pytest -q -p no:cacheprovider tests/python
+
+# Everything: the README's tests, both sanitizer runs and the 10⁷ sweeps (hours).
+check-full: test sanitize sanitize-python sweep
 
 # libFuzzer targets (tests/fuzz, clang from Debian via scripts/install-fuzz-deps.sh, which only
 # this target calls): built with ASan + UBSan in FUZZ_BUILD, each run for FUZZ_SECONDS from its

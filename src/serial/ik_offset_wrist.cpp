@@ -22,9 +22,12 @@
 //   - a sampled local extremum of |f_b| that may touch zero, or an interval across which the
 //     neighbouring slope would carry f_b through zero, is refined (golden section); if it
 //     crosses zero, it brackets two roots, if it touches, it is a candidate itself.
-// The default 180 samples per turn recovered the original q in every one of 10⁵ random round
-// trips on the Jaco2 (benchmarks/RESULTS.md); each refinement above was added for a miss a
-// coarser sampling showed.
+// Besides the equally spaced samples, every gap or island of the positioning stage gets one:
+// the first subproblem's ends (and the elbow's where it does not depend on q₁) are the sign
+// changes of trigonometric polynomials of degree 2 in θ, found exactly (positioning_ends), so a
+// gap or island is not missed however steeply a margin moves next to it.
+// Each refinement above was added for a miss a coarser sampling or a larger sweep showed
+// (benchmarks/RESULTS.md).
 // Every root becomes a full q (q₄, q₅ by subproblem 1), is polished by Newton on the full pose
 // and kept only if forward kinematics reproduces the pose to 1e-10.
 #include <algorithm>
@@ -195,29 +198,41 @@ class OffsetWristSearch {
   Turning axis_4_in_3_;   // R(ω₃, q₃) ω₄
 };
 
+// A bracket [a, b] of a root of f_b with the values there (of opposite signs, or a == b where the
+// root was hit exactly or the branch was left).
+struct Bracket {
+  double a, fa, b, fb;
+  double root() const noexcept { return std::abs(fa) < std::abs(fb) ? a : b; }
+};
+
 // Illinois regula falsi on [a, b] with f(a) f(b) < 0, to 1e-10 rad: Newton on the full pose
-// (offer) takes the root from there to rounding.
-double refine_root(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
+// (offer) takes the root from there to rounding. The weights the Illinois rule halves are kept
+// apart from the values, which the bracket returns.
+Bracket refine_bracket(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
+  double wa = fa, wb = fb;  // weighted values
   int side = 0;
   for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-10; ++iteration) {
-    double c = (a * fb - b * fa) / (fb - fa);
+    double c = (a * wb - b * wa) / (wb - wa);
     if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
     double fc;
-    if (!search.evaluate(c, branch, fc)) return c;  // left the branch (rounding at its end)
-    if (fc == 0.0) return c;
+    if (!search.evaluate(c, branch, fc) || fc == 0.0) return {c, 0.0, c, 0.0};  // (left the branch: rounding at its end)
     if ((fc < 0.0) == (fb < 0.0)) {
       b = c;
-      fb = fc;
-      if (side == -1) fa *= 0.5;
+      fb = wb = fc;
+      if (side == -1) wa *= 0.5;
       side = -1;
     } else {
       a = c;
-      fa = fc;
-      if (side == 1) fb *= 0.5;
+      fa = wa = fc;
+      if (side == 1) wb *= 0.5;
       side = 1;
     }
   }
-  return std::abs(fa) < std::abs(fb) ? a : b;
+  return {a, fa, b, fb};
+}
+
+double refine_root(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
+  return refine_bracket(search, branch, a, fa, b, fb).root();
 }
 
 // The value of a near-touching candidate below which Newton on the full pose decides.
@@ -285,6 +300,58 @@ double zero_reaching_slope(const std::vector<Point>& run, std::size_t i) {
   return 0.0;
 }
 
+// The roots between p0 and p1 (θ increasing) where f_b changes sign: the one regula falsi finds,
+// and more where f turns back on either side of it. Three roots in one sample interval (f
+// S-shaped through zero near an inflection: two of the 10⁷ round trips on the Jaco2) show on a
+// side of the found root as a sign change between the bracket's end and the sample, or between
+// the side's midpoint and the sample (another root in each half), or as a midpoint or sample far
+// closer to zero than a straight line from the root would be (f bends back: a golden section
+// finds whether it crosses zero before the sample).
+void roots_in_sign_change(const OffsetWristSearch& search, std::size_t b, const Point& p0, const Point& p1,
+                          SolutionList& out, int depth = 0) {
+  const Bracket k = refine_bracket(search, b, p0.theta, p0.value, p1.theta, p1.value);
+  search.offer_root(k.root(), b, out);
+  if (depth >= 3 || k.fa == 0.0 || k.fb == 0.0 || !(k.b > k.a)) return;
+  const double slope = std::abs((k.fb - k.fa) / (k.b - k.a));
+  auto ordered = [](const Point& x, const Point& y, Point& lo, Point& hi) {
+    lo = x.theta < y.theta ? x : y;
+    hi = x.theta < y.theta ? y : x;
+  };
+  auto side = [&](const Point& near, const Point& sample) {  // near: the bracket's end on this side
+    if (sample.value == 0.0 || near.theta == sample.theta) return;
+    Point lo, hi;
+    ordered(near, sample, lo, hi);
+    if ((near.value < 0.0) != (sample.value < 0.0)) {
+      roots_in_sign_change(search, b, lo, hi, out, depth + 1);
+      return;
+    }
+    Point mid{0.5 * (near.theta + sample.theta), 0.0};
+    if (!search.evaluate(mid.theta, b, mid.value)) return;
+    if ((mid.value < 0.0) != (sample.value < 0.0)) {
+      Point a, c;
+      ordered(near, mid, a, c);
+      roots_in_sign_change(search, b, a, c, out, depth + 1);
+      ordered(mid, sample, a, c);
+      roots_in_sign_change(search, b, a, c, out, depth + 1);
+      return;
+    }
+    const bool bends_back = std::abs(mid.value) < 0.25 * std::abs(sample.value) ||
+                            std::abs(sample.value) < 0.5 * slope * (hi.theta - lo.theta);
+    if (!bends_back) return;
+    const double sign = sample.value < 0.0 ? -1.0 : 1.0;
+    Point low;
+    if (!minimise(search, b, sign, lo.theta, hi.theta, low, slope)) return;
+    if (sign * low.value < 0.0) {
+      roots_in_sign_change(search, b, lo, low, out, depth + 1);
+      roots_in_sign_change(search, b, low, hi, out, depth + 1);
+    } else if (sign * low.value <= touch_tolerance) {
+      search.offer_root(low.theta, b, out);
+    }
+  };
+  side({k.a, k.fa}, p0);
+  side({k.b, k.fb}, p1);
+}
+
 // Roots of branch b along a run of points where it exists (θ increasing, the branch defined
 // between consecutive points): sign changes, exact zeros, and sampled extrema of |f| that may
 // touch or cross zero. `ends`: the first / last point is where the branch ends.
@@ -298,7 +365,7 @@ void scan(const OffsetWristSearch& search, std::size_t b, const std::vector<Poin
     const Point& p1 = run[i + 1];
     if (p0.value == 0.0) search.offer_root(p0.theta, b, out);
     if ((p0.value < 0.0) != (p1.value < 0.0) && p1.value != 0.0) {
-      search.offer_root(refine_root(search, b, p0.theta, p0.value, p1.theta, p1.value), b, out);
+      roots_in_sign_change(search, b, p0, p1, out);
     } else if (const double slope = p0.value != 0.0 && p1.value != 0.0 ? zero_reaching_slope(run, i) : 0.0) {
       // No sign change, but the slope f has next to the interval carries it through zero
       // inside: a narrow pair of roots (or a touching one) the spacing does not resolve.

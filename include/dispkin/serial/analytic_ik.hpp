@@ -75,10 +75,12 @@ void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& 
 
 //! Settings of the offset-wrist search (MATH.md §8).
 struct OffsetWristOptions {
-  //! Samples of the circle parameter q₆ over one turn (≥ 16). Between samples the search
-  //! follows branch ends, gaps and islands of the positioning stage and narrow root pairs
-  //! (MATH.md §8); 180 recovered the original q in all of 10⁵ random round trips on the Jaco2
-  //! (benchmarks/RESULTS.md), 120 missed 2.
+  //! Samples of the circle parameter q₆ over one turn (≥ 16), besides one in every gap or
+  //! island of the positioning stage that they would miss (its ends are found exactly where
+  //! they are roots of a trigonometric polynomial in q₆). Between samples the search follows
+  //! branch ends, gaps and islands and narrow root pairs (MATH.md §8); 180 recovered the
+  //! original q in all of 10⁷ random round trips on the Jaco2, 120 and 90 in all of 10⁵ and
+  //! all but one (benchmarks/RESULTS.md).
   int samples = 180;
 };
 
