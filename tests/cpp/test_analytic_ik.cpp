@@ -181,6 +181,37 @@ TEST(AnalyticIk, Jaco2BranchesOfTheTenToTheSixSweep) {
                    1e-8);
 }
 
+// The five poses the 10⁷ round trips missed before (cases 2152158, 2233083, 2587483, 2753685,
+// 3746166 of RoundTripJaco2; nearest solution 0.014 … 0.39 rad): three roots of f_b in one
+// sample interval, f S-shaped through zero, of which regula falsi found one — and, for the
+// older binary, gaps of the positioning stage. Each must be recovered at 120, 180 and 360
+// samples.
+TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
+  const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
+  const std::vector<std::vector<double>> cases = {
+      {0.059215382794880256, -0.65715182140523565, -1.5256130753906312, -0.11005356767157926, -0.079757737714965415,
+       -1.0988375218376794},
+      {2.4632691111743439, 1.7046486649293575, 1.491967472059093, 2.4256244571983858, -2.2351999482115268,
+       1.5778807858489055},
+      {1.7121701675941656, -2.2206542382013117, 2.3571557659027391, -1.4069539214973301, 1.5162552333711519,
+       -3.0800214654562561},
+      {-0.80875725882331739, -2.4933725065368426, -1.7589746054469979, 2.6066434447342353, -0.2979636934310661,
+       0.67276852944759735},
+      {-0.98214893897976197, 2.7497950269191671, 1.5641396441253086, 0.016167516444323571, -2.7664247803386819,
+       2.8620221269783146}};
+  for (const auto& values : cases) {
+    const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(values.data(), 6);
+    const Posed pose = serial::forward(chain, q);
+    for (int samples : {120, 180, 360}) {
+      serial::OffsetWristOptions options;
+      options.samples = samples;
+      const auto solutions = serial::offset_wrist_inverse(chain, pose, options);
+      expect_valid(chain, solutions, pose, "10^7 case");
+      EXPECT_LE(nearest(solutions, q), 1e-8) << samples << " samples, q = " << q.transpose();
+    }
+  }
+}
+
 // An island of the positioning stage 0.0105 rad wide between an end of the elbow subproblem and
 // one of the shoulder's, with the root 5e-4 rad inside: 120 equally spaced samples (0.052 rad
 // apart) put none in it and missed the branch (benchmarks/ik_recovery.cpp, seed 4, case 19031)
