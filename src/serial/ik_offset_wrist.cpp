@@ -207,12 +207,15 @@ struct Bracket {
 
 // Illinois regula falsi on [a, b] with f(a) f(b) < 0, to 1e-10 rad: Newton on the full pose
 // (offer) takes the root from there to rounding. The weights the Illinois rule halves are kept
-// apart from the values, which the bracket returns.
+// apart from the values, which the bracket returns. Every fourth step bisects: where f is far
+// from linear across the bracket (an end value 10³ times closer to zero than the other, next
+// to a near-touching root: one of the 10⁷ round trips on the Jaco2) the secant steps crawl,
+// and 100 of them left the bracket wide.
 Bracket refine_bracket(const OffsetWristSearch& search, std::size_t branch, double a, double fa, double b, double fb) {
   double wa = fa, wb = fb;  // weighted values
   int side = 0;
-  for (int iteration = 0; iteration < 100 && std::abs(b - a) > 1e-10; ++iteration) {
-    double c = (a * wb - b * wa) / (wb - wa);
+  for (int iteration = 0; iteration < 200 && std::abs(b - a) > 1e-10; ++iteration) {
+    double c = iteration % 4 == 3 ? 0.5 * (a + b) : (a * wb - b * wa) / (wb - wa);
     if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
     double fc;
     if (!search.evaluate(c, branch, fc) || fc == 0.0) return {c, 0.0, c, 0.0};  // (left the branch: rounding at its end)
@@ -309,9 +312,17 @@ double zero_reaching_slope(const std::vector<Point>& run, std::size_t i) {
 // finds whether it crosses zero before the sample).
 void roots_in_sign_change(const OffsetWristSearch& search, std::size_t b, const Point& p0, const Point& p1,
                           SolutionList& out, int depth = 0) {
-  const Bracket k = refine_bracket(search, b, p0.theta, p0.value, p1.theta, p1.value);
+  Bracket k = refine_bracket(search, b, p0.theta, p0.value, p1.theta, p1.value);
   search.offer_root(k.root(), b, out);
-  if (depth >= 3 || k.fa == 0.0 || k.fb == 0.0 || !(k.b > k.a)) return;
+  if (depth >= 3) return;
+  if (k.a == k.b) {
+    // Hit exactly (or the branch was left): the sides start 1e-10 rad away.
+    const double c = k.a;
+    if (!search.evaluate(c - 1e-10, b, k.fa) || !search.evaluate(c + 1e-10, b, k.fb)) return;
+    k.a = c - 1e-10;
+    k.b = c + 1e-10;
+  }
+  if (k.fa == 0.0 || k.fb == 0.0 || !(k.b > k.a)) return;
   const double slope = std::abs((k.fb - k.fa) / (k.b - k.a));
   auto ordered = [](const Point& x, const Point& y, Point& lo, Point& hi) {
     lo = x.theta < y.theta ? x : y;

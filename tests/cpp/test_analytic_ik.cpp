@@ -181,10 +181,10 @@ TEST(AnalyticIk, Jaco2BranchesOfTheTenToTheSixSweep) {
                    1e-8);
 }
 
-// The five poses the 10⁷ round trips missed before (cases 2152158, 2233083, 2587483, 2753685,
-// 3746166 of RoundTripJaco2; nearest solution 0.014 … 0.39 rad): three roots of f_b in one
-// sample interval, f S-shaped through zero, of which regula falsi found one — and, for the
-// older binary, gaps of the positioning stage. Each must be recovered at 120, 180 and 360
+// The poses the 10⁷ round trips missed before (cases 2152158, 2233083, 2587483, 2753685,
+// 3746166 and 4108447 of RoundTripJaco2; nearest solution 0.0025 … 0.39 rad): three roots of f_b
+// in one sample interval, f S-shaped through zero, of which regula falsi found one — and, for
+// the older binary, gaps of the positioning stage. Each must be recovered at 120, 180 and 360
 // samples.
 TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
   const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
@@ -198,7 +198,12 @@ TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
       {-0.80875725882331739, -2.4933725065368426, -1.7589746054469979, 2.6066434447342353, -0.2979636934310661,
        0.67276852944759735},
       {-0.98214893897976197, 2.7497950269191671, 1.5641396441253086, 0.016167516444323571, -2.7664247803386819,
-       2.8620221269783146}};
+       2.8620221269783146},
+      // Case 4108447 of the second 10⁷ run: a near-touching root (f ≈ −2e-15 at its maximum)
+      // next to a sample 10³ times closer to zero than the next one; regula falsi crawled
+      // (now every fourth step bisects) and then hit a root exactly, which skipped the sides.
+      {-1.5681703989936542, -2.3553785686988071, 2.0752463518264284, 3.0481359577694818, -0.67308542511759883,
+       0.28191640016698383}};
   for (const auto& values : cases) {
     const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(values.data(), 6);
     const Posed pose = serial::forward(chain, q);
