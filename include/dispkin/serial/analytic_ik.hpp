@@ -79,8 +79,8 @@ struct OffsetWristOptions {
   //! island of the positioning stage that they would miss (its ends are found exactly where
   //! they are roots of a trigonometric polynomial in q₆). Between samples the search follows
   //! branch ends, gaps and islands and narrow root pairs (MATH.md §8); 180 recovered the
-  //! original q in all of 10⁷ random round trips on the Jaco2, 120 and 90 in all of 10⁵ and
-  //! all but one (benchmarks/RESULTS.md).
+  //! original q in all of 10⁷ random round trips on the Jaco2, 120, 90 and 60 in all of 10⁵
+  //! (benchmarks/RESULTS.md).
   int samples = 180;
 };
 
