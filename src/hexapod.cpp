@@ -10,8 +10,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <type_traits>
-#include <variant>
 
 #include <Eigen/LU>
 #include <Eigen/Eigenvalues>

@@ -132,6 +132,18 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
   return g;
 }
 
+namespace {
+
+// ‖e₃ x − o‖ = ‖y − o‖ as an equation of q₃ (subproblem 3), o = axes 1 ∩ 2: e₁e₂ fix o.
+Harmonic shoulder_distance_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept {
+  const Eigen::Vector3d& o = geometry.shoulder;
+  const Eigen::Vector3d& p3 = chain.points[2];
+  return subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
+}
+
+}  // namespace
+
 Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
                                     const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept {
   if (geometry.layout == PositionLayout::parallel_23) {
@@ -139,21 +151,18 @@ Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeome
     const Eigen::Vector3d& p1 = chain.points[0];
     return subproblem4_harmonic(chain.axes[1], chain.axes[0], y - p1, chain.axes[1].dot(x - p1));
   }
-  // e₁e₂ fix the shoulder o: ‖e₃ x − o‖ = ‖y − o‖ (subproblem 3 in q₃).
-  const Eigen::Vector3d& o = geometry.shoulder;
-  const Eigen::Vector3d& p3 = chain.points[2];
-  return subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
+  return shoulder_distance_harmonic(chain, geometry, x, y);
 }
 
-bool elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
-                    const Eigen::Vector3d& y, Harmonic& out) noexcept {
-  if (geometry.layout != PositionLayout::parallel_23 || !geometry.axes_12_meet) return false;
+bool elbow_independent_of_q1(const ChainGeometry& geometry) noexcept {
+  return geometry.layout == PositionLayout::parallel_23 && geometry.axes_12_meet;
+}
+
+Harmonic elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                        const Eigen::Vector3d& y) noexcept {
   // q₃ keeps ‖e₃ x − o‖ = ‖e₁⁻¹ y − o‖ for any point o of axis 2; o on axis 1 too makes the
   // right side ‖y − o‖, whatever q₁ is.
-  const Eigen::Vector3d& o = geometry.shoulder;
-  const Eigen::Vector3d& p3 = chain.points[2];
-  out = subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
-  return true;
+  return shoulder_distance_harmonic(chain, geometry, x, y);
 }
 
 PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,

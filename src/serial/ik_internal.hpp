@@ -70,11 +70,13 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
 Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
                                     const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept;
 
-//! The elbow subproblem (q₃ by subproblem 3) of the parallel_23 layout as an equation of x and
-//! y alone, which it is where axes 1 and 2 meet (the Jaco2); false (and `out` untouched) for
-//! other chains, whose elbow equation depends on q₁'s branch.
-bool elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
-                    const Eigen::Vector3d& y, Harmonic& out) noexcept;
+//! Whether the elbow subproblem (q₃ by subproblem 3) of the parallel_23 layout is an equation
+//! of x and y alone: where axes 1 and 2 meet (the Jaco2). Elsewhere it depends on q₁'s branch.
+bool elbow_independent_of_q1(const ChainGeometry& geometry) noexcept;
+
+//! That elbow equation (only where elbow_independent_of_q1).
+Harmonic elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                        const Eigen::Vector3d& y) noexcept;
 
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
 struct PoseError {

@@ -139,12 +139,9 @@ class OffsetWristSearch {
     std::vector<double> ends = ends_of([&](const Eigen::Vector3d& y) {
       return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y);
     });
-    Harmonic elbow;
-    if (elbow_harmonic(chain_, geometry_, geometry_.point_45, wrist_point_.a, elbow)) {
+    if (elbow_independent_of_q1(geometry_)) {
       const std::vector<double> more = ends_of([&](const Eigen::Vector3d& y) {
-        Harmonic h;
-        elbow_harmonic(chain_, geometry_, geometry_.point_45, y, h);
-        return h;
+        return elbow_harmonic(chain_, geometry_, geometry_.point_45, y);
       });
       ends.insert(ends.end(), more.begin(), more.end());
       std::sort(ends.begin(), ends.end());
@@ -584,13 +581,10 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
     const double lo = ends[i];
     const double hi = i + 1 < ends.size() ? ends[i + 1] : ends.front() + 2.0 * pi;
     const double first_sample_after = -pi + (std::floor((lo + pi) / step) + 1.0) * step;
-    if (first_sample_after >= hi) thetas.push_back(wrap_angle(0.5 * (lo + hi)));
+    const double mid = 0.5 * (lo + hi);  // in [−π, 2π): into the samples' [−π, π)
+    if (first_sample_after >= hi) thetas.push_back(mid < pi ? mid : mid - 2.0 * pi);
   }
   std::sort(thetas.begin(), thetas.end());
-  if (thetas.back() == pi) {  // wrap_angle's (−π, π] against the samples' [−π, π)
-    thetas.pop_back();
-    thetas.insert(thetas.begin(), -pi);
-  }
   const int n = static_cast<int>(thetas.size());
   std::vector<Sample> table(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(thetas[static_cast<std::size_t>(j)]);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -163,22 +164,42 @@ TEST(AnalyticIk, RoundTripJaco2) {
 // 1.69e-8 rad with pose residuals of 1.6e-15 / 1.2e-15 m, at σ_min(J) = 9.5e-8 / 6.2e-8 — as
 // closely as the pose fixes q; the old bound (1e-15 / σ_min, not scaled with the arm) was too
 // tight for arms of 3.5 and 1.8 m (link_length_sum); recovery_bound allows 6.4e-8 / 5.1e-8 there.
-void expect_recovered(const RevoluteChain& chain, const std::vector<double>& values, double bound = 0.0) {
-  const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+Eigen::VectorXd joints(const std::vector<double>& values) {
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+}
+
+// q among the analytic solutions of its own pose, within recovery_bound.
+void expect_recovered(const RevoluteChain& chain, const std::vector<double>& values) {
+  const Eigen::VectorXd q = joints(values);
   const Posed pose = serial::forward(chain, q);
   const auto solutions = analytic_inverse(chain, recognise(chain), pose);
   expect_valid(chain, solutions, pose, "known failure");
-  EXPECT_LE(nearest(solutions, q), bound > 0.0 ? bound : testing::recovery_bound(chain, q)) << "q = " << q.transpose();
+  EXPECT_LE(nearest(solutions, q), testing::recovery_bound(chain, q)) << "q = " << q.transpose();
+}
+
+// q among the offset-wrist search's solutions of its own pose to 1e-8 rad, at each sample count.
+void expect_found_by_search(const RevoluteChain& chain, const Eigen::VectorXd& q, std::initializer_list<int> sample_counts) {
+  const Posed pose = serial::forward(chain, q);
+  for (int samples : sample_counts) {
+    serial::OffsetWristOptions options;
+    options.samples = samples;
+    const auto solutions = serial::offset_wrist_inverse(chain, pose, options);
+    expect_valid(chain, solutions, pose, std::to_string(samples) + " samples");
+    EXPECT_LE(nearest(solutions, q), 1e-8) << samples << " samples, q = " << q.transpose();
+  }
 }
 
 TEST(AnalyticIk, Jaco2BranchesOfTheTenToTheSixSweep) {
   const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
-  expect_recovered(chain, {1.0469634549364839, -1.6647826946422717, 1.631455433552631, -2.7145206529352741, 2.567617817491584,
-                           1.7505595985547453},
-                   1e-8);
-  expect_recovered(chain, {-0.35661326099923718, 1.6218906481103508, -1.435561695166276, 2.8427429571840488, -2.73737895636493,
-                           2.717056279081123},
-                   1e-8);
+  const int default_samples = serial::OffsetWristOptions{}.samples;
+  expect_found_by_search(chain,
+                         joints({1.0469634549364839, -1.6647826946422717, 1.631455433552631, -2.7145206529352741,
+                                 2.567617817491584, 1.7505595985547453}),
+                         {default_samples});
+  expect_found_by_search(chain,
+                         joints({-0.35661326099923718, 1.6218906481103508, -1.435561695166276, 2.8427429571840488,
+                                 -2.73737895636493, 2.717056279081123}),
+                         {default_samples});
 }
 
 // The poses the 10⁷ round trips missed before (cases 2152158, 2233083, 2587483, 2753685,
@@ -204,17 +225,7 @@ TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
       // (now every fourth step bisects) and then hit a root exactly, which skipped the sides.
       {-1.5681703989936542, -2.3553785686988071, 2.0752463518264284, 3.0481359577694818, -0.67308542511759883,
        0.28191640016698383}};
-  for (const auto& values : cases) {
-    const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(values.data(), 6);
-    const Posed pose = serial::forward(chain, q);
-    for (int samples : {120, 180, 360}) {
-      serial::OffsetWristOptions options;
-      options.samples = samples;
-      const auto solutions = serial::offset_wrist_inverse(chain, pose, options);
-      expect_valid(chain, solutions, pose, "10^7 case");
-      EXPECT_LE(nearest(solutions, q), 1e-8) << samples << " samples, q = " << q.transpose();
-    }
-  }
+  for (const auto& values : cases) expect_found_by_search(chain, joints(values), {120, 180, 360});
 }
 
 // An island of the positioning stage 0.0105 rad wide between an end of the elbow subproblem and
@@ -222,18 +233,10 @@ TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
 // apart) put none in it and missed the branch (benchmarks/ik_recovery.cpp, seed 4, case 19031)
 // until the elbow's ends were found exactly too.
 TEST(AnalyticIk, Jaco2IslandBetweenElbowAndShoulderEnds) {
-  const RevoluteChain chain = testing::kinova_jaco2_j2n6s300();
-  Eigen::VectorXd q(6);
-  q << 1.1101388494471571, -1.5565864857674949, -1.5374292563295284, 1.7241341869531084, 1.4674326162968603,
-      -2.0135446598924558;
-  const Posed pose = serial::forward(chain, q);
-  for (int samples : {60, 120, 180}) {
-    serial::OffsetWristOptions options;
-    options.samples = samples;
-    const auto solutions = serial::offset_wrist_inverse(chain, pose, options);
-    expect_valid(chain, solutions, pose, "island");
-    EXPECT_LE(nearest(solutions, q), 1e-8) << samples << " samples";
-  }
+  expect_found_by_search(testing::kinova_jaco2_j2n6s300(),
+                         joints({1.1101388494471571, -1.5565864857674949, -1.5374292563295284, 1.7241341869531084,
+                                 1.4674326162968603, -2.0135446598924558}),
+                         {60, 120, 180});
 }
 
 TEST(AnalyticIk, NearSingularCasesOfTheTenToTheSixSweep) {
