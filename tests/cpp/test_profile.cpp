@@ -402,6 +402,94 @@ TEST(Profile, OverflowingDurationsAreRefused) {
   EXPECT_TRUE(std::isfinite(Profile::scurve(1.0, 1.0, 1e-308, 1e-308).duration()));
 }
 
+// A law in other units of length and time is the same law: with S, v_max, a_max, j_max and the
+// boundary velocities in units 2^l m and 2^t s, every phase duration is 2^t times and every
+// state 2^(l − k t) times the first law's (k = 0 … 3 for s, v, a, j), exactly, as long as all of
+// them are normal doubles (the planning computes in units where S and v_max lie in [1, 2)).
+::testing::AssertionResult same_law_in_units(const Profile& p, const Profile& q, int l, int t) {
+  if (p.phase_count() != q.phase_count()) return ::testing::AssertionFailure() << "phase counts differ";
+  auto same = [&](const ProfileState& x, const ProfileState& y) {
+    return std::ldexp(x.s, l) == y.s && std::ldexp(x.v, l - t) == y.v && std::ldexp(x.a, l - 2 * t) == y.a &&
+           std::ldexp(x.j, l - 3 * t) == y.j;
+  };
+  for (int i = 0; i < p.phase_count(); ++i) {
+    const ProfilePhase& a = p.phase(i);
+    const ProfilePhase& b = q.phase(i);
+    if (std::ldexp(a.duration, t) != b.duration || !same(a.start, b.start) || !same(a.end, b.end))
+      return ::testing::AssertionFailure() << "phase " << i << " differs (l = " << l << ", t = " << t << ")";
+  }
+  if (std::ldexp(p.duration(), t) != q.duration() || std::ldexp(p.peak_velocity(), l - t) != q.peak_velocity())
+    return ::testing::AssertionFailure() << "duration or peak differs (l = " << l << ", t = " << t << ")";
+  return ::testing::AssertionSuccess();
+}
+
+TEST(Profile, LawsAreExactlyTheSameInOtherUnits) {
+  Random random(0x5ca1e);
+  for (int i = 0; i < case_count(2000); ++i) {
+    const Limits c = random_limits(random, i % 2 == 1);
+    // Units from 2^-700 to 2^700 m and 2^-100 to 2^100 s keep every input and state normal.
+    const int l = random.integer(-700, 700), t = random.integer(-100, 100);
+    const bool scurve = random.integer(0, 1) == 1;
+    auto law = [&](int dl, int dt) {
+      auto in = [&](double x, int k) { return std::ldexp(x, dl - k * dt); };
+      return scurve ? Profile::scurve(in(c.distance, 0), in(c.v_max, 1), in(c.a_max, 2), in(c.j_max, 3),
+                                      in(c.v_start, 1), in(c.v_end, 1))
+                    : Profile::trapezoid(in(c.distance, 0), in(c.v_max, 1), in(c.a_max, 2), in(c.v_start, 1),
+                                         in(c.v_end, 1));
+    };
+    std::optional<Profile> base;
+    try {
+      base = law(0, 0);
+    } catch (const std::invalid_argument&) {
+      EXPECT_THROW(law(l, t), std::invalid_argument) << "case " << i;  // too short in every unit
+      continue;
+    }
+    ASSERT_TRUE(same_law_in_units(*base, law(l, t), l, t)) << "case " << i;
+  }
+}
+
+// Fuzz finding 10 (strict mode): S = 7.7e-315 m, v_max = 2.1e-314 m/s — subnormal numbers whose
+// squares are 0 — gave an S-curve with peak velocity 0 and a duration of 6.7e7 s (the right one takes
+// 0.36 s). The law is now the one of the same numbers in units of 2^-1040 m, converted back: the
+// same phase durations, every state to the resolution of subnormal doubles.
+TEST(Profile, SubnormalLimitsGiveTheLawOfTheSameNumbersInSmallerUnits) {
+  const double S = 7.7088128343660283e-315, v = 2.1220284314121648e-314;
+  const double a = 4.780652035286447e-299, j = 2.848099973644035e-306;
+  constexpr int l = -1040;  // 2^-1040 m: every input a normal number in these units
+  const double resolution = std::numeric_limits<double>::denorm_min();
+  for (const bool scurve : {false, true}) {
+    const Profile law = scurve ? Profile::scurve(S, v, a, j) : Profile::trapezoid(S, v, a);
+    const Profile in_units = scurve ? Profile::scurve(std::ldexp(S, -l), std::ldexp(v, -l), std::ldexp(a, -l),
+                                                      std::ldexp(j, -l))
+                                    : Profile::trapezoid(std::ldexp(S, -l), std::ldexp(v, -l), std::ldexp(a, -l));
+    ASSERT_EQ(law.phase_count(), in_units.phase_count());
+    EXPECT_EQ(law.duration(), in_units.duration());
+    EXPECT_GT(law.peak_velocity(), 0.0);
+    EXPECT_LE(law.peak_velocity(), v);
+    for (int i = 0; i < law.phase_count(); ++i) EXPECT_EQ(law.phase(i).duration, in_units.phase(i).duration);
+    for (int k = 0; k <= 1000; ++k) {
+      const double time = law.duration() * k / 1000;
+      const ProfileState x = law.state_at(time), y = in_units.state_at(time);
+      ASSERT_NEAR(x.s, std::ldexp(y.s, l), 2 * resolution) << k;
+      ASSERT_NEAR(x.v, std::ldexp(y.v, l), 2 * resolution) << k;
+      ASSERT_GE(x.v, 0.0) << k;
+      ASSERT_LE(x.v, v) << k;
+      ASSERT_LE(std::abs(x.a), a) << k;
+    }
+    EXPECT_EQ(law.state_at(law.duration()).s, S);
+  }
+}
+
+// Far outside the numeric range, a limit whose ratio to S and v_max leaves the double range
+// (a_max S / v_max² = 1e328 here) is refused naming it.
+TEST(Profile, LimitsWhoseRatiosLeaveTheDoubleRangeAreRefused) {
+  EXPECT_EQ(message_of([] { Profile::trapezoid(1e10, 1e-5, 1e308); }),
+            "a_max = 1e+308: with v_max = 1e-05 over distance = 10000000000: their ratio leaves the double range (limits "
+            "outside dispkin's numeric range [1e-12, 1e12])");
+  EXPECT_NE(message_of([] { Profile::scurve(1e-300, 1e10, 1.0, 1e-300); }).find("j_max = 1e-300: with v_max = 10000000000 over distance = 1e-300"),
+            std::string::npos);
+}
+
 TEST(Profile, ScurveStructures) {
   // Every combination: v_max reached or not × a_max reached or not; a_max unreachable (v < a²/j).
   struct Expected {
