@@ -9,8 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -47,9 +45,8 @@ void require_boundary_velocity(double v, const char* name, double v_max) {
 // range, where this cannot happen; the laws themselves take any positive limit (re-timing
 // builds them from derived accelerations), so they check their result instead.
 // j_max: NaN for the trapezoid.
-// `duration`: the law's, or before planning the lower bound S / v_max of it.
-void require_finite_duration(double duration, double distance, double v_max, double a_max, double j_max) {
-  if (std::isfinite(duration)) return;
+void require_finite_duration(const Profile& law, double distance, double v_max, double a_max, double j_max) {
+  if (std::isfinite(law.duration())) return;
   const std::string jerk = std::isnan(j_max) ? "" : ", j_max = " + number(j_max);
   throw std::invalid_argument(describe("v_max", v_max,
                                        "with a_max = " + number(a_max) + jerk + " over distance = " + number(distance) +
@@ -63,68 +60,6 @@ void require_finite_duration(double duration, double distance, double v_max, dou
                                        "too short to change the velocity from v_start = " + number(v_start) +
                                            " to v_end = " + number(v_end) + " under " + limits + ": it needs at least " +
                                            number(needed) + beyond + "; lower v_start or v_end"));
-}
-
-// --- units -----------------------------------------------------------------------------------
-
-// Both laws are computed in units of length 2^l and time 2^t in which S and v_max lie in [1, 2).
-// Their formulas square and cube S and v_max (∛(j S²/4), v²/(2a)): in metres and seconds a
-// subnormal S = 7.7e-315 m squares to 0, an S of 1e200 m to infinity, and the law came out
-// wrong (a zero peak) or not at all. In these units a law's numbers are the same at every scale
-// and only the ratios a S / v², j S² / v³ can leave the double range. Powers of two make the
-// change of units exact both ways, wherever the result is a normal double.
-
-static_assert(std::numeric_limits<double>::is_iec559, "the units below are built from IEEE 754 bits");
-
-// x · 2^k rounded once, as std::ldexp(x, k) is: by one multiplication when 2^k is a normal
-// double (the general std::ldexp costs a few nanoseconds a call, four times a law's planning
-// over the 30 conversions of a seven-phase law).
-double times_power_of_two(double x, int k) {
-  if (k < std::numeric_limits<double>::min_exponent - 1 || k >= std::numeric_limits<double>::max_exponent) {
-    return std::ldexp(x, k);
-  }
-  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;  // IEEE 754 binary64
-  double power;
-  std::memcpy(&power, &bits, sizeof power);
-  return x * power;
-}
-
-// ⌊log₂ x⌋ of a finite x > 0, as std::ilogb: from the exponent bits unless x is subnormal.
-int binary_exponent(double x) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
-  return biased != 0 ? biased - 1023 : std::ilogb(x);
-}
-
-struct Units {
-  int length = 0;  // log2 of the unit of length, in metres
-  int time = 0;    // log2 of the unit of time, in seconds
-  // A quantity of dimension length · time⁻ᵏ (k = 0 position, 1 velocity, 2 acceleration, 3 jerk).
-  double in_units(double x, int k) const { return times_power_of_two(x, k * time - length); }
-  double in_metres(double x, int k) const { return times_power_of_two(x, length - k * time); }
-  double in_seconds(double t) const { return times_power_of_two(t, time); }
-};
-
-// S / v_max, a lower bound of a law's duration, is below 2^(t + 1) in the units t of
-// units_of: it cannot overflow below this t (the division is done only from there on).
-constexpr int max_finite_duration_log2 = std::numeric_limits<double>::max_exponent - 2;
-
-Units units_of(double distance, double v_max) {
-  const int velocity = binary_exponent(v_max);
-  const int length = distance > 0.0 ? binary_exponent(distance) : velocity;
-  return {length, length - velocity};
-}
-
-// A limit whose ratio to S and v_max leaves the double range (a_max S / v_max² or
-// j_max S² / v_max³ beyond 1e±308) has no law in doubles: refused naming it. (Subnormal ratios
-// are kept: they lose digits, but the law stays within its limits.)
-void require_in_double_range(double in_units, const char* name, double value, double distance, double v_max) {
-  if (in_units > 0.0 && std::isfinite(in_units)) return;
-  throw std::invalid_argument(describe(name, value,
-                                       "with v_max = " + number(v_max) + " over distance = " + number(distance) +
-                                           ": their ratio leaves the double range (limits outside dispkin's "
-                                           "numeric range [1e-12, 1e12])"));
 }
 
 // --- trapezoid -------------------------------------------------------------------------------
@@ -252,54 +187,6 @@ double cruise_time(double distance, double changes, double peak) {
   return rest / peak;
 }
 
-// --- the shape of a law ----------------------------------------------------------------------
-
-// What planning decides, in the units of units_of: the peak, the two velocity changes (the
-// trapezoid's ramps are holds at ±a: jerk time 0) and the cruise. Phases and states are built
-// from it in metres and seconds.
-struct Shape {
-  double peak = 0.0;
-  VelocityChange up, down;
-  double cruise = 0.0;
-};
-
-Shape trapezoid_shape(double distance, double v_max, double a_max, double v_start, double v_end) {
-  Shape shape;
-  shape.peak = trapezoid_peak(distance, v_max, a_max, v_start, v_end);
-  shape.up = {0.0, (shape.peak - v_start) / a_max, a_max};
-  shape.down = {0.0, (shape.peak - v_end) / a_max, a_max};
-  const double ramps = ramp_distance(v_start, shape.peak, a_max) + ramp_distance(shape.peak, v_end, a_max);
-  shape.cruise = cruise_time(distance, ramps, shape.peak);
-  return shape;
-}
-
-Shape scurve_shape(double distance, double v_max, double a_max, double j_max, double v_start, double v_end) {
-  Peak peak;
-  if (v_start == 0.0 && v_end == 0.0) {
-    const double v = scurve_rest_peak(distance, v_max, a_max, j_max);
-    peak = {v, v, v};
-  } else if (changes_distance(v_max, v_start, v_end, a_max, j_max) <= distance) {
-    peak = {v_max, v_max - v_start, v_max - v_end};
-  } else {
-    peak = scurve_peak(distance, v_max, a_max, j_max, v_start, v_end);
-  }
-  Shape shape;
-  shape.peak = peak.velocity;
-  shape.up = velocity_change(peak.rise, a_max, j_max);
-  shape.down = velocity_change(peak.fall, a_max, j_max);
-  const double changes =
-      0.5 * (v_start + peak.velocity) * shape.up.duration() + 0.5 * (peak.velocity + v_end) * shape.down.duration();
-  shape.cruise = cruise_time(distance, changes, peak.velocity);
-  return shape;
-}
-
-Shape in_metres_and_seconds(const Shape& x, const Units& u) {
-  auto change = [&u](const VelocityChange& c) -> VelocityChange {
-    return {u.in_seconds(c.jerk_time), u.in_seconds(c.hold_time), u.in_metres(c.peak_acceleration, 2)};
-  };
-  return {u.in_metres(x.peak, 1), change(x.up), change(x.down), u.in_seconds(x.cruise)};
-}
-
 }  // namespace
 
 // --- phases ----------------------------------------------------------------------------------
@@ -361,28 +248,24 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   require_positive(a_max, "a_max");
   require_boundary_velocity(v_start, "v_start", v_max);
   require_boundary_velocity(v_end, "v_end", v_max);
-  constexpr double no_jerk = std::numeric_limits<double>::quiet_NaN();
-  const Units u = units_of(distance, v_max);
-  if (u.time >= max_finite_duration_log2) require_finite_duration(distance / v_max, distance, v_max, a_max, no_jerk);
-  const double a = u.in_units(a_max, 2);
-  require_in_double_range(a, "a_max", a_max, distance, v_max);
-  const double s = u.in_units(distance, 0), v0 = u.in_units(v_start, 1), v1 = u.in_units(v_end, 1);
-  const double needed = ramp_distance(v0, v1, a);
-  if (s < needed) throw_too_short(distance, u.in_metres(needed, 0), v_start, v_end, "a_max = " + number(a_max), "");
+  const double needed = ramp_distance(v_start, v_end, a_max);
+  if (distance < needed) throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max), "");
 
-  const Shape shape = in_metres_and_seconds(trapezoid_shape(s, u.in_units(v_max, 1), a, v0, v1), u);
   Profile p;
   p.distance_ = distance;
   p.start_ = {0.0, v_start, 0.0, 0.0};
   p.end_ = {distance, v_end, 0.0, 0.0};
-  p.peak_velocity_ = shape.peak;
+  const double peak = trapezoid_peak(distance, v_max, a_max, v_start, v_end);
+  p.peak_velocity_ = peak;
   // Ramps (v_p − v)/a at ±a; the cruise covers the rest at v_p.
-  p.add_phase(shape.up.hold_time, 0.0, a_max, a_max);
+  const double ramps = ramp_distance(v_start, peak, a_max) + ramp_distance(peak, v_end, a_max);
+  const double cruise = cruise_time(distance, ramps, peak);
+  p.add_phase((peak - v_start) / a_max, 0.0, a_max, a_max);
   const int cruise_index = p.count_;
-  p.add_phase(shape.cruise, 0.0, 0.0, 0.0);
-  p.add_phase(shape.down.hold_time, 0.0, -a_max, -a_max);
+  p.add_phase(cruise, 0.0, 0.0, 0.0);
+  p.add_phase((peak - v_end) / a_max, 0.0, -a_max, -a_max);
   p.integrate(v_start, v_end, cruise_index);
-  require_finite_duration(p.duration(), distance, v_max, a_max, no_jerk);
+  require_finite_duration(p, distance, v_max, a_max, std::numeric_limits<double>::quiet_NaN());
   return p;
 }
 
@@ -393,29 +276,34 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   require_positive(j_max, "j_max");
   require_boundary_velocity(v_start, "v_start", v_max);
   require_boundary_velocity(v_end, "v_end", v_max);
-  const Units u = units_of(distance, v_max);
-  if (u.time >= max_finite_duration_log2) require_finite_duration(distance / v_max, distance, v_max, a_max, j_max);
-  const double a = u.in_units(a_max, 2), j = u.in_units(j_max, 3);
-  require_in_double_range(a, "a_max", a_max, distance, v_max);
-  require_in_double_range(j, "j_max", j_max, distance, v_max);
-  const double s = u.in_units(distance, 0), v0 = u.in_units(v_start, 1), v1 = u.in_units(v_end, 1);
-  const double needed = changes_distance(std::max(v0, v1), v0, v1, a, j);
-  if (s < needed) {
-    throw_too_short(distance, u.in_metres(needed, 0), v_start, v_end,
-                    "a_max = " + number(a_max) + ", j_max = " + number(j_max),
+  const double lowest = std::max(v_start, v_end);
+  const double needed = changes_distance(lowest, v_start, v_end, a_max, j_max);
+  if (distance < needed) {
+    throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max) + ", j_max = " + number(j_max),
                     " with the accelerate-cruise-decelerate law (a shorter law would have to dip below both boundary "
                     "velocities, which is not supported, or does not exist)");
   }
 
-  const Shape shape = in_metres_and_seconds(scurve_shape(s, u.in_units(v_max, 1), a, j, v0, v1), u);
   Profile p;
   p.kind_ = ProfileKind::scurve;
   p.distance_ = distance;
   p.start_ = {0.0, v_start, 0.0, 0.0};
   p.end_ = {distance, v_end, 0.0, 0.0};
-  p.peak_velocity_ = shape.peak;
-  const VelocityChange& up = shape.up;
-  const VelocityChange& down = shape.down;
+  Peak peak;
+  if (v_start == 0.0 && v_end == 0.0) {
+    const double v = scurve_rest_peak(distance, v_max, a_max, j_max);
+    peak = {v, v, v};
+  } else if (changes_distance(v_max, v_start, v_end, a_max, j_max) <= distance) {
+    peak = {v_max, v_max - v_start, v_max - v_end};
+  } else {
+    peak = scurve_peak(distance, v_max, a_max, j_max, v_start, v_end);
+  }
+  p.peak_velocity_ = peak.velocity;
+  const VelocityChange up = velocity_change(peak.rise, a_max, j_max);
+  const VelocityChange down = velocity_change(peak.fall, a_max, j_max);
+  const double changes =
+      0.5 * (v_start + peak.velocity) * up.duration() + 0.5 * (peak.velocity + v_end) * down.duration();
+  const double cruise = cruise_time(distance, changes, peak.velocity);
   const double ua = up.peak_acceleration;
   const double da = down.peak_acceleration;
   // Phases 1–3: jerk +j to a_p, hold, jerk −j to 0.  4: cruise.  5–7: the mirror, down to v_e.
@@ -423,12 +311,12 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   p.add_phase(up.hold_time, 0.0, ua, ua);
   p.add_phase(up.jerk_time, -j_max, ua, 0.0);
   const int cruise_index = p.count_;
-  p.add_phase(shape.cruise, 0.0, 0.0, 0.0);
+  p.add_phase(cruise, 0.0, 0.0, 0.0);
   p.add_phase(down.jerk_time, -j_max, 0.0, -da);
   p.add_phase(down.hold_time, 0.0, -da, -da);
   p.add_phase(down.jerk_time, j_max, -da, 0.0);
   p.integrate(v_start, v_end, cruise_index);
-  require_finite_duration(p.duration(), distance, v_max, a_max, j_max);
+  require_finite_duration(p, distance, v_max, a_max, j_max);
   return p;
 }
 
