@@ -249,7 +249,10 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   require_boundary_velocity(v_start, "v_start", v_max);
   require_boundary_velocity(v_end, "v_end", v_max);
   const double needed = ramp_distance(v_start, v_end, a_max);
-  if (distance < needed) throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max), "");
+  // A change of velocity needs a positive distance, even where `needed` underflowed to 0.
+  if (distance < needed || (distance == 0.0 && v_start != v_end)) {
+    throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max), "");
+  }
 
   Profile p;
   p.distance_ = distance;
@@ -278,7 +281,7 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   require_boundary_velocity(v_end, "v_end", v_max);
   const double lowest = std::max(v_start, v_end);
   const double needed = changes_distance(lowest, v_start, v_end, a_max, j_max);
-  if (distance < needed) {
+  if (distance < needed || (distance == 0.0 && v_start != v_end)) {
     throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max) + ", j_max = " + number(j_max),
                     " with the accelerate-cruise-decelerate law (a shorter law would have to dip below both boundary "
                     "velocities, which is not supported, or does not exist)");

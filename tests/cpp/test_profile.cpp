@@ -507,6 +507,21 @@ TEST(ProfileErrors, TrapezoidTooShort) {
   const std::string m = message_of([] { Profile::trapezoid(0.4, 1, 1, 1, 0); });
   EXPECT_TRUE(starts_with(m, "distance = 0.4: too short to change the velocity from v_start = 1 to v_end = 0 under a_max = 1: it needs at least 0.5")) << m;
 }
+// Fuzz finding 13 (strict mode): S = 0 between boundary velocities of 1.4e-308 and 2.8e-309 m/s at
+// a_max = 5.5e-299 — the distance the change needs, 6e-318 m, underflowed to 0, and a law over
+// S = 0 was built that moved 1.1e-318 m. A change of velocity needs a positive distance.
+TEST(ProfileErrors, ZeroDistanceBetweenDifferentTinyVelocities) {
+  const double a = 5.4502595765602775e-299, v0 = 1.3906733001411379e-308, v1 = 2.7894907876201549e-309;
+  for (const bool scurve : {false, true}) {
+    const std::string message = message_of([&] {
+      if (scurve) Profile::scurve(0.0, 0.5, a, 1.0, v0, v1);
+      else Profile::trapezoid(0.0, 0.5, a, v0, v1);
+    });
+    EXPECT_EQ(message.rfind("distance = 0: too short to change the velocity from v_start = 1.39067330014e-308", 0), 0u)
+        << message;
+  }
+}
+
 TEST(ProfileErrors, ScurveTooShort) {
   // From 0 to 1 at a = j = 1 needs (0 + 1)/2 · (1/1 + 1/1) = 1.
   const std::string m = message_of([] { Profile::scurve(0.9, 1, 1, 1, 0, 1); });
