@@ -402,6 +402,50 @@ TEST(Profile, OverflowingDurationsAreRefused) {
   EXPECT_TRUE(std::isfinite(Profile::scurve(1.0, 1.0, 1e-308, 1e-308).duration()));
 }
 
+// Fuzz finding 10 and its neighbours, far outside the numeric range: the laws' formulas squared
+// tiny or huge numbers (S², v², a S, dv j ≥ a²) and gave wrong laws — S = 7.7e-315 m took
+// 6.7e7 s instead of 0.36 s, S = 1e-300 m at unit limits 0 s. Reordered (∛(j/4) ∛S², √a √S,
+// dv/a ≥ a/j, |w − v| ((w + v) / 2a)), every case matches its textbook duration: with a
+// cruise S/v + 2√(v/j) (a not reached), triangles 2√(S/a), four jerk phases ∛(32 S / j).
+TEST(Profile, LawsFarOutsideTheNumericRangeMatchTheClosedForms) {
+  struct Case {
+    double S, v, a, j, trapezoid, scurve, tolerance;
+  };
+  // Subnormal S and v carry 32 significant bits or fewer, and so do the products of the law
+  // that fall below 2.2e-308: those durations hold to 1e-8, the others to 1e-14.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double S10 = 7.7088128343660283e-315, v10 = 2.1220284314121648e-314;
+  const double a10 = 4.780652035286447e-299, j10 = 2.848099973644035e-306;
+  const double a2 = 8.2060724175491349e-304, j2 = 5.0781206641779257e-299;
+  const Case cases[] = {
+      {S10, v10, a10, j10, S10 / v10 + v10 / a10, S10 / v10 + 2.0 * std::sqrt(v10 / j10), 1e-8},  // finding 10
+      {tiny, 9.4978603296971489e-227, a2, j2, 2.0 * std::sqrt(tiny / a2), std::cbrt(32.0 * (tiny / j2)), 1e-8},
+      {1e-300, 1.0, 1.0, 1.0, 2e-150, std::cbrt(32.0) * 1e-100, 1e-14},
+      {1e-300, 1e300, 1e-300, 1e300, 2.0, 2.0, 1e-14},
+      {1e200, 1.0, 1.0, 1.0, 1e200, 1e200, 1e-14},
+  };
+  const double resolution = 64.0 * tiny;
+  for (const Case& c : cases) {
+    const Profile t = Profile::trapezoid(c.S, c.v, c.a);
+    const Profile s = Profile::scurve(c.S, c.v, c.a, c.j);
+    EXPECT_NEAR(t.duration(), c.trapezoid, c.tolerance * c.trapezoid) << c.S;
+    EXPECT_NEAR(s.duration(), c.scurve, c.tolerance * c.scurve) << c.S;
+    for (const Profile* law : {&t, &s}) {
+      double last = 0.0;
+      for (int k = 0; k <= 1000; ++k) {
+        const ProfileState x = law->state_at(law->duration() * k / 1000);
+        ASSERT_GE(x.s, last - resolution) << c.S << " k = " << k;  // s never decreases
+        ASSERT_LE(x.s, c.S * (1 + 1e-12) + resolution) << c.S << " k = " << k;
+        ASSERT_GE(x.v, -resolution) << c.S << " k = " << k;
+        ASSERT_LE(x.v, c.v * (1 + 1e-9) + resolution) << c.S << " k = " << k;
+        ASSERT_LE(std::abs(x.a), c.a * (1 + 1e-12) + resolution) << c.S << " k = " << k;
+        last = x.s;
+      }
+      EXPECT_EQ(law->state_at(law->duration()).s, c.S);
+    }
+  }
+}
+
 TEST(Profile, ScurveStructures) {
   // Every combination: v_max reached or not × a_max reached or not; a_max unreachable (v < a²/j).
   struct Expected {
