@@ -74,10 +74,10 @@ double trapezoid_peak(double distance, double v_max, double a_max, double v_star
   const double lowest = std::max(v_start, v_end);
   if (ramp_distance(v_start, v_max, a_max) + ramp_distance(v_end, v_max, a_max) <= distance) return v_max;
   const double square = a_max * distance + 0.5 * (v_start * v_start + v_end * v_end);
-  // Where a S and v² underflow (tiny limits, finding 10): √a √(S + (v_s² + v_e²)/(2a)).
-  const double peak = std::isnormal(square) ? std::sqrt(square)
-                                            : std::sqrt(a_max) * std::sqrt(distance + v_start * (v_start / (2.0 * a_max)) +
-                                                                            v_end * (v_end / (2.0 * a_max)));
+  if (std::isnormal(square)) return std::clamp(std::sqrt(square), lowest, v_max);
+  // a S and v² underflowed (tiny limits, finding 10): √a √(S + (v_s² + v_e²)/(2a)).
+  const double two_a = 2.0 * a_max;
+  const double peak = std::sqrt(a_max) * std::sqrt(distance + v_start * (v_start / two_a) + v_end * (v_end / two_a));
   return std::clamp(peak, lowest, v_max);
 }
 
@@ -93,10 +93,13 @@ struct VelocityChange {
   double duration() const { return 2.0 * jerk_time + hold_time; }
 };
 
-// (The test compares times, dv/a ≥ a/j, not dv j ≥ a²: for tiny or huge limits the products
-// under- or overflow where the quotients do not — fuzz finding 10.)
+// Whether a change by dv reaches a_max: dv ≥ a²/j, compared as times, dv/a ≥ a/j (for tiny or
+// huge limits the products dv j and a² under- or overflow where the quotients do not — fuzz
+// finding 10).
+bool reaches_a_max(double dv, double a_max, double j_max) { return dv / a_max >= a_max / j_max; }
+
 VelocityChange velocity_change(double dv, double a_max, double j_max) {
-  if (dv / a_max >= a_max / j_max) {
+  if (reaches_a_max(dv, a_max, j_max)) {
     const double jerk_time = a_max / j_max;
     return {jerk_time, std::max(0.0, dv / a_max - jerk_time), a_max};
   }
@@ -119,7 +122,7 @@ double changes_distance(double peak, double v_start, double v_end, double a_max,
 // reached, else d/dw 2√((c + w²)/j) = 2w / √(j (c + w²)) (= 2/√j at c = w = 0).
 double change_duration_slope(double c, double w, double a_max, double j_max) {
   const double dv = c + w * w;
-  if (dv / a_max >= a_max / j_max) return 2.0 * w / a_max;
+  if (reaches_a_max(dv, a_max, j_max)) return 2.0 * w / a_max;
   const double root = std::sqrt(j_max) * std::sqrt(dv);
   return root > 0.0 ? 2.0 * w / root : 2.0 / std::sqrt(j_max);
 }
@@ -129,16 +132,15 @@ double change_duration_slope(double c, double w, double a_max, double j_max) {
 //   a_max reached:                   D = v_p (v_p/a + a/j) = S →  v_p² + (a²/j) v_p − a S = 0.
 double scurve_rest_peak(double distance, double v_max, double a_max, double j_max) {
   if (changes_distance(v_max, 0.0, 0.0, a_max, j_max) <= distance) return v_max;
-  const double a_reached_at = a_max * (a_max / j_max);  // the velocity step that just reaches a_max
+  const double r = a_max * (a_max / j_max);  // a²/j, the velocity step that just reaches a_max
   // Where j S² leaves the normal doubles (S below 1e-154 m: the law took 0 s), ∛(j/4) ∛S².
   const double cube = j_max * distance * distance / 4.0;
-  const double no_hold =
-      std::isnormal(cube) ? std::cbrt(cube) : std::cbrt(0.25 * j_max) * std::cbrt(distance) * std::cbrt(distance);
-  if (no_hold <= a_reached_at) return std::min(no_hold, v_max);
-  // The positive root of the quadratic, in the form without cancellation. Where a S or r² = (a²/j)²
+  const double cube_root_s = std::cbrt(distance);
+  const double no_hold = std::isnormal(cube) ? std::cbrt(cube) : std::cbrt(0.25 * j_max) * cube_root_s * cube_root_s;
+  if (no_hold <= r) return std::min(no_hold, v_max);
+  // The positive root of the quadratic, in the form without cancellation. Where a S or r²
   // leave the normal doubles: with q = √a √S, 2 q (q / (r + hypot(r, 2q))).
   const double a_s = a_max * distance;
-  const double r = a_reached_at;
   if (std::isnormal(a_s) && std::isnormal(r * r)) return std::min(2.0 * a_s / (r + std::sqrt(r * r + 4.0 * a_s)), v_max);
   const double q = std::sqrt(a_max) * std::sqrt(distance);
   return std::min(2.0 * q * (q / (r + std::hypot(r, 2.0 * q))), v_max);
