@@ -28,12 +28,12 @@ struct Move {
 };
 
 inline Move lin_move(const serial::SerialArm& arm) {
-  using V = Eigen::Vector3d;
+  using Vec = Eigen::Vector3d;
   Eigen::VectorXd q(6);
   q << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
   const Posed a = arm.forward(q);
-  const Posed b = Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V(0.25, -0.1, -0.1)) * a;
-  return {q, Path::lin(a, Posed(b.quaternion(), a.translation() + V(0.25, -0.1, -0.1)))};
+  const Posed b = Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Vec::UnitZ())), Vec(0.25, -0.1, -0.1)) * a;
+  return {q, Path::lin(a, Posed(b.quaternion(), a.translation() + Vec(0.25, -0.1, -0.1)))};
 }
 
 }  // namespace dispkin::testing
