@@ -1,7 +1,7 @@
 // Hexapod inverse kinematics (target < 1 µs), the leg Jacobian and forward kinematics.
 #include <benchmark/benchmark.h>
 
-#include <dispkin/hexapod.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
 
 namespace {
 

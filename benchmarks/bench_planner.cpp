@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "dispkin/planner.hpp"
+#include "dispkin/planning/planner.hpp"
 #include "dispkin/shapes.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <dispkin/ptp.hpp>
+#include <dispkin/serial/ptp.hpp>
 #include <dispkin/shapes.hpp>
 
 namespace {

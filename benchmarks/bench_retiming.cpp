@@ -7,7 +7,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include <dispkin/retiming.hpp>
+#include <dispkin/hexapod/hexapod_retiming.hpp>
+#include <dispkin/serial/serial_retiming.hpp>
 #include <dispkin/shapes.hpp>
 
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include <dispkin/planner.hpp>
+#include <dispkin/planning/planner.hpp>
 
 #include "../tests/cpp/random_paths.hpp"
 

@@ -45,6 +45,18 @@ void append_value(std::ostringstream& out, const Eigen::DenseBase<Derived>& valu
   out << ')';
 }
 
+//! "t = … s (path position s = … m)": where on a trajectory a message is about; only the path
+//! position when t is NaN.
+inline std::string where(double t, double s) {
+  std::ostringstream out;
+  if (std::isnan(t)) {
+    out << "path position s = " << s << " m";
+  } else {
+    out << "t = " << t << " s (path position s = " << s << " m)";
+  }
+  return out.str();
+}
+
 }  // namespace detail
 
 //! The message "<argument> = <value>: <reason>", the shape every dispkin error has.

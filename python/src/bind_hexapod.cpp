@@ -9,8 +9,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "dispkin/hexapod.hpp"
-#include "dispkin/planner.hpp"
+#include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/planning/planner.hpp"
 
 namespace dispkin {
 namespace python {

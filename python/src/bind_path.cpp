@@ -8,7 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 
 namespace dispkin {
 namespace python {

@@ -11,9 +11,9 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
-#include "dispkin/hexapod.hpp"
-#include "dispkin/overlap.hpp"
-#include "dispkin/planner.hpp"
+#include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/planning/overlap.hpp"
+#include "dispkin/planning/planner.hpp"
 
 namespace dispkin {
 namespace python {

@@ -12,7 +12,7 @@
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
-#include "dispkin/velocity_limit.hpp"
+#include "dispkin/planning/velocity_limit.hpp"
 
 namespace dispkin {
 namespace python {

@@ -10,7 +10,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
-#include "dispkin/ptp.hpp"
+#include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
 namespace python {

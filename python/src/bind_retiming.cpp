@@ -8,7 +8,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
-#include "dispkin/retiming.hpp"
+#include "dispkin/hexapod/hexapod_retiming.hpp"
+#include "dispkin/serial/serial_retiming.hpp"
 
 namespace dispkin {
 namespace python {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include <dispkin/disp.hpp>
-#include <dispkin/path.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/path/path.hpp>
+#include <dispkin/planning/planner.hpp>
 
 #include "random_cases.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include <dispkin/path.hpp>
+#include <dispkin/path/path.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 #include <dispkin/shapes.hpp>
 

@@ -26,17 +26,18 @@
 #include <dispkin/convex_hull.hpp>
 #include <dispkin/disp.hpp>
 #include <dispkin/frames.hpp>
-#include <dispkin/hexapod.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
 #include <dispkin/metric_set.hpp>
-#include <dispkin/overlap.hpp>
-#include <dispkin/path.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/planning/overlap.hpp>
+#include <dispkin/path/path.hpp>
+#include <dispkin/planning/planner.hpp>
 #include <dispkin/pose.hpp>
 #include <dispkin/profile.hpp>
 #include <dispkin/shapes.hpp>
 #if defined(DISPKIN_HAS_SERIAL)
-#include <dispkin/ptp.hpp>
-#include <dispkin/retiming.hpp>
+#include <dispkin/serial/ptp.hpp>
+#include <dispkin/hexapod/hexapod_retiming.hpp>
+#include <dispkin/serial/serial_retiming.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 #endif
 

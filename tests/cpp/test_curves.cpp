@@ -1,8 +1,8 @@
 // Curved paths: SPLINE moves and blends at via points (issue 3), and their sections' lengths.
 #include <gtest/gtest.h>
 
-#include <dispkin/path.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/path/path.hpp>
+#include <dispkin/planning/planner.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"

@@ -6,7 +6,7 @@
 
 #include <dispkin/disp.hpp>
 #include <dispkin/frames.hpp>
-#include <dispkin/hexapod.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
 
 #include "random_cases.hpp"
 

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include <dispkin/hexapod.hpp>
-#include <dispkin/path.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
+#include <dispkin/path/path.hpp>
+#include <dispkin/planning/planner.hpp>
 
 #include "random_cases.hpp"
 

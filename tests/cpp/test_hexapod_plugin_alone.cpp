@@ -6,7 +6,7 @@
 // (src/hexapod_along_path.cpp).
 #include <gtest/gtest.h>
 
-#include "dispkin/hexapod.hpp"
+#include "dispkin/hexapod/hexapod.hpp"
 
 namespace dispkin {
 namespace {

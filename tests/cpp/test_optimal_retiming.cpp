@@ -4,8 +4,9 @@
 #include <fstream>
 #include <iterator>
 
-#include <dispkin/hexapod.hpp>
-#include <dispkin/retiming.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
+#include <dispkin/hexapod/hexapod_retiming.hpp>
+#include <dispkin/serial/serial_retiming.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"

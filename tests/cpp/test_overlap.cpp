@@ -2,7 +2,7 @@
 // through a corner without stopping.
 #include <gtest/gtest.h>
 
-#include <dispkin/overlap.hpp>
+#include <dispkin/planning/overlap.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"

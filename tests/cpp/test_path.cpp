@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include <dispkin/path.hpp>
+#include <dispkin/path/path.hpp>
 
 #include "random_cases.hpp"
 

@@ -20,10 +20,11 @@
 
 #include <gtest/gtest.h>
 
-#include <dispkin/hexapod.hpp>
-#include <dispkin/planner.hpp>
-#include <dispkin/ptp.hpp>
-#include <dispkin/retiming.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
+#include <dispkin/planning/planner.hpp>
+#include <dispkin/serial/ptp.hpp>
+#include <dispkin/hexapod/hexapod_retiming.hpp>
+#include <dispkin/serial/serial_retiming.hpp>
 
 #include "ptp_moves.hpp"
 #include "random_paths.hpp"

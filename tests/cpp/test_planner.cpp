@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include <dispkin/planner.hpp>
-#include <dispkin/section_motion.hpp>
+#include <dispkin/planning/planner.hpp>
+#include <dispkin/path/section_motion.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dispkin/ptp.hpp"
+#include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "ptp_moves.hpp"
 #include "random_paths.hpp"

@@ -21,12 +21,12 @@ std::atomic<long> eigen_assert_failures{0};
   do {                  \
     if (!(x)) ++eigen_assert_failures; \
   } while (false)
-#include "dispkin/overlap.hpp"
-#include "dispkin/planner.hpp"
+#include "dispkin/planning/overlap.hpp"
+#include "dispkin/planning/planner.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/shapes.hpp"
 #ifdef DISPKIN_HAS_SERIAL
-#include "dispkin/ptp.hpp"
+#include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
 #include "ptp_moves.hpp"
 #include "serial_test_chains.hpp"

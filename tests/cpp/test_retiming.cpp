@@ -1,7 +1,8 @@
 // Joint-limit prediction and the seed's re-timing loop on a UR5e (issue 7, items 1 and 2).
 #include <gtest/gtest.h>
 
-#include <dispkin/retiming.hpp>
+#include <dispkin/hexapod/hexapod_retiming.hpp>
+#include <dispkin/serial/serial_retiming.hpp>
 #include <dispkin/shapes.hpp>
 
 #include "random_cases.hpp"

@@ -9,14 +9,14 @@
 
 #include <gtest/gtest.h>
 
-#include <dispkin/hexapod.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
+#include <dispkin/planning/planner.hpp>
 #include <dispkin/profile.hpp>
 
 #include "random_cases.hpp"
 #include "random_paths.hpp"
 #ifdef DISPKIN_HAS_SERIAL
-#include <dispkin/ptp.hpp>
+#include <dispkin/serial/ptp.hpp>
 
 #include "ptp_moves.hpp"
 #endif

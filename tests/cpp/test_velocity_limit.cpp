@@ -1,9 +1,9 @@
 // Time laws under a velocity-limit curve and the planner's curvature rule (issue 4).
 #include <gtest/gtest.h>
 
-#include <dispkin/planner.hpp>
+#include <dispkin/planning/planner.hpp>
 #include <dispkin/shapes.hpp>
-#include <dispkin/velocity_limit.hpp>
+#include <dispkin/planning/velocity_limit.hpp>
 
 #include "random_cases.hpp"
 

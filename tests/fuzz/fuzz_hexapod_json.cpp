@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include <dispkin/hexapod.hpp>
+#include <dispkin/hexapod/hexapod.hpp>
 
 #include "fuzz_input.hpp"
 

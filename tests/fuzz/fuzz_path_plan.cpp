@@ -19,8 +19,8 @@
 #include <utility>
 #include <vector>
 
-#include <dispkin/path.hpp>
-#include <dispkin/planner.hpp>
+#include <dispkin/path/path.hpp>
+#include <dispkin/planning/planner.hpp>
 
 #include "fuzz_input.hpp"
 

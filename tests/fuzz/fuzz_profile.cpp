@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <dispkin/profile.hpp>
-#include <dispkin/velocity_limit.hpp>
+#include <dispkin/planning/velocity_limit.hpp>
 
 #include "fuzz_input.hpp"
 

@@ -14,7 +14,7 @@
 
 #include <Eigen/LU>
 
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 #include "path_geometry.hpp"
 
 namespace dispkin {

@@ -25,8 +25,8 @@
 
 #include "dispkin/kinematics.hpp"
 #include "dispkin/metric_set.hpp"
-#include "dispkin/path.hpp"
-#include "dispkin/planner.hpp"
+#include "dispkin/path/path.hpp"
+#include "dispkin/planning/planner.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {

@@ -53,9 +53,8 @@
 #include <string>
 
 #include "dispkin/error.hpp"
-#include "dispkin/retiming.hpp"
+#include "dispkin/planning/retiming.hpp"
 #include "jerk_filter.hpp"
-#include "joint_following.hpp"
 #include "reachability.hpp"
 
 namespace dispkin {
@@ -192,112 +191,6 @@ struct GridPoint {
   Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity (empty: no dynamics)
 };
 
-// The joint limits (+∞ where none).
-struct JointBounds {
-  Eigen::VectorXd velocity, acceleration, effort;
-};
-
-// What the re-timing needs of a machine: its joints along the path, their limits, the torque
-// coefficients where it has a dynamics model, and the dense check of a timed result.
-class JointModel {
- public:
-  virtual ~JointModel() = default;
-  virtual int dof() const = 0;
-  virtual std::string joint_name(int k) const = 0;
-  virtual const char* position_unit() const = 0;
-  // q on the branch of q_ref (Newton from `guess` where that applies) and q′ = dq/dσ.
-  virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref,
-                      const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
-  // Fills p.gravity, p.torque_u, p.torque_x (left empty without a dynamics model).
-  virtual void torque_coefficients(GridPoint& p) const = 0;
-  virtual JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const = 0;
-  virtual JointBounds bounds(const OptimalRetimeOptions& options) const = 0;
-  // The seed's re-timing by scaling with the S-curve (retime_by_scaling, its default check) with
-  // the standing headroom, where the machine has it and it converges: one more candidate for the
-  // jerk-limited result.
-  virtual std::optional<Trajectory> scaled_scurve(const Path&, const MetricSetd&, const Limits&,
-                                                  const Eigen::VectorXd&) const {
-    return std::nullopt;
-  }
-};
-
-class SerialModel final : public JointModel {
- public:
-  explicit SerialModel(const serial::SerialArm& arm) : arm_(arm) {}
-  int dof() const override { return arm_.dof(); }
-  std::string joint_name(int k) const override { return arm_.joint_names()[static_cast<std::size_t>(k)]; }
-  const char* position_unit() const override { return "rad"; }
-  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
-              double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
-    constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
-    q = detail::tracked_solution(arm_, pose, q_ref, no_time, s, guess);
-    q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
-  }
-  void torque_coefficients(GridPoint& p) const override {
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(p.q.size());
-    p.gravity = arm_.static_torques(p.q);
-    p.torque_u = arm_.torques(p.q, zero, p.q1) - p.gravity;
-    p.torque_x = arm_.torques(p.q, p.q1, p.q2) - p.gravity;
-  }
-  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const override {
-    JointCheckOptions options;
-    options.samples_between = samples_between;
-    return check_joint_limits(trajectory, arm_, q_start, options);
-  }
-  std::optional<Trajectory> scaled_scurve(const Path& path, const MetricSetd& set, const Limits& limits,
-                                          const Eigen::VectorXd& q_start) const override {
-    // Run with the joint speed and effort limits 0.1 % lower, as the grid laws are solved: the
-    // loop converges onto its limits at its check points, and a candidate needs that clearance.
-    JointLimits held_back = arm_.joint_limits();
-    held_back.velocity *= 1.0 - standing_headroom;
-    held_back.effort *= 1.0 - standing_headroom;
-    try {
-      return retime_by_scaling(path, set, limits, ProfileKind::scurve, arm_.with_joint_limits(held_back), q_start)
-          .trajectory;
-    } catch (const std::runtime_error&) {
-      return std::nullopt;  // the loop did not converge (or slowing down cannot help): no candidate
-    }
-  }
-  JointBounds bounds(const OptimalRetimeOptions& options) const override {
-    const JointLimits joint = arm_.joint_limits();
-    const int n = dof();
-    JointBounds b{joint.velocity, options.joint_acceleration.size() ? options.joint_acceleration : none(n), none(n)};
-    if (options.torque_limits && joint.effort.size() == n) b.effort = joint.effort;
-    return b;
-  }
-  static Eigen::VectorXd none(int n) { return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity()); }
-
- private:
-  const serial::SerialArm& arm_;
-};
-
-// A hexapod: the legs are the joints (ℓ = IK, ℓ′ = J_leg ξ′), no dynamics model.
-class HexapodModel final : public JointModel {
- public:
-  explicit HexapodModel(const Hexapod& hexapod) : hexapod_(hexapod) {}
-  int dof() const override { return 6; }
-  std::string joint_name(int k) const override { return "leg " + std::to_string(k + 1); }
-  const char* position_unit() const override { return "m"; }
-  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd&, const Eigen::VectorXd*, double,
-              Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
-    q = hexapod_.leg_lengths(pose);
-    q1 = hexapod_.leg_jacobian(pose) * per_sigma.vector();
-  }
-  void torque_coefficients(GridPoint&) const override {}
-  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd&, int samples_between) const override {
-    JointCheckOptions options;
-    options.samples_between = samples_between;
-    return check_joint_limits(trajectory, hexapod_, options);
-  }
-  JointBounds bounds(const OptimalRetimeOptions& options) const override {
-    return {hexapod_.leg_speed(), options.joint_acceleration.size() ? options.joint_acceleration : SerialModel::none(6),
-            SerialModel::none(6)};
-  }
-
- private:
-  const Hexapod& hexapod_;
-};
-
 // The joint path at σ, with d²q/dσ² by central differences inside [lo, hi] (one-sided at its
 // ends: a run's ends are rests, where the path may turn a corner).
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo,
@@ -319,7 +212,7 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
   joint_path(before, p.q, &guess_before, q_before, q1_before);
   joint_path(after, p.q, &guess_after, q_after, q1_after);
   p.q2 = (q1_after - q1_before) / (after - before);
-  model.torque_coefficients(p);
+  model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
   return p;
 }
 
@@ -778,7 +671,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
       if (limits.jerk) {
         std::vector<Trajectory> candidates;
         candidates.push_back(plan(path, set, limits, ProfileKind::scurve));
-        if (std::optional<Trajectory> scaled = model.scaled_scurve(path, set, limits, q_start)) {
+        if (std::optional<Trajectory> scaled = model.scaled_scurve(path, set, limits, q_start, standing_headroom)) {
           candidates.push_back(std::move(*scaled));
         }
         std::sort(candidates.begin(), candidates.end(),
@@ -810,18 +703,17 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
 
 }  // namespace
 
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
-                                   const OptimalRetimeOptions& options) {
-  require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
-          "must equal the arm's dof " + std::to_string(arm.dof()));
-  require_finite(q_start, "q_start");
-  return fastest_timing(path, set, limits, SerialModel(arm), q_start, options);
+std::optional<Trajectory> JointModel::scaled_scurve(const Path&, const MetricSetd&, const Limits&, const Eigen::VectorXd&,
+                                                 double) const {
+  return std::nullopt;
 }
 
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
-                                   const OptimalRetimeOptions& options) {
-  return fastest_timing(path, set, limits, HexapodModel(hexapod), hexapod.leg_lengths(hexapod.home()), options);
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
+  require(q_start.size() == model.dof(), "q_start size", static_cast<long>(q_start.size()),
+          "must equal the machine's dof " + std::to_string(model.dof()));
+  require_finite(q_start, "q_start");
+  return fastest_timing(path, set, limits, model, q_start, options);
 }
 
 }  // namespace dispkin

@@ -8,7 +8,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 #include "path_geometry.hpp"
 
 namespace dispkin {

@@ -1,5 +1,5 @@
 // The overlapped velocity method (overlap.hpp).
-#include "dispkin/overlap.hpp"
+#include "dispkin/planning/overlap.hpp"
 
 #include <algorithm>
 #include <string>

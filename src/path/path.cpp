@@ -1,5 +1,5 @@
 // Pose paths: LIN, CIRC and PTP geometry and the cutting of arcs into sections.
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -8,8 +8,8 @@
 #include <type_traits>
 #include <variant>
 
-#include "dispkin/hexapod.hpp"
-#include "dispkin/path.hpp"
+#include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/path/path.hpp"
 
 namespace dispkin {
 

@@ -15,7 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "dispkin/curve_section.hpp"
+#include "dispkin/path/curve_section.hpp"
 #include "dispkin/disp.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/metric_set.hpp"

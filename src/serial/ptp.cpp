@@ -1,5 +1,5 @@
 // PTP moves of a serial arm under the DISP limit: cutting, velocity-limit curve, sampling (ptp.hpp).
-#include "dispkin/ptp.hpp"
+#include "dispkin/serial/ptp.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "dispkin/error.hpp"
-#include "dispkin/velocity_limit.hpp"
+#include "dispkin/planning/velocity_limit.hpp"
 
 namespace dispkin {
 namespace {

@@ -47,10 +47,10 @@
 
 #include <Eigen/Core>
 
-#include "dispkin/curve_section.hpp"
+#include "dispkin/path/curve_section.hpp"
 #include "dispkin/metric_set.hpp"
-#include "dispkin/path.hpp"
-#include "dispkin/planner.hpp"
+#include "dispkin/path/path.hpp"
+#include "dispkin/planning/planner.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/serial/revolute_chain.hpp"

@@ -1,5 +1,5 @@
 // Time-optimal laws under a piecewise-constant velocity limit (velocity_limit.hpp).
-#include "dispkin/velocity_limit.hpp"
+#include "dispkin/planning/velocity_limit.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 
 #include <Eigen/Core>
 
-#include "dispkin/planner.hpp"
+#include "dispkin/planning/planner.hpp"
 
 namespace dispkin {
 

@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "dispkin/disp.hpp"
-#include "dispkin/ptp.hpp"
+#include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
 namespace detail {

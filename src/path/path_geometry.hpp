@@ -4,7 +4,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 
 namespace dispkin {
 namespace detail {

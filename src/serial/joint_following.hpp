@@ -1,18 +1,16 @@
-// Following a Cartesian trajectory with a serial arm's joints (internal; retiming.cpp and
-// optimal_retiming.cpp).
+// Following a Cartesian trajectory with a serial arm's joints: the inverse-kinematics branch
+// continuous from a reference configuration (internal to the serial plugin; joint_following.cpp).
 #pragma once
 
 #include <string>
 
 #include <Eigen/Core>
 
+#include "dispkin/error.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
 namespace dispkin::detail {
-
-//! "t = … s (path position s = … m)" for messages; only the path position when t is NaN.
-std::string where(double t, double s);
 
 //! The IK solution nearest to q_ref, each joint first moved by a multiple of 2π to the value
 //! nearest to q_ref's (branch continuity for joints whose range exceeds one turn). Throws

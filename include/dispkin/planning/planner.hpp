@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "dispkin/metric_set.hpp"
-#include "dispkin/path.hpp"
+#include "dispkin/path/path.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/profile.hpp"
-#include "dispkin/section_motion.hpp"
+#include "dispkin/path/section_motion.hpp"
 
 namespace dispkin {
 

@@ -1,9 +1,12 @@
-// Joint-limit prediction and the seed's re-timing loop (retiming.hpp).
-#include "dispkin/retiming.hpp"
+// Joint-limit prediction and re-timing for a serial arm (serial_retiming.hpp): its check, the KUKA
+// re-timing patent's scaling loop, and the arm as a JointModel for retime_optimal.
+#include "dispkin/serial/serial_retiming.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -13,100 +16,9 @@
 #include "joint_following.hpp"
 
 namespace dispkin {
-namespace detail {
-
-std::string where(double t, double s) {
-  std::ostringstream out;
-  if (std::isnan(t)) {
-    out << "path position s = " << s << " m";
-  } else {
-    out << "t = " << t << " s (path position s = " << s << " m)";
-  }
-  return out.str();
-}
-
-Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
-                                    double t, double s) {
-  constexpr double two_pi = 6.28318530717958647692;
-  serial::InverseOptions options;
-  options.offer_equivalents = false;
-  options.keep_outside_limits = true;  // reported as a position excursion, not hidden
-  const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
-  if (solutions.empty()) throw std::runtime_error("the pose at " + where(t, s) + " has no inverse-kinematics solution");
-  Eigen::VectorXd best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (Eigen::VectorXd q : solutions) {
-    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += two_pi * std::round((q_ref(i) - q(i)) / two_pi);
-    const double distance = (q - q_ref).norm();
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = q;
-    }
-  }
-  return best;
-}
-
-Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
-                                 double s, const Eigen::VectorXd* guess) {
-  // Newton's method on the body-frame pose error from q_ref. Along a trajectory consecutive
-  // poses are close, so it converges quadratically in two or three steps to the solution on
-  // q_ref's branch — a third of the cost of enumerating every analytic solution. Anything
-  // unusual (no convergence, a near-singular Jacobian, a step of more than 0.3 rad, where a
-  // different branch may have been reached) falls back to the analytic nearest solution.
-  constexpr double tolerance = 1e-13, largest_step = 0.3;
-  Eigen::VectorXd q = guess ? *guess : q_ref;
-  for (int iteration = 0; iteration < 6; ++iteration) {
-    const Eigen::Matrix<double, 6, 1> error = (arm.forward(q).inverse() * pose).log().vector();
-    if (error.lpNorm<Eigen::Infinity>() <= tolerance) {
-      if ((q - q_ref).lpNorm<Eigen::Infinity>() <= largest_step) return q;
-      break;
-    }
-    const Eigen::MatrixXd j = arm.body_jacobian(q);
-    if (j.cols() != 6) break;
-    const Eigen::Matrix<double, 6, 6> j6 = j;
-    const Eigen::PartialPivLU<Eigen::Matrix<double, 6, 6>> lu(j6);
-    if (!(std::abs(lu.determinant()) > 1e-9)) break;
-    q += lu.solve(error);
-    if (!q.allFinite()) break;
-  }
-  return continuous_solution(arm, pose, q_ref, t, s);
-}
-
-Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
-                               double t, double s) {
-  const Eigen::MatrixXd j = arm.body_jacobian(q);
-  if (j.cols() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(j.cols()), "must be 6 to invert the Jacobian"));
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(j);
-  if (lu.rcond() < 1e-10) {
-    throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " + std::to_string(lu.rcond()) + ")");
-  }
-  return lu.solve(body.vector());
-}
-
-}  // namespace detail
-
 using detail::tracked_solution;
 using detail::joint_velocity;
 using detail::where;
-
-namespace {
-
-// The checked instants of `trajectory` (options validated here): its characteristic points
-// and samples_between equidistant ones between consecutive ones.
-std::vector<double> checked_times(const Trajectory& trajectory, const JointCheckOptions& options) {
-  require(options.samples_between >= 0, "samples_between", static_cast<long>(options.samples_between), "must be ≥ 0");
-  require_positive(options.difference_step, "difference_step");
-  const std::vector<double> marks = trajectory.characteristic_times();
-  std::vector<double> times;
-  for (std::size_t k = 0; k + 1 < marks.size(); ++k) {
-    for (int i = 0; i <= options.samples_between; ++i)
-      times.push_back(marks[k] + (marks[k + 1] - marks[k]) * i / (options.samples_between + 1));
-  }
-  times.push_back(marks.back());
-  return times;
-}
-
-}  // namespace
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
@@ -185,46 +97,6 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
   return report;
 }
 
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
-                                    const JointCheckOptions& options) {
-  const std::vector<double> times = checked_times(trajectory, options);
-  const double duration = trajectory.duration(), h = options.difference_step;
-  auto leg_speeds = [&](const TrajectorySample& at) -> Eigen::VectorXd {
-    return hexapod.leg_jacobian(at.pose) * at.body_twist.vector();
-  };
-  JointLimitReport report;
-  for (const double t : times) {
-    const TrajectorySample here = trajectory.sample(t);
-    JointSample sample;
-    sample.time = t;
-    sample.s = here.s;
-    sample.q = hexapod.leg_lengths(here.pose);
-    sample.qd = leg_speeds(here);
-    const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
-    sample.qdd = t_after > t_before
-                     ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
-                                       (t_after - t_before))
-                     : Eigen::VectorXd::Zero(6);
-    const std::size_t index = report.samples.size();
-    for (int k = 0; k < 6; ++k) {
-      const double excess = std::max(hexapod.leg_min()(k) - sample.q(k), sample.q(k) - hexapod.leg_max()(k));
-      if (excess > report.position_excess) {
-        report.position_excess = excess;
-        report.position_joint = k;
-        report.position_sample = index;
-      }
-      const double f = std::abs(sample.qd(k)) / hexapod.leg_speed()(k);
-      if (f > report.velocity_factor) {
-        report.velocity_factor = f;
-        report.velocity_joint = k;
-        report.velocity_sample = index;
-      }
-    }
-    report.samples.push_back(std::move(sample));
-  }
-  return report;
-}
-
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options, int max_iterations) {
@@ -242,7 +114,7 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
     if (report.velocity_factor <= 1.0 && report.acceleration_factor <= 1.0) {
       return RetimeResult{std::move(trajectory), scaled, iteration, std::move(report)};
     }
-    // The seed's rule: velocity over FVEL, acceleration over FACC (each only when above 1).
+    // The patent's rule: velocity over FVEL, acceleration over FACC (each only when above 1).
     // The dynamic torque also grows with q̇² (centripetal and Coriolis terms), so a step may
     // fall short: hence the loop.
     if (report.velocity_factor > 1.0) scaled.velocity /= report.velocity_factor;
@@ -255,6 +127,73 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
   throw std::runtime_error("re-timing did not converge in " + std::to_string(max_iterations) +
                            " plans (velocity limit now " + std::to_string(scaled.velocity) + " m/s, acceleration " +
                            std::to_string(scaled.acceleration) + " m/s²)");
+}
+
+namespace {
+
+class SerialModel final : public JointModel {
+ public:
+  explicit SerialModel(const serial::SerialArm& arm) : arm_(arm) {}
+  int dof() const override { return arm_.dof(); }
+  std::string joint_name(int k) const override { return arm_.joint_names()[static_cast<std::size_t>(k)]; }
+  const char* position_unit() const override { return "rad"; }
+  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
+              double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
+    constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
+    q = detail::tracked_solution(arm_, pose, q_ref, no_time, s, guess);
+    q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
+  }
+  void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
+                           Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const override {
+    // g = τ(q, 0, 0), M q′ = τ(q, 0, q′) − g, M q″ + C(q, q′) q′ = τ(q, q′, q″) − g (doc/retiming.md).
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
+    gravity = arm_.static_torques(q);
+    torque_u = arm_.torques(q, zero, q1) - gravity;
+    torque_x = arm_.torques(q, q1, q2) - gravity;
+  }
+  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const override {
+    JointCheckOptions options;
+    options.samples_between = samples_between;
+    return check_joint_limits(trajectory, arm_, q_start, options);
+  }
+  std::optional<Trajectory> scaled_scurve(const Path& path, const MetricSetd& set, const Limits& limits,
+                                          const Eigen::VectorXd& q_start, double headroom) const override {
+    // Run with the joint speed and effort limits 0.1 % lower, as the grid laws are solved: the
+    // loop converges onto its limits at its check points, and a candidate needs that clearance.
+    JointLimits held_back = arm_.joint_limits();
+    held_back.velocity *= 1.0 - headroom;
+    held_back.effort *= 1.0 - headroom;
+    try {
+      return retime_by_scaling(path, set, limits, ProfileKind::scurve, arm_.with_joint_limits(held_back), q_start)
+          .trajectory;
+    } catch (const std::runtime_error&) {
+      return std::nullopt;  // the loop did not converge (or slowing down cannot help): no candidate
+    }
+  }
+  JointBounds bounds(const OptimalRetimeOptions& options) const override {
+    const JointLimits joint = arm_.joint_limits();
+    const int n = dof();
+    JointBounds b{joint.velocity, options.joint_acceleration.size() ? options.joint_acceleration : JointBounds::unlimited(n),
+                  JointBounds::unlimited(n)};
+    if (options.torque_limits && joint.effort.size() == n) b.effort = joint.effort;
+    return b;
+  }
+
+ private:
+  const serial::SerialArm& arm_;
+};
+
+}  // namespace
+
+std::unique_ptr<JointModel> joint_model(const serial::SerialArm& arm) { return std::make_unique<SerialModel>(arm); }
+
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options) {
+  require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
+          "must equal the arm's dof " + std::to_string(arm.dof()));
+  require_finite(q_start, "q_start");
+  return retime_optimal(path, set, limits, SerialModel(arm), q_start, options);
 }
 
 }  // namespace dispkin

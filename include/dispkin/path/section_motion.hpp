@@ -17,8 +17,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "dispkin/curve_section.hpp"
-#include "dispkin/path.hpp"
+#include "dispkin/path/curve_section.hpp"
+#include "dispkin/path/path.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {

@@ -4,7 +4,7 @@
 // JSON rather than YAML: nlohmann/json is a single header-only Debian package
 // (nlohmann-json3-dev) linked only at build time, so the installed library gains no runtime
 // dependency, and Python reads the same file with the standard library.
-#include "dispkin/hexapod.hpp"
+#include "dispkin/hexapod/hexapod.hpp"
 
 #include <cmath>
 #include <fstream>

@@ -1,5 +1,5 @@
 // The DISP trajectory planner (MATH.md §5–7).
-#include "dispkin/planner.hpp"
+#include "dispkin/planning/planner.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "dispkin/error.hpp"
-#include "dispkin/velocity_limit.hpp"
+#include "dispkin/planning/velocity_limit.hpp"
 
 namespace dispkin {
 namespace {

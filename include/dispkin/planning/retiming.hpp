@@ -1,0 +1,185 @@
+//! Joint-limit prediction and re-timing of a planned Cartesian trajectory, for any machine whose
+//! joints follow the path (doc/retiming.md).
+//!
+//! A machine enters through the JointModel interface: its joint positions along the path (the
+//! branch continuous from a start configuration) and their derivative per unit of path, its
+//! joint limits, and, where it has a dynamics model, the torque coefficients. The serial-arm
+//! and hexapod plugins implement it (serial/serial_retiming.hpp, hexapod/hexapod_retiming.hpp,
+//! which also hold their check_joint_limits and the KUKA re-timing patent's scaling loop).
+//!
+//! check_joint_limits samples the trajectory at the profile's characteristic points (every
+//! phase boundary and phase middle of every time law) and at `samples_between` equidistant
+//! times between consecutive ones, and reports the factors of the KUKA re-timing patent ("The
+//! robot drives through a preset working track", Burkhart et al., filed 2018-11-12):
+//!   FVEL = maxᵢ |q̇ᵢ| / q̇maxᵢ,   FACC = maxᵢ |τdyn,ᵢ| / (τmaxᵢ − |τsta,ᵢ|).
+//!
+//! retime_optimal is the fastest path parameterisation that keeps the DISP limits and the
+//! joint velocity, acceleration and torque limits at once, slowing down only where a limit
+//! binds (reachability analysis over a grid of s, as in TOPP-RA). With a jerk limit
+//! (limits.jerk) it is followed by jerk limiting: each rest-to-rest run's law is replaced by its
+//! moving average over a window T ≤ 2a/j (a/j, the S-curve's, wherever the acceleration does not
+//! reverse within T), whose jerk is bounded by j; the speed caps are tightened beforehand to their
+//! minimum over the distance the window spans, so the DISP limits still hold rigorously, and the
+//! joint limits through the same dense check and refinement.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dispkin/path/path.hpp"
+#include "dispkin/planning/planner.hpp"
+
+namespace dispkin {
+
+struct JointCheckOptions {
+  int samples_between = 10;  //!< equidistant samples between characteristic points, ≥ 0
+  //! Time step of the central differences for q̈ (s), > 0.
+  double difference_step = 1e-4;
+};
+
+//! The machine's joint state at one checked instant.
+struct JointSample {
+  double time = 0.0, s = 0.0;
+  Eigen::VectorXd q, qd, qdd;
+  Eigen::VectorXd static_torque, dynamic_torque;  //!< g(q); τ(q, q̇, q̈) − g(q)
+};
+
+//! What check_joint_limits found.
+struct JointLimitReport {
+  std::vector<JointSample> samples;
+  double velocity_factor = 0.0;      //!< FVEL (0 if no joint states a velocity limit)
+  double acceleration_factor = 0.0;  //!< FACC (0 if no joint states an effort limit)
+  int velocity_joint = -1;           //!< the joint and sample where FVEL is reached
+  std::size_t velocity_sample = 0;
+  int torque_joint = -1;             //!< the joint and sample where FACC is reached
+  std::size_t torque_sample = 0;
+  double position_excess = 0.0;  //!< largest excursion of q outside [lower, upper] (rad), 0 if none
+  int position_joint = -1;
+  std::size_t position_sample = 0;
+
+  bool within_limits() const noexcept {
+    return velocity_factor <= 1.0 && acceleration_factor <= 1.0 && position_excess == 0.0;
+  }
+};
+
+//! The result of the KUKA re-timing patent's scaling loop (retime_by_scaling).
+struct RetimeResult {
+  Trajectory trajectory;
+  Limits limits;              //!< the scaled limits it was planned with
+  int iterations = 0;         //!< plans made (1: the original already fits)
+  JointLimitReport report;    //!< of the final trajectory: within_limits() is true
+};
+
+//! Options of retime_optimal.
+struct OptimalRetimeOptions {
+  //! Grid intervals over the whole path (≥ 2; each rest-to-rest run gets a share proportional
+  //! to its length, at least 2). Limits are imposed at both ends of every interval.
+  int grid_intervals = 100;
+  //! Joint acceleration limits q̈maxᵢ (rad/s² or m/s², each > 0, +∞ for none); empty: none
+  //! (URDF states none; MoveIt's joint_limits.yaml does).
+  Eigen::VectorXd joint_acceleration;
+  //! Keep |τᵢ| ≤ the effort limit where the machine states one.
+  bool torque_limits = true;
+  //! Step of the central differences for q″(s), as a fraction of the run's grid interval, > 0.
+  double difference_step = 1e-3;
+  //! The dense check of the result: samples between its characteristic points (≥ 0).
+  int check_samples_between = 3;
+  //! Re-solves with tightened limits when the dense check finds an overshoot between grid
+  //! points (≥ 0); if the last one still overshoots, retime_optimal throws.
+  int max_refinements = 6;
+};
+
+//! What retime_optimal produced.
+struct OptimalRetimeResult {
+  //! The re-timed trajectory: the same path, one constant-acceleration law per grid interval
+  //! (with a jerk limit: constant-jerk laws of at most seven phases each).
+  Trajectory trajectory;
+  //! The dense check of `trajectory` (check_joint_limits at check_samples_between).
+  JointLimitReport report;
+  //! Largest |q̇ᵢ|/q̇maxᵢ, |q̈ᵢ|/q̈maxᵢ and |τᵢ|/τmaxᵢ at the checked samples (each ≤ 1; 0 where no
+  //! limit applies). τ is the whole torque, static plus dynamic.
+  double velocity_ratio = 0.0, acceleration_ratio = 0.0, torque_ratio = 0.0;
+  //! The fraction by which the joint limits were tightened on the grid so that they hold between
+  //! grid points too (0: not needed), and the re-solves that took.
+  double margin = 0.0;
+  int refinements = 0;
+  //! The grid positions s (m) and ṡ there (m/s) (with a jerk limit: of the law before its
+  //! moving average).
+  std::vector<double> grid_s, grid_speed;
+  //! With a jerk limit: the longest moving-average window T (s) of the rest-to-rest runs, the
+  //! time each run grew by; 0 without, and 0 when the trajectory is the plain S-curve plan or
+  //! the patent's scaling loop with the S-curve (either keeps every joint limit and is faster than the
+  //! average).
+  double jerk_window = 0.0;
+};
+
+
+//! The joint limits re-timing keeps (+∞ where none).
+struct JointBounds {
+  Eigen::VectorXd velocity, acceleration, effort;
+  //! n entries of +∞.
+  static Eigen::VectorXd unlimited(int n) { return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity()); }
+};
+
+//! What re-timing needs of a machine whose joints follow a Cartesian path: the joints along the
+//! path, their limits, the torque coefficients where it has a dynamics model, and the dense check
+//! of a timed result. Implemented by the serial-arm and hexapod plugins; a machine of another
+//! kind implements it to use retime_optimal.
+class JointModel {
+ public:
+  virtual ~JointModel() = default;
+  virtual int dof() const = 0;
+  //! The name of joint k in messages ("shoulder_pan_joint", "leg 1").
+  virtual std::string joint_name(int k) const = 0;
+  //! The unit of a joint position in messages ("rad", "m").
+  virtual const char* position_unit() const = 0;
+  //! q at `pose` on the branch of q_ref (Newton from `guess` where that applies, q_ref if null)
+  //! and q′ = J⁻¹ ξ′, the joint velocity per unit of path for the body twist `per_sigma` per
+  //! unit of path; `s` names the place in messages. Throws std::runtime_error where the pose has
+  //! no solution or the machine is singular.
+  virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
+                      double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
+  //! The torque along the path is τ = torque_u σ̈ + torque_x σ̇² + gravity, from q, q′ and q″
+  //! (doc/retiming.md); all three are left empty without a dynamics model.
+  virtual void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
+                                   Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const = 0;
+  //! check_joint_limits of the machine for `trajectory` from q_start.
+  virtual JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const = 0;
+  //! The limits to keep: the machine's velocity and effort limits (effort only with
+  //! options.torque_limits) and options.joint_acceleration.
+  virtual JointBounds bounds(const OptimalRetimeOptions& options) const = 0;
+  //! The KUKA re-timing patent's scaling loop with the S-curve, where the machine has it and it
+  //! converges with every joint limit held back by `headroom` (a fraction): one more candidate
+  //! for the jerk-limited result. None by default.
+  virtual std::optional<Trajectory> scaled_scurve(const Path& path, const MetricSetd& set, const Limits& limits,
+                                                  const Eigen::VectorXd& q_start, double headroom) const;
+};
+
+//! The instants check_joint_limits looks at: the characteristic times of `trajectory` and
+//! options.samples_between equidistant ones between consecutive ones. Throws
+//! std::invalid_argument for bad options.
+std::vector<double> checked_times(const Trajectory& trajectory, const JointCheckOptions& options);
+
+//! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
+//! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the
+//! joint limits of `model` (model.bounds(options)), followed from q_start (size model.dof()).
+//! Without limits.jerk the time laws are piecewise-constant s̈ (one per grid interval and
+//! section). With limits.jerk they are piecewise-constant s⃛ with |s⃛| ≤ j inside every section
+//! (at a tangent junction ṡ steps with the section's ds/dσ, ≤ 1 %, as without a jerk limit; the
+//! motion itself is smooth there): each run is the jerk-free result, re-solved with speed caps
+//! tightened over the window's reach and its lowest acceleration cap, then averaged over a window
+//! T (jerk_window), so it takes T longer per run than that re-solve. If plan(path, set, limits,
+//! scurve) or model.scaled_scurve keeps every joint limit 0.1 % clear at a dense check (at least
+//! 10 samples between characteristic points) and is faster, the fastest of them is returned
+//! instead (jerk_window 0). Throws std::invalid_argument for bad options/limits or a q_start of
+//! the wrong size, std::runtime_error where the path has no joint solution or is singular, where
+//! the static torque reaches a limit, where a joint leaves its position range, or if the dense
+//! check still fails after max_refinements.
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options = {});
+
+}  // namespace dispkin

@@ -1,0 +1,64 @@
+//! Joint-limit prediction and re-timing of Cartesian trajectories for a serial arm: its joints
+//! follow the path on the inverse-kinematics branch continuous from a start configuration, with
+//! joint velocities from the body Jacobian and torques from the arm's dynamics model
+//! (doc/retiming.md). The generic parts (reports, options, retime_optimal against a JointModel)
+//! are in planning/retiming.hpp. The planned poses are the arm's tip (tip_link) poses in its base
+//! frame.
+#pragma once
+
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "dispkin/metric_set.hpp"
+#include "dispkin/path/path.hpp"
+#include "dispkin/planning/planner.hpp"
+#include "dispkin/planning/retiming.hpp"
+#include "dispkin/profile.hpp"
+#include "dispkin/serial/serial_arm.hpp"
+
+namespace dispkin {
+
+//! Follows `trajectory` with `arm` from the configuration `q_start` (the IK solution nearest to
+//! it at t = 0, then nearest to the previous sample). Throws std::invalid_argument for bad
+//! options or a q_start of the wrong size, std::runtime_error naming the time and path position
+//! where a pose has no IK solution, where the Jacobian is singular, or where the static torque
+//! alone exceeds a joint's effort limit (the KUKA re-timing patent's "cannot be reached by slowing down").
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
+                                    const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
+
+//! Plans `path`, checks it, scales the limits by 1/FVEL and 1/FACC and re-plans until both
+//! factors are ≤ 1 at every checked sample. Throws std::runtime_error if a position limit is
+//! violated (slowing down cannot help), if the static torque exceeds a limit, or if
+//! `max_iterations` plans do not converge.
+RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+                               const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                               const JointCheckOptions& options = {}, int max_iterations = 20);
+
+//! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
+//! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the
+//! arm's joint velocity limits, `options.joint_acceleration` and the effort limits, followed
+//! from q_start. Without limits.jerk the time laws are piecewise-constant s̈ (one per grid
+//! interval and section). With limits.jerk they are piecewise-constant s⃛ with |s⃛| ≤ j inside
+//! every section (at a tangent junction ṡ steps with the section's ds/dσ, ≤ 1 %, as without a
+//! jerk limit; the motion itself is smooth there): each run is the jerk-free result, re-solved
+//! with speed caps tightened over the window's reach and its lowest acceleration cap, then
+//! averaged over a window T (jerk_window), so it takes T longer per run than that re-solve.
+//! If plan(path, set, limits, scurve) or, for an arm, retime_by_scaling(path, set, limits, scurve,
+//! arm, q_start) keeps every joint limit 0.1 % clear at a dense check (at least 10 samples between
+//! characteristic points) and is faster, the fastest of them is returned instead (jerk_window 0):
+//! the result is never slower than the seed's scaling where that keeps the limits so.
+//! Throws std::invalid_argument for bad options/limits, std::runtime_error where the
+//! path has no IK solution or is singular, where the static torque reaches a limit, where a
+//! joint leaves its position range, or if the dense check still fails after max_refinements.
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options = {});
+
+//! The arm as a JointModel: joints by the continuous inverse-kinematics branch (Newton from the
+//! previous solution, all analytic solutions where that fails), q′ by the body Jacobian, torque
+//! coefficients by recursive Newton–Euler, and the scaling loop as a candidate. Holds a reference
+//! to `arm`, which must outlive it.
+std::unique_ptr<JointModel> joint_model(const serial::SerialArm& arm);
+
+}  // namespace dispkin
