@@ -136,7 +136,7 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
       .def("speed_limits", [](const Trajectory& t) {
         Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
         for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
-          const Trajectory::SpeedLimit& span = t.speed_limits()[k];
+          const SpeedLimit& span = t.speed_limits()[k];
           out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
         }
         return out;

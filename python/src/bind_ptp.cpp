@@ -73,7 +73,7 @@ time and no joint faster than its velocity limit. Sample it at any times (second
           [](const JointTrajectory& t) {
             Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
             for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
-              const Trajectory::SpeedLimit& span = t.speed_limits()[k];
+              const SpeedLimit& span = t.speed_limits()[k];
               out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
             }
             return out;

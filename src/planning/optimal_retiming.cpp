@@ -58,35 +58,6 @@
 #include "reachability.hpp"
 
 namespace dispkin {
-namespace detail {
-
-// Builds a trajectory on the same path with other time laws.
-struct TrajectoryAccess {
-  // `planned` with its laws replaced by `laws`, consecutive from s = 0 over its whole length,
-  // in `runs` rest-to-rest runs.
-  static Trajectory with_laws(const Trajectory& planned, const std::vector<Profile>& laws, std::size_t runs) {
-    Trajectory out = planned;
-    out.pieces_.clear();
-    out.pieces_.reserve(laws.size());
-    double time = 0.0, s = 0.0;
-    for (const Profile& law : laws) {
-      out.pieces_.push_back(Trajectory::Piece{law, time, time + law.duration(), s});
-      time += law.duration();
-      s += law.distance();
-    }
-    out.rest_pieces_ = runs;
-    return out;
-  }
-  // s at the start of section k, and the section holding s.
-  static double section_start(const Trajectory& t, std::size_t k) { return t.starts_[k].s; }
-  static std::size_t section_at(const Trajectory& t, double s) { return t.section_at(s, t.starts_.size()); }
-  // Pose and body twist per unit τ of section k at τ.
-  static void section_state(const Trajectory& t, std::size_t k, double tau, Posed& pose, Twistd& per_tau) {
-    t.motions_.at(k, tau, pose, per_tau);
-  }
-};
-
-}  // namespace detail
 namespace {
 
 // The fraction of every joint limit kept free at the checked samples, for what happens between
@@ -99,7 +70,6 @@ constexpr double standing_headroom = 1e-3;
 constexpr int candidate_samples_between = 10;
 
 using detail::HalfPlane;
-using detail::TrajectoryAccess;
 
 // The planned path by the smooth parameter σ (see the file comment), with each section's DISP
 // limits expressed in σ.
@@ -117,19 +87,19 @@ class SmoothParameter {
     Posed pose;
     Twistd out, in;
     for (std::size_t k = 0; k < n; ++k) {
-      const bool run_start = std::binary_search(rests.begin(), rests.end(), TrajectoryAccess::section_start(planned, k));
+      const bool run_start = std::binary_search(rests.begin(), rests.end(), planned.path().section_start(k));
       ell_[k] = lengths[k];
       if (k > 0 && !run_start && lengths[k] > 0.0) {
-        TrajectoryAccess::section_state(planned, k - 1, 1.0, pose, out);
-        TrajectoryAccess::section_state(planned, k, 0.0, pose, in);
+        planned.path().section_state_at(k - 1, 1.0, pose, out);
+        planned.path().section_state_at(k, 0.0, pose, in);
         const double n_out = out.vector().norm(), n_in = in.vector().norm();
         if (n_out > 0.0 && n_in > 0.0 && ell_[k - 1] > 0.0) ell_[k] = ell_[k - 1] * n_in / n_out;
       }
       sigma_start_[k + 1] = sigma_start_[k] + ell_[k];
       // The DISP velocity limit of the section: the span of the plan's curve that holds it.
       double cap = std::numeric_limits<double>::infinity();
-      const double middle = TrajectoryAccess::section_start(planned, k) + 0.5 * lengths[k];
-      for (const Trajectory::SpeedLimit& span : planned.speed_limits()) {
+      const double middle = planned.path().section_start(k) + 0.5 * lengths[k];
+      for (const SpeedLimit& span : planned.speed_limits()) {
         if (span.start_s <= middle && middle <= span.start_s + span.length) cap = std::min(cap, span.limit);
       }
       const double ratio = lengths[k] > 0.0 ? ell_[k] / lengths[k] : 1.0;  // σ per unit s
@@ -160,7 +130,7 @@ class SmoothParameter {
   void state(double sigma, Posed& pose, Twistd& per_sigma) const {
     const std::size_t k = section_at(sigma);
     const double tau = ell_[k] > 0.0 ? std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0) : 0.0;
-    TrajectoryAccess::section_state(planned_, k, tau, pose, per_sigma);
+    planned_.path().section_state_at(k, tau, pose, per_sigma);
     per_sigma = per_sigma * (ell_[k] > 0.0 ? 1.0 / ell_[k] : 0.0);
   }
 
@@ -175,9 +145,9 @@ class SmoothParameter {
 
  private:
   double sigma_at(double s) const noexcept {
-    const std::size_t k = TrajectoryAccess::section_at(planned_, s);
+    const std::size_t k = planned_.path().section_at(s, planned_.section_count());
     const double length = planned_.section_lengths()[k];
-    return sigma_start_[k] + (length > 0.0 ? (s - TrajectoryAccess::section_start(planned_, k)) / length * ell_[k] : 0.0);
+    return sigma_start_[k] + (length > 0.0 ? (s - planned_.path().section_start(k)) / length * ell_[k] : 0.0);
   }
 
   const Trajectory& planned_;
@@ -396,7 +366,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   // Path position s of a σ, for messages and the result.
   auto s_of = [&](double sigma) {
     const std::size_t k = smooth.section_at(sigma);
-    return TrajectoryAccess::section_start(planned, k) + (sigma - smooth.start(k)) * smooth.s_per_sigma(k);
+    return planned.path().section_start(k) + (sigma - smooth.start(k)) * smooth.s_per_sigma(k);
   };
 
   // The grid: each rest-to-rest run gets its share of the intervals.
@@ -656,7 +626,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
         }
       }
     }
-    result.trajectory = TrajectoryAccess::with_laws(planned, laws, runs.size());
+    result.trajectory = planned.with_time_law(TimeLaw::consecutive(laws, runs.size()));
 
     measure(result, options.check_samples_between);
     const double worst = std::max({result.velocity_ratio, result.acceleration_ratio, result.torque_ratio});

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
@@ -122,61 +123,6 @@ std::vector<LimitedSegment> speed_limit_segments(const std::vector<double>& acce
 
 }  // namespace
 
-namespace detail {
-
-void SectionMotions::reserve(const std::vector<Section>& sections) {
-  std::size_t lines = 0, arcs = 0, screws = 0;
-  for (const Section& s : sections) {
-    if (const auto* lin = std::get_if<LinSection>(&s)) {
-      ++(lin->interpolation == Interpolation::screw ? screws : lines);
-    } else if (std::holds_alternative<ArcSection>(s)) {
-      ++arcs;
-    }
-  }
-  entries_.reserve(sections.size());
-  lines_.reserve(lines);
-  arcs_.reserve(arcs);
-  screws_.reserve(screws);
-}
-
-void SectionMotions::append(const Section& section) {
-  if (const auto* lin = std::get_if<LinSection>(&section)) {
-    if (lin->interpolation == Interpolation::screw) {
-      entries_.push_back({Kind::screw, screws_.size()});
-      screws_.push_back(ScrewMotion{lin->start, (lin->start.inverse() * lin->end).log()});
-      return;
-    }
-    const Eigen::Quaterniond q0 = lin->start.quaternion();
-    const Eigen::Vector3d rotation = q0 * quaternion_log(Eigen::Quaterniond(q0.conjugate() * lin->end.quaternion()));
-    const double theta = rotation.norm();
-    const Eigen::Vector3d w_hat = theta > 0.0 ? Eigen::Vector3d(rotation / theta) : Eigen::Vector3d::UnitZ();
-    const Eigen::Vector3d c0 = lin->start * lin->pivot;
-    entries_.push_back({Kind::line, lines_.size()});
-    lines_.emplace_back(TurningFrame(q0, w_hat, theta, lin->pivot), c0, (lin->end * lin->pivot) - c0);
-    return;
-  }
-  if (const auto* curve = std::get_if<CurveSection>(&section)) {
-    // Sections of one curve come in a run: compare with the latest curve only.
-    if (curves_.empty() || !curves_.back().holds(*curve)) {
-      curves_.push_back(CurveMotion{curve->q0, curve->position, curve->rotation, curve->pivot});
-    }
-    entries_.push_back({Kind::curve, curves_.size() - 1, curve->v0, curve->span()});
-    return;
-  }
-  const auto& arc = std::get<ArcSection>(section);
-  ArcMotion m;
-  m.frame = TurningFrame(arc.start.quaternion(), arc.rotation_axis, arc.rotation_angle, arc.pivot);
-  const Eigen::Vector3d radius = arc.start * arc.pivot - arc.center;
-  const Eigen::Vector3d along = radius.dot(arc.normal) * arc.normal;
-  m.center_along = arc.center + along;
-  m.radius_across = radius - along;
-  m.radius_side = arc.normal.cross(m.radius_across);
-  m.angle = arc.angle;
-  entries_.push_back({Kind::arc, arcs_.size()});
-  arcs_.push_back(m);
-}
-
-}  // namespace detail
 
 void Limits::validate(ProfileKind kind) const {
   require_limit(velocity, "velocity");
@@ -197,7 +143,6 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
                 const PlanOptions& options) {
   limits.validate(profile);
   set.require_well_formed();
-  Trajectory trajectory;
   const std::vector<Section>& sections = path.sections();
   const std::size_t n = sections.size();
   const std::vector<double>& minimum = options.min_section_lengths;
@@ -211,133 +156,41 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
   // under its own limit. Lengths and acceleration bounds come from one evaluation per section
   // (the same as Path::section_lengths and section_acceleration_bound give).
   detail::GroupFactors factors(set, limits.velocity);
-  trajectory.lengths_.resize(n);
-  std::vector<double> accelerations(n);
+  std::vector<double> lengths(n), accelerations(n);
   for (std::size_t k = 0; k < n; ++k) {
     const detail::SectionBounds bounds = detail::section_bounds(sections[k], factors);
-    trajectory.lengths_[k] = bounds.length;
+    lengths[k] = bounds.length;
     accelerations[k] = bounds.acceleration;
   }
   // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
   // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening.
-  for (std::size_t k = 0; k < minimum.size(); ++k) trajectory.lengths_[k] = std::max(trajectory.lengths_[k], minimum[k]);
-  trajectory.motions_.reserve(sections);
-  for (const Section& section : sections) trajectory.motions_.append(section);
-  trajectory.starts_.resize(n);
-  double s = 0.0;
-  for (std::size_t k = 0; k < n; ++k) {
-    trajectory.starts_[k] = {s, 1.0 / trajectory.lengths_[k]};
-    s += trajectory.lengths_[k];
-  }
+  for (std::size_t k = 0; k < minimum.size(); ++k) lengths[k] = std::max(lengths[k], minimum[k]);
+  SampledPath sampled(sections, lengths);
 
   // Rest-to-rest runs between corners; within a run the velocity-limit curve.
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
-  double time = 0.0;
+  TimeLaw law;
+  std::vector<SpeedLimit> speed_limits;
+  std::vector<double> rests{0.0};
   std::size_t first = 0;
-  trajectory.rest_s_.push_back(0.0);
   for (std::size_t k = 0; k < n; ++k) {
-    if (k + 1 < n && tangent_continuous(sections[k], trajectory.lengths_[k], sections[k + 1], trajectory.lengths_[k + 1]))
-      continue;
-    const std::vector<LimitedSegment> segments = speed_limit_segments(accelerations, trajectory.lengths_, first, k + 1, limits);
-    double start_s = trajectory.starts_[first].s;
+    if (k + 1 < n && tangent_continuous(sections[k], lengths[k], sections[k + 1], lengths[k + 1])) continue;
+    const std::vector<LimitedSegment> segments = speed_limit_segments(accelerations, lengths, first, k + 1, limits);
+    double start_s = sampled.section_start(first);
     double span_s = start_s;
     for (const LimitedSegment& segment : segments) {
-      trajectory.speed_limits_.push_back({span_s, segment.length, segment.limit});
+      speed_limits.push_back({span_s, segment.length, segment.limit});
       span_s += segment.length;
     }
-    for (const Profile& law : velocity_limited_law(segments, limits.acceleration, jerk)) {
-      trajectory.pieces_.push_back(Trajectory::Piece{law, time, time + law.duration(), start_s});
-      time += law.duration();
-      start_s += law.distance();
+    for (const Profile& piece : velocity_limited_law(segments, limits.acceleration, jerk)) {
+      law.append(piece, start_s);
+      start_s += piece.distance();
     }
-    ++trajectory.rest_pieces_;
-    trajectory.rest_s_.push_back(k + 1 == n ? trajectory.starts_[k].s + trajectory.lengths_[k] : trajectory.starts_[k + 1].s);
+    law.end_run();
+    rests.push_back(k + 1 == n ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1));
     first = k + 1;
   }
-  return trajectory;
-}
-
-std::vector<double> Trajectory::characteristic_times() const {
-  std::vector<double> times{0.0};
-  for (const Piece& piece : pieces_) {
-    const Profile& law = piece.profile;
-    for (int i = 0; i < law.phase_count(); ++i) {
-      const double begin = law.phase_start_time(i), end = law.phase_start_time(i + 1);
-      times.push_back(piece.start_time + 0.5 * (begin + end));
-      times.push_back(piece.start_time + end);
-    }
-  }
-  std::sort(times.begin(), times.end());
-  // Phases of vanishing length (a cruise over 10⁻⁹ of a law's distance, left by rounding) add
-  // instants that coincide within 10⁻⁹ of the duration: one of each is kept.
-  const double same = 1e-9 * duration();
-  times.erase(std::unique(times.begin(), times.end(), [same](double a, double b) { return b - a <= same; }), times.end());
-  return times;
-}
-
-std::size_t Trajectory::piece_at(double t, std::size_t piece) const noexcept {
-  const std::size_t last = pieces_.size() - 1;
-  // Piece p is it when the one before ends at or before t and p ends after t (or is the last).
-  const auto is_it = [&](std::size_t p) {
-    return (p == 0 || pieces_[p - 1].end_time <= t) && (p == last || t < pieces_[p].end_time);
-  };
-  if (piece <= last && is_it(piece)) return piece;
-  if (piece < last && is_it(piece + 1)) return piece + 1;
-  const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
-  return it == pieces_.end() ? last : static_cast<std::size_t>(it - pieces_.begin());
-}
-
-std::size_t Trajectory::section_at(double s, std::size_t section) const noexcept {
-  const std::size_t last = starts_.size() - 1;
-  // Section k is it when it starts at or before s (or is the first) and the next one starts
-  // after s (or k is the last).
-  const auto is_it = [&](std::size_t k) {
-    return (k == 0 || starts_[k].s <= s) && (k == last || s < starts_[k + 1].s);
-  };
-  if (section <= last && is_it(section)) return section;
-  if (section < last && is_it(section + 1)) return section + 1;
-  const auto next = std::upper_bound(starts_.begin(), starts_.end(), s, [](double x, const SectionStart& k) { return x < k.s; });
-  const std::size_t k = next == starts_.begin() ? 0 : static_cast<std::size_t>(next - starts_.begin()) - 1;
-  return std::min(k, last);
-}
-
-TrajectorySample Trajectory::sample(double t) const noexcept {
-  Cursor search{pieces_.size(), starts_.size()};  // no hint: binary search
-  return sample(t, search);
-}
-
-TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
-  TrajectorySample out;
-  if (pieces_.empty()) return out;
-  if (!(t > 0.0)) t = 0.0;
-  const std::size_t p = cursor.piece = piece_at(t, cursor.piece);
-  const Piece& piece = pieces_[p];
-  const ProfileState law = piece.profile.state_at(t - piece.start_time);
-  out.s = piece.start_s + law.s;
-  out.s_dot = law.v;
-  out.s_ddot = law.a;
-  const std::size_t k = cursor.section = section_state(out.s, cursor.section, out.pose, out.body_twist);
-  out.body_twist = out.body_twist * (out.s_dot * starts_[k].inverse_length);  // per τ → per second
-  return out;
-}
-
-void Trajectory::path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept {
-  if (starts_.empty()) return;
-  const std::size_t k = section_state(s, starts_.size(), pose, twist_per_s);
-  twist_per_s = twist_per_s * starts_[k].inverse_length;
-}
-
-std::size_t Trajectory::section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_tau) const noexcept {
-  const std::size_t k = section_at(s, hint);
-  const SectionStart& start = starts_[k];
-  const double tau = std::clamp((s - start.s) * start.inverse_length, 0.0, 1.0);
-  motions_.at(k, tau, pose, twist_per_tau);
-  return k;
-}
-
-void Trajectory::sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept {
-  Cursor cursor;
-  for (std::size_t i = 0; i < count; ++i) out[i] = sample(times[i], cursor);
+  return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests));
 }
 
 }  // namespace dispkin

@@ -195,16 +195,16 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   }
   out.law_acceleration_ = a_law;
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
-  double time = 0.0, start_s = 0.0, span_s = 0.0;
+  double start_s = 0.0, span_s = 0.0;
   for (const LimitedSegment& segment : segments) {
     out.speed_limits_.push_back({span_s, segment.length, segment.limit});
     span_s += segment.length;
   }
   for (const Profile& law : velocity_limited_law(segments, a_law, jerk)) {
-    out.pieces_.push_back(JointTrajectory::Piece{law, time, time + law.duration(), start_s});
-    time += law.duration();
+    out.law_.append(law, start_s);
     start_s += law.distance();
   }
+  out.law_.end_run();
   return out;
 }
 
@@ -220,7 +220,7 @@ void JointTrajectory::joints_at(double u, Out& q) const noexcept {
 
 JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
   JointTrajectorySample out;
-  if (pieces_.empty()) return out;
+  if (law_.size() == 0) return out;
   const auto n = static_cast<Eigen::Index>(q_start_.size());
   out.q.resize(n);
   out.qd.resize(n);
@@ -231,10 +231,9 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
     out.s = length();
     k = sections_.size() - 1;
   } else {
-    const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
-    const Piece& piece = it == pieces_.end() ? pieces_.back() : *it;
-    const ProfileState law = piece.profile.state_at(t - piece.start_time);
-    out.s = piece.start_s + law.s;
+    std::size_t piece = law_.size();  // no hint: binary search
+    const ProfileState law = law_.state_at(t, piece);
+    out.s = law.s;
     out.s_dot = law.v;
     out.s_ddot = law.a;
     const auto next = std::upper_bound(rates_.begin(), rates_.end(), out.s, [](double x, const SectionRate& r) { return x < r.s; });

@@ -100,12 +100,12 @@ Ratios dense_ratios(const Trajectory& traj, const serial::SerialArm& arm, const 
 
 // The DISP side: ṡ never above the plan's velocity-limit curve, |s̈| ≤ a, rests kept.
 void expect_disp_limits(const Trajectory& traj, const Limits& limits) {
-  const std::vector<Trajectory::SpeedLimit>& spans = traj.speed_limits();
+  const std::vector<SpeedLimit>& spans = traj.speed_limits();
   const int n = 20000;
   for (int i = 0; i <= n; ++i) {
     const TrajectorySample s = traj.sample(traj.duration() * i / n);
     double cap = limits.velocity;
-    for (const Trajectory::SpeedLimit& span : spans) {
+    for (const SpeedLimit& span : spans) {
       if (s.s >= span.start_s - 1e-12 && s.s <= span.start_s + span.length + 1e-12) cap = std::min(cap, span.limit);
     }
     ASSERT_LE(s.s_dot, cap * (1 + 1e-12)) << "s = " << s.s;

@@ -1,8 +1,9 @@
-//! The sampling forms of path sections: what Trajectory::sample evaluates, precomputed at
-//! planning time so that a sample costs at most two sine/cosine pairs (one per turning
-//! angle; short polynomials for the small turns of arc sections, power series for a curve's
-//! rotation up to 1 rad), no logarithm and no matrix (STYLE.md: the sampling path is noexcept and
-//! allocation-free). Internal to the planner (namespace detail).
+//! The sampling forms of path sections: what SampledPath (and so Trajectory::sample) evaluates,
+//! precomputed when the path is sampled so that a sample costs at most two sine/cosine pairs (one
+//! per turning angle; short polynomials for the small turns of arc sections, power series for a
+//! curve's rotation up to 1 rad), no logarithm and no matrix: the sampling path is noexcept and
+//! allocation-free. The numeric kernels they share (sin_cos, the series exp and right Jacobian)
+//! are in namespace detail.
 //!
 //! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
 //! same motion as the section's own pose()/twist() (to rounding). Sections cut from one cubic
@@ -81,6 +82,8 @@ inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eig
   jacobian_u = u - b * pu + cc * phi.cross(pu);
 }
 
+}  // namespace detail
+
 //! An orientation turning by α about a fixed world axis ŵ, q(α) = turn(ŵ, α) q₀, carrying
 //! the body point p (the pivot). With r = (0, ŵ) q₀ (a unit quaternion orthogonal to q₀):
 //!   q(α) = cos(α/2) q₀ + sin(α/2) r,
@@ -111,7 +114,7 @@ struct TurningFrame {
   //! The cosine and sine of the turn τθ and the orientation, from one sine/cosine pair of τθ/2.
   void at(double tau, Eigen::Quaterniond& q, double& cos_turn, double& sin_turn) const noexcept {
     double s, c;
-    sin_cos(0.5 * tau * theta, s, c);
+    detail::sin_cos(0.5 * tau * theta, s, c);
     q = Eigen::Quaterniond(c * q0.coeffs() + s * r.coeffs());
     cos_turn = 1.0 - 2.0 * s * s;
     sin_turn = 2.0 * s * c;
@@ -165,7 +168,7 @@ struct ArcMotion {
     double c, s;
     frame.at(tau, q, c, s);
     double sb, cb;
-    sin_cos(tau * angle, sb, cb);
+    detail::sin_cos(tau * angle, sb, cb);
     pose = Posed::unchecked(q, center_along + cb * radius_across + sb * radius_side - frame.pivot_world(c, s));
     // ċ = φ n̂ × (c − o) = φ (cos β n̂ × R⊥ − sin β R⊥).
     const Eigen::Vector3d c_dot = angle * (cb * radius_side - sb * radius_across);
@@ -185,6 +188,8 @@ struct ScrewMotion {
   }
 };
 
+namespace detail {
+
 //! Whether n doubles are equal bit for bit (+0 and −0 differ).
 inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
   return std::memcmp(a, b, n * sizeof(double)) == 0;
@@ -199,6 +204,8 @@ inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, con
          same_bits(section.rotation.a[0].data(), rotation.a[0].data(), 12) && same_bits(section.pivot.data(), pivot.data(), 3);
 }
 
+}  // namespace detail
+
 //! A cubic pose curve, shared by all the sections cut from it (they differ only in the part
 //! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
 //! per unit τ, as CurveSection::at.
@@ -208,12 +215,12 @@ struct CurveMotion {
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
 
   //! Whether `section` is cut from this curve.
-  bool holds(const CurveSection& section) const noexcept { return same_curve(q0, position, rotation, pivot, section); }
+  bool holds(const CurveSection& section) const noexcept { return detail::same_curve(q0, position, rotation, pivot, section); }
 
   void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
-    exp_and_right_jacobian_sampled(rotation.value(v), rotation.first(v), turn, omega);
+    detail::exp_and_right_jacobian_sampled(rotation.value(v), rotation.first(v), turn, omega);
     omega *= h;
     // A product of unit quaternions: unit to rounding without normalising.
     const Eigen::Quaterniond q = q0 * turn;
@@ -260,5 +267,4 @@ class SectionMotions {
   std::vector<CurveMotion> curves_;
 };
 
-}  // namespace detail
 }  // namespace dispkin

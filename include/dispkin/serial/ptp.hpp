@@ -51,6 +51,8 @@
 #include "dispkin/metric_set.hpp"
 #include "dispkin/path/path.hpp"
 #include "dispkin/planning/planner.hpp"
+#include "dispkin/planning/time_law.hpp"
+#include "dispkin/planning/trajectory.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
@@ -83,21 +85,17 @@ struct JointSection {
   double middle_speed = 0.0;  //!< the weighted fastest speed per unit τ at the middle, exact (m)
 };
 
-//! What a joint trajectory is at one instant.
-struct JointTrajectorySample {
+//! What a joint trajectory is at one instant: the tool's state (pose: the tip pose in the base
+//! frame; s, ṡ, s̈ of the time law) and the joints'.
+struct JointTrajectorySample : TrajectorySample {
   JointVector q, qd, qdd;  //!< joint positions, velocities, accelerations (rad, rad/s, rad/s²)
-  Posed pose;              //!< the tool (tip) pose in the base frame
-  Twistd body_twist;       //!< its body twist (v, ω)
   double u = 0.0;          //!< the joint-line parameter
-  double s = 0.0;          //!< DISP arc length travelled, m
-  double s_dot = 0.0;      //!< ṡ: the speed bound of every point of the set, m/s
-  double s_ddot = 0.0;     //!< s̈, m/s²
 };
 
 //! A planned PTP move. Sampling is noexcept, allocation-free and lock-free.
 class JointTrajectory {
  public:
-  double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
+  double duration() const noexcept { return law_.duration(); }
   //! s at the end: Σ over sections of ∫ du / (du/ds), at least Σ L_k.
   double length() const noexcept { return length_; }
   int dof() const noexcept { return static_cast<int>(q_start_.size()); }
@@ -106,9 +104,11 @@ class JointTrajectory {
   //! The joint sections (in order of u) and their bounds.
   const std::vector<JointSection>& sections() const noexcept { return sections_; }
   //! Number of time laws (one per segment of the velocity-limit curve).
-  std::size_t law_count() const noexcept { return pieces_.size(); }
+  std::size_t law_count() const noexcept { return law_.size(); }
+  //! The time law s(t).
+  const TimeLaw& time_law() const noexcept { return law_; }
   //! The velocity-limit curve: ṡ ≤ limit over [start_s, start_s + length).
-  const std::vector<Trajectory::SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
+  const std::vector<SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
   //! The acceleration limit the time law kept to (the DISP one, lowered by joint acceleration limits).
   double law_acceleration() const noexcept { return law_acceleration_; }
 
@@ -120,10 +120,6 @@ class JointTrajectory {
  private:
   friend JointTrajectory plan(const JointPath&, const MetricSetd&, const Limits&, ProfileKind, const serial::SerialArm&,
                               const PtpOptions&);
-  struct Piece {
-    Profile profile;
-    double start_time, end_time, start_s;
-  };
   // q at u without rounding at the ends: q_a at u = 0 and q_b at u = 1 exactly.
   template <typename Out>
   void joints_at(double u, Out& q) const noexcept;
@@ -138,8 +134,8 @@ class JointTrajectory {
   std::vector<JointSection> sections_;
   std::vector<SectionRate> rates_;
   double length_ = 0.0;
-  std::vector<Piece> pieces_;
-  std::vector<Trajectory::SpeedLimit> speed_limits_;
+  TimeLaw law_;
+  std::vector<SpeedLimit> speed_limits_;
   double law_acceleration_ = 0.0;
 };
 

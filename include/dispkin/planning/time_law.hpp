@@ -1,0 +1,74 @@
+//! A time law s(t) over a path: consecutive one-dimensional profiles (doc/profiles.md), each over
+//! its own span of s, grouped in rest-to-rest runs. plan() builds one per velocity-limit segment
+//! of each run; re-timing builds others for the same path. Evaluation is noexcept and
+//! allocation-free.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "dispkin/profile.hpp"
+
+namespace dispkin {
+
+class TimeLaw {
+ public:
+  //! One profile, placed in time and along the path.
+  struct Piece {
+    Profile profile;
+    double start_time, end_time;  //!< in trajectory time, s
+    double start_s;               //!< path position at its start, m
+  };
+
+  //! Laws one after another from s = 0, each starting where the one before ended, in `runs`
+  //! rest-to-rest runs (planning side; allocates).
+  static TimeLaw consecutive(const std::vector<Profile>& laws, std::size_t runs);
+
+  //! Appends `law` from path position `start_s`, starting when the last one ends.
+  void append(const Profile& law, double start_s);
+  //! Ends a rest-to-rest run (the motion is at rest after the last law appended).
+  void end_run() noexcept { ++runs_; }
+
+  double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
+  //! Number of laws.
+  std::size_t size() const noexcept { return pieces_.size(); }
+  //! Number of rest-to-rest runs.
+  std::size_t run_count() const noexcept { return runs_; }
+  const std::vector<Piece>& pieces() const noexcept { return pieces_; }
+
+  //! The law running at t: the first that ends after t (the last one for t ≥ duration), found
+  //! from the hint `piece` when that or the next one is it (size() means none: binary search).
+  std::size_t piece_at(double t, std::size_t piece) const noexcept;
+  //! s, ṡ, s̈, s⃛ at t (in [0, duration]) in the law piece_at(t, piece), which is stored in `piece`.
+  ProfileState state_at(double t, std::size_t& piece) const noexcept {
+    piece = piece_at(t, piece);
+    const Piece& p = pieces_[piece];
+    ProfileState state = p.profile.state_at(t - p.start_time);
+    state.s = p.start_s + state.s;
+    return state;
+  }
+
+  //! Every phase boundary and phase middle of every law, sorted, from 0 to duration(): the
+  //! instants where velocity or acceleration peak or change their course. Allocates.
+  std::vector<double> characteristic_times() const;
+
+ private:
+  std::vector<Piece> pieces_;
+  std::size_t runs_ = 0;
+};
+
+// Inline: on the sampling path of every trajectory.
+inline std::size_t TimeLaw::piece_at(double t, std::size_t piece) const noexcept {
+  const std::size_t last = pieces_.size() - 1;
+  // Piece p is it when the one before ends at or before t and p ends after t (or is the last).
+  const auto is_it = [&](std::size_t p) {
+    return (p == 0 || pieces_[p - 1].end_time <= t) && (p == last || t < pieces_[p].end_time);
+  };
+  if (piece <= last && is_it(piece)) return piece;
+  if (piece < last && is_it(piece + 1)) return piece + 1;
+  const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
+  return it == pieces_.end() ? last : static_cast<std::size_t>(it - pieces_.begin());
+}
+
+}  // namespace dispkin

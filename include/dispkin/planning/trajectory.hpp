@@ -1,0 +1,98 @@
+//! A trajectory is a path and a time law: a SampledPath (the sections by DISP arc length s) run
+//! through by a TimeLaw s(t) (doc/planning.md (eq. 1)). plan() builds both, together with the
+//! velocity-limit curve and the rests that any re-timing of the same path must keep to;
+//! with_time_law() gives the same path under another time law. Sampling is noexcept,
+//! allocation-free and lock-free.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "dispkin/path/sampled_path.hpp"
+#include "dispkin/planning/time_law.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+
+//! What a trajectory is at one instant.
+struct TrajectorySample {
+  Posed pose;          //!< the pose
+  Twistd body_twist;   //!< its body twist (v, ω), m/s and rad/s
+  double s = 0.0;      //!< DISP arc length travelled, m
+  double s_dot = 0.0;  //!< ṡ: the speed bound of every point of the set, m/s
+  double s_ddot = 0.0; //!< s̈, m/s²
+};
+
+//! One span of a velocity-limit curve: ṡ ≤ `limit` (m/s) for s in [start_s, start_s + length).
+struct SpeedLimit {
+  double start_s, length, limit;
+};
+
+//! A planned trajectory. A control loop samples consecutive cycles fastest with a Cursor
+//! (sample(t, cursor)).
+class Trajectory {
+ public:
+  Trajectory() = default;
+  //! `path` run through by `law`, planned under the velocity-limit curve `speed_limits` with rests
+  //! at `rest_positions` (0, every corner, path.length()).
+  Trajectory(SampledPath path, TimeLaw law, std::vector<SpeedLimit> speed_limits, std::vector<double> rest_positions)
+      : path_(std::move(path)), law_(std::move(law)), speed_limits_(std::move(speed_limits)), rest_s_(std::move(rest_positions)) {}
+
+  //! The same path, velocity-limit curve and rests under another time law (re-timing).
+  Trajectory with_time_law(TimeLaw law) const { return Trajectory(path_, std::move(law), speed_limits_, rest_s_); }
+
+  const SampledPath& path() const noexcept { return path_; }
+  const TimeLaw& time_law() const noexcept { return law_; }
+
+  double duration() const noexcept { return law_.duration(); }
+  double length() const noexcept { return path_.length(); }
+  std::size_t section_count() const noexcept { return path_.section_count(); }
+  const std::vector<double>& section_lengths() const noexcept { return path_.section_lengths(); }
+  //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
+  std::size_t piece_count() const noexcept { return law_.run_count(); }
+  //! Number of time laws: each rest-to-rest piece has one per segment of its velocity-limit
+  //! curve (plan() slows down where the path curves tightly).
+  std::size_t law_count() const noexcept { return law_.size(); }
+
+  //! Every phase boundary and phase middle of every time law, sorted, from 0 to duration():
+  //! the instants where velocity or acceleration peak or change their course (the DISP
+  //! patent's P0, P1, P12, P2, P3 for each law). Planning side; allocates.
+  std::vector<double> characteristic_times() const { return law_.characteristic_times(); }
+
+  //! The velocity-limit curve (system velocity, lowered where the path curves tightly), in
+  //! order of s; together with rest_positions() what any re-timing must keep to.
+  const std::vector<SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
+  //! The path positions s where the trajectory is at rest: 0, every corner, length().
+  const std::vector<double>& rest_positions() const noexcept { return rest_s_; }
+
+  //! The pose at path position s (clamped to [0, length()]) and its body twist per unit of s
+  //! (the body twist at ṡ = 1 m/s).
+  void path_state(double s, Posed& pose, Twistd& twist_per_s) const noexcept { path_.state(s, pose, twist_per_s); }
+
+  //! Where a sequence of samples has got to: the time law and the section of the last sample.
+  //! A control loop keeps one per trajectory and passes it to sample(t, cursor), which then
+  //! finds the law and the section of a nearby time without searching. Any value is valid
+  //! (a default one, one left by another trajectory): it is only a hint.
+  struct Cursor {
+    std::size_t piece = 0;    //!< index of the time law of the last sample
+    std::size_t section = 0;  //!< index of the section of the last sample
+  };
+
+  //! The state at time t (clamped to [0, duration]).
+  TrajectorySample sample(double t) const noexcept;
+  //! The same state as sample(t), bit for bit, found from `cursor` (then moved to t): in
+  //! constant time when t lies in the law and section of the previous sample or the next
+  //! one, by binary search otherwise. Consecutive controller cycles are the fast case.
+  TrajectorySample sample(double t, Cursor& cursor) const noexcept;
+  //! out[i] = sample(times[i]), found with one cursor (fastest for increasing times).
+  void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
+
+ private:
+  SampledPath path_;
+  TimeLaw law_;
+  std::vector<SpeedLimit> speed_limits_;
+  std::vector<double> rest_s_;
+};
+
+}  // namespace dispkin
