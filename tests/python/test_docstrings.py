@@ -15,7 +15,10 @@ import re
 import dispkin
 from dispkin import _core
 
-PYTHON_MODULES = ["dispkin", "dispkin.jobs", "dispkin.cli", "dispkin.limits_files", "dispkin.plots", "dispkin.shapes"]
+PYTHON_MODULES = ["dispkin", "dispkin.jobs", "dispkin.job", "dispkin.job.reader", "dispkin.job.schema", "dispkin.job.model",
+                  "dispkin.job.builder", "dispkin.job.planning", "dispkin.job.sampling", "dispkin.job.summary",
+                  "dispkin.job.export", "dispkin.cli", "dispkin.demo", "dispkin.limits_files", "dispkin.plots",
+                  "dispkin.shapes"]
 
 
 def undocumented_pybind(name, obj):

@@ -1,0 +1,124 @@
+"""The job model: a job file built into the library's objects (:class:`Job`, its :class:`Move`
+and :class:`Part` lists), and :class:`JobError`, the error every mistake in a job raises.
+
+Key paths name a place in the job's data, as a tuple of mapping keys and list indices:
+``('moves', 2, 'lin', 'to')``, written ``moves[2].lin.to`` in messages.
+"""
+
+import dataclasses
+import pathlib
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from .._core import Hexapod, JointPath, Limits, MetricSet, Path, WorkToolFrames
+
+#: Default sample period of the output (s).
+DEFAULT_SAMPLE_PERIOD = 0.01
+
+KeyPath = Tuple[Union[str, int], ...]
+
+
+class JobError(ValueError):
+    """A job file that cannot be read, validated, built or planned; the message points at the
+    offending key (``key.path[index]``) and, when known, its line and column in the file."""
+
+    def __init__(self, message: str, key_path: KeyPath = (), line: Optional[int] = None):
+        super().__init__(message)
+        #: The offending key as a tuple of mapping keys and list indices (empty: the whole job).
+        self.key_path = tuple(key_path)
+        #: 1-based line of the key in the job file, when known.
+        self.line = line
+
+
+def format_key_path(key_path: Sequence[Union[str, int]]) -> str:
+    """``('moves', 2, 'lin', 'to')`` -> ``moves[2].lin.to``; the empty path is ``(job)``."""
+    text = ""
+    for key in key_path:
+        text += f"[{key}]" if isinstance(key, int) else (f".{key}" if text else str(key))
+    return text or "(job)"
+
+
+def value_at(data: Any, key_path: KeyPath) -> Any:
+    """The value of the job's data at key_path (which must be there)."""
+    for key in key_path:
+        data = data[key]
+    return data
+
+
+@dataclasses.dataclass
+class Move:
+    """One move of a job as built: its kind, its Path (a JointPath for a PTP move), the blend
+    with the previous move (m)."""
+
+    kind: str
+    path: Union[Path, JointPath]
+    blend: Optional[float]
+
+
+@dataclasses.dataclass
+class Part:
+    """A stretch of a job planned as one: a run of Cartesian moves (lin, circ, spline) joined
+    into one Path, or one PTP move (a JointPath, at rest at both ends)."""
+
+    #: "path" or "ptp".
+    kind: str
+    path: Union[Path, JointPath]
+    #: The arm's joints at the part's start (serial-arm jobs; None otherwise).
+    q_start: Optional[np.ndarray]
+    #: Indices of its moves in Job.moves.
+    moves: List[int]
+
+
+@dataclasses.dataclass
+class Job:
+    """A validated job, built into the library's objects (see :func:`dispkin.jobs.load_job`)."""
+
+    #: The job file.
+    file: pathlib.Path
+    #: The job's name (default: the file's stem).
+    name: str
+    #: The points whose speed is limited, including a hexapod's leg group (rule (a)).
+    metric_set: MetricSet
+    #: The moves joined into one path (platform / flange poses in base coordinates); None when
+    #: the job has PTP moves (then see `parts`).
+    path: Optional[Path]
+    #: The moves one by one.
+    moves: List[Move]
+    limits: Limits
+    #: "scurve" or "trapezoid".
+    profile: str
+    #: The point of the platform/flange (its coordinates, m) that moves on lines and arcs.
+    pivot: np.ndarray
+    frames: Optional[WorkToolFrames] = None
+    hexapod: Optional[Hexapod] = None
+    #: Rule (b): plan with the hexapod as joint metric.
+    joint_metric: bool = False
+    #: Rule (a): the metric-set group holding the upper leg joints to the leg speed.
+    leg_speed_group: Optional[int] = None
+    arm: Optional[Any] = None
+    q_start: Optional[np.ndarray] = None
+    #: Output period (s) and file names (relative to the output directory).
+    sample_period: float = DEFAULT_SAMPLE_PERIOD
+    outputs: Dict[str, str] = dataclasses.field(default_factory=dict)
+    #: The job in stretches planned as one: Cartesian runs and PTP moves, in order.
+    parts: List[Part] = dataclasses.field(default_factory=list)
+
+    @property
+    def has_ptp(self) -> bool:
+        """Whether a move is a PTP move (the job is then planned part by part)."""
+        return any(part.kind == "ptp" for part in self.parts)
+
+    @property
+    def machine(self) -> str:
+        """"hexapod", "serial_arm" or "none"."""
+        return "hexapod" if self.hexapod is not None else "serial_arm" if self.arm is not None else "none"
+
+    @property
+    def joint_names(self) -> List[str]:
+        """The joints of the output: the legs, the arm's joints, or none."""
+        if self.hexapod is not None:
+            return list(self.hexapod.joint_names)
+        if self.arm is not None:
+            return list(self.arm.joint_names)
+        return []

@@ -1,0 +1,91 @@
+"""Planning a job: one Trajectory for a job of Cartesian moves, or a :class:`JobTrajectory` of
+parts planned one after the other when the job has PTP moves.
+
+A PTP move starts and ends at rest, so a job with PTP moves is planned part by part (each
+Cartesian run as one path, each PTP move on the arm) and the parts join at rest; see
+``doc/planning.md`` and ``doc/ptp.md``.
+"""
+
+from typing import Any, List, Tuple, Union
+
+import numpy as np
+
+from .._core import Trajectory, plan
+from .model import Job, JobError, Part
+
+
+class JobTrajectory:
+    """A job's trajectory when it has PTP moves: its parts (Cartesian runs planned as one
+    Trajectory, PTP moves as a JointTrajectory) one after the other in time; every PTP move
+    starts and ends at rest, so the parts join at rest. Samples like a Trajectory (poses, body
+    twists, s-dot; s counts on across the parts)."""
+
+    def __init__(self, parts: List[Tuple[Part, Any]]):
+        #: (Part, its Trajectory or JointTrajectory), in order.
+        self.parts = parts
+        durations = [float(t.duration) for _, t in parts]
+        #: When each part starts (s).
+        self.start_times = np.concatenate([[0.0], np.cumsum(durations)[:-1]])
+        lengths = [float(t.length) for _, t in parts]
+        self._start_s = np.concatenate([[0.0], np.cumsum(lengths)[:-1]])
+        #: Seconds.
+        self.duration = float(np.sum(durations))
+        #: The DISP arc length of all parts, m.
+        self.length = float(np.sum(lengths))
+        #: Rest-to-rest pieces: a Cartesian run's own, one per PTP move.
+        self.piece_count = int(sum(t.piece_count if p.kind == "path" else 1 for p, t in parts))
+
+    def part_indices(self, times: np.ndarray) -> np.ndarray:
+        """The part each time belongs to (a time on a junction: the later part, both at rest there)."""
+        t = np.clip(np.atleast_1d(np.asarray(times, dtype=float)), 0.0, self.duration)
+        return np.clip(np.searchsorted(self.start_times, t, side="right") - 1, 0, len(self.parts) - 1)
+
+    def _gather(self, times: Any, method: str, tail: Tuple[int, ...]) -> np.ndarray:
+        t = np.clip(np.atleast_1d(np.asarray(times, dtype=float)), 0.0, self.duration)
+        which = self.part_indices(t)
+        out = np.zeros((len(t),) + tail)
+        for k, (_, traj) in enumerate(self.parts):
+            mask = which == k
+            if np.any(mask):
+                out[mask] = np.asarray(getattr(traj, method)(t[mask] - self.start_times[k])).reshape((-1,) + tail)
+        return out
+
+    def sample(self, times: Any) -> np.ndarray:
+        """Poses at `times`, (N, 4, 4)."""
+        return self._gather(times, "sample", (4, 4))
+
+    def sample_xyzuvw(self, times: Any) -> np.ndarray:
+        """Poses at `times`, (N, 6) XYZUVW (m, radians)."""
+        return self._gather(times, "sample_xyzuvw", (6,))
+
+    def body_twist(self, times: Any) -> np.ndarray:
+        """Body twists (v, omega) at `times`, (N, 6)."""
+        return self._gather(times, "body_twist", (6,))
+
+    def path_velocity(self, times: Any) -> np.ndarray:
+        """s-dot at `times`, (N,), m/s."""
+        return self._gather(times, "path_velocity", ())
+
+    def path_position(self, times: Any) -> np.ndarray:
+        """s at `times`, (N,), m, counted from the job's start."""
+        t = np.atleast_1d(np.asarray(times, dtype=float))
+        return self._gather(t, "path_position", ()) + self._start_s[self.part_indices(t)]
+
+
+def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
+    """The job's trajectory: plan(job.path, job.metric_set, job.limits, job.profile), with the
+    hexapod as joint metric when the job asks for rule (b). A job with PTP moves is planned
+    part by part (a JobTrajectory): each Cartesian run as one path, each PTP move on the arm."""
+    joint_metric = job.hexapod if job.joint_metric else None
+    try:
+        if not job.has_ptp:
+            return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)
+        planned = []
+        for part in job.parts:
+            if part.kind == "ptp":
+                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)))
+            else:
+                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)))
+        return JobTrajectory(planned)
+    except (ValueError, RuntimeError) as error:
+        raise JobError(f"{job.file}: planning failed: {error}") from error

@@ -1,0 +1,123 @@
+"""Reading a job file: its YAML, and where every key stands in the text.
+
+A :class:`Source` holds a job file's data together with the line and column of each key path,
+so that any later mistake (of the schema, of the values, of planning) can be reported as
+``FILE:LINE:COLUMN: key.path: reason``. Numbers follow YAML 1.2: ``1e-3`` is a float, where
+PyYAML's YAML 1.1 resolver would read the string '1e-3'. Duplicate keys are refused instead of
+silently keeping the last one.
+"""
+
+import pathlib
+import re
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
+
+from .model import JobError, KeyPath, format_key_path
+
+try:
+    import yaml
+except ImportError as error:  # pragma: no cover - pyyaml is a dependency of the package
+    raise ImportError("dispkin job files need PyYAML (pip install pyyaml)") from error
+
+
+class _Loader(yaml.SafeLoader):
+    """The safe loader, with YAML 1.2 floats: ``1e-3`` is a number, not the string '1e-3'."""
+
+
+_Loader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != "tag:yaml.org,2002:float"]
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
+}
+_Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(
+        r"""^(?:[-+]?(?:[0-9][0-9_]*)\.[0-9_]*(?:[eE][-+]?[0-9]+)?
+            |[-+]?(?:[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)
+            |[-+]?\.[0-9_]+(?:[eE][-+]?[0-9]+)?
+            |[-+]?\.(?:inf|Inf|INF)
+            |\.(?:nan|NaN|NAN))$""",
+        re.X,
+    ),
+    list("-+0123456789."),
+)
+
+
+class Source:
+    """A job file's text, its data, and where each key path is (1-based line, column)."""
+
+    def __init__(self, path: pathlib.Path):
+        #: The job file.
+        self.path = path
+        text = self._read_text(path)
+        #: (line, column) of each key path in the file, keys and indices as strings.
+        self.marks: Dict[Tuple[str, ...], Tuple[int, int]] = {}
+        #: The job's data as YAML gives it (validated later, see dispkin.job.schema).
+        self.data: Any = self._parse(text)
+
+    @staticmethod
+    def _read_text(path: pathlib.Path) -> str:
+        try:
+            return path.read_text(encoding="utf-8")
+        except OSError as error:
+            raise JobError(f"{path}: cannot read the job file: {error.strerror or error}") from error
+        except UnicodeDecodeError as error:
+            raise JobError(f"{path}: not a UTF-8 text file: {error}") from error
+
+    def _parse(self, text: str) -> Any:
+        """The data of the YAML text, recording each key path's place on the way."""
+        path = self.path
+        try:
+            # The reader checks for non-printable characters when it is made: inside the try.
+            loader = _Loader(text)
+        except yaml.reader.ReaderError as error:  # a control character: where, from its position
+            before = text[: error.position]
+            line, column = before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
+            raise JobError(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
+                           (), line) from error
+        try:
+            node = loader.get_single_node()
+            if node is None:
+                raise JobError(f"{path}: the job file is empty")
+            self._walk(node, ())
+            return loader.construct_document(node)
+        except yaml.MarkedYAMLError as error:
+            mark = error.problem_mark or error.context_mark
+            where = f"{path}:{mark.line + 1}:{mark.column + 1}" if mark else str(path)
+            raise JobError(f"{where}: not valid YAML: {error.problem or error}", (), mark.line + 1 if mark else None) from error
+        except yaml.YAMLError as error:
+            raise JobError(f"{path}: not valid YAML: {error}") from error
+        finally:
+            loader.dispose()
+
+    def _walk(self, node: Any, key_path: Tuple[str, ...]) -> None:
+        self.marks.setdefault(key_path, (node.start_mark.line + 1, node.start_mark.column + 1))
+        if isinstance(node, yaml.MappingNode):
+            seen = set()
+            for key_node, value_node in node.value:
+                key = str(key_node.value)
+                if key in seen:  # PyYAML would silently keep the last one
+                    line, column = key_node.start_mark.line + 1, key_node.start_mark.column + 1
+                    where = format_key_path(self._typed(key_path + (key,)))
+                    raise JobError(f"{self.path}:{line}:{column}: {where}: duplicate key", key_path + (key,), line)
+                seen.add(key)
+                self.marks[key_path + (key,)] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
+                self._walk(value_node, key_path + (key,))
+        elif isinstance(node, yaml.SequenceNode):
+            for i, item in enumerate(node.value):
+                self._walk(item, key_path + (str(i),))
+
+    @staticmethod
+    def _typed(key_path: Sequence[str]) -> KeyPath:
+        return tuple(int(k) if k.isdigit() else k for k in key_path)
+
+    def mark(self, key_path: Sequence[Union[str, int]]) -> Optional[Tuple[int, int]]:
+        """(line, column) of the deepest part of key_path that is in the file."""
+        keys = tuple(str(k) for k in key_path)
+        while keys not in self.marks and keys:
+            keys = keys[:-1]
+        return self.marks.get(keys)
+
+    def error(self, key_path: Sequence[Union[str, int]], message: str) -> JobError:
+        """A JobError ``FILE:LINE:COLUMN: key.path: message``."""
+        mark = self.mark(key_path)
+        where = f"{self.path}:{mark[0]}:{mark[1]}" if mark else str(self.path)
+        return JobError(f"{where}: {format_key_path(key_path)}: {message}", tuple(key_path), mark[0] if mark else None)

@@ -1,0 +1,169 @@
+"""Sampling a planned job at its output period: the machine's joints (hexapod legs by inverse
+kinematics, serial-arm joints along the branch followed from the start joints), their velocities,
+accelerations and efforts, the commanded pose, the path velocity and the speed of the fastest
+point of each metric-set group.
+
+Joint velocities are analytic (the leg Jacobian, or the arm's body Jacobian solved for q-dot);
+joint accelerations are central differences of those velocities over ACCELERATION_STEP; PTP
+parts give their joint line's own q, q-dot and q-double-dot.
+"""
+
+import dataclasses
+import math
+from typing import Dict, List, Optional, Tuple, Union
+
+import numpy as np
+
+from .._core import MetricSet, Pose, Trajectory, max_point_speed
+from .model import Job, JobError
+from .planning import JobTrajectory
+
+#: Time step (s) of the central differences that give joint accelerations from joint velocities.
+ACCELERATION_STEP = 1e-4
+
+JointStates = Tuple[np.ndarray, np.ndarray, np.ndarray]
+
+
+def sample_times(duration: float, period: float) -> np.ndarray:
+    """0, period, 2 period, ... and the end `duration` itself (a last gap shorter than
+    period / 1000 is merged into the end)."""
+    count = int(math.floor(duration / period + 1e-9))
+    times = np.arange(count + 1) * period
+    if duration - times[-1] > period * 1e-3:
+        times = np.append(times, duration)
+    else:
+        times[-1] = duration
+    return times
+
+
+@dataclasses.dataclass
+class JobSamples:
+    """The sampled trajectory of a job, row k at time[k]. Joint arrays are (N, dof) and empty
+    (N, 0) without a machine; effort is (N, 0) for hexapods (no leg dynamics in the model)."""
+
+    time: np.ndarray
+    joint_names: List[str]
+    #: Leg lengths (m) or joint values (rad / m).
+    positions: np.ndarray
+    #: Their time derivatives: analytic (leg Jacobian / body Jacobian times the body twist).
+    velocities: np.ndarray
+    #: Central differences of the analytic velocities over ACCELERATION_STEP.
+    accelerations: np.ndarray
+    #: Joint torques / forces (N·m, N) by recursive Newton–Euler for serial arms.
+    effort: np.ndarray
+    #: XYZUVW of the commanded pose (the tool frame in the work frame with frames, else the
+    #: platform/flange pose): metres and DEGREES.
+    xyzuvw: np.ndarray
+    #: Path velocity s-dot (m/s).
+    path_velocity: np.ndarray
+    #: Speed of the fastest point of the whole metric set (m/s, not scaled by group limits).
+    fastest_point_speed: np.ndarray
+    #: Per group: the speed of its fastest point (m/s).
+    group_speeds: Dict[int, np.ndarray]
+
+
+def group_sets(metric_set: MetricSet) -> Dict[int, MetricSet]:
+    """Each group of the metric set on its own (group 0 in each, no speed limit)."""
+    out = {}
+    for group in metric_set.groups:
+        one = MetricSet()
+        relative, absolute = metric_set.relative_points(group), metric_set.absolute_points(group)
+        if len(relative):
+            one.add_relative(relative)
+        if len(absolute):
+            one.add_absolute(absolute)
+        for center, radius, is_absolute in metric_set.spheres(group):
+            one.add_sphere(center, radius, is_absolute)
+        out[group] = one
+    return out
+
+
+def _joint_velocities(job: Job, poses: np.ndarray, twists: np.ndarray, q: np.ndarray) -> np.ndarray:
+    if job.hexapod is not None:
+        return np.array([job.hexapod.leg_jacobian(m) @ xi for m, xi in zip(poses, twists)])
+    # Body twist = J_body(q) q-dot; least squares also covers arms with fewer than 6 joints.
+    return np.array([np.linalg.lstsq(job.arm.body_jacobian(qk), xi, rcond=None)[0] for qk, xi in zip(q, twists)])
+
+
+def _joint_positions(job: Job, poses: np.ndarray, q_reference: np.ndarray) -> np.ndarray:
+    if job.hexapod is not None:
+        return np.asarray(job.hexapod.inverse(poses))
+    try:
+        return np.asarray(job.arm.follow([Pose.from_matrix(m) for m in poses], q_reference))
+    except (ValueError, RuntimeError) as error:
+        raise JobError(f"{job.file}: the serial arm cannot follow the trajectory: {error}") from error
+
+
+def _cartesian_joint_states(job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]) -> JointStates:
+    """Joint positions, velocities and accelerations along a Cartesian trajectory at `t`."""
+    poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
+    n = len(t)
+    positions = _joint_positions(job, poses, q_reference)
+    velocities = _joint_velocities(job, poses, twists, positions)
+    # Accelerations: central differences of the analytic velocity, one-sided at the ends.
+    before, after = np.maximum(t - ACCELERATION_STEP, 0.0), np.minimum(t + ACCELERATION_STEP, trajectory.duration)
+    rates = []
+    for times in (before, after):
+        p, xi = np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times))
+        q = None
+        if job.arm is not None:  # the same branch: each neighbour follows from its sample
+            q = np.array([_joint_positions(job, p[k : k + 1], positions[k])[0] for k in range(n)])
+        rates.append(_joint_velocities(job, p, xi, q))
+    accelerations = (rates[1] - rates[0]) / (after - before)[:, None]
+    return positions, velocities, accelerations
+
+
+def _joint_states_of_parts(job: Job, trajectory: JobTrajectory, t: np.ndarray) -> JointStates:
+    """Joint positions, velocities and accelerations of a job with PTP moves at `t`: a PTP part
+    gives its joint line's own, a Cartesian run follows the branch from the joints at its start."""
+    n, dof = len(t), job.arm.dof
+    positions, velocities, accelerations = np.zeros((n, dof)), np.zeros((n, dof)), np.zeros((n, dof))
+    which = trajectory.part_indices(t)
+    for k, (part, traj) in enumerate(trajectory.parts):
+        mask = which == k
+        if not np.any(mask):
+            continue
+        local = np.clip(t[mask] - trajectory.start_times[k], 0.0, traj.duration)
+        if part.kind == "ptp":
+            states = (traj.joint_positions(local), traj.joint_velocities(local), traj.joint_accelerations(local))
+        else:
+            states = _cartesian_joint_states(job, traj, local, part.q_start)
+        positions[mask], velocities[mask], accelerations[mask] = states
+    return positions, velocities, accelerations
+
+
+def _joint_samples(job: Job, trajectory: Union[Trajectory, JobTrajectory], t: np.ndarray) -> Tuple[np.ndarray, ...]:
+    """(positions, velocities, accelerations, effort) of the machine's joints at `t`."""
+    n = len(t)
+    if job.machine == "none":
+        empty = np.zeros((n, 0))
+        return empty, empty, empty, empty
+    if isinstance(trajectory, JobTrajectory):
+        positions, velocities, accelerations = _joint_states_of_parts(job, trajectory, t)
+    else:
+        positions, velocities, accelerations = _cartesian_joint_states(job, trajectory, t, job.q_start if job.arm is not None else None)
+    if job.arm is not None:
+        effort = np.array([job.arm.torques(q, qd, qdd) for q, qd, qdd in zip(positions, velocities, accelerations)])
+    else:
+        effort = np.zeros((n, 0))
+    return positions, velocities, accelerations, effort
+
+
+def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: Optional[float] = None) -> JobSamples:
+    """Sample the job's trajectory every `period` seconds (default: the job's sample_period).
+    PTP moves give their joints directly (q, q-dot, q-double-dot of the joint line); Cartesian
+    moves follow the inverse-kinematics branch continuous from the joints at their start."""
+    t = sample_times(trajectory.duration, period or job.sample_period)
+    poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
+    positions, velocities, accelerations, effort = _joint_samples(job, trajectory, t)
+    if job.frames is not None:
+        xyzuvw = np.array([job.frames.xyzuvw(Pose.from_matrix(m)) for m in poses])
+    else:
+        xyzuvw = np.array([Pose.from_matrix(m).to_xyzuvw() for m in poses])
+    xyzuvw[:, 3:] = np.degrees(xyzuvw[:, 3:])
+    group_speeds = {}
+    for group, one in group_sets(job.metric_set).items():
+        group_speeds[group] = np.array([max_point_speed(one, Pose.from_matrix(m), xi) for m, xi in zip(poses, twists)])
+    fastest = np.max(np.vstack(list(group_speeds.values())), axis=0)
+    return JobSamples(t, job.joint_names, positions, velocities, accelerations, effort, xyzuvw,
+                      np.asarray(trajectory.path_velocity(t)), fastest, group_speeds)

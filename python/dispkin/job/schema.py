@@ -1,0 +1,95 @@
+"""Validating a job against its JSON Schema, ``job.schema.json`` (draft 2020-12, shipped with
+the package), with messages that say what to write instead.
+
+jsonschema's own messages quote whole sub-documents; here each violation names the offending
+key and its place in the file, lists the keys allowed where an unknown one stands, and lists
+the alternatives of a choice (a move is exactly one of lin, circ, spline, ptp). NaN and the
+infinities are refused before the schema is consulted: JSON Schema has no word for them.
+"""
+
+import json
+import math
+import pathlib
+import re
+from typing import Any, Dict, Optional, Tuple
+
+from .model import JobError, KeyPath, value_at
+from .reader import Source
+
+#: The JSON Schema of job files (draft 2020-12), shipped next to the package's modules.
+SCHEMA_PATH = pathlib.Path(__file__).resolve().parent.parent / "job.schema.json"
+
+
+def load_schema() -> Dict[str, Any]:
+    """The job-file JSON Schema as a dict."""
+    return json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))
+
+
+def _alternatives(schema: Dict[str, Any]) -> str:
+    """The key sets of a oneOf whose branches each require keys, e.g. "`a` | `b` + `c`"."""
+    options = ["`" + "` + `".join(branch.get("required", [])) + "`" for branch in schema.get("oneOf", [])]
+    return " | ".join(options)
+
+
+def _schema_error_message(error: Any) -> Tuple[KeyPath, str]:
+    """The key path and a message for one jsonschema ValidationError."""
+    key_path: KeyPath = tuple(error.absolute_path)
+    if error.validator == "additionalProperties" and isinstance(error.instance, dict):
+        allowed = set(error.schema.get("properties", {}))
+        extra = sorted((k for k in error.instance if k not in allowed), key=str)  # YAML keys may be numbers
+        if extra:
+            known = ", ".join(sorted(allowed))
+            return key_path + (str(extra[0]),), f"unknown key (allowed here: {known})"
+    if error.validator == "oneOf" and isinstance(error.instance, dict):
+        present = ", ".join(f"`{k}`" for k in error.instance) or "nothing"
+        return key_path, f"expected exactly one of {_alternatives(error.schema)}; found {present}"
+    if error.validator in ("minProperties", "maxProperties") and isinstance(error.instance, dict):
+        choices = ", ".join(f"`{k}`" for k in error.schema.get("properties", {}))
+        return key_path, f"expected exactly one of {choices}; found {len(error.instance)} key(s)"
+    if error.validator == "required":
+        missing = re.match(r"'([^']*)'", error.message)
+        return key_path, f"missing required key `{missing.group(1) if missing else error.message}`"
+    if error.validator == "enum":
+        return key_path, f"{error.instance!r} is not one of {', '.join(repr(v) for v in error.validator_value)}"
+    if error.validator in ("minItems", "maxItems") and isinstance(error.instance, list):
+        bound = "at least" if error.validator == "minItems" else "at most"
+        return key_path, f"expected {bound} {error.validator_value} item(s), got {len(error.instance)}"
+    return key_path, error.message
+
+
+def _non_finite(value: Any, key_path: KeyPath) -> Optional[KeyPath]:
+    """The first key path under value holding NaN or an infinity."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return key_path
+    if isinstance(value, dict):
+        for k, v in value.items():
+            found = _non_finite(v, key_path + (k,))
+            if found is not None:
+                return found
+    if isinstance(value, list):
+        for i, v in enumerate(value):
+            found = _non_finite(v, key_path + (i,))
+            if found is not None:
+                return found
+    return None
+
+
+def validate(source: Source) -> None:
+    """Raise a JobError for every schema violation (all of them, in file order, in one message)."""
+    import jsonschema
+
+    if not isinstance(source.data, dict):
+        raise source.error((), f"a job is a mapping of keys (machine, metric_set, moves, limits, ...), got {type(source.data).__name__}")
+    bad = _non_finite(source.data, ())
+    if bad is not None:
+        raise source.error(bad, f"{value_at(source.data, bad)!r}: must be finite")
+    validator = jsonschema.Draft202012Validator(load_schema())
+    errors = []
+    for error in validator.iter_errors(source.data):
+        key_path, message = _schema_error_message(error)
+        errors.append((source.mark(key_path) or (0, 0), key_path, message))
+    if errors:
+        errors.sort(key=lambda e: e[0])
+        first = source.error(errors[0][1], errors[0][2])
+        rest = [str(source.error(k, m)) for _, k, m in errors[1:]]
+        raise JobError("\n".join([str(first)] + rest), first.key_path, first.line)

@@ -1,0 +1,144 @@
+"""The summary of a planned job: its duration and length, each metric-set group's peak point
+speed against its limit, the machine's own limits (hexapod legs, serial-arm joint velocities
+and efforts from the URDF), and which limit binds; :func:`summary_text` is what
+``dispkin plan`` prints.
+"""
+
+import math
+from typing import Any, Dict, Tuple, Union
+
+import numpy as np
+
+from .. import _core
+from .._core import Trajectory
+from .model import Job
+from .planning import JobTrajectory
+from .sampling import JobSamples
+
+#: A limit counts as binding when the trajectory reaches this fraction of it.
+BINDING_FRACTION = 0.99
+
+#: Sample step (s) of a PTP move's joint line when its joint-limit factors are measured.
+_PTP_CHECK_STEP = 1e-3
+
+
+def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: JobSamples) -> Dict[str, Any]:
+    """Duration, per-group peak point speed against its limit, the machine's own limits, and
+    which limit binds (the highest ratio peak / limit, if it reaches BINDING_FRACTION)."""
+    v = job.limits.velocity
+    ratios: Dict[str, float] = {}
+    groups = {}
+    for group, speeds in samples.group_speeds.items():
+        limit = job.metric_set.group_speed(group) or v
+        k = int(np.argmax(speeds))
+        groups[str(group)] = {"peak_speed": float(speeds[k]), "time": float(samples.time[k]), "limit": float(limit),
+                              "ratio": float(speeds[k] / limit)}
+        ratios[f"speed of group {group} ({limit:g} m/s)"] = float(speeds[k] / limit)
+    summary: Dict[str, Any] = {
+        "job": job.name,
+        "machine": job.machine,
+        "moves": [m.kind + (f" (blend {m.blend:g} m)" if m.blend else "") for m in job.moves],
+        "duration": float(trajectory.duration),
+        "length": float(trajectory.length),
+        "rest_to_rest_pieces": int(trajectory.piece_count),
+        "profile": job.profile,
+        "limits": {"velocity": v, "acceleration": job.limits.acceleration, "jerk": job.limits.jerk},
+        "sample_period": float(job.sample_period),
+        "samples": int(len(samples.time)),
+        "peak_path_velocity": float(np.max(samples.path_velocity)),
+        "groups": groups,
+    }
+    if job.hexapod is not None:
+        summary["legs"], ratios["leg speed"] = _leg_report(job, trajectory)
+    if job.arm is not None:
+        summary["joints"] = _joint_report(job, trajectory)
+        ratios["joint velocity (URDF)"] = summary["joints"]["velocity_factor"]
+        ratios["joint effort (URDF)"] = summary["joints"]["acceleration_factor"]
+    name, ratio = max(ratios.items(), key=lambda item: item[1])
+    summary["binding"] = name if ratio >= BINDING_FRACTION else (
+        "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)")
+    summary["highest_ratio"] = {"limit": name, "ratio": ratio}
+    return summary
+
+
+def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float]:
+    """(the hexapod's leg lengths and speeds against its limits, the fastest leg's ratio to its
+    speed limit), from a check at the sample period or 1 ms, whichever is finer."""
+    check = job.hexapod.check_trajectory(trajectory, min(job.sample_period, 1e-3))
+    leg_ratio = float(np.max(check.max_speed / job.hexapod.leg_speed))
+    legs = {"min_length": check.min_length.tolist(), "max_length": check.max_length.tolist(),
+            "max_speed": check.max_speed.tolist(), "leg_speed": job.hexapod.leg_speed.tolist(),
+            "within_limits": bool(check.ok)}
+    return legs, leg_ratio
+
+
+def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Dict[str, Any]:
+    """The arm's joint-limit factors over the job (check_joint_limits, or part by part)."""
+    if isinstance(trajectory, JobTrajectory):
+        return _joint_report_of_parts(job, trajectory)
+    report = _core.check_joint_limits(trajectory, job.arm, job.q_start)
+    return {"velocity_factor": float(report.velocity_factor),
+            "acceleration_factor": float(report.acceleration_factor),
+            "position_excess": float(report.position_excess),
+            "within_limits": bool(report.within_limits)}
+
+
+def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any]:
+    """The joint-limit factors of the KUKA re-timing patent over a job with PTP moves:
+    check_joint_limits on each Cartesian run (from the joints at its start); for a PTP move
+    FVEL = max |q-dot_i| / q-dot-max_i and FACC = max |tau_dyn,i| / (tau-max_i - |tau_sta,i|) at
+    1 ms samples of its joint line (which stays inside the position limits: both ends do, and
+    the range is a box). See doc/retiming.md."""
+    arm = job.arm
+    limits = arm.joint_limits
+    velocity_factor = acceleration_factor = position_excess = 0.0
+    for part, traj in trajectory.parts:
+        if part.kind == "path":
+            report = _core.check_joint_limits(traj, arm, part.q_start)
+            velocity_factor = max(velocity_factor, float(report.velocity_factor))
+            acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
+            position_excess = max(position_excess, float(report.position_excess))
+            continue
+        t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
+        q, qd, qdd = traj.joint_positions(t), traj.joint_velocities(t), traj.joint_accelerations(t)
+        stated = np.isfinite(limits.velocity)
+        if np.any(stated):
+            velocity_factor = max(velocity_factor, float(np.max(np.abs(qd[:, stated]) / limits.velocity[stated])))
+        if len(limits.effort) and np.any(np.isfinite(limits.effort)):
+            effort = np.asarray(limits.effort)
+            for qk, qdk, qddk in zip(q, qd, qdd):
+                static = np.asarray(arm.static_torques(qk))
+                dynamic = np.asarray(arm.torques(qk, qdk, qddk)) - static
+                room = effort - np.abs(static)
+                finite = np.isfinite(effort)
+                acceleration_factor = max(acceleration_factor, float(np.max(np.abs(dynamic[finite]) / room[finite])))
+    return {"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
+            "position_excess": position_excess,
+            "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)}
+
+
+def summary_text(summary: Dict[str, Any]) -> str:
+    """The summary as lines of text (what `dispkin plan` prints)."""
+    s = summary
+    lim = s["limits"]
+    jerk = f", j = {lim['jerk']:g} m/s³" if lim["jerk"] is not None else ""
+    lines = [
+        f"job {s['job']}: {len(s['moves'])} move(s) ({', '.join(s['moves'])}), machine: {s['machine']}",
+        f"  duration {s['duration']:.4f} s, {s['rest_to_rest_pieces']} rest-to-rest piece(s), path length {s['length']:.6f} m",
+        f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}, profile {s['profile']}",
+        f"  peak path velocity {s['peak_path_velocity']:.6f} m/s ({s['samples']} samples, every {s['sample_period']:g} s)",
+    ]
+    for group, g in s["groups"].items():
+        lines.append(f"  group {group}: peak point speed {g['peak_speed']:.6f} m/s at t = {g['time']:.3f} s, "
+                     f"limit {g['limit']:g} m/s ({100 * g['ratio']:.1f} %)")
+    if "legs" in s:
+        legs = s["legs"]
+        lines.append(f"  legs: {1000 * min(legs['min_length']):.3f} .. {1000 * max(legs['max_length']):.3f} mm, fastest "
+                     f"{1000 * max(legs['max_speed']):.4f} mm/s (limit {1000 * min(legs['leg_speed']):g} mm/s); "
+                     f"within limits: {legs['within_limits']}")
+    if "joints" in s:
+        j = s["joints"]
+        lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {j['acceleration_factor']:.4f} "
+                     f"(<= 1 is within the URDF limits); within limits: {j['within_limits']}")
+    lines.append(f"  binding limit: {s['binding']}")
+    return "\n".join(lines) + "\n"
