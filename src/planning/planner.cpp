@@ -1,4 +1,4 @@
-// The DISP trajectory planner (MATH.md §5–7).
+// The DISP trajectory planner (doc/planning.md).
 #include "dispkin/planning/planner.hpp"
 
 #include <algorithm>

@@ -1,0 +1,123 @@
+// The joint path on the σ grid and the limits of each run (joint_grid.hpp).
+#include "joint_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace dispkin::detail {
+
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo,
+                     double hi, const Eigen::VectorXd& q_ref) {
+  auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* guess, Eigen::VectorXd& q,
+                        Eigen::VectorXd& q1) {
+    Posed pose;
+    Twistd per_sigma;
+    path.state(at, pose, per_sigma);
+    model.joints(pose, per_sigma, reference, guess, at, q, q1);
+  };
+  GridPoint p;
+  p.sigma = sigma;
+  joint_path(sigma, q_ref, nullptr, p.q, p.q1);
+  const double before = std::max(lo, sigma - h), after = std::min(hi, sigma + h);
+  // Predicted to first order, so that Newton needs a single step.
+  const Eigen::VectorXd guess_before = p.q - (sigma - before) * p.q1, guess_after = p.q + (after - sigma) * p.q1;
+  Eigen::VectorXd q_before, q1_before, q_after, q1_after;
+  joint_path(before, p.q, &guess_before, q_before, q1_before);
+  joint_path(after, p.q, &guess_after, q_after, q1_after);
+  p.q2 = (q1_after - q1_before) / (after - before);
+  model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+  return p;
+}
+
+void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, std::vector<HalfPlane>& out) {
+  for (Eigen::Index k = 0; k < p.q.size(); ++k) {
+    if (std::isfinite(bounds.velocity(k))) {
+      const double v = scale * bounds.velocity(k);
+      out.push_back({0.0, p.q1(k) * p.q1(k), v * v});
+    }
+    if (std::isfinite(bounds.acceleration(k))) {
+      const double a = scale * bounds.acceleration(k);
+      out.push_back({p.q1(k), p.q2(k), a});
+      out.push_back({-p.q1(k), -p.q2(k), a});
+    }
+    if (std::isfinite(bounds.effort(k)) && p.gravity.size()) {
+      const double t = scale * bounds.effort(k);
+      out.push_back({p.torque_u(k), p.torque_x(k), t - p.gravity(k)});
+      out.push_back({-p.torque_u(k), -p.torque_x(k), t + p.gravity(k)});
+    }
+  }
+}
+
+double joint_speed_cap(const GridPoint& p, const JointBounds& bounds, double scale) {
+  double cap = std::numeric_limits<double>::infinity();
+  for (Eigen::Index k = 0; k < p.q.size(); ++k) {
+    if (std::isfinite(bounds.velocity(k)) && p.q1(k) != 0.0) {
+      const double v = scale * bounds.velocity(k) / std::abs(p.q1(k));
+      cap = std::min(cap, v * v);
+    }
+  }
+  return cap;
+}
+
+std::string interval_text(double s0, double s1) {
+  std::ostringstream out;
+  out << "[" << s0 << ", " << s1 << "] m";
+  return out.str();
+}
+
+Parameterisation RunProblem::solve(double reach, double run_acceleration, double run_speed) const {
+  std::vector<GridInterval> intervals;
+  intervals.reserve(run_.count);
+  for (std::size_t i = run_.first; i < run_.first + run_.count; ++i) {
+    const GridPoint &p = grid_[i], &p_next = grid_[i + 1];
+    const double delta = p_next.sigma - p.sigma;
+    double speed, accel;
+    smooth_.limits_over(p.sigma, p_next.sigma, speed, accel);
+    if (reach > 0.0) {
+      double unused;
+      smooth_.limits_over(std::max(start(), p.sigma - reach), std::min(end(), p_next.sigma + reach), speed, unused);
+    }
+    if (run_acceleration > 0.0) accel = run_acceleration;
+    speed = std::min(speed, run_speed);
+    GridInterval interval{delta, ConvexPolygon(accel, speed * speed)};
+    interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
+    at_start_.clear();
+    at_end_.clear();
+    append_limits(p, bounds_, scale_, at_start_);
+    append_limits(p_next, bounds_, scale_, at_end_);
+    for (const HalfPlane& h : at_start_) interval.admissible.clip(h);
+    for (const HalfPlane& h : at_end_) interval.admissible.clip({h.a + 2.0 * delta * h.b, h.b, h.c});
+    if (reach > 0.0) {
+      double joint_speed = std::numeric_limits<double>::infinity();  // σ̇² cap of the joint speeds nearby
+      for (std::size_t g = run_.first; g <= run_.first + run_.count; ++g) {
+        if (grid_[g].sigma >= p.sigma - reach && grid_[g].sigma <= p_next.sigma + reach) {
+          joint_speed = std::min(joint_speed, joint_speed_cap(grid_[g], bounds_, scale_));
+        }
+      }
+      if (std::isfinite(joint_speed)) {
+        interval.admissible.clip({0.0, 1.0, joint_speed});
+        interval.admissible.clip({2.0 * delta, 1.0, joint_speed});
+      }
+    }
+    intervals.push_back(std::move(interval));
+  }
+  Parameterisation fastest = fastest_parameterisation(std::move(intervals), 0.0, 0.0);
+  if (fastest.infeasible_interval >= 0) {
+    const std::size_t i = run_.first + static_cast<std::size_t>(fastest.infeasible_interval);
+    throw std::runtime_error("no speed keeps every joint limit on the path interval " +
+                             interval_text(smooth_.s_of(grid_[i].sigma), smooth_.s_of(grid_[i + 1].sigma)) +
+                             " while still reaching the next rest");
+  }
+  for (std::size_t i = 0; i < run_.count; ++i) {
+    if (!(fastest.x[i] + fastest.x[i + 1] > 0.0)) {
+      throw std::runtime_error("the joint limits allow no motion on the path interval " +
+                               interval_text(smooth_.s_of(grid_[run_.first + i].sigma), smooth_.s_of(grid_[run_.first + i + 1].sigma)));
+    }
+  }
+  return fastest;
+}
+
+}  // namespace dispkin::detail

@@ -1,0 +1,78 @@
+// The joint path on a grid of the smooth parameter σ and the limits it imposes on each run's
+// parameterisation (internal to the re-timing; doc/retiming.md §4–5).
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dispkin/planning/retiming.hpp"
+#include "reachability.hpp"
+#include "smooth_parameter.hpp"
+
+namespace dispkin::detail {
+
+//! What the limits need of the joint path at one grid position σ.
+struct GridPoint {
+  double sigma;
+  Eigen::VectorXd q, q1, q2;                    // q, dq/dσ, d²q/dσ²
+  Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity (empty: no dynamics)
+};
+
+//! The joint path at σ: q and q′ from the machine (on the branch of q_ref), q″ by central
+//! differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's ends are rests,
+//! where the path may turn a corner), and the torque coefficients (doc/retiming.md (eq. 12)).
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
+                     const Eigen::VectorXd& q_ref);
+
+//! The joint limits at one grid point as half-planes in (u, x) = (σ̈, σ̇²), each limit multiplied by
+//! `scale` (doc/retiming.md (eq. 13)).
+void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, std::vector<HalfPlane>& out);
+
+//! The cap on σ̇² from the joint velocity limits at one grid point (+∞ where none binds).
+double joint_speed_cap(const GridPoint& p, const JointBounds& bounds, double scale);
+
+//! "[s0, s1] m" for messages.
+std::string interval_text(double s0, double s1);
+
+//! A rest-to-rest run: grid points [first, first + count].
+struct Run {
+  std::size_t first, count;
+};
+
+//! The fastest parameterisation of one run on the grid under the DISP limits in σ and the joint
+//! limits at `scale` (reachability.hpp; doc/retiming.md (eq. 14–16)).
+class RunProblem {
+ public:
+  RunProblem(const SmoothParameter& smooth, const std::vector<GridPoint>& grid, const JointBounds& bounds, double scale,
+             Run run)
+      : smooth_(smooth), grid_(grid), bounds_(bounds), scale_(scale), run_(run) {}
+
+  const SmoothParameter& smooth() const noexcept { return smooth_; }
+  const std::vector<GridPoint>& grid() const noexcept { return grid_; }
+  const Run& run() const noexcept { return run_; }
+  //! σ at the run's start and end.
+  double start() const noexcept { return grid_[run_.first].sigma; }
+  double end() const noexcept { return grid_[run_.first + run_.count].sigma; }
+
+  //! Solves the run. With a jerk limit, `reach` > 0 widens every speed cap (the DISP velocity-limit
+  //! curve and the joint speeds) to its minimum over ±reach around the interval, and a
+  //! `run_acceleration` > 0 replaces the acceleration cap: the moving average then keeps them
+  //! (doc/retiming.md (eq. 22)). `run_speed` caps σ̇ throughout. Throws std::runtime_error naming
+  //! the path interval where no speed keeps the limits.
+  Parameterisation solve(double reach, double run_acceleration,
+                         double run_speed = std::numeric_limits<double>::infinity()) const;
+
+ private:
+  const SmoothParameter& smooth_;
+  const std::vector<GridPoint>& grid_;
+  const JointBounds& bounds_;
+  double scale_;
+  Run run_;
+  mutable std::vector<HalfPlane> at_start_, at_end_;  // scratch of solve()
+};
+
+}  // namespace dispkin::detail
