@@ -118,7 +118,7 @@ const MetricSetd& icosahedron_absolute() {
   return set;
 }
 
-// One relative sphere of radius 0.1 m around the TCP (handled exactly, MATH.md §4).
+// One relative sphere of radius 0.1 m around the TCP (handled exactly, doc/disp-metric.md eq. 25).
 const MetricSetd& one_sphere() {
   static const MetricSetd set = [] {
     MetricSetd s;
@@ -165,7 +165,7 @@ void set_point_counters(benchmark::State& state, std::size_t points) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Chord distance (MATH.md §3)
+// Chord distance (doc/disp-metric.md eq. 19)
 
 template <typename Norm>
 void disp_distance_icosahedron(benchmark::State& state) {
@@ -184,7 +184,7 @@ BENCHMARK_TEMPLATE(disp_distance_icosahedron, dispkin::MaxNorm);
 BENCHMARK_TEMPLATE(disp_distance_icosahedron, dispkin::L1Norm);
 
 // ---------------------------------------------------------------------------------------------
-// Section length (MATH.md §5)
+// Section length (doc/section-length.md eq. 1)
 
 void section_length_on(benchmark::State& state, const MetricSetd& set, Interpolation kind) {
   const Moves& m = moves();
@@ -268,7 +268,7 @@ void stream_read_cloud_vector3_loop(benchmark::State& state) {
 BENCHMARK(stream_read_cloud_vector3_loop)->Arg(100000)->Unit(benchmark::kMicrosecond);
 
 // ---------------------------------------------------------------------------------------------
-// One sphere, exactly (MATH.md §4)
+// One sphere, exactly (doc/disp-metric.md eq. 25)
 
 void sphere_speed(benchmark::State& state) {
   const Moves& m = moves();
@@ -288,7 +288,7 @@ BENCHMARK_CAPTURE(section_length_sphere, screw, Interpolation::screw);
 BENCHMARK_CAPTURE(section_length_sphere, decoupled, Interpolation::decoupled);
 
 // ---------------------------------------------------------------------------------------------
-// Pose arithmetic a controller runs every cycle (MATH.md §1)
+// Pose arithmetic a controller runs every cycle (doc/disp-metric.md eqs. 2, 11–12)
 
 void pose_compose(benchmark::State& state) {
   const Moves& m = moves();

@@ -1,5 +1,6 @@
-// Analytic inverse kinematics, all solutions, per family (targets of issue 6: closed forms
-// ≤ 3 µs, the offset-wrist search ≤ 100 µs with ≥ 99.99 % recovery). Each benchmark cycles through 64 poses of random joint vectors.
+// Analytic inverse kinematics, all solutions, per family (targets: closed forms ≤ 3 µs, the
+// offset-wrist search ≤ 100 µs with ≥ 99.99 % recovery). Each benchmark cycles through 64 poses of
+// random joint vectors.
 #include <random>
 #include <vector>
 

@@ -1,5 +1,5 @@
-// Planning and sampling trajectories (issue 4 targets: a 1000-section path planned in
-// ≤ 100 µs, sampling ≤ 50 ns per sample).
+// Planning and sampling trajectories (targets: a 1000-section path planned in ≤ 100 µs,
+// sampling ≤ 50 ns per sample).
 #include <string>
 #include <vector>
 

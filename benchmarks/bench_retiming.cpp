@@ -1,8 +1,8 @@
-// Joint-limit check and both re-timing methods on a 6-axis arm move (issue 7): example 05's
-// UR5e LIN (350 mm, 30° turn) requested at 3 m/s and 400 m/s² for a tool ball, which the
-// joints cannot follow. The optimal re-timing is timed whole (plan, joint path and torque
-// coefficients on the grid, reachability passes, dense check) and with its check reduced to
-// the characteristic points; benchmarks/retime_vs_toppra.py compares with toppra.
+// Joint-limit check and both re-timing methods on a 6-axis arm move: example 05's UR5e LIN (350 mm,
+// 30° turn) requested at 3 m/s and 400 m/s² for a tool ball, which the joints cannot follow. The
+// optimal re-timing is timed whole (plan, joint path and torque coefficients on the grid,
+// reachability passes, dense check) and with its check reduced to the characteristic points;
+// benchmarks/retime_vs_toppra.py compares with toppra.
 #include <string>
 
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Serial-arm plugin (issue 6): forward kinematics, Jacobian and RNE torques through KDL, and
+// Serial-arm plugin: forward kinematics, Jacobian and RNE torques through KDL, and
 // SerialArm::inverse_solutions (analytic family plus limits, 2π copies and the check by forward
 // kinematics of every solution) on the DH UR5e and the KR6-like arm of tests/data/urdf.
 #include <string>

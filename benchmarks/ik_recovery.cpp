@@ -1,4 +1,4 @@
-// Recovery sweep of the offset-wrist search (issue 6: ≥ 99.99 % of round trips recovered).
+// Recovery sweep of the offset-wrist search (target: ≥ 99.99 % of round trips recovered).
 // Round trips on the Kinova Jaco2 j2n6s300: q uniform in (−π, π]⁶, forward, offset-wrist
 // inverse with the given number of samples; "found" exactly as in the RoundTripJaco2 test (the
 // original q within recovery_bound, max(1e-8, 8 u L / σ_min(J)), modulo 2π), every returned

@@ -1,4 +1,4 @@
-"""All-solutions analytic IK: dispkin against EAIK on the same poses, in one run (issue 6).
+"""All-solutions analytic IK: dispkin against EAIK on the same poses, in one run.
 
 EAIK (PyPI `eaik`, Ostermeier et al., subproblem decomposition; already the solution-count
 oracle of tests/python/make_analytic_ik_reference.py) and dispkin each solve the same poses of

@@ -1,5 +1,6 @@
-"""Durations of the jerk-limited optimal re-timing (issue 7 item 3, its second half) against the
-jerk-free optimum, TOPP-RA (`toppra`, no jerk limit) and the seed's scaling with S-curves.
+"""Durations of the jerk-limited optimal re-timing (doc/retiming.md §6) against the jerk-free
+optimum, TOPP-RA (`toppra`, no jerk limit) and the scaling loop of the KUKA re-timing patent
+("The robot drives through a preset working track") with S-curves.
 
 Cases: example 05's UR5e LIN (350 mm, 30° turn; the velocity + torque limits of the URDF), the
 test suite's UR5e LIN and CIRC (290 mm, 0.5 rad turn), each requested at DISP limits the joints

@@ -1,9 +1,9 @@
 // 02 — a hexapod scan: tilt a fibre end ±5° about itself, legs kept in range and below their
 // speed. The fibre end is the tool frame (on the platform) and the work frame (in the world):
 // tilts are commanded as XYZUVW of the tool frame in the work frame, so they turn about the
-// fibre end. The metric set is a 10 mm spherical shell around the fibre end (2 mm/s); the leg
-// speed is held by the patent's rule (a), the six upper leg joints as a group, or by rule (b),
-// the joint-space metric. (The Python twin is 02_hexapod_scan.py.)
+// fibre end. The metric set is a 10 mm spherical shell around the fibre end (2 mm/s); the leg speed
+// is held by rule (a) of the DISP patent JP7742490B2, the six upper leg joints as a group, or by
+// rule (b), the joint-space metric. (The Python twin is 02_hexapod_scan.py.)
 #include <cmath>
 #include <cstdio>
 

@@ -3,10 +3,10 @@
 A symmetric 6-6 hexapod carries a fibre whose end sits 50 mm above the platform centre. The
 fibre end is both the tool frame (platform coordinates) and the work frame (world coordinates):
 the scan commands XYZUVW of the tool frame in the work frame, which tilts the platform ±5° about
-the fibre end (the pivot) in three LIN moves. The metric set is a spherical shell of 10 mm
-around the fibre end (the patent's angular scan). The leg speed is held either by rule (a), the
-six upper leg joints as a group held to the leg speed, or by rule (b), the joint-space metric
-(plan(..., joint_metric=hexapod)); both are checked densely and their durations compared.
+the fibre end (the pivot) in three LIN moves. The metric set is a spherical shell of 10 mm around
+the fibre end (the angular scan of the DISP patent JP7742490B2). The leg speed is held either by
+rule (a), the six upper leg joints as a group held to the leg speed, or by rule (b), the joint-space
+metric (plan(..., joint_metric=hexapod)); both are checked densely and their durations compared.
 (The C++ twin is 02_hexapod_scan.cpp.)
 """
 

@@ -1,10 +1,11 @@
 """03 — a blended LIN–CIRC–LIN path: through both via points without stopping.
 
 A tool 0.2 m long (an icosahedron of points around its tip and its flange) moves along a
-LIN, a CIRC and a LIN. Unblended, the planner must stop at both via points (the direction of
-motion jumps there). With blends of 30 mm the corners become smooth pose curves (the seed's
-boundary smoothing), the whole path is one rest-to-rest move, and it is done sooner — with no
-point of the tool ever faster than the limit. (The C++ twin is 03_blended_path.cpp.)
+LIN, a CIRC and a LIN. Unblended, the planner must stop at both via points (the direction of motion
+jumps there). With blends of 30 mm the corners become smooth pose curves (the boundary smoothing of
+the Mamezou trajectory article, Ishii, "Algorithm 2 for Robot Manipulator Control"), the whole path
+is one rest-to-rest move, and it is done sooner — with no point of the tool ever faster than the
+limit. (The C++ twin is 03_blended_path.cpp.)
 """
 
 import math

@@ -1,6 +1,7 @@
-// 05 — a UR5e move that is too fast for its joints, re-timed two ways: the seed's scaling loop
-// (slow the whole move until FVEL, FACC ≤ 1) and the optimal re-timing (slow down only where a
-// joint velocity or torque limit binds), the latter also with a jerk limit. The move: a LIN of 350 mm with a 30° turn of the tool,
+// 05 — a UR5e move that is too fast for its joints, re-timed two ways: the scaling loop of the KUKA
+// re-timing patent ("The robot drives through a preset working track"; slow the whole move until
+// FVEL, FACC ≤ 1) and the optimal re-timing (slow down only where a joint velocity or torque limit
+// binds), the latter also with a jerk limit. The move: a LIN of 350 mm with a 30° turn of the tool,
 // requested at 3 m/s and 400 m/s² for a 50 mm ball 100 mm out on the tool. (The Python twin,
 // 05_joint_limit_retiming.py, also plots joint speeds and torques against their limits.)
 #include <algorithm>

@@ -3,8 +3,9 @@
 The move (a LIN of 350 mm with a 30° turn of the tool) is planned at 3 m/s and 400 m/s² for
 the tool points: the UR5e's joints cannot follow (joint speeds of 3.14 rad/s and torques of
 150 / 28 N·m, from tests/data/urdf/arm_ur5e_dh.urdf). Two re-timings keep every joint limit:
-- "scaling", the seed's loop: lower the whole move's speed and acceleration until the largest
-  joint velocity and dynamic torque fit (FVEL, FACC ≤ 1);
+- "scaling", the loop of the KUKA re-timing patent ("The robot drives through a preset working
+  track"): lower the whole move's speed and acceleration until the largest joint velocity and
+  dynamic torque fit (FVEL, FACC ≤ 1);
 - "optimal": the fastest timing that keeps the tool-point limits and the joint velocities and
   torques at once, slowing down only where a limit binds (reachability analysis over s) — and
   the same with a jerk limit on the tool points (profile="scurve").

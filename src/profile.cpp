@@ -1,4 +1,5 @@
-// The planning side of dispkin/profile.hpp: the time-optimal trapezoid and S-curve (MATH.md §6).
+// The planning side of dispkin/profile.hpp: the time-optimal trapezoid and S-curve
+// (doc/profiles.md §2–4).
 //
 // Both laws share one structure: change the velocity from v_s up to a peak v_p, cruise at v_p,
 // change it down to v_e. Every velocity change starts and ends at zero acceleration (S-curve)
@@ -75,7 +76,8 @@ double trapezoid_peak(double distance, double v_max, double a_max, double v_star
   if (ramp_distance(v_start, v_max, a_max) + ramp_distance(v_end, v_max, a_max) <= distance) return v_max;
   const double square = a_max * distance + 0.5 * (v_start * v_start + v_end * v_end);
   if (std::isnormal(square)) return std::clamp(std::sqrt(square), lowest, v_max);
-  // a S and v² underflowed (tiny limits, finding 10): √a √(S + (v_s² + v_e²)/(2a)).
+  // a S and v² underflowed (tiny limits far outside the numeric range, doc/profiles.md §6):
+  // √a √(S + (v_s² + v_e²)/(2a)).
   const double two_a = 2.0 * a_max;
   const double peak = std::sqrt(a_max) * std::sqrt(distance + v_start * (v_start / two_a) + v_end * (v_end / two_a));
   return std::clamp(peak, lowest, v_max);
@@ -94,8 +96,8 @@ struct VelocityChange {
 };
 
 // Whether a change by dv reaches a_max: dv ≥ a²/j, compared as times, dv/a ≥ a/j (for tiny or
-// huge limits the products dv j and a² under- or overflow where the quotients do not — fuzz
-// finding 10).
+// huge limits the products dv j and a² under- or overflow where the quotients do not,
+// doc/profiles.md §6).
 bool reaches_a_max(double dv, double a_max, double j_max) { return dv / a_max >= a_max / j_max; }
 
 VelocityChange velocity_change(double dv, double a_max, double j_max) {

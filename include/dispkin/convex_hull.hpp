@@ -1,6 +1,6 @@
 //! Reduction of large point clouds to their convex-hull vertices (Qhull).
 //!
-//! MATH.md §4, the vertex shortcut: a point's speed ‖v + ω × p‖ and its chord
+//! doc/disp-metric.md (eq. 27), the vertex shortcut: a point's speed ‖v + ω × p‖ and its chord
 //! ‖(R2 − R1) p + (t2 − t1)‖ are convex in p, so over a cloud only the vertices of its
 //! convex hull can be the fastest. Reducing once makes every later evaluation cheaper.
 //! Compiled into dispkin::dispkin (the header-only core does not need Qhull).

@@ -1,7 +1,8 @@
 //! The DISP metric: chord distance, point and sphere speeds, and exact section lengths.
 //!
-//! MATH.md §3–5. Pure functions of a MetricSet and poses; none allocates. They throw only on
-//! bad input (a set that is not well-formed, a missing system velocity for a group limit).
+//! doc/disp-metric.md §5–8, doc/section-length.md §2–3. Pure functions of a MetricSet and poses;
+//! none allocates. They throw only on bad input (a set that is not well-formed, a missing system
+//! velocity for a group limit).
 #pragma once
 
 #include <algorithm>
@@ -18,7 +19,7 @@
 
 namespace dispkin {
 
-//! How a section moves between its end poses (MATH.md §1, §5).
+//! How a section moves between its end poses (doc/disp-metric.md eqs. 13–15).
 enum class Interpolation {
   screw,      //!< T(τ) = Ta·exp(τ ξ): constant body twist
   decoupled,  //!< pivot on a straight line, orientation by SLERP about one fixed axis (LIN)
@@ -36,9 +37,9 @@ inline Interpolation interpolation_from_string(const std::string& name) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Norm policies for the chord distance ("metric form", MATH.md §3). Each gives the norm of a
-// vector and its maximum over a flat disk {u + x : x ⊥ n̂, ‖x‖₂ ≤ r}, the set of chords of a
-// ball under a rigid motion (used for spheres).
+// Norm policies for the chord distance ("metric form", doc/disp-metric.md eq. 22). Each gives the
+// norm of a vector and its maximum over a flat disk {u + x : x ⊥ n̂, ‖x‖₂ ≤ r}, the set of chords
+// of a ball under a rigid motion (used for spheres).
 
 //! The Euclidean norm (the default, and the only one under which speeds are rotation-invariant).
 struct EuclideanNorm {
@@ -132,7 +133,7 @@ void require_system_velocity(const std::optional<Scalar>& system_velocity) {
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
-// Speeds for a twist (MATH.md §4).
+// Speeds for a twist (doc/disp-metric.md eqs. 23–25).
 
 //! Speed of the body point p under body twist (v, ω): ‖v + ω × p‖. Also the apparent speed
 //! of an absolute point whose current body coordinates are p.
@@ -243,7 +244,7 @@ Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, c
 }
 
 // ---------------------------------------------------------------------------------------------
-// Chord distance (MATH.md §3)
+// Chord distance (doc/disp-metric.md eqs. 18–22)
 
 namespace detail {
 
@@ -294,8 +295,8 @@ Scalar group_chord(const MetricGroup<Scalar>& g, const Pose<Scalar>& a, const Po
 
 }  // namespace detail
 
-//! The DISP distance d(a, b) = max over groups of weight · (largest chord of any object),
-//! chords measured with `Norm` (MATH.md §3). A metric on SE(3) for a well-formed set.
+//! The DISP distance d(a, b) = max over groups of weight · (largest chord of any object), chords
+//! measured with `Norm` (doc/disp-metric.md eq. 19). A metric on SE(3) for a well-formed set.
 template <typename Norm = EuclideanNorm, typename Scalar>
 Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const Pose<Scalar>& b,
                      std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
@@ -308,7 +309,8 @@ Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const 
 }
 
 // ---------------------------------------------------------------------------------------------
-// Section length (MATH.md §5): the largest speed of any object per unit of τ ∈ [0, 1].
+// Section length (doc/section-length.md eq. 1; screw eq. 4, decoupled eqs. 5–11): the largest
+// speed of any object per unit of τ ∈ [0, 1].
 
 namespace detail {
 
@@ -396,7 +398,8 @@ struct DecoupledSection {
   }
 
   // Peak over τ of a relative sphere: the centre's velocity across k is maximised as for a
-  // point, then the rim adds θρ across the axis (exact, §4 with ω = θ ŵ).
+  // point, then the rim adds θρ across the axis (exact: doc/disp-metric.md eq. 25 with ω = θ ŵ;
+  // doc/section-length.md eq. 9).
   Scalar relative_sphere_speed(const Sphere<Scalar>& s) const noexcept {
     using std::sqrt;
     const Vector3 q = omega.cross(s.center - pivot_body);
@@ -443,8 +446,8 @@ Scalar group_decoupled_length(const MetricGroup<Scalar>& g, const DecoupledSecti
 
 }  // namespace detail
 
-//! The exact length L of the section from `a` to `b` under the set: the largest speed of any
-//! point or sphere per unit of the section parameter τ ∈ [0, 1] (MATH.md §5), each group
+//! The exact length L of the section from `a` to `b` under the set: the largest speed of any point
+//! or sphere per unit of the section parameter τ ∈ [0, 1] (doc/section-length.md eq. 1), each group
 //! weighted by v_sys / v_g. With τ = (s − s_k)/L every object moves at most at speed ṡ.
 //!
 //! `pivot` (body coordinates) is the point that travels the straight line of a decoupled
@@ -459,8 +462,8 @@ Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const
   require_translation(pivot, "pivot");
   Scalar best(0);
   if (interpolation == Interpolation::screw) {
-    // Constant body twist: every object's speed is constant along the section (§5), so the
-    // speed at τ = 0 is the section length.
+    // Constant body twist: every object's speed is constant along the section
+    // (doc/section-length.md eq. 3), so the speed at τ = 0 is the section length.
     const Twist<Scalar> xi = (a.inverse() * b).log();
     for (const auto& g : set.groups())
       best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, a, xi));

@@ -1,5 +1,5 @@
 //! Work and tool coordinate systems, and the metric sets generated around their origins (the
-//! seed patent's "special coordinate systems").
+//! "special coordinate systems" of the DISP patent JP7742490B2).
 //!
 //! Conventions (as PI hexapod controllers use them): the work frame W is given in world (base)
 //! coordinates and stays put, e.g. attached to the workpiece; the tool frame F is given in body
@@ -10,10 +10,10 @@
 //! XYZUVW commands in these frames rotate about the tool origin: the pivot of the platform is
 //! F's origin, pivot() (platform coordinates), for Pose::from_xyzuvw and for paths.
 //!
-//! Generated metric sets (patent): points around the tool origin are relative points (they
+//! Generated metric sets (the DISP patent): points around the tool origin are relative points (they
 //! move with the tool and set its speed; a sphere there ties the angular speed to the system
-//! velocity through its radius), points around the work origin are absolute points (they stay
-//! put and hold anything near their convex hull to the speed limit).
+//! velocity through its radius), points around the work origin are absolute points (they stay put
+//! and hold anything near their convex hull to the speed limit).
 #pragma once
 
 #include <vector>
@@ -28,7 +28,7 @@
 namespace dispkin {
 
 //! What is put around a frame's origin: a circumscribed regular icosahedron (12 points that
-//! contain the sphere, MATH.md §4) or the exact sphere.
+//! contain the sphere, doc/disp-metric.md eq. 26) or the exact sphere.
 enum class Envelope { icosahedron, sphere };
 
 inline const char* to_string(Envelope envelope) { return envelope == Envelope::icosahedron ? "icosahedron" : "sphere"; }

@@ -1,9 +1,10 @@
 //! The metric establishment set: the points and spheres the speed limit applies to.
 //!
-//! MATH.md §2. Relative points and spheres are given in body (tool) coordinates and move with
-//! the tool; absolute points and spheres are given in world coordinates and stay put, their
+//! doc/disp-metric.md §4. Relative points and spheres are given in body (tool) coordinates and move
+//! with the tool; absolute points and spheres are given in world coordinates and stay put, their
 //! apparent speed seen from the tool is what is limited. Objects belong to groups; a group may
-//! carry its own speed limit (patent Fig. 18), the others are held to the system velocity.
+//! carry its own speed limit (the DISP patent JP7742490B2, Fig. 18), the others are held to the
+//! system velocity.
 #pragma once
 
 #include <algorithm>
@@ -33,8 +34,9 @@ struct Sphere {
   Scalar radius;  //!< ≥ 0; a sphere of radius 0 is a point
 };
 
-//! Points stored as three coordinate columns (x…, y…, z…): the speed kernels then stream
-//! through contiguous arrays and vectorise (MATH.md §4 evaluates one affine map per point).
+//! Points stored as three coordinate columns (x…, y…, z…): the speed kernels then stream through
+//! contiguous arrays and vectorise (doc/disp-metric.md eqs. 20, 23 evaluate one affine map per
+//! point).
 template <typename Scalar>
 class PointColumns {
  public:
@@ -100,8 +102,9 @@ struct MetricGroup {
            absolute_spheres.empty();
   }
 
-  //! The factor this group's lengths are multiplied by so that path speed ≤ v_sys keeps the
-  //! group under its own limit: v_sys / v_g (patent M3/M4), 1 without a group limit.
+  //! The factor this group's lengths are multiplied by so that path speed ≤ v_sys keeps the group
+  //! under its own limit: v_sys / v_g (doc/disp-metric.md eq. 17; the DISP patent's M3/M4), 1
+  //! without a group limit.
   Scalar weight(std::optional<Scalar> system_velocity) const {
     if (!speed_limit) return Scalar(1);
     if (!system_velocity) {
@@ -189,7 +192,8 @@ class MetricSet {
     update_well_formed();
   }
 
-  //! A sphere (handled exactly, MATH.md §4), relative (body) or absolute (world) centre.
+  //! A sphere (handled exactly, doc/disp-metric.md eq. 25), relative (body) or absolute (world)
+  //! centre.
   void add_sphere(const Vector3& center, Scalar radius, Frame frame = Frame::relative, int group = 0) {
     require_translation(center, "center");
     using std::isfinite;
@@ -230,10 +234,10 @@ class MetricSet {
   }
   bool empty() const noexcept { return point_count() == 0 && sphere_count() == 0; }
 
-  //! Whether the DISP distance over this set is a metric for every pair of poses (MATH.md §2):
-  //! the relative part or the absolute part must on its own span at least a plane (or contain
-  //! a sphere of positive radius). If both parts are collinear, some pose lines them up and a
-  //! rotation about that line goes unseen.
+  //! Whether the DISP distance over this set is a metric for every pair of poses
+  //! (doc/disp-metric.md §4, "Well-formedness"): the relative part or the absolute part must on its
+  //! own span at least a plane (or contain a sphere of positive radius). If both parts are
+  //! collinear, some pose lines them up and a rotation about that line goes unseen.
   //! Cached when the set changes, so the DISP functions can check it at no cost.
   bool is_well_formed() const noexcept { return well_formed_; }
 

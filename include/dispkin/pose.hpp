@@ -1,6 +1,6 @@
 //! Rigid poses in SE(3), body twists, the exponential and logarithm maps, XYZUVW and pivots.
 //!
-//! MATH.md §1. A pose T = (R, t) maps body (tool) coordinates to world coordinates,
+//! doc/disp-metric.md §1–3. A pose T = (R, t) maps body (tool) coordinates to world coordinates,
 //! x_w = R x_b + t. It is stored as a unit quaternion and a translation, never as angles.
 #pragma once
 
@@ -61,7 +61,7 @@ constexpr Scalar gimbal_lock_tolerance() {
 namespace detail {
 
 // Coefficients of the SE(3)/SO(3) maps as functions of the rotation angle θ, each with the
-// Taylor series where the closed form loses digits (MATH.md §1, twist exp/log).
+// Taylor series where the closed form loses digits (doc/disp-metric.md eqs. 11–12).
 // B(θ) = (1 − cos θ)/θ² = 2 sin²(θ/2)/θ² is stable in its half-angle form everywhere.
 template <typename Scalar>
 Scalar coefficient_b(Scalar theta) {

@@ -1,4 +1,4 @@
-//! One-dimensional time-optimal time laws s(t) over a distance S (MATH.md §6).
+//! One-dimensional time-optimal time laws s(t) over a distance S (doc/profiles.md).
 //!
 //! A `Profile` is piecewise-constant jerk: at most seven phases. The S-curve is the textbook
 //! seven-phase law (jerk ∈ {+j, 0, −j}); the trapezoid is piecewise-constant acceleration

@@ -1,8 +1,9 @@
 //! Point-set builders for metric sets: box, regular icosahedron, icosphere, spherical shell.
 //!
-//! MATH.md §4: a regular icosahedron with its vertices ON a sphere under-estimates the sphere's
-//! speed; one whose faces touch the sphere (circumscribed, vertex radius 1.2584 ρ) bounds it
-//! from above by at most 25.8 %; subdivided icospheres scaled to circumscribe converge to it.
+//! doc/disp-metric.md (eq. 26): a regular icosahedron with its vertices ON a sphere under-estimates
+//! the sphere's speed; one whose faces touch the sphere (circumscribed, vertex radius 1.2584 ρ)
+//! bounds it from above by at most 25.8 %; subdivided icospheres scaled to circumscribe converge to
+//! it.
 #pragma once
 
 #include <algorithm>
@@ -150,9 +151,9 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisio
   return detail::placed(p, scale, center);
 }
 
-//! `count` points spread evenly ON the sphere of `radius` around `center` (a Fibonacci
-//! lattice): the patent's spherical shell of relative points around a pivot, which ties the
-//! angular speed about the pivot to the system velocity through the radius.
+//! `count` points spread evenly ON the sphere of `radius` around `center` (a Fibonacci lattice):
+//! the spherical shell of relative points around a pivot of the DISP patent JP7742490B2, which ties
+//! the angular speed about the pivot to the system velocity through the radius.
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int count,
                                                         const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {

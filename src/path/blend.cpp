@@ -1,11 +1,12 @@
-// Blending at via points: the seed's boundary smoothing (seed 002, "Smooth Position/Posture
+// Blending at via points (doc/planning.md §6): the boundary smoothing of the Mamezou trajectory
+// article (Ishii, "Algorithm 2 for Robot Manipulator Control", section "Smooth Position/Posture
 // Trajectory Fitting Method"), with the orientation blended jointly with the position.
 //
-// The seed fits a cubic F₀ between the sub-points Q₁, Q₂ with the neighbours' tangents, and
+// The article fits a cubic F₀ between the sub-points Q₁, Q₂ with the neighbours' tangents, and
 // blends the orientation separately by nested SLERP over its own zone (weight w ≈ 0.3). Under
 // the DISP metric the planner sees one 6-D twist, and two separate zones would make its
 // direction jump at each zone's ends (the planner would have to stop there). So here one zone
-// serves both: the pivot follows the seed's cubic, the orientation a cubic in the rotation
+// serves both: the pivot follows the article's cubic, the orientation a cubic in the rotation
 // vector whose end angular velocities are the neighbours', scaled by the same factors as the
 // pivot tangents — at both joins the twist keeps its direction.
 #include <algorithm>

@@ -1,4 +1,6 @@
-// SPLINE moves (seed 002 "Spline Curve") and the cutting of cubic pose curves into sections.
+// SPLINE moves (the "Spline Curve" of the Mamezou trajectory article, Ishii, "Algorithm 2 for
+// Robot Manipulator Control"; doc/section-length.md §7) and the cutting of cubic pose curves
+// into sections.
 #include <algorithm>
 #include <cmath>
 #include <string>

@@ -228,10 +228,10 @@ TEST(AnalyticIk, Jaco2CasesOfTheTenToTheSevenSweep) {
   for (const auto& values : cases) expect_found_by_search(chain, joints(values), {120, 180, 360});
 }
 
-// An island of the positioning stage 0.0105 rad wide between an end of the elbow subproblem and
-// one of the shoulder's, with the root 5e-4 rad inside: 120 equally spaced samples (0.052 rad
-// apart) put none in it and missed the branch (benchmarks/ik_recovery.cpp, seed 4, case 19031)
-// until the elbow's ends were found exactly too.
+// An island of the positioning stage 0.0105 rad wide between an end of the elbow subproblem and one
+// of the shoulder's, with the root 5e-4 rad inside: 120 equally spaced samples (0.052 rad apart)
+// put none in it and missed the branch (benchmarks/ik_recovery.cpp with DISPKIN_TEST_SEED=4,
+// case 19031) until the elbow's ends were found exactly too.
 TEST(AnalyticIk, Jaco2IslandBetweenElbowAndShoulderEnds) {
   expect_found_by_search(testing::kinova_jaco2_j2n6s300(),
                          joints({1.1101388494471571, -1.5565864857674949, -1.5374292563295284, 1.7241341869531084,
@@ -309,11 +309,11 @@ double bisect(F f, double a, double b) {
   return 0.5 * (a + b);
 }
 
-// The wrist singularity sweep (issue 6): |q₅| from 1e-10 to 1e-2 and exactly 0, on every
-// closed-form robot (q₅ = 0 aligns axes 4 and 6 on the spherical wrists and axes 2 and 6 on
-// the URs in these DH conventions): solutions exist and reproduce the pose. For |q₅| ≥ 1e-4 the
-// original q is among them to 1e-8; closer to the singularity the split between the joints
-// that the singularity couples (q₄ and q₆) is only determined to ≈ (pose rounding) / |sin q₅|.
+// The wrist singularity sweep: |q₅| from 1e-10 to 1e-2 and exactly 0, on every closed-form robot
+// (q₅ = 0 aligns axes 4 and 6 on the spherical wrists and axes 2 and 6 on the URs in these DH
+// conventions): solutions exist and reproduce the pose. For |q₅| ≥ 1e-4 the original q is among
+// them to 1e-8; closer to the singularity the split between the joints that the singularity couples
+// (q₄ and q₆) is only determined to ≈ (pose rounding) / |sin q₅|.
 TEST(AnalyticIk, WristSingularitySweepNeverLosesThePose) {
   testing::Random random(631);
   for (const auto& named : testing::named_test_chains()) {

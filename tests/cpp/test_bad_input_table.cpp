@@ -1,8 +1,8 @@
-// The bad-input table (issue 9, item 5), C++ side: every public entry point × every kind of
-// bad input (NaN, ±inf, empty, wrong size, zero or negative limits, degenerate sets,
-// unreachable poses, out-of-range legs, malformed files, unknown names), one row each. A row
-// asserts the exception type (std::invalid_argument / std::runtime_error) AND a fragment of
-// the message "<argument> = <value>: <reason>" that names the argument and shows the value.
+// The bad-input table, C++ side: every public entry point × every kind of bad input (NaN, ±inf,
+// empty, wrong size, zero or negative limits, degenerate sets, unreachable poses, out-of-range
+// legs, malformed files, unknown names), one row each. A row asserts the exception type
+// (std::invalid_argument / std::runtime_error) AND a fragment of the message
+// "<argument> = <value>: <reason>" that names the argument and shows the value.
 //
 // Rows with `observed` set are the known gaps ("strict xfail"): the entry point does NOT
 // reject the input. Such a row passes while the input is still accepted and fails once the
@@ -239,7 +239,8 @@ std::vector<Row> rows() {
 
   // --- Path / JointPath ---
   row("Path::lin", "NaN pivot", [] { Path::lin(A, B, Interpolation::decoupled, Vector3d(nan_, 0, 0)); }, IA, "pivot = (nan, 0, 0)");
-  // Fuzz finding 11: a LIN pivot of 6.3e257 m was accepted and Path::sample returned infinities.
+  // A LIN pivot of 6.3e257 m, beyond the numeric range, was once accepted and Path::sample
+  // returned infinities.
   row("Path::lin", "pivot beyond the numeric range (6.3e257 m)", [] { Path::lin(A, B, Interpolation::decoupled, Vector3d(117, 6.3e257, 117)); }, IA,
       "pivot = (117, 6.3e+257, 117): must have coordinates within ±1e12 m");
   row("Path::lin", "coinciding poses", [] { Path::lin(A, A); }, IA, "b = (0, 0, 0): start and end poses coincide");

@@ -1,4 +1,4 @@
-// Curved paths: SPLINE moves and blends at via points (issue 3), and their sections' lengths.
+// Curved paths: SPLINE moves and blends at via points, and their sections' lengths.
 #include <gtest/gtest.h>
 
 #include <dispkin/path/path.hpp>
@@ -122,8 +122,9 @@ TEST(CurveSection, TwistIsTheDerivativeOfThePose) {
   }
 }
 
-// MATH §5 for curved sections: L is never below the fastest object's speed anywhere on the
-// section, and for objects near the pivot it is tight to about the cutting tolerance.
+// doc/section-length.md eqs. 23–24 for curved sections: L is never below the fastest object's speed
+// anywhere on the section, and for objects near the pivot it is tight to about the cutting
+// tolerance.
 TEST(CurveSection, LengthBoundsEverySpeedAndIsTight) {
   Random rnd(304);
   const int n = std::max(50, testing::case_count(10000) / 20);

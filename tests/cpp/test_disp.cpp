@@ -1,4 +1,4 @@
-// MATH.md §7 oracles 1–3: metric axioms, the vertex shortcut, the exact sphere formula; plus
+// doc/planning.md §8 items 1–3: metric axioms, the vertex shortcut, the exact sphere formula; plus
 // chords of spheres under all three norms, group weights, and chord ≤ section length.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@ namespace {
 using V = Eigen::Vector3d;
 using testing::Random;
 
-// ---- oracle 1: metric axioms ---------------------------------------------------------------
+// ---- doc/planning.md §8 item 1: metric axioms ----------------------------------------------
 
 template <typename Norm>
 void check_metric_axioms(unsigned long salt) {
@@ -71,7 +71,7 @@ TEST(DispMetric, GroupsCombineAsWeightedMaximum) {
   }
 }
 
-// ---- oracle 2: the vertex shortcut ---------------------------------------------------------
+// ---- doc/planning.md §8 item 2: the vertex shortcut (doc/disp-metric.md eq. 27) ------------
 
 TEST(DispVertexShortcut, InteriorPointsNeverBeatTheVertices) {
   Random rnd(41);
@@ -101,7 +101,7 @@ TEST(DispVertexShortcut, InteriorPointsNeverBeatTheVertices) {
   }
 }
 
-// ---- oracle 3: the exact sphere speed against surface samples ------------------------------
+// ---- doc/planning.md §8 item 3: the exact sphere speed against surface samples -------------
 
 // Largest ‖vc + ω × ρn‖ over unit n: the best of `samples` random directions, then refined by
 // projected gradient ascent — still a point of the surface, so never above the true maximum.
@@ -148,7 +148,7 @@ void check_sphere_formula(unsigned long salt, int cases, int samples) {
   }
 }
 
-// MATH.md §7 oracle 3 as written: 10⁵ random surface samples per motion.
+// doc/planning.md §8 item 3 as written: 10⁵ random surface samples per motion.
 TEST(DispSphere, ExactFormulaAgainstDenseSurfaceSamples) {
   check_sphere_formula(51, std::max(10, testing::case_count(10000) / 100), 100000);
 }

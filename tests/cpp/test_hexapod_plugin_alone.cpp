@@ -1,9 +1,8 @@
-// The hexapod plugin on its own: this program links dispkin::hexapod and nothing of the
-// umbrella, so building it is half the test. src/hexapod.cpp used to hold the leg speeds along a
-// path too, which call the umbrella's section sampling: at commit 3e28d68, where
-// CurveSection::length and motion_bounds were not inline, its object needed the umbrella and a
-// static link of the plugin alone failed (fuzz finding 8). Those now live in the umbrella
-// (src/hexapod_along_path.cpp).
+// The hexapod plugin on its own: this program links dispkin::hexapod and nothing of the umbrella,
+// so building it is half the test. src/hexapod/hexapod.cpp used to hold the leg speeds along a path
+// too, which call the umbrella's section sampling: at commit 3e28d68, where CurveSection::length
+// and motion_bounds were not inline, its object needed the umbrella and a static link of the plugin
+// alone failed. Those now live in the umbrella (src/hexapod/hexapod_along_path.cpp).
 #include <gtest/gtest.h>
 
 #include "dispkin/hexapod/hexapod.hpp"

@@ -1,4 +1,4 @@
-// MetricSet: well-formedness (MATH.md §2), groups and their limits, bad input.
+// MetricSet: well-formedness (doc/disp-metric.md §4), groups and their limits, bad input.
 #include <gtest/gtest.h>
 
 #include <dispkin/disp.hpp>

@@ -1,4 +1,4 @@
-// Time-optimal re-timing under DISP and joint limits (issue 7, item 3).
+// Time-optimal re-timing under DISP and joint limits (doc/retiming.md §4–6).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -147,7 +147,8 @@ TEST(OptimalRetiming, KeepsEveryLimitDenselyAndIsNeverSlowerThanScaling) {
         expect_disp_limits(r.trajectory, fast);
         EXPECT_EQ(r.trajectory.piece_count(), m.path.size() == 1 ? 1u : 2u);
         if (joint_acceleration.size()) continue;
-        // The seed's scaling of the whole move keeps the same limits (velocity and torque).
+        // The scaling loop of the KUKA re-timing patent ("The robot drives through a preset working
+        // track") slows the whole move and keeps the same limits (velocity and torque).
         const RetimeResult scaled = retime_by_scaling(m.path, set, fast, ProfileKind::trapezoid, arm, m.q_start);
         std::printf("  optimal %.4f s vs scaling %.4f s\n", r.trajectory.duration(), scaled.trajectory.duration());
         EXPECT_LE(r.trajectory.duration(), scaled.trajectory.duration());
@@ -249,8 +250,9 @@ HexapodMove hexapod_move() {
   return {h, set, Path::lin(a, b).then(Path::lin(b, h.home()))};
 }
 
-// A hexapod: the legs are the joints. A fast move that the joint metric (issue 5) slows down as
-// a whole is re-timed to leg speeds ≤ their limits at every checked instant, and is faster.
+// A hexapod: the legs are the joints. A fast move that the joint metric (the DISP patent
+// JP7742490B2's leg-speed rule (b), doc/planning.md §2) slows down as a whole is re-timed to leg
+// speeds ≤ their limits at every checked instant, and is faster.
 TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
   const HexapodMove move = hexapod_move();
   const Hexapod& h = move.hexapod;
@@ -277,7 +279,7 @@ TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
     EXPECT_EQ(check.position_excess, 0.0);
     expect_disp_limits(r.trajectory, fast);
     if (acceleration.size()) continue;
-    // Against issue 5's rule (b): the joint metric lengthens whole sections.
+    // Against the DISP patent's rule (b): the joint metric lengthens whole sections.
     const Trajectory metric = plan(path, set, fast, ProfileKind::trapezoid, h.joint_metric(path, fast));
     std::printf("  optimal %.4f s vs joint metric %.4f s\n", r.trajectory.duration(), metric.duration());
     EXPECT_LE(r.trajectory.duration(), metric.duration());
@@ -312,7 +314,7 @@ TEST(OptimalRetiming, BadOptionsAreNamed) {
             std::string::npos);
 }
 
-// --- jerk limiting (issue 7 item 3, second half) ----------------------------------------------
+// --- jerk limiting (doc/retiming.md §6) -------------------------------------------------------
 
 // The state of a moving-averaged law at t (phases and their start states).
 ProfileState jerk_law_at(const std::vector<detail::JerkPhase>& phases, double t) {
@@ -447,7 +449,8 @@ TEST(JerkLimitedRetiming, KeepsTheJerkAndEveryLimitDensely) {
         // Never faster than the fastest law without a jerk limit on the same grid.
         EXPECT_GE(r.trajectory.duration(), unjerked.trajectory.duration());
         if (joint_acceleration.size()) continue;
-        // Against the seed's scaling with the S-curve (velocity and torque limits), where it converges.
+        // Against the KUKA re-timing patent's scaling with the S-curve (velocity and torque
+        // limits), where it converges.
         try {
           const RetimeResult scaled = retime_by_scaling(m.path, set, limits, ProfileKind::scurve, arm, m.q_start);
           std::printf("  jerk-limited optimal %.4f s vs scaling (S-curve) %.4f s\n", r.trajectory.duration(),

@@ -1,4 +1,5 @@
-// The overlapped velocity method (seed 002): the article's formulas, continuity, and running
+// The overlapped velocity method of the Mamezou trajectory article (Ishii, "Algorithm 2 for Robot
+// Manipulator Control"; doc/planning.md §7): the article's formulas, continuity, and running
 // through a corner without stopping.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// The planner and MATH.md §7 oracle 4, the guarantee: along any planned trajectory, sampled
-// densely by finite differences, no point or sphere of the set moves faster than its limit.
+// The planner and the guarantee (doc/planning.md eq. 5) with its oracle (eq. 18): along any planned
+// trajectory, sampled densely by finite differences, no point or sphere of the set moves faster
+// than its limit.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
-// Profiles (MATH.md §6, oracle 5): seeded sweeps per family check the end state by an
-// independent forward integration of the phases, every limit at the phase boundaries and
-// densely, monotone s, continuity across phases, and the duration against the textbook
-// closed forms. Durations against Ruckig: tests/python/test_profile.py.
+// Profiles (doc/profiles.md; doc/planning.md §8 item 8): seeded sweeps per family check the end
+// state by an independent forward integration of the phases, every limit at the phase boundaries
+// and densely, monotone s, continuity across phases, and the duration against the textbook closed
+// forms. Durations against Ruckig: tests/python/test_profile.py.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -376,8 +376,8 @@ TEST(Profile, InvariantsHoldAtTheCornersOfTheNumericRange) {
   EXPECT_TRUE(std::isfinite(longest));
 }
 
-// Fuzz finding 7: far below the stated range (S = 1e-110 m, v_end = S) the S-curve's peak search
-// stopped after 200 Newton steps, far from its root, and the law overshot S by 4e3 S.
+// Far below the stated range (S = 1e-110 m, v_end = S) the S-curve's peak search stopped after 200
+// Newton steps, far from its root, and the law overshot S by 4e3 S.
 TEST(Profile, ScurvePeakSearchConvergesForTinyDistancesWithBoundaryVelocities) {
   for (const double S : {1e-110, 1e-150}) {
     for (const double u : {S, 0.5 * S}) {
@@ -402,8 +402,8 @@ TEST(Profile, OverflowingDurationsAreRefused) {
   EXPECT_TRUE(std::isfinite(Profile::scurve(1.0, 1.0, 1e-308, 1e-308).duration()));
 }
 
-// Fuzz finding 10 and its neighbours, far outside the numeric range: the laws' formulas squared
-// tiny or huge numbers (S², v², a S, dv j ≥ a²) and gave wrong laws — S = 7.7e-315 m took
+// Tiny and huge inputs far outside the numeric range (doc/profiles.md §6): the laws' formulas
+// squared tiny or huge numbers (S², v², a S, dv j ≥ a²) and gave wrong laws — S = 7.7e-315 m took
 // 6.7e7 s instead of 0.36 s, S = 1e-300 m at unit limits 0 s. Reordered (∛(j/4) ∛S², √a √S,
 // dv/a ≥ a/j, |w − v| ((w + v) / 2a)), every case matches its textbook duration: with a
 // cruise S/v + 2√(v/j) (a not reached), triangles 2√(S/a), four jerk phases ∛(32 S / j).
@@ -418,7 +418,7 @@ TEST(Profile, LawsFarOutsideTheNumericRangeMatchTheClosedForms) {
   const double a10 = 4.780652035286447e-299, j10 = 2.848099973644035e-306;
   const double a2 = 8.2060724175491349e-304, j2 = 5.0781206641779257e-299;
   const Case cases[] = {
-      {S10, v10, a10, j10, S10 / v10 + v10 / a10, S10 / v10 + 2.0 * std::sqrt(v10 / j10), 1e-8},  // finding 10
+      {S10, v10, a10, j10, S10 / v10 + v10 / a10, S10 / v10 + 2.0 * std::sqrt(v10 / j10), 1e-8},  // S = 7.7e-315 m
       {tiny, 9.4978603296971489e-227, a2, j2, 2.0 * std::sqrt(tiny / a2), std::cbrt(32.0 * (tiny / j2)), 1e-8},
       {1e-300, 1.0, 1.0, 1.0, 2e-150, std::cbrt(32.0) * 1e-100, 1e-14},
       {1e-300, 1e300, 1e-300, 1e300, 2.0, 2.0, 1e-14},
@@ -551,9 +551,10 @@ TEST(ProfileErrors, TrapezoidTooShort) {
   const std::string m = message_of([] { Profile::trapezoid(0.4, 1, 1, 1, 0); });
   EXPECT_TRUE(starts_with(m, "distance = 0.4: too short to change the velocity from v_start = 1 to v_end = 0 under a_max = 1: it needs at least 0.5")) << m;
 }
-// Fuzz finding 13 (strict mode): S = 0 between boundary velocities of 1.4e-308 and 2.8e-309 m/s at
-// a_max = 5.5e-299 — the distance the change needs, 6e-318 m, underflowed to 0, and a law over
-// S = 0 was built that moved 1.1e-318 m. A change of velocity needs a positive distance.
+// Subnormal boundary velocities (fuzzed in strict mode): S = 0 between boundary velocities of
+// 1.4e-308 and 2.8e-309 m/s at a_max = 5.5e-299 — the distance the change needs, 6e-318 m,
+// underflowed to 0, and a law over S = 0 was built that moved 1.1e-318 m. A change of velocity
+// needs a positive distance.
 TEST(ProfileErrors, ZeroDistanceBetweenDifferentTinyVelocities) {
   const double a = 5.4502595765602775e-299, v0 = 1.3906733001411379e-308, v1 = 2.7894907876201549e-309;
   for (const bool scurve : {false, true}) {

@@ -1,6 +1,6 @@
-// Real-time claims, proven by counting: this executable replaces the global operator new and
-// delete with versions that count every call, and checks that the sampling paths allocate
-// nothing (STYLE.md: no allocation on the sampling path; Drake's LimitMalloc idea).
+// Real-time claims, proven by counting: this executable replaces the global operator new and delete
+// with versions that count every call, and checks that the sampling paths allocate nothing
+// (doc/guarantees-and-measurements.md: sampling never allocates; Drake's LimitMalloc idea).
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>

@@ -1,4 +1,5 @@
-// Joint-limit prediction and the seed's re-timing loop on a UR5e (issue 7, items 1 and 2).
+// Joint-limit prediction and the re-timing loop of the KUKA re-timing patent ("The robot drives
+// through a preset working track") on a UR5e (doc/retiming.md §1–3).
 #include <gtest/gtest.h>
 
 #include <dispkin/hexapod/hexapod_retiming.hpp>

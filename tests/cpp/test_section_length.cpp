@@ -1,6 +1,6 @@
-// Section length (MATH.md §5) against the actual motion: the largest speed of every point and
-// sphere, sampled densely along the section by finite differences, is never above L and L is
-// within 1e-6 of it — for screw and decoupled sections, relative and absolute objects.
+// Section length (doc/section-length.md §2–3) against the actual motion: the largest speed of every
+// point and sphere, sampled densely along the section by finite differences, is never above L and L
+// is within 1e-6 of it — for screw and decoupled sections, relative and absolute objects.
 #include <functional>
 
 #include <gtest/gtest.h>
@@ -76,7 +76,7 @@ double sampled_section_speed(const MetricSetd& set, const Section& s) {
                     }));
   }
   // Spheres through the instantaneous twist and the exact sphere speed (itself checked
-  // against surface samples by oracle 3).
+  // against surface samples, doc/planning.md §8 item 3).
   for (const auto& sp : g.relative_spheres) {
     const VL c = sp.center.cast<Real>();
     best = std::max(best, sampled_max([&](Real t) { return sphere_speed<Real>(s.twist(t), c, sp.radius); }));

@@ -494,7 +494,7 @@ TEST(SerialArmErrors, JointCycleIsRefused) {
             "link = \"l2\": is its own ancestor: the URDF's joints form a cycle \"l2\" -(j2)-> \"l2\"");
 }
 
-// Fuzz finding 6: a cycle that leaves no root link is refused by urdfdom itself, which then
+// A joint cycle that leaves no root link is refused by urdfdom itself, which then
 // leaked the ring of links it had built (LeakSanitizer). The joint graph is read first now, so
 // urdfdom never sees a cycle: under `make sanitize` this test fails if anything leaks.
 TEST(SerialArmErrors, JointCycleIsRefusedBeforeUrdfdomReadsIt) {
@@ -517,10 +517,10 @@ TEST(SerialArmErrors, JointCycleIsRefusedBeforeUrdfdomReadsIt) {
             "\"a\" -(j2)-> \"b\" -(j3)-> \"c\" -(j4)-> \"a\"");
 }
 
-// Fuzz finding 12: TinyXML (urdfdom's XML parser, and the joint-graph check's) reads past the end
-// of a text that ends inside a UTF-8 sequence (here "link\xe6\xe6\xe6\xe6"); ASan saw the
-// read beyond the buffer. The text is now handed over with NULs appended: refused, no overflow
-// (under `make sanitize` an over-read fails this test).
+// TinyXML (urdfdom's XML parser, and the joint-graph check's) read past the end of a text that ends
+// inside a UTF-8 sequence (here "link\xe6\xe6\xe6\xe6"); ASan saw the read beyond the buffer. The
+// text is now handed over with NULs appended: refused, no overflow (under `make sanitize` an
+// over-read fails this test).
 TEST(SerialArmErrors, TextEndingInsideAUtf8SequenceIsRefusedWithoutOverread) {
   std::ifstream in(std::string(DISPKIN_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_urdf/finding_12_utf8_lead_byte_at_end.urdf",
                    std::ios::binary);
@@ -530,9 +530,10 @@ TEST(SerialArmErrors, TextEndingInsideAUtf8SequenceIsRefusedWithoutOverread) {
   EXPECT_THROW(SerialArm::from_urdf_string(text, "base_link", "flange"), std::invalid_argument);
 }
 
-// Fuzz finding 5: urdfdom used the text of an attribute it could not parse as a printf format, so
-// "%n" there crashed inside urdf::parseURDF. A '%' outside comments, spelled out or as a character
-// reference, is refused before urdfdom sees the text; inside a comment it is harmless and kept.
+// A '%' in an attribute: urdfdom used the text of an attribute it could not parse as a printf
+// format, so "%n" there crashed inside urdf::parseURDF. A '%' outside comments, spelled out or as a
+// character reference, is refused before urdfdom sees the text; inside a comment it is harmless and
+// kept.
 TEST(SerialArmErrors, PercentSignOutsideCommentsIsRefused) {
   const std::string arm = R"(<robot name="r">
   <link name="base_link"/> <link name="tool0"/>

@@ -1,4 +1,5 @@
-// Shape builders, and how far each sphere approximation is from the exact sphere (MATH.md §4).
+// Shape builders, and how far each sphere approximation is from the exact sphere
+// (doc/disp-metric.md eqs. 25–26).
 #include <gtest/gtest.h>
 
 #include <dispkin/disp.hpp>

@@ -1,4 +1,5 @@
-// Time laws under a velocity-limit curve and the planner's curvature rule (issue 4).
+// Time laws under a velocity-limit curve and the planner's curvature rule (doc/profiles.md §5,
+// doc/planning.md §4).
 #include <gtest/gtest.h>
 
 #include <dispkin/planning/planner.hpp>

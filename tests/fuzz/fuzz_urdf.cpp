@@ -16,8 +16,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using dispkin::fuzz::check_finite;
   std::string xml(reinterpret_cast<const char*>(data), size);
-  // A '%' outside comments (finding 5: urdfdom uses attribute text as a printf format) must be
-  // refused by the loader before urdfdom parses it: no skip here.
+  // A '%' outside comments (urdfdom uses attribute text as a printf format: a crash in vfprintf)
+  // must be refused by the loader before urdfdom parses it: no skip here.
   std::string base = "base_link", tip = "tool0";
   if (!xml.empty() && xml[0] == '@') {
     const std::size_t end = xml.find('\n');

@@ -1,7 +1,8 @@
 """Shared pieces of the pytest suite: random cases and independent numpy reference maths.
 
-Nothing here calls the library to compute a value a test checks; the references are written
-from MATH.md directly (rotation matrices, chords, speeds, a maximiser over a sphere surface).
+Nothing here calls the library to compute a value a test checks; the references are written from the
+formulas of doc/disp-metric.md and doc/section-length.md directly (rotation matrices, chords,
+speeds, a maximiser over a sphere surface).
 """
 
 import os
@@ -217,7 +218,7 @@ DUAL_EXTREME_POINTS = {
 
 def chord_maps(pose_a: dispkin.Pose, pose_b: dispkin.Pose):
     """(A, w) with chord(x) = A x + w, for relative objects (world chord Tb x − Ta x) and for
-    absolute objects (body chord Tb⁻¹ x − Ta⁻¹ x) — MATH.md §3."""
+    absolute objects (body chord Tb⁻¹ x − Ta⁻¹ x) — doc/disp-metric.md eq. 20."""
     ra, ta = pose_arrays(pose_a)
     rb, tb = pose_arrays(pose_b)
     relative = (rb - ra, tb - ta)

@@ -1,6 +1,6 @@
-"""The bad-input table (issue 9, item 5): every public Python entry point × every kind of bad
-input, one row each, asserting the exception type AND that the message names the argument and
-shows the value ("<argument> = <value>: <reason>").
+"""The bad-input table: every public Python entry point × every kind of bad input, one row each,
+asserting the exception type AND that the message names the argument and shows the value
+("<argument> = <value>: <reason>").
 
 Rows whose entry point does NOT reject the input are strict xfails carrying the observed
 behaviour, so a fix turns them into failures that ask for the row to be promoted.

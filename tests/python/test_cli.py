@@ -91,7 +91,7 @@ def test_kdl_path_length_is_max_of_translation_and_eqradius_angle():
 
 def test_sweep_ratio_matches_the_closed_form_for_a_ball_at_the_tcp():
     # Ball of radius ρ = eqradius around the TCP, decoupled section with the TCP as pivot:
-    # L = sqrt(Δp∥² + (|Δp⊥| + θρ)²) (MATH.md §5), so 1 <= L / max(|Δp|, ρθ) <= 2.
+    # L = sqrt(Δp∥² + (|Δp⊥| + θρ)²) (doc/section-length.md eq. 8), so 1 <= L / max(|Δp|, ρθ) <= 2.
     moves = cli.random_lin_moves(500, 3)
     ratios = cli.sweep_ratios(500, 3)
     rho = cli.EQRADIUS

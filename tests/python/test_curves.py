@@ -1,4 +1,4 @@
-"""SPLINE moves and blends at via points from Python (issue 3)."""
+"""SPLINE moves and blends at via points from Python."""
 
 import math
 

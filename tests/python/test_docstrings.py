@@ -1,4 +1,4 @@
-"""Every public name of the package has a docstring (issue 8: "docstrings on every public name").
+"""Every public name of the package has a docstring.
 
 Public: the classes, functions, methods and properties of the compiled module dispkin._core and
 its submodule shapes, and the module-level functions and classes (with their methods and

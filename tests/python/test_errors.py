@@ -1,5 +1,5 @@
 """Bad input fails early with a ValueError whose message names the argument and the value
-(ARCHITECTURE.md: never a crash, a NaN in the output or a silently clamped result).
+(never a crash, a NaN in the output or a silently clamped result).
 
 C++ std::invalid_argument arrives as ValueError through pybind11; shape errors are raised by
 the binding layer before any C++ code runs.

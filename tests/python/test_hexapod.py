@@ -232,7 +232,7 @@ def test_leg_speed_group_bounds_every_leg_along_a_planned_trajectory():
         h.check_trajectory(trajectory, 0.0)
 
 
-def test_check_accepts_a_trajectory_as_the_issue_names_it():
+def test_check_of_a_trajectory_is_check_trajectory():
     hx = dispkin.Hexapod.symmetric(0.12, math.radians(20), 0.08, math.radians(20), 0.15, 0.13, 0.20, 0.01)
     a = dispkin.Pose.from_xyzuvw([0, 0, 0.15, 0, 0, 0])
     b = dispkin.Pose.from_xyzuvw([0.01, 0, 0.15, 0, math.radians(3), 0])

@@ -1,4 +1,4 @@
-"""MoveIt joint_limits.yaml and Pilz cartesian_limits.yaml (issue 8, item 4)."""
+"""MoveIt joint_limits.yaml and Pilz cartesian_limits.yaml."""
 
 import pathlib
 

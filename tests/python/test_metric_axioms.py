@@ -1,4 +1,5 @@
-"""MATH.md §7 oracle 1: the DISP distance is a metric, and it is the chord distance of §3.
+"""doc/planning.md §8 item 1: the DISP distance is a metric, and it is the chord distance of
+doc/disp-metric.md eqs. 18–19.
 
 For random well-formed sets of every family (relative / coplanar / absolute points, a single
 ball, collinear relative points with an absolute plane, mixtures) and random poses, under the
@@ -113,7 +114,8 @@ def test_distance_sees_a_rotation_about_the_line_through_two_points():
 
 
 def test_group_weights_scale_the_distance():
-    # d = max over groups of d_g · v_sys / v_g (patent M3/M4); a group without a limit has weight 1.
+    # d = max over groups of d_g · v_sys / v_g (doc/disp-metric.md eq. 17; the DISP patent
+    # JP7742490B2, M3/M4); a group without a limit has weight 1.
     rng = rng_for("oracle1-groups")
     for _ in range(200):
         first, second = random_set(rng, "relative"), random_set(rng, "absolute")

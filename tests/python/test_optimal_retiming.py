@@ -1,4 +1,4 @@
-"""Time-optimal re-timing (issue 7, item 3) against TOPP-RA (`toppra` from PyPI) on the same
+"""Time-optimal re-timing (doc/retiming.md §4–6) against TOPP-RA (`toppra` from PyPI) on the same
 joint path and the same joint constraints."""
 
 import pathlib
@@ -123,19 +123,21 @@ def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
     """retime(profile="scurve", method="optimal"): |s'''| <= jerk within every section (third
     differences of sampled s), the path speed under the plan's velocity-limit curve, the joint
     limits dense, the path end reached at rest; never faster than the jerk-free optimum, and
-    compared with toppra (no jerk limit) and the seed's scaling with S-curves."""
+    compared with toppra (no jerk limit) and the scaling loop of the KUKA re-timing patent ("The
+    robot drives through a preset working track") with S-curves."""
     arm, path, tool = arm_and_path(kind)
     limits = dispkin.Limits(1.5, 400.0, 150.0)
     jerked = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="optimal")
     plain = dispkin.retime(path, tool, dispkin.Limits(1.5, 400.0), arm, Q0, profile="trapezoid", method="optimal")
     try:
         scaled = dispkin.retime(path, tool, limits, arm, Q0, profile="scurve", method="scaling").trajectory.duration
-        # The seed's scaling with the joint limits 0.1 % lower (the standing headroom of the grid
-        # laws) is a candidate of the optimal method: the optimum is never slower than it.
+        # The KUKA re-timing patent's scaling with the joint limits 0.1 % lower (the standing
+        # headroom of the grid laws) is a candidate of the optimal method: the optimum is never
+        # slower than it.
         joint = arm.joint_limits
         held_back = arm.with_joint_limits(velocity=joint.velocity * (1 - 1e-3), effort=joint.effort * (1 - 1e-3))
         scaled_clear = dispkin.retime(path, tool, limits, held_back, Q0, profile="scurve", method="scaling").trajectory.duration
-    except RuntimeError:  # the seed's loop does not converge on the CIRC (measured): nothing to compare
+    except RuntimeError:  # the scaling loop does not converge on the CIRC (measured): nothing to compare
         scaled, scaled_clear = None, None
     s_grid, q_grid = joint_path(arm, path, tool)
     theirs = toppra_duration(arm, s_grid, q_grid, 100, True)

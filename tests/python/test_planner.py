@@ -1,4 +1,5 @@
-"""The planner from Python: the API names of issue 4, the guarantee, and the KDL comparison."""
+"""The planner from Python: the API names (plan, sample, sample_xyzuvw, path_velocity, ...), the
+guarantee, and the KDL comparison."""
 
 import math
 

@@ -1,4 +1,4 @@
-"""Profiles against Ruckig (MATH.md §7 oracle 5), an independent time-optimal generator.
+"""Profiles against Ruckig (doc/planning.md §8 item 8), an independent time-optimal generator.
 
 Ruckig (PyPI ``ruckig``, requirements-dev.txt) plans one degree of freedom from position 0 to S
 with the same limits; ``max_jerk = inf`` gives its acceleration-limited (trapezoidal) law. Each

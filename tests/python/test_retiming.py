@@ -1,4 +1,5 @@
-"""Joint-limit prediction and the seed's re-timing loop from Python (issue 7)."""
+"""Joint-limit prediction and the re-timing loop of the KUKA re-timing patent ("The robot drives
+through a preset working track") from Python (doc/retiming.md §1–3)."""
 
 import pathlib
 

@@ -1,4 +1,5 @@
-"""Section lengths (MATH.md §5) against dense finite-difference sampling of the actual motion.
+"""Section lengths (doc/section-length.md §2–3) against dense finite-difference sampling of the
+actual motion.
 
 For screw and decoupled (LIN) sections of random sets (relative and absolute points, a relative
 and an absolute ball) the poses come from dispkin.interpolate, and the speed per unit τ of every
@@ -127,15 +128,16 @@ def test_section_length_is_the_largest_sampled_speed(kind):
         ratios[i] = length / sampled
         assert length >= sampled * (1 - FD_ERROR), (i, kind, a, b, pivot, spec, length, sampled)
         assert length <= sampled * (1 + EXACT), (i, kind, a, b, pivot, spec, length, sampled)
-        # A chord is never longer than the arc: d(a, b) <= L (MATH.md §5).
+        # A chord is never longer than the arc: d(a, b) <= L (doc/section-length.md eq. 2).
         assert dispkin.disp_distance(s, a, b) <= length * (1 + 1e-12)
         if kind == "screw":  # a screw section does not depend on the pivot
             assert dispkin.section_length(s, a, b, interpolation="screw") == length
 
 
 def test_decoupled_section_of_a_ball_centred_on_the_pivot_has_the_closed_form():
-    # MATH.md §5: sqrt(Δc∥² + (‖Δc⊥‖ + θρ)²), exact for a ball centred on the rotation axis
-    # through the pivot (Δc the pivot's travel in world, θ the angle, ∥ along the world axis).
+    # doc/section-length.md eq. 8: sqrt(Δc∥² + (‖Δc⊥‖ + θρ)²), exact for a ball centred on the
+    # rotation axis through the pivot (Δc the pivot's travel in world, θ the angle, ∥ along the
+    # world axis).
     rng = rng_for("section-ball-at-pivot")
     for i in range(COUNT):
         a = random_pose(rng)

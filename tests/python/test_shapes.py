@@ -1,5 +1,6 @@
-"""Shape builders and how well they stand in for a sphere (MATH.md §4), checked geometrically
-in numpy: vertex radii, face distances, containment via the support function, speed bounds."""
+"""Shape builders and how well they stand in for a sphere (doc/disp-metric.md eq. 26), checked
+geometrically in numpy: vertex radii, face distances, containment via the support function, speed
+bounds."""
 
 import math
 
@@ -39,7 +40,7 @@ def test_circumscribed_icosahedron_has_its_faces_touching_the_sphere():
     for i, j, k in faces:
         n = np.cross(v[j] - v[i], v[k] - v[i])
         assert abs(abs(n @ v[i]) / np.linalg.norm(n) - radius) <= 1e-15
-    assert np.linalg.norm(v, axis=1) / radius == pytest.approx(np.full(12, 1.2584), abs=5e-5)  # MATH.md §4
+    assert np.linalg.norm(v, axis=1) / radius == pytest.approx(np.full(12, 1.2584), abs=5e-5)  # doc/disp-metric.md eq. 26
 
 
 @pytest.mark.parametrize("k", [0, 1, 2, 3])

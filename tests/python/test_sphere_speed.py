@@ -1,4 +1,5 @@
-"""MATH.md §7 oracle 3: the exact sphere speed against samples of the sphere's surface.
+"""doc/planning.md §8 item 3 (doc/disp-metric.md eq. 25): the exact sphere speed against samples of
+the sphere's surface.
 
 sphere_speed(twist, c, ρ) must never be below the speed of any surface point, and within 1e-6
 (relative) of the best one. Pure random sampling gets within about 1e-5 only, so the best
@@ -86,6 +87,7 @@ def test_sphere_speed_special_values():
     assert np.isclose(dispkin.sphere_speed(np.hstack([v, w]), c, 0.0), np.linalg.norm(v + np.cross(w, c)), rtol=1e-15)
     # Pure rotation about an axis through the centre: the rim moves at ‖ω‖ρ.
     assert np.isclose(dispkin.sphere_speed([0, 0, 0, 0, 0, 2.0], [0, 0, 5.0], 0.25), 0.5, rtol=1e-15)
-    # Same screw seen at a shifted centre: v_c = v + ω × c; along-axis and across parts add as in MATH §4.
+    # Same screw seen at a shifted centre: v_c = v + ω × c; along-axis and across parts add as in
+    # doc/disp-metric.md eq. 25.
     xi = np.array([1.0, 0.0, 2.0, 0.0, 0.0, 3.0])  # v_c·ω̂ = 2 along, 1 across at c = 0
     assert np.isclose(dispkin.sphere_speed(xi, [0, 0, 0], 0.5), np.hypot(2.0, 1.0 + 3.0 * 0.5), rtol=1e-15)

@@ -1,4 +1,4 @@
-"""MATH.md §7 oracle 2: the vertex shortcut.
+"""doc/planning.md §8 item 2 (doc/disp-metric.md eq. 27): the vertex shortcut.
 
 A point's speed ‖v + ω × p‖ and its chord ‖(R2 − R1) p + (t2 − t1)‖ are convex in p, so
 random points inside the convex hull of a cloud (convex combinations, half of them pushed close

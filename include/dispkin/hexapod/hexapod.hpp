@@ -144,17 +144,17 @@ class Hexapod : public Kinematics {
   template <typename TrajectoryLike>
   TrajectoryCheck check_trajectory(const TrajectoryLike& trajectory, double dt) const;
 
-  //! The patent's leg-speed rule (a): adds the six platform joints as relative points of
-  //! `group` to `set` and sets that group's speed to the smallest leg speed limit. Since a
-  //! leg's speed ℓ̇_i = u_i·ṗ_i never exceeds the speed of its platform joint, a trajectory
-  //! that keeps the group within its speed keeps every leg within its limit.
+  //! Leg-speed rule (a) of the DISP patent JP7742490B2 (doc/planning.md §2): adds the six platform
+  //! joints as relative points of `group` to `set` and sets that group's speed to the smallest leg
+  //! speed limit. Since a leg's speed ℓ̇_i = u_i·ṗ_i never exceeds the speed of its platform joint,
+  //! a trajectory that keeps the group within its speed keeps every leg within its limit.
   void add_leg_speed_group(MetricSetd& set, int group) const;
 
   // Leg speeds along a path (rule (b)): leg_rate_bounds, leg_section_lengths and joint_metric
   // sample path sections, so they are part of the umbrella library dispkin::dispkin
-  // (src/hexapod_along_path.cpp); dispkin::hexapod alone has the rest of this class.
+  // (src/hexapod/hexapod_along_path.cpp); dispkin::hexapod alone has the rest of this class.
 
-  //! The patent's leg-speed rule (b), the joint-space metric: upper bounds r_i ≥ max over
+  //! The DISP patent's leg-speed rule (b), the joint-space metric: upper bounds r_i ≥ max over
   //! τ ∈ [0, 1] of |dℓ_i/dτ| along one section (m per unit τ), dℓ_i/dτ = (leg_jacobian row i) ·
   //! (section_twist per unit τ), exact at every τ.
   //!

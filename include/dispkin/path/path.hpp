@@ -1,5 +1,6 @@
 //! Pose paths: LIN and CIRC moves cut into sections whose DISP length bounds every point's
-//! speed (MATH.md §1, §5; seed 002 for the interpolations).
+//! speed (doc/disp-metric.md eqs. 13–14, doc/section-length.md; the interpolations follow the
+//! Mamezou trajectory article, Ishii, "Algorithm 2 for Robot Manipulator Control").
 //!
 //! A path is geometry only. It is a chain of sections; section k moves from its start to its
 //! end pose as τ runs over [0, 1], and `section_length` gives L_k with: along the section, no
@@ -41,7 +42,7 @@ struct LinSection {
     return Twistd(at.quaternion().conjugate() * delta_c - omega_body.cross(pivot), omega_body);
   }
 
-  //! Exact (MATH.md §5).
+  //! Exact (doc/section-length.md eq. 4 for screw, eqs. 5–11 for decoupled sections).
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     return section_length(set, start, end, interpolation, pivot, system_velocity);
   }
@@ -192,8 +193,8 @@ namespace detail {
 SectionBounds section_bounds(const Section& section, GroupFactors& factors);
 }  // namespace detail
 
-//! Geometry of a circle through three points (MATH: circumcentre), with the arc from the
-//! first to the last point passing through the middle one.
+//! Geometry of a circle through three points (doc/section-length.md §4: circumcentre), with the arc
+//! from the first to the last point passing through the middle one.
 struct CircleThroughPoints {
   Eigen::Vector3d center;
   Eigen::Vector3d normal;  //!< unit; the arc runs counter-clockwise about it
@@ -234,14 +235,14 @@ class Path {
   //! Append `next`, which must start where this path ends (to 1e-9 m and 1e-9 rad).
   Path& then(const Path& next);
 
-  //! Append `next` with the corner blended (the seed's boundary smoothing): the path leaves its
-  //! last move at the sub-point `before` ahead of the corner and joins `next` at the sub-point
-  //! `after` past it (both in geometric size: pivot travel + 0.1 m per radian of rotation, so a
-  //! via point that only rotates blends too), along a cubic pose curve whose pivot velocity and
-  //! angular velocity at both ends are those of the neighbours, scaled alike — the twist keeps
-  //! its direction through both joins, so the planner does not stop there. The pivot stays
-  //! within max(before, after) of the corner. Throws if a distance is not positive or exceeds
-  //! half of its neighbouring move (two blends on one move must not overlap).
+  //! Append `next` with the corner blended (the Mamezou article's boundary smoothing,
+  //! doc/planning.md §6): the path leaves its last move at the sub-point `before` ahead of the
+  //! corner and joins `next` at the sub-point `after` past it (both in geometric size: pivot travel
+  //! + 0.1 m per radian of rotation, so a via point that only rotates blends too), along a cubic
+  //! pose curve whose pivot velocity and angular velocity at both ends are those of the neighbours,
+  //! scaled alike — the twist keeps its direction through both joins, so the planner does not stop
+  //! there. The pivot stays within max(before, after) of the corner. Throws if a distance is not
+  //! positive or exceeds half of its neighbouring move (two blends on one move must not overlap).
   Path& then(const Path& next, double before, double after, double tolerance = 1e-3);
   Path& then(const Path& next, double blend) { return then(next, blend, blend); }
 

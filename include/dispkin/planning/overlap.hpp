@@ -1,9 +1,10 @@
-//! The seed's overlapped velocity method (seed 002, "Overlapped Velocity Method"): the next
-//! move starts t_ov before the previous one ends, and during the overlap the two motions add
-//! up — position P(t) = P_b(t) + P_f(t′) − P₂, orientation R(t) = R_f(t′) R₂⁻¹ R_b(t), with t′
-//! the next move's own time and (P₂, R₂) the via pose where one ends and the other starts.
+//! The overlapped velocity method of the Mamezou trajectory article (Ishii, "Algorithm 2 for Robot
+//! Manipulator Control", section "Overlapped Velocity Method"; doc/planning.md §7): the next move
+//! starts t_ov before the previous one ends, and during the overlap the two motions add up —
+//! position P(t) = P_b(t) + P_f(t′) − P₂, orientation R(t) = R_f(t′) R₂⁻¹ R_b(t), with t′ the next
+//! move's own time and (P₂, R₂) the via pose where one ends and the other starts.
 //!
-//! P is the position of the body point `pivot` (the seed's tool tip; the origin by default).
+//! P is the position of the body point `pivot` (the article's tool tip; the origin by default).
 //! The velocities add: ċ = ċ_b + ċ_f, ω = ω_f + R_f R₂⁻¹ ω_b (world). Overlapping the previous
 //! move's deceleration with the next one's acceleration lets the path run through the via
 //! point without stopping. Unlike plan(), this composition carries no speed guarantee of its

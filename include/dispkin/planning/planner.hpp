@@ -1,15 +1,16 @@
 //! The DISP trajectory planner: a path, a metric set and limits → a trajectory whose points
-//! never move faster than the system velocity (MATH.md §5–7).
+//! never move faster than the system velocity (doc/planning.md eq. 5).
 //!
 //! The path length is the sum of the section lengths L_k under the set (each group weighted
 //! by v_sys / v_g). A time law s(t) with 0 ≤ ṡ ≤ v_sys, |s̈| ≤ a, |s⃛| ≤ j runs over it and
 //! section k is traversed at τ = (s − s_k)/L_k: every point of every group then moves at most
 //! at ṡ · (its weight)⁻¹ ≤ its limit, at every instant (not only at samples).
 //!
-//! Rule at corners (this version): where the path's direction changes between two sections
-//! (their twists per unit of s differ), the trajectory comes to rest — the patent's "lower
-//! speed at direction reversals" in its simplest safe form. Tangent-continuous junctions (the
-//! sections of one CIRC, collinear LINs) are passed at speed within one time law.
+//! Rule at corners (this version): where the path's direction changes between two sections (their
+//! twists per unit of s differ), the trajectory comes to rest — the "lower speed at direction
+//! reversals" of the DISP patent JP7742490B2 in its simplest safe form (doc/planning.md §3).
+//! Tangent-continuous junctions (the sections of one CIRC, collinear LINs) are passed at speed
+//! within one time law.
 #pragma once
 
 #include <optional>

@@ -112,8 +112,8 @@ struct OptimalRetimeResult {
   std::vector<double> grid_s, grid_speed;
   //! With a jerk limit: the longest moving-average window T (s) of the rest-to-rest runs, the
   //! time each run grew by; 0 without, and 0 when the trajectory is the plain S-curve plan or
-  //! the patent's scaling loop with the S-curve (either keeps every joint limit and is faster than the
-  //! average).
+  //! the KUKA re-timing patent's scaling loop with the S-curve (either keeps every joint limit
+  //! and is faster than the average).
   double jerk_window = 0.0;
 };
 

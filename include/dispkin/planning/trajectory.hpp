@@ -55,9 +55,9 @@ class Trajectory {
   //! curve (plan() slows down where the path curves tightly).
   std::size_t law_count() const noexcept { return law_.size(); }
 
-  //! Every phase boundary and phase middle of every time law, sorted, from 0 to duration():
-  //! the instants where velocity or acceleration peak or change their course (the DISP
-  //! patent's P0, P1, P12, P2, P3 for each law). Planning side; allocates.
+  //! Every phase boundary and phase middle of every time law, sorted, from 0 to duration(): the
+  //! instants where velocity or acceleration peak or change their course (the KUKA re-timing
+  //! patent's P0, P1, P12, P2, P3 for each law; doc/planning.md §5). Planning side; allocates.
   std::vector<double> characteristic_times() const { return law_.characteristic_times(); }
 
   //! The velocity-limit curve (system velocity, lowered where the path curves tightly), in

@@ -1,6 +1,6 @@
-//! Time-optimal laws under a velocity-limit curve v_lim(s) (issue 4): the curve is piecewise
-//! constant — one value per segment of the path — and the law is a chain of Profiles, one per
-//! segment, whose boundary velocities come from the classic two passes: forward (how fast can
+//! Time-optimal laws under a velocity-limit curve v_lim(s) (doc/profiles.md §5): the curve is
+//! piecewise constant — one value per segment of the path — and the law is a chain of Profiles, one
+//! per segment, whose boundary velocities come from the classic two passes: forward (how fast can
 //! it be when it gets here), backward (how fast may it be to still slow down in time), each
 //! boundary at most the smaller limit of its two segments.
 //!
