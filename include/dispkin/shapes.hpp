@@ -163,8 +163,7 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int coun
   require_positive(radius, "radius");
   require_translation(center, "center");
   require(count >= 4, "count", count, "must be at least 4 so the shell spans space");
-  const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
-  const Scalar golden_angle = pi * (Scalar(3) - sqrt(Scalar(5)));
+  const Scalar golden_angle = Scalar(EIGEN_PI) * (Scalar(3) - sqrt(Scalar(5)));
   std::vector<Eigen::Matrix<Scalar, 3, 1>> out;
   out.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {

@@ -1,4 +1,4 @@
-// Python binding of dispkin/hexapod.hpp: Hexapod, WorkspaceCheck, LegViolation,
+// Python binding of dispkin/hexapod/hexapod.hpp: Hexapod, WorkspaceCheck, LegViolation,
 // xyzuvw_for_new_pivot. Joints are (6, 3) arrays (one joint per row), legs (6,) arrays.
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// Python binding of dispkin/path.hpp: Path (LIN, CIRC), its sections, and JointPath (PTP).
+// Python binding of dispkin/path/path.hpp: Path (LIN, CIRC), its sections, and JointPath (PTP).
 #include <optional>
 #include <string>
 

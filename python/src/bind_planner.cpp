@@ -1,4 +1,4 @@
-// Python binding of dispkin/planner.hpp: Limits, plan, Trajectory.
+// Python binding of dispkin/planning/planner.hpp: Limits, plan, Trajectory.
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -20,11 +20,6 @@ namespace python {
 
 namespace {
 
-ProfileKind profile_kind(const std::string& name) {
-  if (name == "scurve") return ProfileKind::scurve;
-  if (name == "trapezoid") return ProfileKind::trapezoid;
-  throw std::invalid_argument(describe("profile", name, "must be \"scurve\" or \"trapezoid\""));
-}
 
 // Times as a (N,) array (a number is one time); each must be finite.
 std::vector<double> times_of(const py::object& times) {
@@ -149,7 +144,7 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
   add_sampling(trajectory);
 
   py::class_<OverlappedTrajectory> overlapped(m, "OverlappedTrajectory", R"doc(
-The seed's overlapped velocity method: `after` starts `overlap` seconds before `before` ends and
+The Mamezou trajectory article's overlapped velocity method: `after` starts `overlap` seconds before `before` ends and
 the two motions add up meanwhile — P(t) = P_b(t) + P_f(t') - P_2 for the point `pivot` (body
 coordinates; the origin by default) and R(t) = R_f(t') R_2^-1 R_b(t). Overlapping the
 deceleration of one move with the acceleration of the next runs through the via point without

@@ -50,7 +50,7 @@ py::list phases(const Profile& profile) {
   return out;
 }
 
-const char* kind_name(const Profile& p) { return p.kind() == ProfileKind::scurve ? "scurve" : "trapezoid"; }
+const char* kind_name(const Profile& p) { return profile_name(p.kind()); }
 
 std::string profile_repr(const Profile& p) {
   return std::string("Profile(kind=\"") + kind_name(p) + "\", distance=" + float_repr(p.distance()) +

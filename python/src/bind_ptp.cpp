@@ -1,4 +1,4 @@
-// Python binding of dispkin/ptp.hpp: JointTrajectory and plan(JointPath, ..., robot=SerialArm).
+// Python binding of dispkin/serial/ptp.hpp: JointTrajectory and plan(JointPath, ..., robot=SerialArm).
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,11 +17,6 @@ namespace python {
 
 namespace {
 
-ProfileKind ptp_profile_kind(const std::string& name) {
-  if (name == "scurve") return ProfileKind::scurve;
-  if (name == "trapezoid") return ProfileKind::trapezoid;
-  throw std::invalid_argument(describe("profile", name, "must be \"scurve\" or \"trapezoid\""));
-}
 
 // Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail).
 template <typename Write>
@@ -158,7 +153,7 @@ time and no joint faster than its velocity limit. Sample it at any times (second
       "plan",
       [](const JointPath& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
          const py::object& robot, const std::optional<Eigen::VectorXd>& joint_acceleration, double tolerance) {
-        const ProfileKind kind = ptp_profile_kind(profile);
+        const ProfileKind kind = profile_kind(profile);
         if (robot.is_none() || !py::isinstance<serial::SerialArm>(robot)) {
           throw std::invalid_argument(describe("robot", std::string(py::repr(robot)),
                                                "must be a SerialArm: a PTP move (JointPath) is planned on an arm"));

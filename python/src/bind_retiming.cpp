@@ -1,4 +1,5 @@
-// Python binding of dispkin/retiming.hpp: check_joint_limits, retime (serial arms).
+// Python binding of dispkin/planning/retiming.hpp with serial/serial_retiming.hpp and
+// hexapod/hexapod_retiming.hpp: check_joint_limits, retime.
 #include <optional>
 #include <string>
 
@@ -58,7 +59,7 @@ JointCheckOptions check_options(int samples_between, double difference_step) {
 
 void bind_retiming(py::module_& m) {
   py::class_<JointLimitReport>(m, "JointLimitReport", R"doc(
-What check_joint_limits found along a trajectory: the seed's factors FVEL = max |qd_i| / qd_max_i
+What check_joint_limits found along a trajectory: the KUKA re-timing patent's factors FVEL = max |qd_i| / qd_max_i
 and FACC = max |tau_dyn_i| / (tau_max_i - |tau_static_i|) (each <= 1 when the limits hold), where
 they are reached, the largest excursion of q outside its position range, and the per-sample
 arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque; the torques are
@@ -142,14 +143,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
          const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
          int max_iterations, int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration,
          bool torque_limits) -> py::object {
-        ProfileKind kind;
-        if (profile == "scurve") {
-          kind = ProfileKind::scurve;
-        } else if (profile == "trapezoid") {
-          kind = ProfileKind::trapezoid;
-        } else {
-          throw std::invalid_argument(describe("profile", profile, "must be \"scurve\" or \"trapezoid\""));
-        }
+        const ProfileKind kind = profile_kind(profile);
         if (method == "scaling") {
           return py::cast(retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
                                             max_iterations));
@@ -169,7 +163,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       py::arg("max_iterations") = 20, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
       py::arg("torque_limits") = true,
       "Re-time `path` so that the robot keeps its joint limits.\n\n"
-      "method=\"scaling\" (the seed's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
+      "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
       "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
       "method=\"optimal\": the fastest parameterisation under the DISP limits and the joint velocity limits, "
       "`joint_acceleration` ((dof,) array, optional) and the effort limits (if `torque_limits`) at once, over "
@@ -190,11 +184,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
           throw std::invalid_argument(describe("method", method, "must be \"optimal\" for a Hexapod (its leg speeds enter "
                                                                  "plan() through Hexapod.joint_metric; no scaling loop)"));
         }
-        if (profile == "scurve" || profile == "trapezoid") {
-          limits.validate(profile == "scurve" ? ProfileKind::scurve : ProfileKind::trapezoid);
-        } else {
-          throw std::invalid_argument(describe("profile", profile, "must be \"scurve\" or \"trapezoid\""));
-        }
+        limits.validate(profile_kind(profile));
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;

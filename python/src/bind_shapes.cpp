@@ -48,7 +48,7 @@ void bind_shapes(py::module_& m) {
       },
       py::arg("radius"), py::arg("count"), py::arg_v("center", origin, "(0, 0, 0)"),
       "`count` (>= 4) points, as a (count, 3) array, spread evenly on the sphere of `radius` "
-      "(metres) around `center` (a Fibonacci lattice): the patent's shell around a pivot point.");
+      "(metres) around `center` (a Fibonacci lattice): the DISP patent's shell around a pivot point.");
 }
 
 }  // namespace python

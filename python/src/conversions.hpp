@@ -8,7 +8,9 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <dispkin/error.hpp>
 #include <dispkin/metric_set.hpp>
+#include <dispkin/profile.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -101,6 +103,14 @@ inline py::array_t<double> to_array(const Eigen::Vector3d& p) {
 }
 
 //! The repr of a float as Python writes it (shortest round-trip form).
+// The one spelling of a profile kind in Python: "scurve" or "trapezoid" (argument `profile`).
+inline ProfileKind profile_kind(const std::string& name) {
+  if (name == "scurve") return ProfileKind::scurve;
+  if (name == "trapezoid") return ProfileKind::trapezoid;
+  throw std::invalid_argument(describe("profile", name, "must be \"scurve\" or \"trapezoid\""));
+}
+inline const char* profile_name(ProfileKind kind) { return kind == ProfileKind::scurve ? "scurve" : "trapezoid"; }
+
 inline std::string float_repr(double x) { return std::string(py::repr(py::float_(x))); }
 
 //! "(a, b, c)" with each coefficient as Python writes it.

@@ -5,6 +5,7 @@
 // (nlohmann-json3-dev) linked only at build time, so the installed library gains no runtime
 // dependency, and Python reads the same file with the standard library.
 #include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/numbers.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -19,7 +20,6 @@ namespace dispkin {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 
 // Points that span at least a plane: the second singular value of the centred points is not
 // negligible against the first. Collinear (or coincident) joints make the platform turn

@@ -14,7 +14,6 @@ namespace {
 using detail::geometric_size;
 using detail::rotation_angle;
 
-constexpr double pi = 3.14159265358979323846;
 
 void require_pose_distinct(const Posed& a, const Posed& b, const char* what) {
   if (a.is_approx(b, 1e-12)) {

@@ -31,7 +31,7 @@ namespace {
 
 // The fraction of every joint limit kept free at the checked samples, for what happens between
 // them: the grid laws are solved at (1 − this) of the limits, and a candidate law from elsewhere
-// (the S-curve plan, the patent's scaling loop) must check out this far below them.
+// (the S-curve plan, the KUKA re-timing patent's scaling loop) must check out this far below them.
 constexpr double standing_headroom = 1e-3;
 // A candidate law has none of the grid laws' structure between its characteristic points (a joint
 // speed may peak anywhere in a cruise): it is checked at least this densely (measured: 3 samples
@@ -184,7 +184,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
     if (worst <= 1.0) {
       // With a jerk limit, two more candidates under the same dense check: the planner's own
       // S-curve law, which may already keep every joint limit (where the jerk alone binds, the
-      // S-curve is the optimum the average only approaches), and the patent's scaling loop with the
+      // S-curve is the optimum the average only approaches), and the KUKA re-timing patent's scaling loop with the
       // S-curve (the averaged law is not the jerk-limited optimum and can lose to it by a few
       // per cent where the jerk binds more than the joints). The fastest that passes is the result.
       if (limits.jerk) {

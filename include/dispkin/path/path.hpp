@@ -20,6 +20,7 @@
 #include "dispkin/disp.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/metric_set.hpp"
+#include "dispkin/numbers.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
@@ -125,7 +126,7 @@ struct ArcSection {
     // The reference section from its parts: its rotation is the arc's, θ ŵ seen from the start
     // (no logarithm needed while |θ| ≤ π, the range of the logarithm).
     const Eigen::Quaterniond q1 = (factors.turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
-    const Eigen::Vector3d rotation = std::abs(rotation_angle) <= 3.14159265358979323846
+    const Eigen::Vector3d rotation = std::abs(rotation_angle) <= pi
                                          ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
                                          : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
     const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation, pivot);

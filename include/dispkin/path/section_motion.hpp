@@ -190,11 +190,6 @@ struct ScrewMotion {
 
 namespace detail {
 
-//! Whether n doubles are equal bit for bit (+0 and −0 differ).
-inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
-  return std::memcmp(a, b, n * sizeof(double)) == 0;
-}
-
 //! Whether the curve (R₀, c, φ, p) is the one `section` is cut from: the same coefficients,
 //! bit for bit (one block comparison each; a false "no" only costs sharing).
 inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,

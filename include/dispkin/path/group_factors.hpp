@@ -1,0 +1,167 @@
+//! What the section bounds need of each group of a metric set (doc/section-length.md): its weight
+//! w_g = v_sys / v_g, how far its body objects reach from the pivot, and the bound of the
+//! acceleration of every object of the group under motions whose pivot speed, pivot
+//! acceleration, angular velocity and angular acceleration are bounded.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dispkin/disp.hpp"
+#include "dispkin/metric_set.hpp"
+#include "dispkin/pose.hpp"
+
+namespace dispkin {
+namespace detail {
+
+//! Whether n doubles are equal bit for bit (+0 and −0 differ, so a remembered result is exactly
+//! the one asked).
+inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
+  return std::memcmp(a, b, n * sizeof(double)) == 0;
+}
+
+//! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
+//! |ω| and angular acceleration |ω̇|.
+struct MotionBounds {
+  double pivot_speed, pivot_acceleration, omega, omega_dot;
+};
+
+//! A bound of the acceleration (per unit τ²) of every object of the group under motions within
+//! `bounds`: a body point at distance r from the pivot accelerates at most |c̈| + (|ω̇| + |ω|²) r;
+//! an absolute point at distance r seen from the body at most |c̈| + |ω̇| r + |ω||ċ| (r from
+//! `pivot_middle`, the pivot's world position at the middle of the section, plus |ċ|/2).
+inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
+                                       const Eigen::Vector3d& pivot_middle, const MotionBounds& bounds);
+
+//! How far the group's body objects reach from the pivot (body coordinates): the largest
+//! |r − p| of its relative points and |c − p| + ρ of its relative spheres, 0 without any. It
+//! depends on the pivot only, not on the section.
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept;
+
+//! group_acceleration_bound with the group's relative_reach from the pivot already known.
+inline double group_acceleration_bound(const MetricGroup<double>& g, double reach, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& bounds) noexcept;
+
+//! What the section bounds need of each group of a set, once per path instead of once per
+//! section: its weight v_sys / v_g and its relative_reach from the pivot (recomputed only
+//! when a section has another pivot). Planning side; allocates.
+class GroupFactors {
+ public:
+  //! Throws like MetricGroup::weight (a group limit without a system velocity).
+  GroupFactors(const MetricSetd& set, std::optional<double> system_velocity)
+      : set_(&set), system_velocity_(system_velocity) {
+    groups_.reserve(set.groups().size());
+    for (const auto& g : set.groups()) {
+      groups_.push_back({g.weight(system_velocity), 0.0});
+      max_weight_ = std::max(max_weight_, groups_.back().weight);
+    }
+  }
+
+  //! Makes reach() refer to `pivot` (body coordinates).
+  void use_pivot(const Eigen::Vector3d& pivot) noexcept {
+    if (has_pivot_ && pivot == pivot_) return;
+    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = relative_reach(set_->groups()[i], pivot);
+    pivot_ = pivot;
+    has_pivot_ = true;
+  }
+
+  const MetricSetd& set() const noexcept { return *set_; }
+  std::optional<double> system_velocity() const noexcept { return system_velocity_; }
+
+  //! axis_turn(axis, angle), the same quaternion bit for bit, remembered for the last two pairs
+  //! asked: the sections of one CIRC repeat their turns (the pivot's half turn about the normal,
+  //! the orientation's turn), so a path evaluates them once per CIRC, not once per section.
+  Eigen::Quaterniond turn(const Eigen::Vector3d& axis, double angle) const noexcept {
+    for (const TurnMemo& m : turns_) {
+      if (m.known && same_bits(m.axis.data(), axis.data(), 3) && same_bits(&m.angle, &angle, 1)) return m.turn;
+    }
+    TurnMemo& m = turns_[next_turn_];
+    next_turn_ = 1 - next_turn_;
+    m = {axis, angle, axis_turn(axis, angle), true};
+    return m.turn;
+  }
+  //! std::sin(x), remembered for the last x asked (an arc's deviation bound, the same for all
+  //! the sections of one CIRC).
+  double sine(double x) const noexcept {
+    if (!sine_known_ || !same_bits(&sine_of_, &x, 1)) {
+      sine_of_ = x;
+      sine_ = std::sin(x);
+      sine_known_ = true;
+    }
+    return sine_;
+  }
+  double weight(std::size_t group) const noexcept { return groups_[group].weight; }
+  double max_weight() const noexcept { return max_weight_; }
+  double reach(std::size_t group) const noexcept { return groups_[group].reach; }
+
+ private:
+  struct Factors {
+    double weight, reach;
+  };
+  const MetricSetd* set_;
+  std::optional<double> system_velocity_;
+  std::vector<Factors> groups_;
+  double max_weight_ = 0.0;
+  Eigen::Vector3d pivot_ = Eigen::Vector3d::Zero();
+  bool has_pivot_ = false;
+  struct TurnMemo {
+    Eigen::Vector3d axis;
+    double angle;
+    Eigen::Quaterniond turn;
+    bool known;
+  };
+  // Memos of pure functions: filling them does not change what the object answers.
+  mutable TurnMemo turns_[2] = {{Eigen::Vector3d::Zero(), 0.0, Eigen::Quaterniond::Identity(), false},
+                                {Eigen::Vector3d::Zero(), 0.0, Eigen::Quaterniond::Identity(), false}};
+  mutable int next_turn_ = 0;
+  mutable double sine_of_ = 0.0, sine_ = 0.0;
+  mutable bool sine_known_ = false;
+};
+
+//! A section's length (weighted, see CurveSection::length) and acceleration bound
+//! (unweighted, see CurveSection::acceleration_bound), from one evaluation.
+struct SectionBounds {
+  double length, acceleration;
+};
+
+inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept {
+  double r = 0.0;
+  for (const auto& p : g.relative_points) r = std::max(r, (p - pivot).norm());
+  for (const auto& s : g.relative_spheres) r = std::max(r, (s.center - pivot).norm() + s.radius);
+  return r;
+}
+
+inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
+                                       const Eigen::Vector3d& pivot_middle, const MotionBounds& b) {
+  return group_acceleration_bound(g, relative_reach(g, pivot), pivot_middle, b);
+}
+
+inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative, const Eigen::Vector3d& pivot_middle,
+                                       const MotionBounds& b) noexcept {
+  // The largest distance of the group's absolute objects from the pivot anywhere on the
+  // section (at most |ċ|/2 from the middle); the body objects' reach is given.
+  double r_absolute = 0.0;
+  bool has_absolute = false;
+  for (const auto& p : g.absolute_points) {
+    r_absolute = std::max(r_absolute, (p - pivot_middle).norm());
+    has_absolute = true;
+  }
+  for (const auto& s : g.absolute_spheres) {
+    r_absolute = std::max(r_absolute, (s.center - pivot_middle).norm() + s.radius);
+    has_absolute = true;
+  }
+  r_absolute += 0.5 * b.pivot_speed;
+  double rate = b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * r_relative;
+  if (has_absolute) rate = std::max(rate, b.pivot_acceleration + b.omega_dot * r_absolute + b.omega * b.pivot_speed);
+  return rate;
+}
+
+}  // namespace detail
+}  // namespace dispkin
