@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python stubs test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz clean
+.PHONY: all deps build python stubs layers test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz clean
 
 all: build
 
@@ -39,7 +39,11 @@ test-cpp: build
 test-python: python
 	$(VENV)/bin/python -m pytest -q tests/python
 
-test: test-cpp test-python
+# Every #include points down the layers of doc/architecture.md (core, path, planning, plugins).
+layers:
+	python3 scripts/check-layers.py
+
+test: layers test-cpp test-python
 
 # The demo job lives in DEMO_DIR/job.yaml (written from the built-in one the first time): edit it
 # and run `make demo` again.

@@ -1,0 +1,46 @@
+"""The layer check (scripts/check-layers.py, doc/architecture.md): the repository passes it, and
+an include that points up or across a plugin is reported with its file and line."""
+import pathlib
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "scripts" / "check-layers.py"
+
+
+def run(root):
+    return subprocess.run([sys.executable, str(SCRIPT), str(root)], capture_output=True, text=True)
+
+
+def write(root, relative, text):
+    path = root / relative
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+
+
+def test_the_repository_keeps_its_layers():
+    result = run(ROOT)
+    assert result.returncode == 0, result.stdout
+
+
+def test_downward_includes_pass(tmp_path):
+    write(tmp_path, "include/dispkin/pose.hpp", "#pragma once\n")
+    write(tmp_path, "include/dispkin/path/path.hpp", '#include "dispkin/pose.hpp"\n')
+    write(tmp_path, "include/dispkin/planning/planner.hpp", '#include "dispkin/path/path.hpp"\n')
+    write(tmp_path, "src/serial/ptp.cpp", '#include "dispkin/planning/planner.hpp"\n#include "local.hpp"\n')
+    write(tmp_path, "include/dispkin/dispkin.hpp", '#include "dispkin/serial/ptp.hpp"\n')  # the umbrella
+    assert run(tmp_path).returncode == 0
+
+
+def test_an_upward_include_is_reported_with_its_line(tmp_path):
+    write(tmp_path, "include/dispkin/pose.hpp", "#pragma once\n\n#include <dispkin/planning/planner.hpp>\n")
+    result = run(tmp_path)
+    assert result.returncode == 1
+    assert "include/dispkin/pose.hpp:3: the core layer includes dispkin/planning/planner.hpp" in result.stdout
+
+
+def test_one_plugin_including_the_other_is_reported(tmp_path):
+    write(tmp_path, "src/hexapod/hexapod.cpp", '#include "dispkin/serial/serial_arm.hpp"\n')
+    result = run(tmp_path)
+    assert result.returncode == 1
+    assert "src/hexapod/hexapod.cpp:1: the hexapod layer includes dispkin/serial/serial_arm.hpp" in result.stdout
