@@ -10,14 +10,12 @@ can be imported from this module too).
 """
 
 import argparse
-import json
-import pathlib
 import sys
-from typing import List, Optional, TextIO
+from typing import List, Optional
 
-import numpy as np
-
-from . import Trajectory, __version__
+from . import __version__
+# The check and plan commands, importable from here too.
+from .commands import run_check, run_plan, write_plots  # noqa: F401
 # The demo's names, importable from here too: callers of dispkin.cli.demo_tool & co. keep working.
 from .demo import (  # noqa: F401
     DEMO_ACCELERATION,
@@ -39,108 +37,6 @@ from .demo import (  # noqa: F401
     run_demo,
     sweep_ratios,
 )
-
-
-def run_check(job_file: str, out: TextIO) -> int:
-    """`dispkin check`: validate and build the job, print what it holds; returns 0."""
-    from . import jobs
-
-    job = jobs.load_job(job_file)
-    ms = job.metric_set
-    print(f"{job.file}: valid job {job.name!r}", file=out)
-    machine = {"hexapod": "hexapod (legs " + ", ".join(job.joint_names) + ")",
-               "serial_arm": f"serial arm {job.arm.robot_name if job.arm else ''} ({job.arm.dof if job.arm else 0} joints, "
-               f"family {job.arm.family if job.arm else ''})", "none": "none (poses only)"}[job.machine]
-    print(f"  machine: {machine}", file=out)
-    if job.hexapod is not None:
-        rule = [f"leg group {job.leg_speed_group} (rule a)"] if job.leg_speed_group is not None else []
-        rule += ["joint metric (rule b)"] if job.joint_metric else []
-        print(f"  leg speed held by: {', '.join(rule) or 'nothing (only the metric set)'}", file=out)
-    if job.frames is not None:
-        work, tool = job.frames.work.to_xyzuvw(), job.frames.tool.to_xyzuvw()
-        work[3:], tool[3:] = np.degrees(work[3:]), np.degrees(tool[3:])
-        print(f"  frames: work {np.round(work, 6).tolist()}, tool {np.round(tool, 6).tolist()} (XYZUVW, m and degrees)", file=out)
-    print(f"  pivot {job.pivot.tolist()} m (platform/flange coordinates)", file=out)
-    for group in ms.groups:
-        limit = ms.group_speed(group)
-        print(f"  metric set group {group}: {len(ms.relative_points(group))} relative + {len(ms.absolute_points(group))} "
-              f"absolute points, {len(ms.spheres(group))} sphere(s), limit "
-              f"{(str(limit) + ' m/s') if limit is not None else 'the system velocity'}", file=out)
-    if job.path is not None:
-        lengths = job.path.section_lengths(ms, job.limits.velocity)
-        print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
-              f"at the system velocity", file=out)
-    else:
-        ptp = sum(part.kind == "ptp" for part in job.parts)
-        print(f"  path: {len(job.moves)} move(s) in {len(job.parts)} part(s) planned one after the other "
-              f"({ptp} PTP move(s) on the arm, at rest at both ends)", file=out)
-    for i, move in enumerate(job.moves):
-        blend = f", blend {move.blend:g} m" if move.blend else ""
-        if move.kind == "ptp":
-            print(f"    move {i}: ptp, ends at joints {np.round(move.path.end, 6).tolist()} (rad)", file=out)
-            continue
-        end = move.path.end.to_xyzuvw()
-        end[3:] = np.degrees(end[3:])
-        print(f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {np.round(end, 6).tolist()} (m, degrees)", file=out)
-    lim = job.limits
-    jerk = f", j = {lim.jerk:g} m/s³" if lim.jerk is not None else ""
-    print(f"  limits: v = {lim.velocity:g} m/s, a = {lim.acceleration:g} m/s²{jerk}, profile {job.profile}", file=out)
-    print(f"  output: every {job.sample_period:g} s -> {job.outputs['csv']}, {job.outputs['json']}, {job.outputs['summary']}", file=out)
-    return 0
-
-
-def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO) -> int:
-    """`dispkin plan`: plan the job, write CSV, JSON, the summary and (plot) PNGs; returns 0."""
-    from . import jobs
-
-    job = jobs.load_job(job_file)
-    trajectory = jobs.plan_job(job)
-    samples = jobs.sample_job(job, trajectory)
-    summary = jobs.summarize(job, trajectory, samples)
-    directory = pathlib.Path(outdir)
-    directory.mkdir(parents=True, exist_ok=True)
-    written = [directory / job.outputs["csv"], directory / job.outputs["json"], directory / job.outputs["summary"]]
-    jobs.write_csv(samples, written[0])
-    written[1].write_text(json.dumps(jobs.trajectory_json(job, samples, summary), indent=1) + "\n", encoding="utf-8")
-    text = jobs.summary_text(summary)
-    written[2].write_text(text, encoding="utf-8")
-    if plot:
-        written += write_plots(job, trajectory, samples, directory)
-    out.write(text)
-    print("wrote " + ", ".join(str(p) for p in written), file=out)
-    return 0
-
-
-def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -> List[pathlib.Path]:
-    """PNGs of the job's trajectory: path velocity and point speeds; with a machine also its
-    joints (hexapod legs or arm joints) against their position ranges and velocity limits."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from . import plots
-
-    stem = pathlib.Path(job.outputs["csv"]).stem
-    machine = job.hexapod is not None or job.arm is not None
-    rows = 3 if machine else 1
-    figure, axes = plt.subplots(rows, 1, figsize=(7, 3.2 * rows), sharex=True, constrained_layout=True, squeeze=False)
-    plots.point_speed(trajectory, job.metric_set, system_velocity=job.limits.velocity, ax=axes[0][0])
-    axes[0][0].set_title(f"{job.name}: path velocity and the fastest point (limit dashed)")
-    if job.hexapod is not None:
-        h = job.hexapod
-        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
-                           np.asarray(h.leg_min), np.asarray(h.leg_max), np.asarray(h.leg_speed),
-                           axes=(axes[1][0], axes[2][0]))
-    elif job.arm is not None:
-        limits = job.arm.joint_limits
-        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
-                           np.asarray(limits.lower), np.asarray(limits.upper), np.asarray(limits.velocity),
-                           axes=(axes[1][0], axes[2][0]))
-    path = directory / f"{stem}.png"
-    plots.save([axes[0][0]], str(path))
-    plt.close(figure)
-    return [path]
 
 
 def _positive_int(text: str) -> int:

@@ -16,6 +16,7 @@ from typing import List, Optional, TextIO, Tuple
 
 import numpy as np
 
+from .commands import run_plan
 from . import Limits, MetricSet, Path, Pose, Trajectory, __version__, disp_distance, max_point_speed, plan, section_length
 
 #: Commanded speed of the demo (m/s), and the acceleration (m/s²) and jerk (m/s³) of its plan.
@@ -201,8 +202,6 @@ def _print_sweep(moves: int, seed: int, out: TextIO, progress: Optional[TextIO])
 def _plan_demo_job(outdir: str, out: TextIO) -> int:
     """Plan OUTDIR/job.yaml as `dispkin plan --plot` does, writing it from DEMO_JOB first when it
     is missing (an edited file is kept); returns the exit status."""
-    # Imported here: dispkin.cli imports this module at load time to dispatch `dispkin demo`.
-    from .cli import run_plan
 
     job_file = pathlib.Path(outdir) / "job.yaml"
     if not job_file.exists():

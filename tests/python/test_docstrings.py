@@ -17,7 +17,7 @@ from dispkin import _core
 
 PYTHON_MODULES = ["dispkin", "dispkin.jobs", "dispkin.job", "dispkin.job.reader", "dispkin.job.schema", "dispkin.job.model",
                   "dispkin.job.builder", "dispkin.job.planning", "dispkin.job.sampling", "dispkin.job.summary",
-                  "dispkin.job.export", "dispkin.cli", "dispkin.demo", "dispkin.limits_files", "dispkin.plots",
+                  "dispkin.job.export", "dispkin.cli", "dispkin.commands", "dispkin.demo", "dispkin.limits_files", "dispkin.plots",
                   "dispkin.shapes"]
 
 
