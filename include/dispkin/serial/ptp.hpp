@@ -149,11 +149,6 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
 
 namespace detail {
 
-//! The tool pose and body twist of `chain` at joint positions q and velocities qd (product of
-//! exponentials; noexcept, no allocation). Sizes must be chain.dof().
-void chain_pose_and_twist(const serial::RevoluteChain& chain, const double* q, const double* qd, Posed& pose,
-                          Twistd& body_twist) noexcept;
-
 //! The bounds of the joint section u ∈ [u0, u1] of the line q_a + u Δq on `chain`, with the
 //! groups' weights and relative reaches (from the tool origin) in `factors`. See the file comment
 //! and src/ptp_section.cpp for the derivation of the acceleration bound.
