@@ -12,7 +12,7 @@
 // hence ‖x″‖ ≤ Σⱼ |dⱼ| (2 Σ_{i<j} |dᵢ| + |dⱼ|) ρⱼ with ρⱼ ≥ ‖x − pⱼ‖ (revolute; a prismatic
 // joint has ‖uⱼ‖ = 1 and no |dⱼ| of its own in the bracket).
 // An absolute point a stays put; its apparent speed seen from the tool is the speed of the
-// tool-fixed point that is at a at the moment (MATH.md §4), ‖V(a)‖ with V(a) = Σⱼ dⱼ uⱼ(a). With
+// tool-fixed point that is at a at the moment (doc/disp-metric.md §4 and §6), ‖V(a)‖ with V(a) = Σⱼ dⱼ uⱼ(a). With
 // a fixed, pⱼ′ = Σ_{i<j} dᵢ ωᵢ × (pⱼ − pᵢ) = −Ω₍<ⱼ₎ × (a − pⱼ) + S₍<ⱼ₎(a), S₍<ⱼ₎(a) = Σ_{i<j} dᵢ uᵢ(a):
 //   V(a)′ = Σⱼ dⱼ [ Ω₍<ⱼ₎ × (ωⱼ × (a − pⱼ)) − ωⱼ × S₍<ⱼ₎(a) ]                   (absolute objects)
 // hence ‖V(a)′‖ ≤ Σⱼ |dⱼ| ( Σ_{i<j} |dᵢ| ) eⱼ + Σⱼ |dⱼ| Σ_{i<j} |dᵢ| eᵢ with eⱼ ≥ ‖a − pⱼ‖.
