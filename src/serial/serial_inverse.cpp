@@ -47,8 +47,8 @@ bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::Vector
 }
 
 // Newton's method on the full pose error (refine_pose), bringing a root found to 1e-6 or so
-// down to rounding; minimum-norm steps, so that a redundant arm's root moves least. Whether q
-// then reproduces the pose to inverse_tolerance.
+// down to rounding (minimum-norm steps where J is not square, so that a redundant arm's root
+// moves least, or near singular). Whether q then reproduces the pose to inverse_tolerance.
 bool polish(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
   detail::NewtonSettings settings;
   settings.tolerance = 0.1 * inverse_tolerance;
