@@ -75,10 +75,11 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
   const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
   if (solutions.empty()) return std::nullopt;
   if (rule.turns == Turns::listed) return nearest(solutions, q_ref);
+  const JointLimits limits = arm.joint_limits();
   Eigen::VectorXd best;
   double best_distance = std::numeric_limits<double>::infinity();
   for (Eigen::VectorXd q : solutions) {
-    in_rule_form(q, q_ref, arm.joint_limits(), rule);
+    in_rule_form(q, q_ref, limits, rule);
     const double distance = (q - q_ref).norm();
     if (distance < best_distance) {
       best_distance = distance;
