@@ -1,4 +1,5 @@
-// Python binding of dispkin/serial/serial_arm.hpp: SerialArm, JointLimits, InverseResult.
+// Python binding of dispkin/serial/serial_arm.hpp: SerialArm, JointLimits, InverseResult; and the
+// arm's joints along a trajectory (serial_retiming.hpp) as SerialArm methods.
 // Joint vectors are (n,) arrays; a Jacobian is (6, n); poses are Pose or (4, 4) arrays.
 #include <optional>
 #include <string>
@@ -10,7 +11,9 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
+#include "dispkin/serial/serial_retiming.hpp"
 
 namespace dispkin {
 namespace python {
@@ -72,6 +75,26 @@ InverseOptions options_of(bool keep_outside_limits, bool offer_equivalents, int 
   o.time_budget = time_budget;
   o.seed = seed;
   return o;
+}
+
+// A (N, columns) array as its rows.
+Array rows_of(const py::handle& obj, const std::string& name, py::ssize_t columns) {
+  const std::string expected = "an array of shape (N, " + std::to_string(columns) + ")";
+  Array a = as_array(obj, name, expected);
+  if (a.ndim() != 2 || a.shape(1) != columns) wrong_shape(name, expected, a);
+  return a;
+}
+
+std::vector<double> times_of(const py::handle& obj, const std::string& name) {
+  const Array a = as_array(obj, name, "an array of shape (N,)");
+  if (a.ndim() != 1) wrong_shape(name, "an array of shape (N,)", a);
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+
+py::array_t<double> to_rows(const Eigen::MatrixXd& m) {
+  py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(out.mutable_data(), m.rows(), m.cols()) = m;
+  return out;
 }
 
 // from_urdf: text that starts with '<' (after blanks) is the XML itself, anything else a path.
@@ -203,6 +226,45 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
            py::arg("poses"), py::arg("q_start"),
            "(N, n) joint path: for each pose the solution nearest to the previous one, from q_start. "
            "RuntimeError naming the first pose without a solution.")
+      .def(
+          "joint_velocities",
+          [](const SerialArm& a, const py::object& q, const py::object& body_twists) {
+            const Array qs = rows_of(q, "q", a.dof());
+            const Array twists = rows_of(body_twists, "body_twists", 6);
+            if (twists.shape(0) != qs.shape(0))
+              throw py::value_error("body_twists: expected " + std::to_string(qs.shape(0)) + " rows like q, got " +
+                                    std::to_string(twists.shape(0)));
+            Eigen::MatrixXd out(qs.shape(0), a.dof());
+            for (py::ssize_t k = 0; k < qs.shape(0); ++k) {
+              const Eigen::VectorXd qk = Eigen::Map<const Eigen::VectorXd>(qs.data() + k * a.dof(), a.dof());
+              const Twistd xi(Eigen::Map<const Eigen::Matrix<double, 6, 1>>(twists.data() + 6 * k));
+              out.row(k) = serial::joint_velocity(a, qk, xi).transpose();
+            }
+            return to_rows(out);
+          },
+          py::arg("q"), py::arg("body_twists"),
+          "(N, n) joint velocities: row k solves body_jacobian(q[k]) qd = body_twists[k] ((N, n) and (N, 6) "
+          "arrays) in the least-squares sense, minimum norm (exact for a 6-joint arm away from singularities).")
+      .def(
+          "follow_trajectory",
+          [](const SerialArm& a, const Trajectory& trajectory, const py::object& times, const py::object& q_start,
+             double difference_step) {
+            const FollowedJoints j = follow_joints(trajectory, a, joint_vector(q_start, "q_start"), times_of(times, "times"),
+                                                   difference_step);
+            return py::make_tuple(to_rows(j.q), to_rows(j.qd), to_rows(j.qdd));
+          },
+          py::arg("trajectory"), py::arg("times"), py::arg("q_start"), py::arg("difference_step") = 1e-4,
+          "(q, qd, qdd), each (N, n), of the arm following a Cartesian trajectory at `times` (s): q by follow() "
+          "from q_start, qd by joint_velocities() of the trajectory's body twist, qdd by central differences of "
+          "qd over +-difference_step (one-sided at the ends), each neighbour followed from the sample's q.")
+      .def(
+          "check_joint_limits",
+          [](const SerialArm& a, const py::object& trajectory, const py::object& times) {
+            return py::cast(check_joint_limits(trajectory.cast<const JointTrajectory&>(), a, times_of(times, "times")));
+          },
+          py::arg("trajectory"), py::arg("times"),
+          "JointLimitReport of a PTP move (JointTrajectory) at `times` (s): the factors FVEL and FACC of its "
+          "joint line's own q, qd, qdd. RuntimeError where the static torque alone reaches an effort limit.")
       .def("__repr__", [](const SerialArm& a) {
         return "SerialArm(robot='" + a.robot_name() + "', base_link='" + a.base_link() + "', tip_link='" +
                a.tip_link() + "', dof=" + std::to_string(a.dof()) + ", family='" + serial::to_string(a.family()) + "')";

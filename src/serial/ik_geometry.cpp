@@ -1,5 +1,5 @@
 // The special geometry of a 6R chain's axes (which lines meet, which are parallel), the
-// family it implies (MATH.md §8), and the positioning stage shared by the spherical-wrist and
+// family it implies (doc/inverse-kinematics.md §4), and the positioning stage shared by the spherical-wrist and
 // offset-wrist solvers.
 #include <cmath>
 #include <string>
@@ -110,7 +110,7 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
     g.three_parallel = true;
   }
 
-  // Offset wrist (seed 003): axes 4 ∩ 5 off axis 6 — their meeting point circles axis 6 as q₆
+  // Offset wrist: axes 4 ∩ 5 off axis 6 — their meeting point circles axis 6 as q₆
   // turns — placed by joints 1–3.
   if (!g.axes_45_meet) {
     g.why_not_offset = "axes 4 and 5 do not meet";

@@ -11,7 +11,9 @@
 
 #include "dispkin/pose.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
+#include "ik_newton.hpp"
 #include "ik_subproblems.hpp"
 
 namespace dispkin {
@@ -79,12 +81,9 @@ Harmonic elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometr
                         const Eigen::Vector3d& y) noexcept;
 
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
-struct PoseError {
-  double position = 0.0;
-  double rotation = 0.0;
-  double worst() const noexcept { return position > rotation ? position : rotation; }
-};
-PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept;
+inline PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept {
+  return pose_error(chain_pose(chain, q.data()), target);
+}
 
 //! A rigid motion x ↦ R x + t held as a matrix and a vector: the closed forms compose the
 //! joints' motions from the cosines and sines their subproblems give, with no trigonometric
@@ -147,10 +146,16 @@ inline PoseError motion_error(const Motion& t, const Motion& target) noexcept {
   return e;
 }
 
-//! Newton's method on the full 6-D pose error with the analytic space Jacobian of the
-//! product of exponentials (minimum-norm steps, so it also converges at singular q).
-//! Returns the final error; q is updated in place and wrapped to (−π, π].
-PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept;
+//! Newton's method on the full 6-D pose error (refine_pose, doc/inverse-kinematics.md (eq. 22)
+//! and (eq. 23)) to rounding, with minimum-norm steps at singular q so that it converges there
+//! too. Returns the final error; q is updated in place and wrapped to (−π, π].
+inline PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept {
+  NewtonSettings settings;
+  settings.tolerance = 1e-15;
+  settings.max_iterations = max_iterations;
+  settings.wrap = true;
+  return refine_pose(chain, target, q.data(), settings);
+}
 
 //! Accept a candidate: polish it if its error exceeds `polish_above`, keep it if the error is
 //! then ≤ ik_pose_tolerance, and not if it repeats a kept one (all joints within

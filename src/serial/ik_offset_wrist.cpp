@@ -1,4 +1,4 @@
-// The offset-wrist search (seed 003, MATH.md §8), made robust.
+// The offset-wrist search (doc/inverse-kinematics.md §7), made robust.
 //
 // Axes 4 and 5 meet in a point w off axis 6, so as q₆ turns, w moves on a circle about axis 6
 // (the patent's circle; q₆ is its parameter). For each q₆ = θ:

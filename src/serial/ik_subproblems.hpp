@@ -11,21 +11,11 @@
 
 #include <Eigen/Core>
 
+#include "angles.hpp"
+
 namespace dispkin {
 namespace serial {
 namespace detail {
-
-constexpr double pi = 3.14159265358979323846;
-
-//! The angle a mod 2π in (−π, π].
-inline double wrap_angle(double a) noexcept {
-  if (a > pi || a <= -pi) {  // (std::remainder is several times slower than this on glibc)
-    a -= 2.0 * pi * std::floor((a + pi) / (2.0 * pi));
-    if (a <= -pi) a += 2.0 * pi;
-    if (a > pi) a -= 2.0 * pi;
-  }
-  return a;
-}
 
 //! An angle as its cosine and sine: the search evaluates thousands of subproblem chains, and
 //! composing these needs no trigonometric function (only the final joint values do).
@@ -36,7 +26,7 @@ struct CosSin {
   //! and restores the floating-point environment on every call, and the closed forms take ~30
   //! of these per pose; this costs about two thirds of it, within 3e-16 rad of atan2.
   double angle() const noexcept {
-    constexpr double half_pi = 1.57079632679489661923;
+    constexpr double half_pi = 0.5 * pi;
     if (std::abs(s) <= std::abs(c)) {
       if (c == 0.0) return std::atan2(s, c);  // (0, 0): atan2's convention
       const double a = std::atan(s / c);

@@ -1,5 +1,6 @@
-// Following a Cartesian trajectory with a serial arm's joints: the inverse-kinematics branch
-// continuous from a reference configuration (internal to the serial plugin; joint_following.cpp).
+// Following a Cartesian trajectory with a serial arm's joints (internal to the serial plugin;
+// joint_following.cpp): the inverse-kinematics branch continuous from a reference configuration
+// and the joint velocities of the trajectory's body twist (doc/retiming.md §1).
 #pragma once
 
 #include <string>
@@ -12,17 +13,13 @@
 
 namespace dispkin::detail {
 
-//! The IK solution nearest to q_ref, each joint first moved by a multiple of 2π to the value
-//! nearest to q_ref's (branch continuity for joints whose range exceeds one turn). Throws
-//! std::runtime_error naming the place (where(t, s)) if the pose has no solution.
-Eigen::VectorXd continuous_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
-                                    double t, double s);
-
-//! The same solution found faster when the pose is near forward(q_ref): Newton's method from
-//! `guess` (q_ref if null), falling back to continuous_solution when it does not converge
-//! within 0.3 rad of q_ref.
-Eigen::VectorXd tracked_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
-                                 double s, const Eigen::VectorXd* guess = nullptr);
+//! The IK solution on q_ref's branch (serial::detail::solution_on_branch with the re-timing
+//! rule: solutions outside the limits kept, to be reported as position excursions, and each joint
+//! moved by the multiple of 2π nearest to q_ref's, doc/retiming.md (eq. 1)), tracked by Newton's
+//! method from `guess` (q_ref if null). Throws std::runtime_error naming the place (where(t, s))
+//! if the pose has no solution.
+Eigen::VectorXd branch_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
+                                double s, const Eigen::VectorXd* guess = nullptr);
 
 //! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
 //! joint speeds there are unbounded: slowing down cannot help).

@@ -8,6 +8,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
+#include "dispkin/serial/chain_kinematics.hpp"
 
 namespace dispkin {
 namespace {
@@ -255,7 +256,7 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
   // q̇ = Δq (du/ds) ṡ, q̈ = Δq ((du/ds) s̈ + m (du/ds) ṡ²).
   out.qd = delta_ * (rate * out.s_dot);
   out.qdd = delta_ * (rate * (out.s_ddot + r.slope * out.s_dot * out.s_dot));
-  detail::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
+  serial::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
   return out;
 }
 

@@ -12,7 +12,7 @@
 // hence ‖x″‖ ≤ Σⱼ |dⱼ| (2 Σ_{i<j} |dᵢ| + |dⱼ|) ρⱼ with ρⱼ ≥ ‖x − pⱼ‖ (revolute; a prismatic
 // joint has ‖uⱼ‖ = 1 and no |dⱼ| of its own in the bracket).
 // An absolute point a stays put; its apparent speed seen from the tool is the speed of the
-// tool-fixed point that is at a at the moment (MATH.md §4), ‖V(a)‖ with V(a) = Σⱼ dⱼ uⱼ(a). With
+// tool-fixed point that is at a at the moment (doc/disp-metric.md §4 and §6), ‖V(a)‖ with V(a) = Σⱼ dⱼ uⱼ(a). With
 // a fixed, pⱼ′ = Σ_{i<j} dᵢ ωᵢ × (pⱼ − pᵢ) = −Ω₍<ⱼ₎ × (a − pⱼ) + S₍<ⱼ₎(a), S₍<ⱼ₎(a) = Σ_{i<j} dᵢ uᵢ(a):
 //   V(a)′ = Σⱼ dⱼ [ Ω₍<ⱼ₎ × (ωⱼ × (a − pⱼ)) − ωⱼ × S₍<ⱼ₎(a) ]                   (absolute objects)
 // hence ‖V(a)′‖ ≤ Σⱼ |dⱼ| ( Σ_{i<j} |dᵢ| ) eⱼ + Σⱼ |dⱼ| Σ_{i<j} |dᵢ| eᵢ with eⱼ ≥ ‖a − pⱼ‖.
@@ -32,30 +32,11 @@
 #include <vector>
 
 #include "dispkin/disp.hpp"
+#include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
 namespace detail {
-
-void chain_pose_and_twist(const serial::RevoluteChain& chain, const double* q, const double* qd, Posed& pose,
-                          Twistd& body_twist) noexcept {
-  // Spatial velocity field x ↦ v_s + ω_s × x: joint i adds q̇ᵢ ωᵢ × (x − pᵢ) = q̇ᵢ (pᵢ × ωᵢ + ωᵢ × x).
-  Posed t;
-  Eigen::Vector3d v_s = Eigen::Vector3d::Zero(), w_s = Eigen::Vector3d::Zero();
-  const int n = chain.dof();
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Eigen::Vector3d w = t.quaternion() * chain.axes[k];
-    const Eigen::Vector3d p = t * chain.points[k];
-    v_s += qd[i] * p.cross(w);
-    w_s += qd[i] * w;
-    t = t * serial::rotation_about_line(chain.axes[k], chain.points[k], q[i]);
-  }
-  pose = t * chain.tip_at_zero;
-  // Body twist: ω_b = Rᵀ ω_s, v_b = Rᵀ (velocity of the tool origin o) = Rᵀ (v_s + ω_s × o).
-  const Eigen::Quaterniond r_inv = pose.quaternion().conjugate();
-  body_twist = Twistd(r_inv * (v_s + w_s.cross(pose.translation())), r_inv * w_s);
-}
 
 JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eigen::VectorXd& q_a,
                                   const Eigen::VectorXd& delta, double u0, double u1, const GroupFactors& factors) {
@@ -71,16 +52,9 @@ JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eige
   }
   // World axes' points at the middle, the pose and the body twist per τ.
   std::vector<Eigen::Vector3d> p(un);
-  {
-    Posed t;
-    for (std::size_t i = 0; i < un; ++i) {
-      p[i] = t * chain.points[i];
-      t = t * serial::rotation_about_line(chain.axes[i], chain.points[i], q[i]);
-    }
-  }
   Posed pose;
   Twistd twist;
-  chain_pose_and_twist(chain, q.data(), rate.data(), pose, twist);
+  serial::chain_pose_and_twist(chain, q.data(), rate.data(), pose, twist, p.data());
   const Eigen::Vector3d o = pose.translation();
 
   // Chain constants: ℓᵢ = ‖pᵢ₊₁ − pᵢ‖ and the tool origin's distance from the last axis point.

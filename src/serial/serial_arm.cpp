@@ -1,20 +1,21 @@
-// The serial-arm plugin: forward kinematics, Jacobians and dynamics through Orocos KDL, and the
-// product-of-exponentials view of the chain that the analytic IK works on.
+// The serial-arm plugin: the product-of-exponentials view of the KDL chain, on which forward
+// kinematics, the Jacobians and the analytic IK work, and the dynamics through Orocos KDL.
 #include "dispkin/serial/serial_arm.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include <Eigen/Geometry>
-#include <kdl/chainfksolverpos_recursive.hpp>
+#include <Eigen/SVD>
 #include <kdl/chainidsolver_recursive_newton_euler.hpp>
-#include <kdl/chainjnttojacsolver.hpp>
-#include <kdl/jacobian.hpp>
 #include <kdl/jntarray.hpp>
 
 #include "dispkin/error.hpp"
+#include "dispkin/serial/chain_kinematics.hpp"
 #include "serial_arm_model.hpp"
 
 namespace dispkin {
@@ -90,29 +91,33 @@ void SerialArm::require_joint_vector(const Eigen::VectorXd& q, const char* name)
   require_finite(q, name);
 }
 
+// Forward kinematics and the Jacobians on the product-of-exponentials chain (chain_kinematics.hpp):
+// revolute_chain_of holds every moving joint of the KDL chain with its fixed segments folded in.
 Posed SerialArm::forward(const Eigen::VectorXd& q) const {
   require_joint_vector(q, "q");
-  KDL::ChainFkSolverPos_recursive solver(model_->chain);
-  KDL::Frame tip;
-  if (solver.JntToCart(to_jnt_array(q), tip) < 0) throw std::runtime_error("forward: KDL ChainFkSolverPos_recursive failed");
-  return to_pose(tip);
+  return chain_pose(model_->revolute, q.data());
 }
 
 Eigen::MatrixXd SerialArm::jacobian(const Eigen::VectorXd& q) const {
   require_joint_vector(q, "q");
-  KDL::ChainJntToJacSolver solver(model_->chain);
-  KDL::Jacobian j(static_cast<unsigned>(dof()));
-  if (solver.JntToJac(to_jnt_array(q), j) < 0) throw std::runtime_error("jacobian: KDL ChainJntToJacSolver failed");
-  return j.data;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> j(6, dof());
+  chain_jacobian(model_->revolute, q.data(), j);
+  return j;
 }
 
 Eigen::MatrixXd SerialArm::body_jacobian(const Eigen::VectorXd& q) const {
-  const Eigen::MatrixXd j = jacobian(q);
-  const Eigen::Matrix3d rt = forward(q).rotation().transpose();
-  Eigen::MatrixXd out(6, dof());
-  out.topRows<3>() = rt * j.topRows<3>();
-  out.bottomRows<3>() = rt * j.bottomRows<3>();
-  return out;
+  require_joint_vector(q, "q");
+  Eigen::Matrix<double, 6, Eigen::Dynamic> j(6, dof());
+  chain_body_jacobian(model_->revolute, q.data(), j);
+  return j;
+}
+
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body_twist) {
+  const Eigen::MatrixXd j = arm.body_jacobian(q);
+  // The cut-off of a least-squares solver (LAPACK's gelsd): ε · max(rows, cols) of the largest singular value.
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  svd.setThreshold(std::numeric_limits<double>::epsilon() * static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
+  return svd.solve(body_twist.vector());
 }
 
 void SerialArm::set_gravity(const Eigen::Vector3d& gravity) {

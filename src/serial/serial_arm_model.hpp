@@ -52,6 +52,15 @@ inline KDL::Frame to_frame(const Posed& pose) {
 
 inline Eigen::Vector3d to_eigen(const KDL::Vector& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
 
+// A joint value this far beyond a position limit still counts as inside: an analytic solution
+// at a limit (e.g. exactly π) comes back off by rounding.
+constexpr double limit_slack = 1e-10;
+
+// q brought into the limits by ±2π where possible (each joint to its smallest equivalent value
+// ≥ lower; joints without limits, and those that do not fit, into (−π, π]): the form in which
+// inverse_solutions returns a solution. Whether every joint fits.
+bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept;
+
 // The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.
 RevoluteChain revolute_chain_of(const KDL::Chain& chain);
 

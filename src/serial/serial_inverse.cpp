@@ -10,27 +10,25 @@
 #include <vector>
 
 #include <Eigen/Geometry>
-#include <Eigen/QR>
 #include <kdl/chainiksolverpos_lma.hpp>
 #include <kdl/jntarray.hpp>
 
+#include "angles.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/serial/serial_arm.hpp"
+#include "ik_newton.hpp"
 #include "serial_arm_model.hpp"
 
 namespace dispkin {
 namespace serial {
 namespace {
 
-constexpr double two_pi = 2.0 * 3.14159265358979323846;
-constexpr double pi = 3.14159265358979323846;
+using detail::pi;
+using detail::two_pi;
+
 // Joint values this close count as one solution; numeric restarts land on the same root with
 // differences of the order of their convergence tolerance.
 constexpr double duplicate_tolerance = 1e-7;
-// A value this far beyond a position limit still counts as inside: an analytic solution at a
-// limit (e.g. exactly π) comes back off by rounding.
-constexpr double limit_slack = 1e-10;
-
 // q into (−π, π].
 double wrap(double q) {
   double r = std::remainder(q, two_pi);  // in [−π, π]
@@ -48,46 +46,43 @@ bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::Vector
   return false;
 }
 
-// The pose error as a spatial twist (base coordinates, reference point the tip origin, the
-// Jacobian's convention): position difference and the rotation vector of R_target Rᵀ.
-Eigen::Matrix<double, 6, 1> pose_error(const Posed& current, const Posed& target) {
-  Eigen::Matrix<double, 6, 1> e;
-  e.head<3>() = target.translation() - current.translation();
-  e.tail<3>() = quaternion_log(Eigen::Quaterniond(target.quaternion() * current.quaternion().conjugate()));
-  return e;
-}
-
-// Newton's method on the full pose error, J Δq = e solved in the least-squares sense; brings a
-// root found to 1e-6 or so down to rounding. Returns false when it does not reach the tolerance.
+// Newton's method on the full pose error (refine_pose), bringing a root found to 1e-6 or so
+// down to rounding (minimum-norm steps where J is not square, so that a redundant arm's root
+// moves least, or near singular). Whether q then reproduces the pose to inverse_tolerance.
 bool polish(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const Posed current = arm.forward(q);
-    if (current.is_approx(target, 0.1 * inverse_tolerance)) return true;
-    const Eigen::MatrixXd j = arm.jacobian(q);
-    const Eigen::VectorXd step = j.completeOrthogonalDecomposition().solve(pose_error(current, target));
-    if (!step.allFinite()) return false;
-    q += step;
-  }
-  return arm.forward(q).is_approx(target, inverse_tolerance);
+  detail::NewtonSettings settings;
+  settings.tolerance = 0.1 * inverse_tolerance;
+  settings.max_iterations = 8;
+  detail::refine_pose(arm.chain(), target, q.data(), settings);
+  return q.allFinite() && arm.forward(q).is_approx(target, inverse_tolerance);
 }
 
-// Room left for the rounding difference between the product-of-exponentials chain and KDL's
-// forward kinematics of the same arm (they agree to about 1e-15 per metre of reach and radian
-// of q; SerialArmKinematics checks 1e-12).
-constexpr double chain_rounding_margin = 1e-11;
-
-// Whether q reproduces the pose to inverse_tolerance by forward(), the promise of
-// inverse_solutions. Checked first on the arm's product-of-exponentials chain (six rotations
-// about lines: a tenth of KDL's forward kinematics, which allocates its joint array and walks
-// the fixed segments too) to inverse_tolerance less the rounding margin, so a candidate it
-// accepts meets the promise by forward() as well; one in the margin, or a miss, is decided by
-// forward() itself.
+// Whether q reproduces the pose to inverse_tolerance by forward(), the promise of inverse_solutions.
 bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pose) {
-  if (forward(arm.chain(), q).is_approx(pose, inverse_tolerance - chain_rounding_margin)) return true;
   return arm.forward(q).is_approx(pose, inverse_tolerance);
 }
 
 }  // namespace
+
+bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept {
+  bool inside = true;
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const double lo = limits.lower(i);
+    const double hi = limits.upper(i);
+    if (!std::isfinite(lo) || !std::isfinite(hi)) {
+      q(i) = wrap(q(i));
+      continue;
+    }
+    const double shifted = q(i) - two_pi * std::floor((q(i) - lo + limit_slack) / two_pi);
+    if (shifted <= hi + limit_slack) {
+      q(i) = shifted;
+    } else {
+      q(i) = wrap(q(i));
+      inside = false;
+    }
+  }
+  return inside;
+}
 
 InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptions& options) const {
   {
@@ -137,23 +132,7 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   std::vector<Eigen::VectorXd> representatives;
   for (Eigen::VectorXd q : raw) {
     if (q.size() != n || !q.allFinite()) continue;
-    // Into the limits by ±2π where possible: the smallest equivalent value ≥ lower.
-    bool inside = true;
-    for (int i = 0; i < n; ++i) {
-      const double lo = limits.lower(i);
-      const double hi = limits.upper(i);
-      if (!std::isfinite(lo) || !std::isfinite(hi)) {
-        q(i) = wrap(q(i));
-        continue;
-      }
-      const double shifted = q(i) - two_pi * std::floor((q(i) - lo + limit_slack) / two_pi);
-      if (shifted <= hi + limit_slack) {
-        q(i) = shifted;
-      } else {
-        q(i) = wrap(q(i));
-        inside = false;
-      }
-    }
+    const bool inside = into_limits(q, limits);
     if (!inside && !options.keep_outside_limits) continue;
     // Every solution is checked by forward kinematics (reproduces); one that misses by a little
     // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
@@ -214,26 +193,6 @@ std::vector<Eigen::VectorXd> with_configuration(const SerialArm& arm, const std:
   for (const Eigen::VectorXd& q : solutions)
     if (arm.configuration(q) == wanted) out.push_back(q);
   return out;
-}
-
-std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
-                                    const InverseOptions& options) {
-  if (q_start.size() != arm.dof())
-    throw std::invalid_argument(describe("q_start", q_start, "expected " + std::to_string(arm.dof()) +
-                                                                  " joint values, got " + std::to_string(q_start.size())));
-  require_finite(q_start, "q_start");
-  std::vector<Eigen::VectorXd> path;
-  path.reserve(poses.size());
-  Eigen::VectorXd previous = q_start;
-  for (std::size_t k = 0; k < poses.size(); ++k) {
-    const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(poses[k], options).solutions;
-    if (solutions.empty())
-      throw std::runtime_error(describe("poses[" + std::to_string(k) + "] translation", poses[k].translation(),
-                                        "has no inverse-kinematics solution within the joint limits"));
-    previous = nearest(solutions, previous);
-    path.push_back(previous);
-  }
-  return path;
 }
 
 }  // namespace serial

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <Eigen/LU>
 
@@ -16,9 +17,54 @@
 #include "joint_following.hpp"
 
 namespace dispkin {
-using detail::tracked_solution;
+using detail::branch_solution;
 using detail::joint_velocity;
 using detail::where;
+
+namespace {
+
+// Adds a sample (q, q̇, q̈ and the torques) to the report: its position excess and its share of
+// FVEL and FACC (doc/retiming.md (eq. 4) and (eq. 5)). Throws std::runtime_error where the static
+// torque alone reaches an effort limit (eq. 6).
+void add_sample(JointLimitReport& report, JointSample sample, const serial::SerialArm& arm, const JointLimits& limits,
+                double s) {
+  const std::size_t index = report.samples.size();
+  for (Eigen::Index i = 0; i < sample.q.size(); ++i) {
+    const double excess = std::max(limits.lower(i) - sample.q(i), sample.q(i) - limits.upper(i));
+    if (excess > report.position_excess) {
+      report.position_excess = excess;
+      report.position_joint = static_cast<int>(i);
+      report.position_sample = index;
+    }
+    if (std::isfinite(limits.velocity(i))) {
+      const double f = std::abs(sample.qd(i)) / limits.velocity(i);
+      if (f > report.velocity_factor) {
+        report.velocity_factor = f;
+        report.velocity_joint = static_cast<int>(i);
+        report.velocity_sample = index;
+      }
+    }
+    if (limits.effort.size() == sample.q.size() && std::isfinite(limits.effort(i))) {
+      const double holding = std::abs(sample.static_torque(i));
+      if (holding >= limits.effort(i)) {
+        std::ostringstream message;
+        message << "joint " << arm.joint_names()[static_cast<std::size_t>(i)] << ": the static torque " << holding
+                << " N·m at " << where(sample.time, s) << " reaches its effort limit " << limits.effort(i)
+                << " N·m: no speed makes this path feasible";
+        throw std::runtime_error(message.str());
+      }
+      const double f = std::abs(sample.dynamic_torque(i)) / (limits.effort(i) - holding);
+      if (f > report.acceleration_factor) {
+        report.acceleration_factor = f;
+        report.torque_joint = static_cast<int>(i);
+        report.torque_sample = index;
+      }
+    }
+  }
+  report.samples.push_back(std::move(sample));
+}
+
+}  // namespace
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
@@ -38,7 +84,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     JointSample sample;
     sample.time = t;
     sample.s = here.s;
-    sample.q = tracked_solution(arm, here.pose, q_prev, t, here.s);
+    sample.q = branch_solution(arm, here.pose, q_prev, t, here.s);
     sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
     // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
@@ -47,8 +93,8 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
       // Predicted to first order, so that Newton needs a single step.
       const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
       const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
-      const Eigen::VectorXd q_before = tracked_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
-      const Eigen::VectorXd q_after = tracked_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
+      const Eigen::VectorXd q_before = branch_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
+      const Eigen::VectorXd q_after = branch_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
       sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
                     joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
                    (t_after - t_before);
@@ -58,43 +104,68 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     sample.static_torque = arm.static_torques(sample.q);
     sample.dynamic_torque = arm.torques(sample.q, sample.qd, sample.qdd) - sample.static_torque;
 
-    const std::size_t index = report.samples.size();
-    for (Eigen::Index i = 0; i < sample.q.size(); ++i) {
-      const double excess = std::max(limits.lower(i) - sample.q(i), sample.q(i) - limits.upper(i));
-      if (excess > report.position_excess) {
-        report.position_excess = excess;
-        report.position_joint = static_cast<int>(i);
-        report.position_sample = index;
-      }
-      if (std::isfinite(limits.velocity(i))) {
-        const double f = std::abs(sample.qd(i)) / limits.velocity(i);
-        if (f > report.velocity_factor) {
-          report.velocity_factor = f;
-          report.velocity_joint = static_cast<int>(i);
-          report.velocity_sample = index;
-        }
-      }
-      if (limits.effort.size() == sample.q.size() && std::isfinite(limits.effort(i))) {
-        const double holding = std::abs(sample.static_torque(i));
-        if (holding >= limits.effort(i)) {
-          std::ostringstream message;
-          message << "joint " << arm.joint_names()[static_cast<std::size_t>(i)] << ": the static torque " << holding
-                  << " N·m at " << where(t, here.s) << " reaches its effort limit " << limits.effort(i)
-                  << " N·m: no speed makes this path feasible";
-          throw std::runtime_error(message.str());
-        }
-        const double f = std::abs(sample.dynamic_torque(i)) / (limits.effort(i) - holding);
-        if (f > report.acceleration_factor) {
-          report.acceleration_factor = f;
-          report.torque_joint = static_cast<int>(i);
-          report.torque_sample = index;
-        }
-      }
-    }
-    q_prev = sample.q;
-    report.samples.push_back(std::move(sample));
+    add_sample(report, std::move(sample), arm, limits, here.s);
+    q_prev = report.samples.back().q;
   }
   return report;
+}
+
+JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const serial::SerialArm& arm,
+                                    const std::vector<double>& times) {
+  require(trajectory.dof() == arm.dof(), "trajectory dof", static_cast<long>(trajectory.dof()),
+          "must equal the arm's dof " + std::to_string(arm.dof()));
+  const JointLimits limits = arm.joint_limits();
+  JointLimitReport report;
+  for (const double t : times) {
+    require(std::isfinite(t), "times", t, "must be finite");
+    const JointTrajectorySample here = trajectory.sample(t);
+    JointSample sample;
+    sample.time = t;
+    sample.s = here.s;
+    sample.q = here.q;
+    sample.qd = here.qd;
+    sample.qdd = here.qdd;
+    sample.static_torque = arm.static_torques(sample.q);
+    sample.dynamic_torque = arm.torques(sample.q, sample.qd, sample.qdd) - sample.static_torque;
+    add_sample(report, std::move(sample), arm, limits, here.s);
+  }
+  return report;
+}
+
+FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                             const std::vector<double>& times, double difference_step) {
+  require_positive(difference_step, "difference_step");
+  const auto count = static_cast<Eigen::Index>(times.size());
+  const Eigen::Index n = arm.dof();
+  for (const double t : times) require(std::isfinite(t), "times", t, "must be finite");
+  std::vector<Posed> poses;
+  poses.reserve(times.size());
+  for (const double t : times) poses.push_back(trajectory.sample(t).pose);
+  const std::vector<Eigen::VectorXd> q = serial::follow(arm, poses, q_start);
+  FollowedJoints out{Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n)};
+  const double duration = trajectory.duration();
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const double t = times[static_cast<std::size_t>(k)];
+    const Eigen::VectorXd& q_k = q[static_cast<std::size_t>(k)];
+    out.q.row(k) = q_k.transpose();
+    out.qd.row(k) = serial::joint_velocity(arm, q_k, trajectory.sample(t).body_twist).transpose();
+    // q̈ by central differences of the Jacobian velocities (one-sided at the ends), each neighbour
+    // on the branch of q_k (doc/retiming.md (eq. 2)).
+    const double t_before = std::max(t - difference_step, 0.0), t_after = std::min(t + difference_step, duration);
+    if (!(t_after > t_before)) {
+      out.qdd.row(k).setZero();
+      continue;
+    }
+    Eigen::VectorXd rate[2];
+    const double at[2] = {t_before, t_after};
+    for (int side = 0; side < 2; ++side) {
+      const TrajectorySample neighbour = trajectory.sample(at[side]);
+      const Eigen::VectorXd q_side = serial::follow(arm, {neighbour.pose}, q_k).front();
+      rate[side] = serial::joint_velocity(arm, q_side, neighbour.body_twist);
+    }
+    out.qdd.row(k) = ((rate[1] - rate[0]) / (t_after - t_before)).transpose();
+  }
+  return out;
 }
 
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
@@ -140,7 +211,7 @@ class SerialModel final : public JointModel {
   void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
               double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
     constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
-    q = detail::tracked_solution(arm_, pose, q_ref, no_time, s, guess);
+    q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
     q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
   }
   void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "ptp_moves.hpp"
@@ -23,7 +24,7 @@ using testing::worst_speed_ratio;
 Limits scurve_limits(double v) { return Limits{v, 4.0 * v, 40.0 * v}; }
 
 // The weighted fastest speed of the set per unit τ of `section`, densely at `count` points (exact
-// body twist from the arm's Jacobian, independent of the planner's own forward kinematics).
+// body twist from the arm's Jacobian).
 double dense_section_maximum(const SerialArm& arm, const JointTrajectory& traj, const JointSection& section,
                              const MetricSetd& set, double v_sys, int count) {
   const Eigen::VectorXd delta = traj.end() - traj.start();
@@ -44,7 +45,7 @@ TEST(Ptp, ChainPoseAndTwistMatchTheArm) {
       const Eigen::VectorXd q = testing::random_joints(rnd, arm), qd = Eigen::VectorXd::Random(arm.dof());
       Posed pose;
       Twistd twist;
-      detail::chain_pose_and_twist(arm.chain(), q.data(), qd.data(), pose, twist);
+      serial::chain_pose_and_twist(arm.chain(), q.data(), qd.data(), pose, twist);
       EXPECT_TRUE(pose.is_approx(arm.forward(q), 1e-12));
       EXPECT_LT((twist.vector() - arm.body_jacobian(q) * qd).norm(), 1e-12);
     }

@@ -1,5 +1,5 @@
-// Serial-arm plugin tests: URDF loading rules, FK against the product-of-exponentials chain,
-// the Jacobian against finite differences, dynamics against a hand-derived two-link model,
+// Serial-arm plugin tests: URDF loading rules, FK against the DH table and the product-of-
+// exponentials chain, the Jacobian against finite differences, joint velocities by it, dynamics against a hand-derived two-link model,
 // inverse kinematics (analytic family or numeric fallback), solution choice, bad URDFs.
 #include <gtest/gtest.h>
 
@@ -9,6 +9,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include <dispkin/serial/serial_arm.hpp>
 
@@ -108,19 +110,37 @@ TEST(SerialArmKinematics, PlanarForwardIsTheTextbookFormula) {
   }
 }
 
-TEST(SerialArmKinematics, RevoluteChainMatchesKdlForward) {
-  for (const SerialArm& arm : {ur5e(), planar("payload")}) {
-    const RevoluteChain& chain = arm.chain();
-    ASSERT_EQ(chain.dof(), arm.dof());
-    Random random(603);
-    double worst = 0.0;
-    for (int k = 0; k < dispkin::testing::case_count(2000); ++k) {
-      const Eigen::VectorXd q = random_q(random, arm);
-      const Posed a = arm.forward(q);
-      const Posed b = forward(chain, q);
-      worst = std::max(worst, (a.matrix() - b.matrix()).cwiseAbs().maxCoeff());
+// The UR5e of arm_ur5e_dh.urdf by its standard DH table, T = Π Rz(qᵢ) Tz(dᵢ) Tx(aᵢ) Rx(αᵢ), and
+// tool0 0.05 along the flange's z: independent of the URDF reading and of the product of exponentials.
+Eigen::Matrix4d ur5e_dh_forward(const Eigen::VectorXd& q) {
+  const double d[6] = {0.1625, 0, 0, 0.1333, 0.0997, 0.0996 + 0.05};
+  const double a[6] = {0, -0.425, -0.3922, 0, 0, 0};
+  const double alpha[6] = {pi / 2, 0, 0, pi / 2, -pi / 2, 0};
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  for (int i = 0; i < 6; ++i) {
+    t = t * Eigen::AngleAxisd(q(i), Eigen::Vector3d::UnitZ()) * Eigen::Translation3d(a[i], 0, d[i]) *
+        Eigen::AngleAxisd(alpha[i], Eigen::Vector3d::UnitX());
+  }
+  return t.matrix();
+}
+
+TEST(SerialArmKinematics, ForwardIsTheDhProductAndTheChainsForward) {
+  const SerialArm arm = ur5e();
+  Random random(603);
+  double worst = 0.0;
+  for (int k = 0; k < dispkin::testing::case_count(2000); ++k) {
+    const Eigen::VectorXd q = random_q(random, arm);
+    worst = std::max(worst, (arm.forward(q).matrix() - ur5e_dh_forward(q)).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE(worst, 1e-12);
+  // forward() is the product of exponentials of chain(), bit for bit.
+  for (const SerialArm& a : {ur5e(), planar("payload")}) {
+    const RevoluteChain& chain = a.chain();
+    ASSERT_EQ(chain.dof(), a.dof());
+    for (int k = 0; k < 100; ++k) {
+      const Eigen::VectorXd q = random_q(random, a);
+      EXPECT_EQ(a.forward(q).matrix(), forward(chain, q).matrix()) << a.robot_name();
     }
-    EXPECT_LE(worst, 1e-12) << arm.robot_name();
   }
 }
 
@@ -156,6 +176,31 @@ TEST(SerialArmKinematics, JacobianIsTheTipOriginVelocityInBaseCoordinates) {
       EXPECT_LE((jb.col(i) - body).norm(), 1e-7);
     }
   }
+}
+
+// joint_velocity solves J_b q̇ = ξ_b: it gives back the q̇ of a twist J_b q̇ (6 joints, and the
+// planar arm, whose twists are a 2-D subspace), and the nearest twist's q̇ for one outside it.
+TEST(SerialArmKinematics, JointVelocityInvertsTheBodyJacobian) {
+  Random random(605);
+  for (const SerialArm& arm : {ur5e(), planar("payload")}) {
+    for (int k = 0; k < 50; ++k) {
+      const Eigen::VectorXd q = random_q(random, arm);
+      Eigen::VectorXd qd(arm.dof());
+      for (int i = 0; i < arm.dof(); ++i) qd(i) = random.uniform(-1.0, 1.0);
+      const Eigen::MatrixXd jb = arm.body_jacobian(q);
+      const Eigen::Matrix<double, 6, 1> twist = jb * qd;
+      EXPECT_LE((joint_velocity(arm, q, Twistd(twist)) - qd).norm(), 1e-9 * (1.0 + qd.norm())) << arm.robot_name();
+    }
+  }
+  const SerialArm two = planar("payload");
+  const Eigen::Vector2d q(0.4, -1.1);
+  Eigen::Matrix<double, 6, 1> off = Eigen::Matrix<double, 6, 1>::Zero();
+  off(0) = 1.0;
+  off(1) = 0.5;
+  off(5) = 0.25;
+  const Eigen::MatrixXd jb = two.body_jacobian(q);
+  const Eigen::VectorXd least_squares = jb.colPivHouseholderQr().solve(off);
+  EXPECT_LE((joint_velocity(two, q, Twistd(off)) - least_squares).norm(), 1e-12);
 }
 
 // The two-link arm in the vertical plane, derived by hand (Lagrange): link i has mass mᵢ,
@@ -421,6 +466,44 @@ TEST(SerialArmChoice, NearestConfigurationAndFollow) {
     ADD_FAILURE() << "no exception";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("poses[1]"), std::string::npos) << e.what();
+  }
+}
+
+// On a 6-joint arm follow tracks the branch by Newton's method: each step lands on the solution
+// that enumerating every analytic solution picks (the nearest to the previous one), for small
+// steps (tracked) and for steps too large to be tracked (every solution enumerated).
+TEST(SerialArmChoice, FollowTrackingPicksTheNearestAnalyticSolution) {
+  const SerialArm arm = ur5e();
+  Random random(611);
+  for (const double step : {0.002, 0.05, 0.6}) {
+    for (int trial = 0; trial < 5; ++trial) {
+      Eigen::VectorXd q = random_q(random, arm);
+      Eigen::VectorXd direction(6);
+      for (int i = 0; i < 6; ++i) direction(i) = random.uniform(-1.0, 1.0);
+      std::vector<Posed> poses;
+      std::vector<Eigen::VectorXd> joints;
+      for (int k = 1; k <= 20; ++k) {
+        joints.push_back(q + k * step * direction.normalized());
+        poses.push_back(arm.forward(joints.back()));
+      }
+      const std::vector<Eigen::VectorXd> path = follow(arm, poses, q);
+      ASSERT_EQ(path.size(), poses.size());
+      Eigen::VectorXd previous = q;
+      for (std::size_t k = 0; k < poses.size(); ++k) {
+        EXPECT_TRUE(arm.forward(path[k]).is_approx(poses[k], inverse_tolerance)) << "step " << step << " pose " << k;
+        const Eigen::VectorXd enumerated = nearest(arm.inverse(poses[k]), previous);
+        EXPECT_LE((path[k] - enumerated).cwiseAbs().maxCoeff(), 1e-9) << "step " << step << " pose " << k;
+        previous = path[k];
+      }
+      // Inside the limits the fine path is the joint path itself.
+      if (step == 0.002) {
+        bool inside = true;
+        const JointLimits limits = arm.joint_limits();
+        for (const Eigen::VectorXd& j : joints)
+          inside = inside && (j.array() >= limits.lower.array()).all() && (j.array() <= limits.upper.array()).all();
+        for (std::size_t k = 0; inside && k < poses.size(); ++k) EXPECT_LE((path[k] - joints[k]).cwiseAbs().maxCoeff(), 1e-9);
+      }
+    }
   }
 }
 

@@ -207,3 +207,85 @@ def test_configuration_flags_of_ur5():
     flipped = q.copy()
     flipped[4] = -q[4]
     assert arm.configuration(flipped)[2] == -flags[2]
+
+
+def ur5e_dh():
+    return dispkin.SerialArm.from_urdf(str(DATA / "arm_ur5e_dh.urdf"), "base_link", "tool0")
+
+
+def test_joint_velocities_are_the_least_squares_solution_of_the_body_jacobian():
+    rng = np.random.default_rng(SEED + 7)
+    planar = dispkin.SerialArm.from_urdf(str(DATA / "arm_planar_two_link.urdf"), "base", "payload")
+    for arm in (ur5e_dh(), planar):
+        q = random_q(rng, arm, 50)
+        twists = rng.uniform(-1.0, 1.0, size=(50, 6))
+        expected = np.array([np.linalg.lstsq(arm.body_jacobian(qk), xi, rcond=None)[0] for qk, xi in zip(q, twists)])
+        np.testing.assert_allclose(arm.joint_velocities(q, twists), expected, rtol=0, atol=1e-9)
+    with pytest.raises(ValueError, match="body_twists"):
+        planar.joint_velocities(np.zeros((3, 2)), np.zeros((2, 6)))
+
+
+def lin_trajectory(arm, q0):
+    """A LIN of ~0.1 m with a small turn from forward(q0), planned for a 50 mm ball on the tool."""
+    a = arm.forward(q0)
+    b = arm.forward(q0 + np.array([0.2, -0.15, 0.2, 0.1, -0.1, 0.3]))
+    metric_set = dispkin.MetricSet()
+    metric_set.add_relative(dispkin.shapes.icosahedron(0.05, (0.0, 0.0, 0.1)))
+    return dispkin.plan(dispkin.Path.lin(a, b), metric_set, dispkin.Limits(0.2, 1.0, 10.0), "scurve")
+
+
+def test_follow_trajectory_is_follow_with_jacobian_velocities_and_central_differences():
+    """The joint samples of a job, computed in C++, against the same recipe written out here:
+    follow() from q_start, lstsq on the body Jacobian, and central differences of q-dot over
+    +-h (one-sided at the ends) with each neighbour followed from its sample's q."""
+    arm = ur5e_dh()
+    q0 = np.array([0.3, -1.2, 1.5, -1.9, -1.57, 0.2])
+    traj = lin_trajectory(arm, q0)
+    t = np.linspace(0.0, traj.duration, 41)
+    h = 1e-4
+    q, qd, qdd = arm.follow_trajectory(traj, t, q0, h)
+    assert q.shape == qd.shape == qdd.shape == (41, 6)
+
+    def follow(times, references):
+        poses = [dispkin.Pose.from_matrix(m) for m in np.asarray(traj.sample(times))]
+        return np.array([arm.follow([pose], ref)[0] for pose, ref in zip(poses, references)])
+
+    def velocities(times, joints):
+        twists = np.asarray(traj.body_twist(times))
+        return np.array([np.linalg.lstsq(arm.body_jacobian(qk), xi, rcond=None)[0] for qk, xi in zip(joints, twists)])
+
+    positions = arm.follow([dispkin.Pose.from_matrix(m) for m in np.asarray(traj.sample(t))], q0)
+    np.testing.assert_allclose(q, positions, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(qd, velocities(t, positions), rtol=0, atol=1e-9)
+    before, after = np.maximum(t - h, 0.0), np.minimum(t + h, traj.duration)
+    rates = [velocities(times, follow(times, positions)) for times in (before, after)]
+    np.testing.assert_allclose(qdd, (rates[1] - rates[0]) / (after - before)[:, None], rtol=0, atol=1e-6)
+    # The joints leave q0 continuously, and q-dot is the derivative of q.
+    np.testing.assert_allclose(q[0], q0, rtol=0, atol=1e-9)
+    numeric = (q[2:] - q[:-2]) / (t[2:] - t[:-2])[:, None]
+    assert np.abs(numeric - qd[1:-1]).max() <= 2e-2 * (1.0 + np.abs(numeric).max())
+    with pytest.raises(ValueError, match="difference_step"):
+        arm.follow_trajectory(traj, t, q0, 0.0)
+
+
+def test_check_joint_limits_of_a_ptp_move_is_the_patent_factors_of_its_joint_line():
+    arm = ur5e_dh()
+    q_a = np.array([0.3, -1.2, 1.5, -1.9, -1.57, 0.2])
+    q_b = q_a + np.array([0.8, 0.4, -0.6, 0.5, 0.7, -0.9])
+    metric_set = dispkin.MetricSet()
+    metric_set.add_relative(dispkin.shapes.icosahedron(0.05, (0.0, 0.0, 0.1)))
+    traj = dispkin.plan(dispkin.Path.ptp(q_a, q_b), metric_set, dispkin.Limits(1.0, 4.0, 40.0), robot=arm)
+    t = np.linspace(0.0, traj.duration, 201)
+    report = arm.check_joint_limits(traj, t)
+    q, qd, qdd = traj.joint_positions(t), traj.joint_velocities(t), traj.joint_accelerations(t)
+    limits = arm.joint_limits
+    stated = np.isfinite(limits.velocity)
+    assert report.velocity_factor == pytest.approx(np.max(np.abs(qd[:, stated]) / limits.velocity[stated]), rel=1e-12)
+    effort = np.asarray(limits.effort)
+    factors = []
+    for qk, qdk, qddk in zip(q, qd, qdd):
+        static = np.asarray(arm.static_torques(qk))
+        dynamic = np.asarray(arm.torques(qk, qdk, qddk)) - static
+        factors.append(np.max(np.abs(dynamic) / (effort - np.abs(static))))
+    assert report.acceleration_factor == pytest.approx(max(factors), rel=1e-12)
+    assert report.position_excess == 0.0

@@ -1,10 +1,10 @@
 //! Analytic inverse kinematics of 6R chains: all solutions, no initial guess.
 //!
-//! The family is recognised from the joint axes of a RevoluteChain (MATH.md §8):
+//! The family is recognised from the joint axes of a RevoluteChain (doc/inverse-kinematics.md §4):
 //! - spherical_wrist: the last three axes meet in one point (Pieper; KUKA KR6, ABB IRB 120);
 //! - three_parallel:  three consecutive parallel axes with the UR layout (UR3/5/10, e and non-e);
-//! - offset_wrist:    a 6R chain of neither kind whose IK is the one-dimensional search of
-//!                    seed 003 (Kinova Jaco2 j2n6s300);
+//! - offset_wrist:    a 6R chain of neither kind whose IK is a one-dimensional search
+//!                    (Kinova Jaco2 j2n6s300);
 //! - general:         no analytic method applies (the caller uses the numeric fallback).
 //!
 //! Every solver is built from the Paden–Kahan subproblems in product-of-exponentials form
@@ -73,12 +73,12 @@ std::vector<Eigen::VectorXd> analytic_inverse(const RevoluteChain& chain, IkFami
 //! family or a chain that does not fit (only then does it allocate, for the message).
 void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose, IkSolutionSet& out);
 
-//! Settings of the offset-wrist search (MATH.md §8).
+//! Settings of the offset-wrist search (doc/inverse-kinematics.md §7).
 struct OffsetWristOptions {
   //! Samples of the circle parameter q₆ over one turn (≥ 16), besides one in every gap or
   //! island of the positioning stage that they would miss (its ends are found exactly where
   //! they are roots of a trigonometric polynomial in q₆). Between samples the search follows
-  //! branch ends, gaps and islands and narrow root pairs (MATH.md §8); 180 recovered the
+  //! branch ends, gaps and islands and narrow root pairs (doc/inverse-kinematics.md §7); 180 recovered the
   //! original q in all of 10⁷ random round trips on the Jaco2, 120, 90 and 60 in all of 10⁵
   //! (benchmarks/RESULTS.md).
   int samples = 180;

@@ -7,12 +7,12 @@
 //!
 //!   L_k = max over groups g of  w_g · ( V_g(½) + ½ A_g ),   w_g = v_sys / v_g,
 //!
-//! with V_g(½) the exact fastest speed of the group at the section's middle (MATH.md §4: points,
+//! with V_g(½) the exact fastest speed of the group at the section's middle (doc/disp-metric.md §6: points,
 //! absolute points seen from the tool, spheres by the exact sphere formula) and A_g a bound of
 //! the acceleration per τ² of every object of the group over the section (a Lipschitz bound of
 //! its velocity, derived from the chain geometry — see joint_section_bounds and
 //! doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
-//! faster than L_k per unit τ: the planner's section guarantee (MATH.md §5), the same construction
+//! faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same construction
 //! as CurveSection (speed at the middle + half the acceleration bound).
 //!
 //! Cutting rule: a section is halved until L_k − V(½) ≤ tolerance · max(V(½), V_floor), V(½) =
@@ -148,11 +148,6 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
                      const serial::SerialArm& arm, const PtpOptions& options = {});
 
 namespace detail {
-
-//! The tool pose and body twist of `chain` at joint positions q and velocities qd (product of
-//! exponentials; noexcept, no allocation). Sizes must be chain.dof().
-void chain_pose_and_twist(const serial::RevoluteChain& chain, const double* q, const double* qd, Posed& pose,
-                          Twistd& body_twist) noexcept;
 
 //! The bounds of the joint section u ∈ [u0, u1] of the line q_a + u Δq on `chain`, with the
 //! groups' weights and relative reaches (from the tool origin) in `factors`. See the file comment

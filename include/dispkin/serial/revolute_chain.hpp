@@ -8,14 +8,11 @@
 //! q = 0, and M the tip (flange) pose at q = 0.
 #pragma once
 
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "dispkin/error.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
@@ -37,16 +34,9 @@ inline Posed rotation_about_line(const Eigen::Vector3d& axis, const Eigen::Vecto
   return Posed::unchecked(q, point - q * point);
 }
 
-//! Forward kinematics T(q) by the product of exponentials.
-inline Posed forward(const RevoluteChain& chain, const Eigen::VectorXd& q) {
-  if (q.size() != chain.dof())
-    throw std::invalid_argument("q: expected " + std::to_string(chain.dof()) + " joint values, got " +
-                                std::to_string(q.size()));
-  require_finite(q, "q");
-  Posed t;
-  for (int i = 0; i < chain.dof(); ++i) t = t * rotation_about_line(chain.axes[i], chain.points[i], q(i));
-  return t * chain.tip_at_zero;
-}
+//! Forward kinematics T(q) by the product of exponentials (chain_kinematics.hpp). Throws
+//! std::invalid_argument for a q of the wrong size or with non-finite values.
+Posed forward(const RevoluteChain& chain, const Eigen::VectorXd& q);
 
 }  // namespace serial
 }  // namespace dispkin

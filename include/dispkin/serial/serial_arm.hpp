@@ -1,7 +1,8 @@
 //! The serial-arm plugin: a chain of revolute joints read from a URDF (urdfdom), held as an
-//! Orocos KDL chain for forward kinematics, the Jacobian and the dynamics, and solved for all
-//! inverse-kinematics solutions by the analytic families of analytic_ik.hpp (or by a numeric
-//! search when no family fits).
+//! Orocos KDL chain for the dynamics and in product-of-exponentials form (chain()) for forward
+//! kinematics and the Jacobian (chain_kinematics.hpp), and solved for all inverse-kinematics
+//! solutions by the analytic families of analytic_ik.hpp (or by a numeric search when no
+//! family fits).
 //!
 //! Loading rules (from_urdf_file / from_urdf_string):
 //! - the chain is the path of joints from `base_link` down to `tip_link`; `base_link` must be an
@@ -106,7 +107,7 @@ class SerialArm : public Kinematics {
 
   // Kinematics
   int dof() const override;
-  //! The tip pose in base coordinates (KDL ChainFkSolverPos_recursive). Throws for a q of
+  //! The tip pose in base coordinates (product of exponentials on chain()). Throws for a q of
   //! the wrong size or with non-finite values; q outside the limits is allowed.
   Posed forward(const Eigen::VectorXd& q) const override;
   //! inverse_solutions(pose).solutions with default options.
@@ -125,16 +126,15 @@ class SerialArm : public Kinematics {
   //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates (equal
   //! up to 2π, every joint within 1e-7) are removed. An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
-  //! Every solution (each 2π copy too) is checked by forward kinematics to inverse_tolerance:
-  //! on the product-of-exponentials chain() first, by forward() when that check lands within
-  //! 1e-11 of the tolerance. Thread safety: const and without shared mutable state (the KDL
-  //! solvers are made per call, the analytic IK caches its chain analysis per thread), so
-  //! one arm may be used from several threads at once.
+  //! Every solution (each 2π copy too) is checked by forward() to inverse_tolerance. Thread
+  //! safety: const and without shared mutable state (the KDL solvers are made per call, the
+  //! analytic IK caches its chain analysis per thread), so one arm may be used from several
+  //! threads at once.
   InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
 
-  //! The geometric Jacobian J(q) (6 × dof, KDL ChainJntToJacSolver): rows (v, ω), the linear
-  //! velocity of the tip frame's origin and the angular velocity, both in base coordinates,
-  //! for q̇: (v, ω) = J q̇.
+  //! The geometric Jacobian J(q) (6 × dof, product of exponentials on chain()): rows (v, ω),
+  //! the linear velocity of the tip frame's origin and the angular velocity, both in base
+  //! coordinates, for q̇: (v, ω) = J q̇.
   Eigen::MatrixXd jacobian(const Eigen::VectorXd& q) const;
   //! The body Jacobian: the same twist in tip coordinates, the (v, ω) of dispkin::Twist.
   Eigen::MatrixXd body_jacobian(const Eigen::VectorXd& q) const;
@@ -153,7 +153,7 @@ class SerialArm : public Kinematics {
   std::vector<BodyInertia> inertias() const;
 
   //! The chain in product-of-exponentials form (axes and points at q = 0, base coordinates),
-  //! for the analytic IK. forward(chain(), q) equals forward(q) to rounding.
+  //! on which forward(), jacobian() and the analytic IK work: forward(chain(), q) is forward(q).
   const RevoluteChain& chain() const noexcept;
   //! The analytic family recognised for chain().
   IkFamily family() const noexcept;
@@ -180,10 +180,17 @@ std::vector<Eigen::VectorXd> with_configuration(const SerialArm& arm, const std:
                                                 const Configuration& wanted);
 
 //! Continuity along a path: for each pose in turn the solution nearest to the previous one,
-//! starting from q_start. Throws std::runtime_error naming the index of a pose without a
-//! solution.
+//! starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
+//! first, where that converges close by). Throws std::runtime_error naming the index of a pose
+//! without a solution.
 std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
                                     const InverseOptions& options = {});
+
+//! The joint velocities q̇ that give the body twist ξ_b = J_b(q) q̇ (the (v, ω) of dispkin::Twist):
+//! the minimum-norm least-squares solution, singular values below 6 ε of the largest taken as
+//! zero (exact for a 6-joint arm away from singularities; the nearest twist for a shorter arm).
+//! Throws std::invalid_argument for a q of the wrong size or not finite.
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body_twist);
 
 }  // namespace serial
 }  // namespace dispkin

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -15,6 +16,7 @@
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/planning/retiming.hpp"
 #include "dispkin/profile.hpp"
+#include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
 namespace dispkin {
@@ -26,6 +28,28 @@ namespace dispkin {
 //! alone exceeds a joint's effort limit (the KUKA re-timing patent's "cannot be reached by slowing down").
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
+
+//! The joint-limit factors of a PTP move at `times` (s): FVEL and FACC (doc/retiming.md (eq. 4)
+//! and (eq. 5)) of its joint line's own q, q̇ and q̈, with the torques of the arm's dynamics
+//! model (its position excess is 0: both ends are inside the limits, and the range is a box).
+//! Throws std::invalid_argument for a trajectory of another dof or a time that is not finite,
+//! std::runtime_error where the static torque alone reaches an effort limit (eq. 6).
+JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const serial::SerialArm& arm,
+                                    const std::vector<double>& times);
+
+//! Joint positions, velocities and accelerations along a trajectory; row k at times[k].
+struct FollowedJoints {
+  Eigen::MatrixXd q, qd, qdd;
+};
+
+//! `arm` following `trajectory` at `times` (s) as a job's samples give it: q by serial::follow
+//! from q_start (the solutions within the limits, each nearest to the previous sample), q̇ by
+//! serial::joint_velocity of the trajectory's body twist, q̈ by central differences of q̇ over
+//! ±difference_step (one-sided at the ends, doc/retiming.md (eq. 2)), each neighbour followed
+//! from the sample's q. Throws what serial::follow throws, std::invalid_argument for a
+//! difference_step ≤ 0 or a time that is not finite.
+FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                             const std::vector<double>& times, double difference_step = 1e-4);
 
 //! Plans `path`, checks it, scales the limits by 1/FVEL and 1/FACC and re-plans until both
 //! factors are ≤ 1 at every checked sample. Throws std::runtime_error if a position limit is

@@ -363,13 +363,16 @@ class _Builder:
 
     def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
         """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the
-        inverse-kinematics solution (within the limits) nearest to it."""
+        inverse-kinematics solution (within the limits) on its branch, the one nearest to it
+        (SerialArm.follow)."""
         if arm.forward(q_reference).is_approx(pose, 1e-9):
             return np.asarray(q_reference, dtype=float)
-        solutions = self.call(key_path, arm.inverse, pose)
-        if not solutions:
-            raise self.fail(key_path, "the arm cannot reach this pose within its joint limits (no inverse-kinematics solution)")
-        return np.asarray(_core.SerialArm.nearest(solutions, q_reference))
+        try:
+            return np.asarray(arm.follow([pose], q_reference)[0])
+        except RuntimeError as error:
+            raise self.fail(key_path, "the arm cannot reach this pose within its joint limits (no inverse-kinematics solution)") from error
+        except ValueError as error:
+            raise self.fail(key_path, str(error)) from error
 
     def ptp(self, job: Dict[str, Any], at: KeyPath, current: Pose, q_current: Optional[np.ndarray]) -> Tuple[np.ndarray, np.ndarray, Pose]:
         """(q_a, q_b, end pose) of a PTP move: the target as joints (radians / metres) or as a

@@ -78,37 +78,27 @@ def group_sets(metric_set: MetricSet) -> Dict[int, MetricSet]:
     return out
 
 
-def _joint_velocities(job: Job, poses: np.ndarray, twists: np.ndarray, q: np.ndarray) -> np.ndarray:
-    if job.hexapod is not None:
-        return np.array([job.hexapod.leg_jacobian(m) @ xi for m, xi in zip(poses, twists)])
-    # Body twist = J_body(q) q-dot; least squares also covers arms with fewer than 6 joints.
-    return np.array([np.linalg.lstsq(job.arm.body_jacobian(qk), xi, rcond=None)[0] for qk, xi in zip(q, twists)])
-
-
-def _joint_positions(job: Job, poses: np.ndarray, q_reference: np.ndarray) -> np.ndarray:
-    if job.hexapod is not None:
-        return np.asarray(job.hexapod.inverse(poses))
-    try:
-        return np.asarray(job.arm.follow([Pose.from_matrix(m) for m in poses], q_reference))
-    except (ValueError, RuntimeError) as error:
-        raise JobError(f"{job.file}: the serial arm cannot follow the trajectory: {error}") from error
+def _leg_velocities(job: Job, poses: np.ndarray, twists: np.ndarray) -> np.ndarray:
+    return np.array([job.hexapod.leg_jacobian(m) @ xi for m, xi in zip(poses, twists)])
 
 
 def _cartesian_joint_states(job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]) -> JointStates:
     """Joint positions, velocities and accelerations along a Cartesian trajectory at `t`."""
+    if job.arm is not None:
+        # The branch followed from q_reference, q-dot by the body Jacobian, q-double-dot by central
+        # differences of q-dot, each neighbour on its sample's branch (SerialArm.follow_trajectory).
+        try:
+            states = job.arm.follow_trajectory(trajectory, t, q_reference, ACCELERATION_STEP)
+        except (ValueError, RuntimeError) as error:
+            raise JobError(f"{job.file}: the serial arm cannot follow the trajectory: {error}") from error
+        return tuple(np.asarray(x) for x in states)
     poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
-    n = len(t)
-    positions = _joint_positions(job, poses, q_reference)
-    velocities = _joint_velocities(job, poses, twists, positions)
+    positions = np.asarray(job.hexapod.inverse(poses))
+    velocities = _leg_velocities(job, poses, twists)
     # Accelerations: central differences of the analytic velocity, one-sided at the ends.
     before, after = np.maximum(t - ACCELERATION_STEP, 0.0), np.minimum(t + ACCELERATION_STEP, trajectory.duration)
-    rates = []
-    for times in (before, after):
-        p, xi = np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times))
-        q = None
-        if job.arm is not None:  # the same branch: each neighbour follows from its sample
-            q = np.array([_joint_positions(job, p[k : k + 1], positions[k])[0] for k in range(n)])
-        rates.append(_joint_velocities(job, p, xi, q))
+    rates = [_leg_velocities(job, np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times)))
+             for times in (before, after)]
     accelerations = (rates[1] - rates[0]) / (after - before)[:, None]
     return positions, velocities, accelerations
 

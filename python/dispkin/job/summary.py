@@ -87,31 +87,19 @@ def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any
     """The joint-limit factors of the KUKA re-timing patent over a job with PTP moves:
     check_joint_limits on each Cartesian run (from the joints at its start); for a PTP move
     FVEL = max |q-dot_i| / q-dot-max_i and FACC = max |tau_dyn,i| / (tau-max_i - |tau_sta,i|) at
-    1 ms samples of its joint line (which stays inside the position limits: both ends do, and
-    the range is a box). See doc/retiming.md."""
+    1 ms samples of its joint line (SerialArm.check_joint_limits; the line stays inside the
+    position limits: both ends do, and the range is a box). See doc/retiming.md."""
     arm = job.arm
-    limits = arm.joint_limits
     velocity_factor = acceleration_factor = position_excess = 0.0
     for part, traj in trajectory.parts:
         if part.kind == "path":
             report = _core.check_joint_limits(traj, arm, part.q_start)
-            velocity_factor = max(velocity_factor, float(report.velocity_factor))
-            acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
             position_excess = max(position_excess, float(report.position_excess))
-            continue
-        t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
-        q, qd, qdd = traj.joint_positions(t), traj.joint_velocities(t), traj.joint_accelerations(t)
-        stated = np.isfinite(limits.velocity)
-        if np.any(stated):
-            velocity_factor = max(velocity_factor, float(np.max(np.abs(qd[:, stated]) / limits.velocity[stated])))
-        if len(limits.effort) and np.any(np.isfinite(limits.effort)):
-            effort = np.asarray(limits.effort)
-            for qk, qdk, qddk in zip(q, qd, qdd):
-                static = np.asarray(arm.static_torques(qk))
-                dynamic = np.asarray(arm.torques(qk, qdk, qddk)) - static
-                room = effort - np.abs(static)
-                finite = np.isfinite(effort)
-                acceleration_factor = max(acceleration_factor, float(np.max(np.abs(dynamic[finite]) / room[finite])))
+        else:
+            t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
+            report = arm.check_joint_limits(traj, t)
+        velocity_factor = max(velocity_factor, float(report.velocity_factor))
+        acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
     return {"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
             "position_excess": position_excess,
             "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)}

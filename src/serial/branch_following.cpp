@@ -1,0 +1,119 @@
+// The inverse-kinematics branch followed from pose to pose (branch_following.hpp): Newton
+// tracking first, the nearest of all solutions where tracking is not trusted; and serial::follow.
+#include "branch_following.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "angles.hpp"
+#include "dispkin/error.hpp"
+#include "ik_newton.hpp"
+#include "serial_arm_model.hpp"
+
+namespace dispkin {
+namespace serial {
+namespace detail {
+namespace {
+
+// Tracking: converged at this pose error (m, rad); trusted within this distance (rad, every joint)
+// of the reference, a fraction of the distance between two solutions of a 6R arm away from
+// singular poses.
+constexpr double tracking_tolerance = 1e-13;
+constexpr double tracking_reach = 0.3;
+
+// q (a solution) in the form `rule` gives its candidates, nearest to q_ref. False when that form
+// is not a candidate (outside the limits while they are required).
+bool in_rule_form(Eigen::VectorXd& q, const Eigen::VectorXd& q_ref, const JointLimits& limits, const BranchRule& rule) {
+  if (rule.turns == Turns::nearest) {
+    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += two_pi * std::round((q_ref(i) - q(i)) / two_pi);
+    return true;
+  }
+  const bool inside = into_limits(q, limits);
+  if (!inside && !rule.options.keep_outside_limits) return false;
+  if (!inside || !rule.options.offer_equivalents) return true;
+  // The listed 2π copies of joint i are q(i) + 2π, + 2π, … up to the upper limit: the nearest.
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    if (!std::isfinite(limits.lower(i)) || !std::isfinite(limits.upper(i))) continue;
+    double best = q(i);
+    for (double value = q(i) + two_pi; value <= limits.upper(i) + limit_slack; value += two_pi)
+      if (std::abs(value - q_ref(i)) < std::abs(best - q_ref(i))) best = value;
+    q(i) = best;
+  }
+  return true;
+}
+
+// Newton's method from `start`: the solution of q_ref's branch, in the rule's form, or empty.
+std::optional<Eigen::VectorXd> tracked(const SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
+                                       const BranchRule& rule, const Eigen::VectorXd& start) {
+  NewtonSettings settings;
+  settings.tolerance = tracking_tolerance;
+  settings.max_iterations = 6;
+  settings.largest_step = tracking_reach;
+  settings.well_conditioned = 1e-9;
+  settings.minimum_norm_when_singular = false;  // a free combination of joints: not one branch
+  Eigen::VectorXd q = start;
+  if (!(refine_pose(arm.chain(), pose, q.data(), settings).worst() <= tracking_tolerance)) return std::nullopt;
+  if (!in_rule_form(q, q_ref, arm.joint_limits(), rule)) return std::nullopt;
+  if (!((q - q_ref).lpNorm<Eigen::Infinity>() <= tracking_reach)) return std::nullopt;
+  return q;
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref,
+                                                  const BranchRule& rule, const Eigen::VectorXd* guess) {
+  // Tracking needs a square Jacobian: a redundant arm's solutions form a continuum (the nearest
+  // of the search's samples is what is asked for), a short arm's pose equations are overdetermined.
+  if (arm.dof() == 6) {
+    if (std::optional<Eigen::VectorXd> q = tracked(arm, pose, q_ref, rule, guess ? *guess : q_ref)) return q;
+  }
+  InverseOptions options = rule.options;
+  if (rule.turns == Turns::nearest) options.offer_equivalents = false;  // the 2π moves below make them
+  const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
+  if (solutions.empty()) return std::nullopt;
+  if (rule.turns == Turns::listed) return nearest(solutions, q_ref);
+  const JointLimits limits = arm.joint_limits();
+  Eigen::VectorXd best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (Eigen::VectorXd q : solutions) {
+    in_rule_form(q, q_ref, limits, rule);
+    const double distance = (q - q_ref).norm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = q;
+    }
+  }
+  return best;
+}
+
+}  // namespace detail
+
+std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
+                                    const InverseOptions& options) {
+  if (q_start.size() != arm.dof())
+    throw std::invalid_argument(describe("q_start", q_start, "expected " + std::to_string(arm.dof()) +
+                                                                  " joint values, got " + std::to_string(q_start.size())));
+  require_finite(q_start, "q_start");
+  // inverse_solutions' own checks, which tracking would skip.
+  require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
+  require_positive(options.time_budget, "time_budget");
+  const detail::BranchRule rule{options, detail::Turns::listed};
+  std::vector<Eigen::VectorXd> path;
+  path.reserve(poses.size());
+  Eigen::VectorXd previous = q_start;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, poses[k], previous, rule);
+    if (!q)
+      throw std::runtime_error(describe("poses[" + std::to_string(k) + "] translation", poses[k].translation(),
+                                        "has no inverse-kinematics solution within the joint limits"));
+    previous = std::move(*q);
+    path.push_back(previous);
+  }
+  return path;
+}
+
+}  // namespace serial
+}  // namespace dispkin

@@ -1,0 +1,84 @@
+// Forward kinematics and Jacobians of a revolute chain by the product of exponentials
+// (chain_kinematics.hpp; doc/inverse-kinematics.md (eq. 1) and (eq. 22)).
+#include "dispkin/serial/chain_kinematics.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "dispkin/error.hpp"
+
+namespace dispkin {
+namespace serial {
+
+Posed chain_pose(const RevoluteChain& chain, const double* q) noexcept {
+  Posed t;
+  const int n = chain.dof();
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    t = t * rotation_about_line(chain.axes[k], chain.points[k], q[i]);
+  }
+  return t * chain.tip_at_zero;
+}
+
+void chain_pose_and_twist(const RevoluteChain& chain, const double* q, const double* qd, Posed& pose,
+                          Twistd& body_twist, Eigen::Vector3d* axis_points) noexcept {
+  // Spatial velocity field x ↦ v_s + ω_s × x: joint i adds q̇ᵢ ωᵢ′ × (x − pᵢ′) = q̇ᵢ (pᵢ′ × ωᵢ′ + ωᵢ′ × x).
+  Posed t;
+  Eigen::Vector3d v_s = Eigen::Vector3d::Zero(), w_s = Eigen::Vector3d::Zero();
+  const int n = chain.dof();
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Eigen::Vector3d w = t.quaternion() * chain.axes[k];
+    const Eigen::Vector3d p = t * chain.points[k];
+    if (axis_points) axis_points[k] = p;
+    v_s += qd[i] * p.cross(w);
+    w_s += qd[i] * w;
+    t = t * rotation_about_line(chain.axes[k], chain.points[k], q[i]);
+  }
+  pose = t * chain.tip_at_zero;
+  // Body twist: ω_b = Rᵀ ω_s, v_b = Rᵀ (velocity of the tool origin o) = Rᵀ (v_s + ω_s × o).
+  const Eigen::Quaterniond r_inv = pose.quaternion().conjugate();
+  body_twist = Twistd(r_inv * (v_s + w_s.cross(pose.translation())), r_inv * w_s);
+}
+
+Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
+  // The same pass as chain_pose_and_twist, keeping ωᵢ′ (bottom rows) and pᵢ′ (top rows, until the
+  // tool origin o is known and they become ωᵢ′ × (o − pᵢ′)).
+  Posed t;
+  const int n = chain.dof();
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    jacobian.block<3, 1>(3, i) = t.quaternion() * chain.axes[k];
+    jacobian.block<3, 1>(0, i) = t * chain.points[k];
+    t = t * rotation_about_line(chain.axes[k], chain.points[k], q[i]);
+  }
+  const Posed pose = t * chain.tip_at_zero;
+  const Eigen::Vector3d& o = pose.translation();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d w = jacobian.block<3, 1>(3, i);
+    jacobian.block<3, 1>(0, i) = w.cross(o - jacobian.block<3, 1>(0, i));
+  }
+  return pose;
+}
+
+Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
+  const Posed pose = chain_jacobian(chain, q, jacobian);
+  const Eigen::Matrix3d r_t = pose.rotation().transpose();
+  const int n = chain.dof();
+  for (int i = 0; i < n; ++i) {
+    jacobian.block<3, 1>(0, i) = r_t * jacobian.block<3, 1>(0, i).eval();
+    jacobian.block<3, 1>(3, i) = r_t * jacobian.block<3, 1>(3, i).eval();
+  }
+  return pose;
+}
+
+Posed forward(const RevoluteChain& chain, const Eigen::VectorXd& q) {
+  if (q.size() != chain.dof())
+    throw std::invalid_argument("q: expected " + std::to_string(chain.dof()) + " joint values, got " +
+                                std::to_string(q.size()));
+  require_finite(q, "q");
+  return chain_pose(chain, q.data());
+}
+
+}  // namespace serial
+}  // namespace dispkin
