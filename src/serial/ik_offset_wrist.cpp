@@ -1,10 +1,11 @@
 // The offset-wrist search (doc/inverse-kinematics.md §7), made robust.
 //
 // Axes 4 and 5 meet in a point w off axis 6, so as q₆ turns, w moves on a circle about axis 6
-// (the patent's circle; q₆ is its parameter). For each q₆ = θ:
+// (the circle of the wrist-offset IK patent, Intrinsic, "Inverse kinematics solver for wrist-offset
+// robots"; q₆ is its parameter). For each q₆ = θ:
 //   G' = G e₆⁻¹(θ),  e₁e₂e₃ w = G' w           (positioning stage: up to 4 branches),
 //   R₄R₅ = R_rem = (R₁R₂R₃)ᵀ R_G'              (two joints for a whole rotation),
-// which is solvable iff the angle between axes 4 and 5 is kept (the patent's "fixed link
+// which is solvable iff the angle between axes 4 and 5 is kept (that patent's "fixed link
 // angle"): f_b(θ) = ω₄ · R_rem ω₅ − ω₄ · ω₅ = 0 on branch b. Each branch is continuous where it
 // exists (its subproblem labels are fixed), and two branches meet where a subproblem reaches
 // its tangency, so:

@@ -185,7 +185,7 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
     if (report.velocity_factor <= 1.0 && report.acceleration_factor <= 1.0) {
       return RetimeResult{std::move(trajectory), scaled, iteration, std::move(report)};
     }
-    // The patent's rule: velocity over FVEL, acceleration over FACC (each only when above 1).
+    // The KUKA re-timing patent's rule: velocity over FVEL, acceleration over FACC (each only when above 1).
     // The dynamic torque also grows with q̇² (centripetal and Coriolis terms), so a step may
     // fall short: hence the loop.
     if (report.velocity_factor > 1.0) scaled.velocity /= report.velocity_factor;

@@ -1,7 +1,7 @@
 // The joint graph of a URDF, read before urdfdom builds its model: a URDF whose joints form a
 // cycle is refused here. urdfdom's links own their children (shared_ptr) and point to their
 // parent weakly, so a cycle of joints is a ring of links that own each other. When urdfdom
-// refuses such a document (no root link left, fuzz finding 6) it drops its model with the ring
+// refuses such a document (no root link left) it drops its model with the ring
 // inside, and the links are never freed; the leak is in urdfdom's error path, out of our reach
 // once it has started. Reading the graph first with the XML parser urdfdom itself uses
 // (TinyXML) keeps such documents away from it.

@@ -51,7 +51,7 @@ std::mutex parse_mutex;
 
 // urdfdom (Debian 3.0) hands the text of an attribute value it cannot parse to console_bridge
 // as a printf format: a '%' there ("%n", "%s") makes urdf::parseURDF write or read memory it
-// does not own (fuzz finding 5, a crash in vfprintf). A '%' has no place in a robot description
+// does not own (a crash in vfprintf). A '%' has no place in a robot description
 // outside comments, so it is refused before urdfdom sees the text, spelled out or as a numeric
 // character reference (&#37;, &#x25;), which the XML parser turns into one.
 void require_no_percent_sign(const std::string& xml) {
@@ -96,7 +96,7 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& message
   require_no_percent_sign(xml);
   // TinyXML 2.6.2 (urdfdom's XML parser, and ours in require_acyclic_joints) steps over a UTF-8
   // lead byte by the length it announces, so a text ending inside such a sequence ("…\xe6") was
-  // read up to 3 bytes past its terminating NUL (fuzz finding 12, ASan heap-buffer-overflow).
+  // read up to 3 bytes past its terminating NUL (an ASan heap-buffer-overflow).
   // Both parsers read the text as a C string: NULs appended keep those reads inside the buffer.
   const std::string padded = xml + std::string(4, '\0');
   require_acyclic_joints(padded);

@@ -71,7 +71,7 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
 //! If plan(path, set, limits, scurve) or, for an arm, retime_by_scaling(path, set, limits, scurve,
 //! arm, q_start) keeps every joint limit 0.1 % clear at a dense check (at least 10 samples between
 //! characteristic points) and is faster, the fastest of them is returned instead (jerk_window 0):
-//! the result is never slower than the seed's scaling where that keeps the limits so.
+//! the result is never slower than the KUKA re-timing patent's scaling loop where that keeps the limits so.
 //! Throws std::invalid_argument for bad options/limits, std::runtime_error where the
 //! path has no IK solution or is singular, where the static torque reaches a limit, where a
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
