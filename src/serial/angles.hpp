@@ -1,17 +1,17 @@
-// Joint angles modulo a turn: π as a double (Eigen's EIGEN_PI, rounded once) and the reduction
-// into (−π, π] that every joint value the plugin returns goes through.
+// Joint angles modulo a turn: the reduction into (−π, π] that every joint value the plugin
+// returns goes through (π and 2π from dispkin/numbers.hpp).
 #pragma once
 
 #include <cmath>
 
-#include <Eigen/Core>
+#include "dispkin/numbers.hpp"
 
 namespace dispkin {
 namespace serial {
 namespace detail {
 
-constexpr double pi = static_cast<double>(EIGEN_PI);
-constexpr double two_pi = 2.0 * pi;
+using dispkin::pi;
+using dispkin::two_pi;
 
 //! The angle a mod 2π in (−π, π].
 inline double wrap_angle(double a) noexcept {
