@@ -73,8 +73,6 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
           "must equal the arm's dof " + std::to_string(arm.dof()));
   require_finite(q_start, "q_start");
   const JointLimits limits = arm.joint_limits();
-
-
   JointLimitReport report;
   const double duration = trajectory.duration();
   const double h = options.difference_step;

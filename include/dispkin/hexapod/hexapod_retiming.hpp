@@ -14,15 +14,16 @@
 
 namespace dispkin {
 
-//! The same for a hexapod, whose legs are its joints: q = the leg lengths (its inverse kinematics,
+//! Follows `trajectory` with the hexapod's legs as its joints: q = the leg lengths (its inverse kinematics,
 //! unique), q̇ = J_leg ξ_b, q̈ by central differences; velocity_factor against leg_speed(),
 //! position_excess against [leg_min, leg_max]. No dynamics model: the torques stay empty and
 //! acceleration_factor 0. Throws std::invalid_argument for bad options.
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
                                     const JointCheckOptions& options = {});
 
-//! The same for a hexapod: the legs are the joints (leg_speed() and options.joint_acceleration
-//! as their limits; no torques), and a leg that leaves its length range is an error naming it.
+//! retime_optimal (planning/retiming.hpp) for a hexapod: the legs are the joints (leg_speed() and
+//! options.joint_acceleration as their limits; no torques), followed from the home pose's leg
+//! lengths, and a leg that leaves its length range is an error naming it.
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
                                    const OptimalRetimeOptions& options = {});
 
