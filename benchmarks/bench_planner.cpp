@@ -1,5 +1,6 @@
 // Planning and sampling trajectories (targets: a 1000-section path planned in ≤ 100 µs,
 // sampling ≤ 50 ns per sample).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,26 @@ void plan_circ_1000_sections(benchmark::State& state) {
   state.counters["sections"] = static_cast<double>(path.size());
 }
 BENCHMARK(plan_circ_1000_sections)->Unit(benchmark::kMicrosecond);
+
+// A CAM-style polyline of 10³ points on three quarters of a circle (R = 0.2 m), planned in
+// continuous-path mode with a corner tolerance of 1e-4 R: blending every corner and planning
+// the one run.
+void plan_polyline_1000_blended(benchmark::State& state) {
+  const auto set = icosahedron_tool();
+  std::vector<Posed> points;
+  for (int k = 0; k <= 1000; ++k) {
+    const double angle = 1.5 * dispkin::pi * k / 1000;
+    points.push_back(Posed(Eigen::Quaterniond::Identity(), V(0.2 * std::cos(angle), 0.2 * std::sin(angle), 0.0)));
+  }
+  auto path = dispkin::Path::lin(points[0], points[1]);
+  for (std::size_t k = 2; k < points.size(); ++k) path.then(dispkin::Path::lin(points[k - 1], points[k]));
+  dispkin::PlanOptions options;
+  options.corner_tolerance = 2e-5;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}, dispkin::ProfileKind::scurve, options));
+  }
+}
+BENCHMARK(plan_polyline_1000_blended)->Unit(benchmark::kMillisecond);
 
 // A SPLINE through five key poses, cut into about 1000 curved sections (tolerance chosen for
 // it), icosahedron set.

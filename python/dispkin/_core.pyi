@@ -133,13 +133,35 @@ class JointPath:
 
 class Path:
     @staticmethod
-    def lin(a: Pose, b: Pose, interpolation: str = "decoupled", pivot: _ArrayLike = (0.0, 0.0, 0.0)) -> Path: ...
-    @staticmethod
-    def circ(
-        a: Pose, via: Pose, b: Pose, pivot: _ArrayLike = (0.0, 0.0, 0.0), tolerance: float = 1e-3
+    def lin(
+        a: Pose,
+        b: Pose,
+        interpolation: str = "decoupled",
+        pivot: _ArrayLike = (0.0, 0.0, 0.0),
+        *,
+        velocity: Optional[float] = None,
+        acceleration: Optional[float] = None,
     ) -> Path: ...
     @staticmethod
-    def spline(poses: Sequence[Pose], pivot: _ArrayLike = (0.0, 0.0, 0.0), tolerance: float = 1e-3) -> Path: ...
+    def circ(
+        a: Pose,
+        via: Pose,
+        b: Pose,
+        pivot: _ArrayLike = (0.0, 0.0, 0.0),
+        tolerance: float = 1e-3,
+        *,
+        velocity: Optional[float] = None,
+        acceleration: Optional[float] = None,
+    ) -> Path: ...
+    @staticmethod
+    def spline(
+        poses: Sequence[Pose],
+        pivot: _ArrayLike = (0.0, 0.0, 0.0),
+        tolerance: float = 1e-3,
+        *,
+        velocity: Optional[float] = None,
+        acceleration: Optional[float] = None,
+    ) -> Path: ...
     @staticmethod
     def ptp(q_a: _ArrayLike, q_b: _ArrayLike) -> JointPath: ...
     def then(
@@ -151,6 +173,9 @@ class Path:
         after: Optional[float] = None,
         tolerance: float = 1e-3,
     ) -> Path: ...
+    def blended(self, corner_tolerance: float, tolerance: float = 1e-3) -> Tuple[Path, List[Tuple[int, str]]]: ...
+    @property
+    def move_starts(self) -> List[int]: ...
     def sections(self) -> List[Section]: ...
     def section_lengths(self, metric_set: MetricSet, system_velocity: Optional[float] = None) -> _Array: ...
     @overload
@@ -164,13 +189,24 @@ class Path:
     def __len__(self) -> int: ...
 
 class Limits:
-    def __init__(self, velocity: float, acceleration: float, jerk: Optional[float] = None) -> None: ...
+    def __init__(
+        self,
+        velocity: float,
+        acceleration: float,
+        jerk: Optional[float] = None,
+        angular_velocity: Optional[float] = None,
+        angular_acceleration: Optional[float] = None,
+    ) -> None: ...
     @property
     def velocity(self) -> float: ...
     @property
     def acceleration(self) -> float: ...
     @property
     def jerk(self) -> Optional[float]: ...
+    @property
+    def angular_velocity(self) -> Optional[float]: ...
+    @property
+    def angular_acceleration(self) -> Optional[float]: ...
 
 class Trajectory:
     @property
@@ -183,6 +219,8 @@ class Trajectory:
     def law_count(self) -> int: ...
     def section_lengths(self) -> _Array: ...
     def rest_positions(self) -> _Array: ...
+    @property
+    def stops(self) -> List[Tuple[float, str]]: ...
     def speed_limits(self) -> _Array: ...
     def sample(self, times: _ArrayLike) -> _Array: ...
     def sample_xyzuvw(self, times: _ArrayLike) -> _Array: ...
@@ -217,6 +255,7 @@ def plan(
     profile: str = "scurve",
     *,
     joint_metric: Optional[_JointMetric] = None,
+    corner_tolerance: float = 0.0,
 ) -> Trajectory: ...
 @overload
 def plan(

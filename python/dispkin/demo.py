@@ -139,7 +139,8 @@ moves:
       to: {xyzuvw: [-0.01, 0.01, 0.005, 0, -3, 20]}
     blend: 0.004
   - lin: {to: {xyzuvw: [0, 0, 0, 0, 0, 0]}}
-limits: {velocity: 0.02, acceleration: 0.1, jerk: 2.0, profile: scurve}
+limits: {velocity: 0.02, acceleration: 0.1, jerk: 2.0, profile: scurve,
+         corner_tolerance: 0.002}            # blend every other corner within 2 mm: one continuous run
 output: {sample_period: 0.01, csv: demo.csv, json: demo.json, summary: demo_summary.txt}
 """
 

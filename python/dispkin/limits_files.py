@@ -11,10 +11,12 @@ velocity, effort and position limits and the joint accelerations for
 and ``max_rot_vel``. Pilz limits the tool centre's speed and, separately, the angular speed;
 dispkin limits the speed of every point of a set. ``PilzCartesianLimits.limits()`` gives the
 DISP limits (velocity = max_trans_vel, acceleration = the smaller of max_trans_acc and
-|max_trans_dec|), and ``add_rotation_sphere(metric_set)`` adds the sphere around the tool centre
-whose radius r = max_trans_vel / max_rot_vel makes a pure rotation at max_rot_vel move the
-sphere's points at max_trans_vel: with it in the set, ω ≤ max_rot_vel holds for every motion
-(the sphere's fastest point moves at least at |ω| r).
+|max_trans_dec|, angular_velocity = max_rot_vel: the tool's angular speed is limited exactly and
+separately, doc/planning.md §11). ``add_rotation_sphere(metric_set)`` is the alternative that
+folds the angular limit into the set: the sphere around the tool centre whose radius
+r = max_trans_vel / max_rot_vel makes a pure rotation at max_rot_vel move the sphere's points at
+max_trans_vel (its fastest point moves at least at |ω| r); it under-uses both limits on
+combined moves, so use it with ``limits(angular=False)``.
 
 Every mistake raises :class:`LimitsFileError` (a ValueError) naming the file and the key.
 """
@@ -177,11 +179,12 @@ class PilzCartesianLimits:
     max_trans_dec: float
     max_rot_vel: float
 
-    def limits(self, jerk: Optional[float] = None) -> Limits:
+    def limits(self, jerk: Optional[float] = None, angular: bool = True) -> Limits:
         """The DISP limits: velocity max_trans_vel, acceleration min(max_trans_acc, |max_trans_dec|)
-        (dispkin's laws brake as hard as they accelerate), and `jerk` for S-curves if given."""
+        (dispkin's laws brake as hard as they accelerate), `jerk` for S-curves if given, and the
+        angular velocity max_rot_vel unless `angular` is False (then add_rotation_sphere)."""
         acceleration = min(self.max_trans_acc, abs(self.max_trans_dec))
-        return Limits(self.max_trans_vel, acceleration) if jerk is None else Limits(self.max_trans_vel, acceleration, jerk)
+        return Limits(self.max_trans_vel, acceleration, jerk, angular_velocity=self.max_rot_vel if angular else None)
 
     @property
     def rotation_sphere_radius(self) -> float:

@@ -101,32 +101,41 @@ A pose path (geometry only, no time): a chain of sections. Build it with Path.li
 and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
       .def_static(
           "lin",
-          [](const Posed& a, const Posed& b, const std::string& interpolation, const py::object& pivot) {
-            return Path::lin(a, b, interpolation_from_string(interpolation), vector3(pivot, "pivot"));
+          [](const Posed& a, const Posed& b, const std::string& interpolation, const py::object& pivot,
+             std::optional<double> velocity, std::optional<double> acceleration) {
+            return Path::lin(a, b, interpolation_from_string(interpolation), vector3(pivot, "pivot"))
+                .with_limits({velocity, acceleration});
           },
           py::arg("a"), py::arg("b"), py::arg("interpolation") = "decoupled", py::arg_v("pivot", origin, "(0, 0, 0)"),
+          py::kw_only(), py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
           "A LIN move from pose a to pose b: the pivot (body coordinates, m) on a straight line, the "
-          "orientation by SLERP (\"decoupled\"), or a constant-twist \"screw\".")
+          "orientation by SLERP (\"decoupled\"), or a constant-twist \"screw\". `velocity` (m/s) and "
+          "`acceleration` (m/s^2), keywords: this move's own limits, capped by the plan's Limits.")
       .def_static(
           "circ",
-          [](const Posed& a, const Posed& via, const Posed& b, const py::object& pivot, double tolerance) {
-            return Path::circ(a, via, b, vector3(pivot, "pivot"), tolerance);
+          [](const Posed& a, const Posed& via, const Posed& b, const py::object& pivot, double tolerance,
+             std::optional<double> velocity, std::optional<double> acceleration) {
+            return Path::circ(a, via, b, vector3(pivot, "pivot"), tolerance).with_limits({velocity, acceleration});
           },
           py::arg("a"), py::arg("via"), py::arg("b"), py::arg_v("pivot", origin, "(0, 0, 0)"),
-          py::arg("tolerance") = 1e-3,
+          py::arg("tolerance") = 1e-3, py::kw_only(), py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
           "A CIRC move: the pivot on the circular arc from a through via to b, the orientation turning "
           "from a's to b's proportionally to the arc angle (via's orientation is not used). Cut into "
-          "sections whose length bound exceeds the exact speed by at most `tolerance` (relative).")
+          "sections whose length bound exceeds the exact speed by at most `tolerance` (relative). `velocity`, "
+          "`acceleration` (keywords): this move's own limits, as for lin.")
       .def_static(
           "spline",
-          [](const std::vector<Posed>& poses, const py::object& pivot, double tolerance) {
-            return Path::spline(poses, vector3(pivot, "pivot"), tolerance);
+          [](const std::vector<Posed>& poses, const py::object& pivot, double tolerance, std::optional<double> velocity,
+             std::optional<double> acceleration) {
+            return Path::spline(poses, vector3(pivot, "pivot"), tolerance).with_limits({velocity, acceleration});
           },
-          py::arg("poses"), py::arg_v("pivot", origin, "(0, 0, 0)"), py::arg("tolerance") = 1e-3,
+          py::arg("poses"), py::arg_v("pivot", origin, "(0, 0, 0)"), py::arg("tolerance") = 1e-3, py::kw_only(),
+          py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
           "A SPLINE move through the key poses (at least three): the pivot on the natural cubic spline "
           "(C2, knots spaced by pivot travel + 0.1 m per radian), the orientation a C1 curve (continuous "
           "angular velocity) through every key orientation. Passes through every key exactly. Cut into "
-          "sections whose velocity strays from its middle value by at most `tolerance` (relative).")
+          "sections whose velocity strays from its middle value by at most `tolerance` (relative). `velocity`, "
+          "`acceleration` (keywords): this move's own limits, as for lin.")
       .def_static(
           "ptp",
           [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
@@ -139,6 +148,23 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
            "smooth pose curve from the point `before` ahead of the corner to the point `after` past it, "
            "joining both neighbours without a kink (the planner does not stop there). A blend may take "
            "at most half of each neighbouring move.")
+      .def(
+          "blended",
+          [](const Path& p, double corner_tolerance, double tolerance) {
+            std::vector<CornerStop> stops;
+            Path out = p.blended(corner_tolerance, &stops, tolerance);
+            py::list corners;
+            for (const CornerStop& c : stops) corners.append(py::make_tuple(c.section, c.reason));
+            return py::make_tuple(std::move(out), corners);
+          },
+          py::arg("corner_tolerance"), py::arg("tolerance") = 1e-3,
+          "The path with every corner between two moves blended (what plan(..., corner_tolerance=d) plans): the "
+          "largest blend whose pivot stays within `corner_tolerance` (m) of the corner's two legs, at most half of "
+          "each neighbouring move. Returns (path, corners left): each corner left as (index of the section it "
+          "ends, reason).")
+      .def_property_readonly(
+          "move_starts", [](const Path& p) { return p.move_starts(); },
+          "The index of the first section of every move (lin, circ, spline), in order.")
       .def(
           "sections",
           [](const Path& p) {

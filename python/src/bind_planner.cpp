@@ -94,23 +94,35 @@ void add_sampling(py::class_<T>& cls) {
 }  // namespace
 
 void bind_planner(py::module_& m) {
-  py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only).")
-      .def(py::init([](double velocity, double acceleration, std::optional<double> jerk) {
-             Limits limits{velocity, acceleration, jerk};
+  py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
+                                  "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).")
+      .def(py::init([](double velocity, double acceleration, std::optional<double> jerk, std::optional<double> angular_velocity,
+                       std::optional<double> angular_acceleration) {
+             Limits limits{velocity, acceleration, jerk, angular_velocity, angular_acceleration};
              require_limit(velocity, "velocity");
              require_limit(acceleration, "acceleration");
              if (jerk) require_limit(*jerk, "jerk");
+             if (angular_velocity) require_limit(*angular_velocity, "angular_velocity");
+             if (angular_acceleration) require_limit(*angular_acceleration, "angular_acceleration");
              return limits;
            }),
-           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(),
+           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(), py::arg("angular_velocity") = py::none(),
+           py::arg("angular_acceleration") = py::none(),
            "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
-           "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the trapezoid (plan checks).")
+           "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the trapezoid (plan checks). "
+           "angular_velocity (rad/s) and angular_acceleration (rad/s^2), when given, limit the tool's rotation separately "
+           "(|omega| never above angular_velocity, exactly).")
       .def_readonly("velocity", &Limits::velocity, "The path velocity limit, m/s: no point of the metric set moves faster.")
       .def_readonly("acceleration", &Limits::acceleration, "The path acceleration limit, m/s^2.")
       .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")
+      .def_readonly("angular_velocity", &Limits::angular_velocity, "The tool's angular velocity limit, rad/s, or None.")
+      .def_readonly("angular_acceleration", &Limits::angular_acceleration, "The tool's angular acceleration limit, rad/s^2, or None.")
       .def("__repr__", [](const Limits& l) {
-        return "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
-               ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None")) + ")";
+        std::string out = "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
+                          ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None"));
+        if (l.angular_velocity) out += ", angular_velocity=" + float_repr(*l.angular_velocity);
+        if (l.angular_acceleration) out += ", angular_acceleration=" + float_repr(*l.angular_acceleration);
+        return out + ")";
       });
 
   py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
@@ -128,6 +140,12 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
       .def("rest_positions", [](const Trajectory& t) {
         return py::array_t<double>(static_cast<py::ssize_t>(t.rest_positions().size()), t.rest_positions().data());
       }, "Path positions s (m) where the trajectory is at rest: 0, every corner, the length.")
+      .def_property_readonly("stops", [](const Trajectory& t) {
+        py::list out;
+        for (const Stop& stop : t.stops()) out.append(py::make_tuple(stop.s, stop.reason));
+        return out;
+      }, "The corners where the trajectory comes to rest inside the path, as (path position s in m, reason) tuples; "
+         "empty when the motion is one continuous run.")
       .def("speed_limits", [](const Trajectory& t) {
         Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
         for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
@@ -167,10 +185,21 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
 
   m.def(
       "plan",
-      [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
-         const py::object& joint_metric) {
+      [](const Path& given_path, const MetricSetd& set, const Limits& limits, const std::string& profile,
+         const py::object& joint_metric, double corner_tolerance) {
         const ProfileKind kind = profile_kind(profile);
-        if (joint_metric.is_none()) return plan(path, set, limits, kind);
+        PlanOptions blending;
+        blending.corner_tolerance = corner_tolerance;
+        if (joint_metric.is_none()) {
+          py::gil_scoped_release unlocked;
+          return plan(given_path, set, limits, kind, blending);
+        }
+        require(std::isfinite(corner_tolerance) && corner_tolerance >= 0.0, "corner_tolerance", corner_tolerance,
+                "must be a finite distance >= 0 (m)");
+        // A joint metric is per section: of the blended path when corners are blended.
+        const std::optional<Path> blended =
+            corner_tolerance > 0.0 ? std::optional<Path>(given_path.blended(corner_tolerance)) : std::nullopt;
+        const Path& path = blended ? *blended : given_path;
         if (py::isinstance<Hexapod>(joint_metric)) {
           return plan(path, set, limits, kind, joint_metric.cast<const Hexapod&>().joint_metric(path, limits));
         }
@@ -187,9 +216,13 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         return plan(path, set, limits, kind, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",
-      py::kw_only(), py::arg("joint_metric") = py::none(),
+      py::kw_only(), py::arg("joint_metric") = py::none(), py::arg("corner_tolerance") = 0.0,
       "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
-      "or \"trapezoid\" law. The trajectory stops at corners of the path. `joint_metric` (keyword): an "
+      "or \"trapezoid\" law. The trajectory stops at corners of the path unless `corner_tolerance` (m, keyword) is "
+      "positive: then every corner is blended with the largest blend whose pivot stays within that distance of the "
+      "corner and that takes at most half of each neighbouring move, and the motion runs through at speed "
+      "(corners that cannot be blended stop: see Trajectory.stops). Each move runs under its own velocity and "
+      "acceleration (Path.lin(..., velocity=, acceleration=)), capped by `limits`. `joint_metric` (keyword): an "
       "object with leg_section_lengths(path, system_velocity); each section is then at least that long. For a "
       "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
       "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions.");

@@ -11,6 +11,7 @@
 // pivot tangents — at both joins the twist keeps its direction.
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include <Eigen/LU>
@@ -22,7 +23,7 @@ namespace dispkin {
 namespace {
 
 using detail::metres_per_radian;
-using detail::section_part;
+
 
 // World pivot velocity ċ = R (v_b + ω_b × p) of a body twist at `pose`.
 Eigen::Vector3d pivot_velocity(const Posed& pose, const Twistd& body, const Eigen::Vector3d& pivot) {
@@ -31,6 +32,120 @@ Eigen::Vector3d pivot_velocity(const Posed& pose, const Twistd& body, const Eige
 
 Eigen::Vector3d pivot_of(const Section& section) {
   return std::visit([](const auto& s) { return s.pivot; }, section);
+}
+
+}  // namespace
+
+namespace detail {
+
+// A blend between the end of `path` and the start of `next` (Path::then with a blend), before
+// it is built: where it leaves the path and joins `next`, and its pose curve.
+struct BlendPlan {
+  std::size_t k = 0;           // the section of `path` holding the sub-point KP₁ ...
+  double tau_in = 0.0;         // ... at this τ
+  Section incoming;            // its part up to KP₁
+  std::size_t j = 0;           // the section of `next` holding KP₂ ...
+  double tau_out = 0.0;        // ... at this τ
+  Section outgoing;            // its part from KP₂
+  Eigen::Quaterniond q0;       // orientation at KP₁
+  Cubic3 position, rotation;   // pivot c(v) and rotation vector φ(v), v ∈ [0, 1]
+  Eigen::Vector3d pivot;
+  Eigen::Vector3d corner;      // the pivot at the junction
+};
+
+}  // namespace detail
+
+namespace {
+
+// The blend of sizes `before` and `after` (geometric size) between the end of `sections`
+// (cumulative sizes `cumulative`) and the start of `next`; false if a neighbour stands still
+// at a sub-point (nothing to blend).
+bool plan_blend(const std::vector<Section>& sections, const std::vector<double>& cumulative,
+                const std::vector<Section>& next_sections, const std::vector<double>& next_cumulative, double before,
+                double after, detail::BlendPlan& plan) {
+  // Sub-point KP₁ at `before` ahead of the corner.
+  const double total = cumulative.back();
+  std::size_t k = sections.size() - 1;
+  while (k > 0 && total - cumulative[k - 1] < before) --k;
+  const double k_begin = k == 0 ? 0.0 : cumulative[k - 1];
+  // Sub-points within 10⁻⁶ of a section's end snap to it: a sliver of a section would be left
+  // otherwise, whose twist direction is lost to rounding.
+  constexpr double snap = 1e-6;
+  auto snapped = [](double tau) { return tau < snap ? 0.0 : tau > 1.0 - snap ? 1.0 : tau; };
+  plan.k = k;
+  plan.tau_in = snapped(std::clamp((total - before - k_begin) / (cumulative[k] - k_begin), 0.0, 1.0));
+  plan.incoming = detail::section_part(sections[k], 0.0, plan.tau_in);
+
+  // Sub-point KP₂ at `after` past the corner, in the first move of `next`.
+  std::size_t j = 0;
+  while (j + 1 < next_sections.size() && next_cumulative[j] < after) ++j;
+  const double j_begin = j == 0 ? 0.0 : next_cumulative[j - 1];
+  plan.j = j;
+  plan.tau_out = snapped(std::clamp((after - j_begin) / (next_cumulative[j] - j_begin), 0.0, 1.0));
+  plan.outgoing = detail::section_part(next_sections[j], plan.tau_out, 1.0);
+
+  // The joins: poses and velocities of the neighbours there (per unit of the τ of the sections
+  // holding them, so that a sub-point at a section's end still has its velocity; only their
+  // directions matter, the scale is set below).
+  const Eigen::Vector3d pivot = pivot_of(plan.incoming);
+  const Posed a = section_pose(sections[k], plan.tau_in), b = section_pose(next_sections[j], plan.tau_out);
+  const Twistd twist_a = section_twist(sections[k], plan.tau_in), twist_b = section_twist(next_sections[j], plan.tau_out);
+  const Eigen::Vector3d c_dot_a = pivot_velocity(a, twist_a, pivot), c_dot_b = pivot_velocity(b, twist_b, pivot);
+  const Eigen::Vector3d turn = quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion()));
+
+  // Tangent lengths equal to the geometric chord of the blend (the usual Hermite choice: no
+  // loops, no flat spots), the same factor for the pivot and the rotation of each end.
+  const double chord = ((b * pivot) - (a * pivot)).norm() + metres_per_radian * turn.norm();
+  const double speed_a = c_dot_a.norm() + metres_per_radian * twist_a.angular.norm();
+  const double speed_b = c_dot_b.norm() + metres_per_radian * twist_b.angular.norm();
+  if (!(speed_a > 0.0 && speed_b > 0.0 && chord > 0.0)) return false;
+  const double scale_a = chord / speed_a, scale_b = chord / speed_b;
+  plan.position = Cubic3::hermite(a * pivot, scale_a * c_dot_a, b * pivot, scale_b * c_dot_b);
+  const Eigen::Vector3d end_slope = right_jacobian(turn).partialPivLu().solve(scale_b * twist_b.angular);
+  plan.rotation = Cubic3::hermite(Eigen::Vector3d::Zero(), scale_a * twist_a.angular, turn, end_slope);
+  plan.q0 = a.quaternion();
+  plan.pivot = pivot;
+  plan.corner = section_end(sections.back()) * pivot;
+  return true;
+}
+
+// Distance from x to the segment [p, q].
+double segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+  const Eigen::Vector3d d = q - p;
+  const double size = d.squaredNorm();
+  const double t = size > 0.0 ? std::clamp((x - p).dot(d) / size, 0.0, 1.0) : 0.0;
+  return (x - (p + t * d)).norm();
+}
+
+// How far the blend's pivot strays from the corner's two legs [KP₁, corner] ∪ [corner, KP₂]
+// (the programmed path where the neighbours are straight), on a fine grid of the curve.
+double corner_deviation(const detail::BlendPlan& plan) {
+  const Eigen::Vector3d a = plan.position.value(0.0), b = plan.position.value(1.0);
+  double worst = 0.0;
+  constexpr int samples = 128;
+  for (int i = 1; i < samples; ++i) {
+    const Eigen::Vector3d x = plan.position.value(double(i) / samples);
+    worst = std::max(worst, std::min(segment_distance(x, a, plan.corner), segment_distance(x, plan.corner, b)));
+  }
+  return worst;
+}
+
+// The unit direction of a body twist in geometric size (pivot velocity and 0.1 m per radian),
+// world frame: the direction a junction test compares.
+Eigen::Matrix<double, 6, 1> geometric_direction(const Section& section, double tau) {
+  const Posed at = section_pose(section, tau);
+  const Twistd twist = section_twist(section, tau);
+  Eigen::Matrix<double, 6, 1> d;
+  d << pivot_velocity(at, twist, pivot_of(section)), metres_per_radian * (at.quaternion() * twist.angular);
+  const double size = d.norm();
+  return size > 0.0 ? Eigen::Matrix<double, 6, 1>(d / size) : Eigen::Matrix<double, 6, 1>::Zero();
+}
+
+std::string degrees(double radians) {
+  std::ostringstream out;
+  out.precision(3);
+  out << radians * 180.0 / pi << "°";
+  return out.str();
 }
 
 }  // namespace
@@ -46,50 +161,102 @@ Path& Path::then(const Path& next, double before, double after, double tolerance
   require(after <= 0.5 * next.first_move_size_ * (1.0 + 1e-12), "after", after,
           "exceeds half of the move after the via point (" + std::to_string(0.5 * next.first_move_size_) +
               " m of geometric size): shrink the blend");
-
-  // Sub-point KP₁ at `before` ahead of the corner: cut the section holding it, drop the rest.
-  const double total = cumulative_.back();
-  std::size_t k = sections_.size() - 1;
-  while (k > 0 && total - cumulative_[k - 1] < before) --k;
-  const double k_begin = k == 0 ? 0.0 : cumulative_[k - 1];
-  const double tau_in = std::clamp((total - before - k_begin) / (cumulative_[k] - k_begin), 0.0, 1.0);
-  const Section incoming = section_part(sections_[k], 0.0, tau_in);
-  sections_.resize(k);
-  cumulative_.resize(k);
-  if (tau_in > 0.0) append(incoming);
-
-  // Sub-point KP₂ at `after` past the corner, in the first move of `next`.
-  std::size_t j = 0;
-  while (j + 1 < next.sections_.size() && next.cumulative_[j] < after) ++j;
-  const double j_begin = j == 0 ? 0.0 : next.cumulative_[j - 1];
-  const double tau_out = std::clamp((after - j_begin) / (next.cumulative_[j] - j_begin), 0.0, 1.0);
-  const Section outgoing = section_part(next.sections_[j], tau_out, 1.0);
-
-  // The joins: poses and velocities of the neighbours there (per unit of their own τ; only
-  // their directions matter, the scale is set below).
-  const Eigen::Vector3d pivot = pivot_of(incoming);
-  const Posed a = section_pose(incoming, 1.0), b = section_pose(outgoing, 0.0);
-  const Twistd twist_a = section_twist(incoming, 1.0), twist_b = section_twist(outgoing, 0.0);
-  const Eigen::Vector3d c_dot_a = pivot_velocity(a, twist_a, pivot), c_dot_b = pivot_velocity(b, twist_b, pivot);
-  const Eigen::Vector3d turn = quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion()));
-
-  // Tangent lengths equal to the geometric chord of the blend (the usual Hermite choice: no
-  // loops, no flat spots), the same factor for the pivot and the rotation of each end.
-  const double chord = ((b * pivot) - (a * pivot)).norm() + metres_per_radian * turn.norm();
-  const double speed_a = c_dot_a.norm() + metres_per_radian * twist_a.angular.norm();
-  const double speed_b = c_dot_b.norm() + metres_per_radian * twist_b.angular.norm();
-  require(speed_a > 0.0 && speed_b > 0.0 && chord > 0.0, "blend", before,
+  detail::BlendPlan plan;
+  require(plan_blend(sections_, cumulative_, next.sections_, next.cumulative_, before, after, plan), "blend", before,
           "meets a neighbour where it stands still: nothing to blend");
-  const double scale_a = chord / speed_a, scale_b = chord / speed_b;
-  const Cubic3 position = Cubic3::hermite(a * pivot, scale_a * c_dot_a, b * pivot, scale_b * c_dot_b);
-  const Eigen::Vector3d end_slope = right_jacobian(turn).partialPivLu().solve(scale_b * twist_b.angular);
-  const Cubic3 rotation = Cubic3::hermite(Eigen::Vector3d::Zero(), scale_a * twist_a.angular, turn, end_slope);
-  cut_curve(a.quaternion(), position, rotation, pivot, tolerance);
-
-  if (tau_out < 1.0) append(outgoing);
-  for (std::size_t i = j + 1; i < next.sections_.size(); ++i) append(next.sections_[i]);
-  last_move_size_ = next.last_move_size_;
+  apply_blend(plan, next, tolerance);
   return *this;
+}
+
+void Path::apply_blend(const detail::BlendPlan& plan, const Path& next, double tolerance) {
+  // Cut the section holding KP₁ and drop the rest; the blend runs under the tighter limits of
+  // its two neighbours.
+  const MoveLimits incoming_limits = limits_[plan.k];
+  const MoveLimits blend_limits = MoveLimits::tighter(incoming_limits, next.limits_[plan.j]);
+  sections_.resize(plan.k);
+  cumulative_.resize(plan.k);
+  limits_.resize(plan.k);
+  if (plan.tau_in > 0.0) append(plan.incoming, incoming_limits);
+  const std::size_t blend_first = sections_.size();
+  cut_curve(plan.q0, plan.position, plan.rotation, plan.pivot, tolerance);
+  for (std::size_t i = blend_first; i < sections_.size(); ++i) limits_[i] = blend_limits;
+
+  // `next` from KP₂ on; its moves keep their first sections (shifted).
+  const std::size_t next_first = sections_.size();
+  if (plan.tau_out < 1.0) append(plan.outgoing, next.limits_[plan.j]);
+  for (std::size_t i = plan.j + 1; i < next.sections_.size(); ++i) append(next.sections_[i], next.limits_[i]);
+  const std::size_t dropped = plan.tau_out < 1.0 ? plan.j : plan.j + 1;
+  move_starts_.push_back(next_first);
+  for (std::size_t m = 1; m < next.move_starts_.size(); ++m) move_starts_.push_back(next_first + next.move_starts_[m] - dropped);
+  last_move_size_ = next.last_move_size_;
+}
+
+Path Path::blended(double corner_tolerance, std::vector<CornerStop>* stops, double tolerance) const {
+  require(std::isfinite(corner_tolerance) && corner_tolerance > 0.0, "corner_tolerance", corner_tolerance,
+          "must be a positive distance (m)");
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");
+  // A junction is a corner where the twist direction changes (doc/planning.md eq. 9); within a
+  // move none does. A reversal (the direction turns back to within 1e-6 of 180°) has no blend.
+  constexpr double direction_tolerance = 1e-6, reversal = -1.0 + 1e-6;
+  // The smallest blend worth building (m of geometric size): below it the turn is too sharp for
+  // the tolerance and the motion stops instead.
+  constexpr double smallest_blend = 1e-9;
+  std::size_t m = 0;
+  while (m + 1 < move_starts_.size() && move_starts_[m + 1] == move_starts_[m]) ++m;
+  Path result = move(m);
+  for (++m; m < move_starts_.size(); ++m) {
+    const std::size_t last = m + 1 < move_starts_.size() ? move_starts_[m + 1] : sections_.size();
+    if (last == move_starts_[m]) continue;
+    const Path next = move(m);
+    const Section& out = result.sections_.back();
+    const Section& in = next.sections_.front();
+    const Eigen::Matrix<double, 6, 1> d_out = geometric_direction(out, 1.0), d_in = geometric_direction(in, 0.0);
+    if ((d_out - d_in).norm() <= direction_tolerance && d_out != Eigen::Matrix<double, 6, 1>::Zero()) {
+      result.then(next);
+      continue;
+    }
+    auto stop = [&](const std::string& why) {
+      if (stops) stops->push_back({result.sections_.size() - 1, why});
+      result.then(next);
+    };
+    if (d_out == Eigen::Matrix<double, 6, 1>::Zero() || d_in == Eigen::Matrix<double, 6, 1>::Zero()) {
+      stop("a neighbouring move stands still at the corner: nothing to blend");
+      continue;
+    }
+    const double turn = std::acos(std::clamp(d_out.dot(d_in), -1.0, 1.0));
+    if (d_out.dot(d_in) < reversal) {
+      stop("the motion reverses (turn " + degrees(turn) + "): a reversal cannot be blended");
+      continue;
+    }
+    // The largest blend within half of each neighbour whose pivot keeps to the tolerance. The
+    // deviation grows about linearly with the blend's size (exactly so between two straight
+    // moves), so a few proportional steps find it.
+    double size = 0.5 * std::min(result.last_move_size_, next.first_move_size_);
+    detail::BlendPlan plan;
+    bool found = false, still = false;
+    for (int step = 0; step < 60 && size >= smallest_blend; ++step) {
+      if (!plan_blend(result.sections_, result.cumulative_, next.sections_, next.cumulative_, size, size, plan)) {
+        still = true;
+        break;
+      }
+      const double deviation = corner_deviation(plan);
+      if (deviation <= corner_tolerance) {
+        found = true;
+        break;
+      }
+      size *= std::min(0.98 * corner_tolerance / deviation, 0.9);
+    }
+    if (still) {
+      stop("a neighbouring move stands still where the blend would join it: nothing to blend");
+      continue;
+    }
+    if (!found) {
+      stop("corner_tolerance = " + std::to_string(corner_tolerance) + " m is too small for a turn of " + degrees(turn));
+      continue;
+    }
+    result.apply_blend(plan, next, tolerance);
+  }
+  return result;
 }
 
 }  // namespace dispkin

@@ -126,15 +126,42 @@ void Path::require_joins(const Path& next) const {
 
 Path& Path::then(const Path& next) {
   require_joins(next);
-  for (const Section& s : next.sections_) append(s);
+  const std::size_t offset = sections_.size();
+  for (std::size_t i = 0; i < next.sections_.size(); ++i) append(next.sections_[i], next.limits_[i]);
+  for (const std::size_t start : next.move_starts_) move_starts_.push_back(offset + start);
   last_move_size_ = next.last_move_size_;
   return *this;
 }
 
-void Path::append(Section section) {
+void Path::append(Section section, const MoveLimits& limits) {
   const double before = cumulative_.empty() ? 0.0 : cumulative_.back();
   cumulative_.push_back(before + geometric_size(section));
   sections_.push_back(std::move(section));
+  limits_.push_back(limits);
+}
+
+MoveLimits MoveLimits::tighter(const MoveLimits& a, const MoveLimits& b) noexcept {
+  auto least = [](const std::optional<double>& x, const std::optional<double>& y) -> std::optional<double> {
+    if (x && y) return std::min(*x, *y);
+    return x ? x : y;
+  };
+  return {least(a.velocity, b.velocity), least(a.acceleration, b.acceleration)};
+}
+
+Path& Path::with_limits(const MoveLimits& limits) {
+  if (limits.velocity) require_positive(*limits.velocity, "velocity");
+  if (limits.acceleration) require_positive(*limits.acceleration, "acceleration");
+  std::fill(limits_.begin(), limits_.end(), limits);
+  return *this;
+}
+
+Path Path::move(std::size_t m) const {
+  const std::size_t first = move_starts_[m];
+  const std::size_t last = m + 1 < move_starts_.size() ? move_starts_[m + 1] : sections_.size();
+  Path part;
+  for (std::size_t i = first; i < last; ++i) part.append(sections_[i], limits_[i]);
+  part.first_move_size_ = part.last_move_size_ = part.cumulative_.back();
+  return part;
 }
 
 std::vector<double> Path::section_lengths(const MetricSetd& set, std::optional<double> system_velocity) const {
@@ -211,8 +238,10 @@ detail::SectionBounds LinSection::bounds(const detail::GroupFactors& factors) co
   }
   for (std::size_t i = 0; i < set.groups().size(); ++i)
     acceleration = std::max(acceleration, detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
-  return {length, acceleration};
+  return {length, acceleration, motion.omega, motion.omega_dot};
 }
+
+Section section_part(const Section& section, double t0, double t1) { return detail::section_part(section, t0, t1); }
 
 detail::SectionBounds detail::section_bounds(const Section& section, GroupFactors& factors) {
   return std::visit(

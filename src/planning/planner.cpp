@@ -16,23 +16,10 @@ namespace {
 // The junction rule. The path runs through the junction of sections k and k + 1 without
 // stopping when the twist per unit of s keeps its direction (to 1e-6 rad) and changes its
 // size by at most 1 %. Then every point keeps its velocity direction and its speed steps by at
-// most 1 % of ṡ — the residue of mapping s linearly onto each section of a curve whose speed
-// varies (curved sections are cut so that this stays near their `tolerance`, 10⁻³ by
-// default). Any other junction is a corner: the path stops there (a velocity direction that
-// jumps needs an unbounded acceleration at any speed above zero).
+// most 1 % of ṡ — the residue of mapping s linearly onto sections whose speed varies. Any other
+// junction is a corner: the path stops there (a velocity direction that jumps needs an
+// unbounded acceleration at any speed above zero).
 constexpr double junction_direction_tolerance = 1e-6;
-constexpr double junction_speed_step = 1e-2;
-
-// The twists per unit of s are ξ/L on both sides; the direction of ξ/L is that of ξ.
-bool tangent_continuous(const Twistd& out_twist, double length_before, const Twistd& in_twist, double length_after) {
-  const Eigen::Matrix<double, 6, 1> out = out_twist.vector(), in = in_twist.vector();
-  const double out_size = out.norm(), in_size = in.norm();
-  if (!(out_size > 0.0) || !(in_size > 0.0) || !(length_before > 0.0) || !(length_after > 0.0)) return false;
-  const double direction_change = (out * (1.0 / out_size) - in * (1.0 / in_size)).norm();
-  const double out_speed = out_size / length_before, in_speed = in_size / length_after;
-  return direction_change <= junction_direction_tolerance &&
-         std::abs(out_speed - in_speed) <= junction_speed_step * std::max(out_speed, in_speed);
-}
 
 // Whether `after` continues the motion of `before`: the same cubic curve from the parameter
 // where `before` ends, or the same circular motion (its body twist is then a function of the
@@ -60,65 +47,135 @@ bool moving(const ArcSection& after) {
          (after.angle != 0.0 && after.normal.cross(after.start * after.pivot - after.center) != Eigen::Vector3d::Zero());
 }
 
-// The junction rule where `after` continues the motion of `before`, without evaluating a twist:
-// both sides see the motion's one twist ξ at the junction, per unit τ scaled by the sections'
-// spans h (the curve parameter per unit τ; arcs of one motion have equal spans), so per unit
-// of s ξ h_k / L_k and ξ h_k+1 / L_k+1. The directions agree; what is left is ξ ≠ 0 and a
-// step of at most 1 % in h / L. Empty when `after` does not continue `before`.
-std::optional<bool> continuing_junction(const Section& before, double length_before, const Section& after,
-                                        double length_after) {
-  double span_before = 1.0, span_after = 1.0;
-  bool is_moving = false;
+// The twist sizes per unit τ at the end of `before` and the start of `after`, when the junction
+// keeps the twist's direction (doc/planning.md eq. 9, first part): per unit of s the speeds are
+// then out/L_k and in/L_k+1. Empty at a corner (or where the motion stands still).
+struct JunctionSpeeds {
+  double out, in;
+};
+std::optional<JunctionSpeeds> direction_continuous(const Section& before, const Section& after) {
   const auto* curve_before = std::get_if<CurveSection>(&before);
   const auto* curve_after = std::get_if<CurveSection>(&after);
   const auto* arc_before = std::get_if<ArcSection>(&before);
   const auto* arc_after = std::get_if<ArcSection>(&after);
   if (curve_before && curve_after && continues(*curve_before, *curve_after)) {
-    span_before = curve_before->span();
-    span_after = curve_after->span();
-    is_moving = moving(*curve_after);
-  } else if (arc_before && arc_after && continues(*arc_before, *arc_after)) {
-    is_moving = moving(*arc_after);
-  } else {
-    return std::nullopt;
+    if (!moving(*curve_after)) return std::nullopt;
+    return JunctionSpeeds{curve_before->span(), curve_after->span()};
   }
-  if (!is_moving || !(length_before > 0.0) || !(length_after > 0.0)) return false;
-  const double out_speed = span_before / length_before, in_speed = span_after / length_after;
-  return std::abs(out_speed - in_speed) <= junction_speed_step * std::max(out_speed, in_speed);
+  if (arc_before && arc_after && continues(*arc_before, *arc_after)) {
+    if (!moving(*arc_after)) return std::nullopt;
+    return JunctionSpeeds{1.0, 1.0};
+  }
+  const Eigen::Matrix<double, 6, 1> out = section_twist(before, 1.0).vector(), in = section_twist(after, 0.0).vector();
+  const double out_size = out.norm(), in_size = in.norm();
+  if (!(out_size > 0.0) || !(in_size > 0.0)) return std::nullopt;
+  if ((out * (1.0 / out_size) - in * (1.0 / in_size)).norm() > junction_direction_tolerance) return std::nullopt;
+  return JunctionSpeeds{out_size, in_size};
 }
 
-// The junction rule for any two sections.
-bool tangent_continuous(const Section& before, double length_before, const Section& after, double length_after) {
-  if (const std::optional<bool> continuing = continuing_junction(before, length_before, after, length_after))
-    return *continuing;
-  return tangent_continuous(section_twist(before, 1.0), length_before, section_twist(after, 0.0), length_after);
+// A part of a section of the path as planned: the section (or a piece of it), which section of
+// the path it came from, its bounds and its length as planned.
+struct PlannedSection {
+  Section section;
+  SectionSource source;
+  detail::SectionBounds bounds;
+  double length;
+};
+
+// The relative variation of the fastest point's speed along a section, bounded: its speed per
+// unit τ changes at most at the rate of its acceleration (the weighted acceleration bound A·w),
+// so over the section it stays within A·w of the largest, L (doc/planning.md eq. 19); the
+// tool's angular speed likewise within |ω̇| of |ω|.
+double speed_variation(const detail::SectionBounds& b, double max_weight, double rotation_scale) {
+  double variation = b.length > 0.0 ? b.acceleration * max_weight / b.length : 0.0;
+  if (rotation_scale > 0.0 && b.omega * rotation_scale > b.length) variation = b.omega > 0.0 ? b.omega_dot / b.omega : 0.0;
+  return variation;
 }
 
-// The velocity-limit curve over sections [first, last): the path curvature rule. Along a
-// section of length L, a point whose acceleration per unit τ² is at most A (the section's
-// acceleration_bound) accelerates at ṡ² A / L² from the curvature alone; keeping that within
-// the acceleration limit a gives ṡ ≤ v_lim = L √(a / A). With s̈ ≤ a on top, no point of the
-// set accelerates faster than 2a inside a section. The limit is rounded down to a staircase of
-// 10 % steps (v, 0.9 v, 0.81 v, …) so that a smoothly varying curvature gives a few long
-// segments instead of a velocity that hunts from section to section.
-std::vector<LimitedSegment> speed_limit_segments(const std::vector<double>& accelerations, const std::vector<double>& lengths,
+// Appends `section` to `out`, cut into pieces until the fastest point's speed varies by at most
+// 0.4 % within each (doc/planning.md §9, eq. 20). A piece where that speed is lower than at the
+// section's fastest instant has a larger relative variation, so each piece is checked again and
+// cut further where needed (at most 4096 pieces per section).
+void append_cut(const Section& section, std::size_t source, detail::GroupFactors& factors, double rotation_scale,
+                double minimum, std::vector<PlannedSection>& out) {
+  // 0.4 %: the cruise keeps ≥ 99.5 % with room for the junction rule's lengthening (eq. 21).
+  constexpr double cruise_ratio_loss = 0.004;
+  constexpr double max_pieces = 4096.0;
+  // Along a screw every point keeps its speed: nothing to gain.
+  const auto* lin = std::get_if<LinSection>(&section);
+  const bool constant_speed = lin && lin->interpolation == Interpolation::screw;
+  auto pieces_needed = [&](const detail::SectionBounds& b) {
+    const double variation = constant_speed ? 0.0 : speed_variation(b, factors.max_weight(), rotation_scale);
+    return variation > cruise_ratio_loss ? std::ceil(variation / cruise_ratio_loss) : 1.0;
+  };
+  const detail::SectionBounds whole = detail::section_bounds(section, factors);
+  // A minimum length at least the section's own runs the whole section at one speed: its
+  // fastest object is not what binds.
+  const double first_cut = minimum >= whole.length ? 1.0 : std::min(max_pieces, pieces_needed(whole));
+  if (first_cut <= 1.0) {
+    out.push_back({section, {source, 0.0, 1.0}, whole, whole.length});
+    return;
+  }
+  // Pieces [t0, t1] of the section's τ, each cut again (once) where it still varies too much.
+  double budget = max_pieces;
+  auto emit = [&](double t0, double t1, const detail::SectionBounds* known) {
+    const Section piece = section_part(section, t0, t1);
+    const detail::SectionBounds b = known ? *known : detail::section_bounds(piece, factors);
+    out.push_back({piece, {source, t0, t1}, b, b.length});
+  };
+  for (double i = 0; i < first_cut; ++i) {
+    const double t0 = i / first_cut, t1 = i + 1.0 >= first_cut ? 1.0 : (i + 1.0) / first_cut;
+    const detail::SectionBounds b = detail::section_bounds(section_part(section, t0, t1), factors);
+    const double again = std::min(pieces_needed(b), std::max(1.0, budget / (first_cut - i)));
+    budget -= again;
+    if (again <= 1.0) {
+      emit(t0, t1, &b);
+      continue;
+    }
+    for (double k = 0; k < again; ++k) emit(t0 + (t1 - t0) * k / again, k + 1.0 >= again ? t1 : t0 + (t1 - t0) * (k + 1.0) / again, nullptr);
+  }
+}
+
+// The velocity-limit staircase over planned sections [first, last) (doc/planning.md §4): the path
+// curvature rule (eq. 11) with each move's own acceleration, its rotational twin for the
+// angular acceleration, each move's own velocity, rounded down to 10 % steps below v_sys; and
+// each segment's acceleration: the move's own, lowered where the angular acceleration needs.
+std::vector<LimitedSegment> speed_limit_segments(const std::vector<PlannedSection>& planned, const std::vector<MoveLimits>& moves,
                                                  std::size_t first, std::size_t last, const Limits& limits) {
   constexpr double step = 0.9;
   std::vector<LimitedSegment> segments;
   for (std::size_t k = first; k < last; ++k) {
-    const double a = accelerations[k];
+    const PlannedSection& p = planned[k];
+    const MoveLimits& move = moves[p.source.section];
+    const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
+    double v_lim = limits.velocity;
+    if (p.bounds.acceleration > 0.0) v_lim = std::min(v_lim, p.length * std::sqrt(a / p.bounds.acceleration));
+    if (limits.angular_acceleration && p.bounds.omega_dot > 0.0)
+      v_lim = std::min(v_lim, p.length * std::sqrt(*limits.angular_acceleration / p.bounds.omega_dot));
     double level = limits.velocity;
-    if (a > 0.0) {
-      const double v_lim = lengths[k] * std::sqrt(limits.acceleration / a);
-      if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
+    if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
+    if (move.velocity) level = std::min(level, *move.velocity);
+    // The angular acceleration from s̈, |ω_τ| |s̈| / L ≤ α_max, caps the section's path
+    // acceleration (doc/planning.md eq. 24).
+    double own_acceleration = move.acceleration ? a : 0.0;
+    if (limits.angular_acceleration && p.bounds.omega > 0.0) {
+      const double angular_cap = *limits.angular_acceleration * p.length / p.bounds.omega;
+      if (angular_cap < a) own_acceleration = angular_cap;
     }
-    if (!segments.empty() && segments.back().limit == level) {
-      segments.back().length += lengths[k];
+    if (!segments.empty() && segments.back().limit == level && segments.back().acceleration == own_acceleration) {
+      segments.back().length += p.length;
     } else {
-      segments.push_back({lengths[k], level});
+      segments.push_back({p.length, level, own_acceleration});
     }
   }
   return segments;
+}
+
+std::string corner_reason(const std::vector<CornerStop>& corner_stops, std::size_t section, double corner_tolerance) {
+  for (const CornerStop& c : corner_stops)
+    if (c.section == section) return c.reason;
+  if (corner_tolerance > 0.0) return "the twist direction changes inside a move";
+  return "corner: the twist direction changes (corner_tolerance = 0 keeps the exact stop)";
 }
 
 }  // namespace
@@ -133,49 +190,104 @@ void Limits::validate(ProfileKind kind) const {
   } else if (jerk) {
     throw std::invalid_argument(describe("jerk", *jerk, "is not used by the trapezoidal profile; leave it unset"));
   }
+  if (angular_velocity) require_limit(*angular_velocity, "angular_velocity");
+  if (angular_acceleration) require_limit(*angular_acceleration, "angular_acceleration");
 }
 
 Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile) {
   return plan(path, set, limits, profile, PlanOptions{});
 }
 
-Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                 const PlanOptions& options) {
   limits.validate(profile);
   set.require_well_formed();
+  const std::vector<double>& minimum = options.min_section_lengths;
+  require(std::isfinite(options.corner_tolerance) && options.corner_tolerance >= 0.0, "corner_tolerance",
+          options.corner_tolerance, "must be a finite distance ≥ 0 (m)");
+  require(options.corner_tolerance == 0.0 || minimum.empty(), "corner_tolerance", options.corner_tolerance,
+          "cannot be combined with min_section_lengths (given per section of the unblended path): plan "
+          "Path::blended(corner_tolerance) with the minimum lengths of its sections instead");
+  // Continuous-path mode: the corners blended first (doc/planning.md §10).
+  std::vector<CornerStop> corner_stops;
+  std::optional<Path> blended;
+  if (options.corner_tolerance > 0.0) blended.emplace(given_path.blended(options.corner_tolerance, &corner_stops));
+  const Path& path = blended ? *blended : given_path;
   const std::vector<Section>& sections = path.sections();
   const std::size_t n = sections.size();
-  const std::vector<double>& minimum = options.min_section_lengths;
-  require(minimum.empty() || minimum.size() == n, "min_section_lengths size", static_cast<unsigned long>(minimum.size()),
-          "must be 0 or the path's section count " + std::to_string(n));
+  if (!(minimum.empty() || minimum.size() == n)) {
+    require(false, "min_section_lengths size", static_cast<unsigned long>(minimum.size()),
+            "must be 0 or the path's section count " + std::to_string(n));
+  }
   for (std::size_t k = 0; k < minimum.size(); ++k) {
-    require(std::isfinite(minimum[k]) && minimum[k] >= 0.0, "min_section_lengths[" + std::to_string(k) + "]",
-            minimum[k], "must be finite and not negative");
+    if (!(std::isfinite(minimum[k]) && minimum[k] >= 0.0))
+      require(false, "min_section_lengths[" + std::to_string(k) + "]", minimum[k], "must be finite and not negative");
   }
   // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
   // under its own limit. Lengths and acceleration bounds come from one evaluation per section
-  // (the same as Path::section_lengths and section_acceleration_bound give).
+  // (the same as Path::section_lengths and section_acceleration_bound give); sections whose
+  // fastest point's speed varies are cut into pieces.
   detail::GroupFactors factors(set, limits.velocity);
-  std::vector<double> lengths(n), accelerations(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const detail::SectionBounds bounds = detail::section_bounds(sections[k], factors);
-    lengths[k] = bounds.length;
-    accelerations[k] = bounds.acceleration;
+  const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
+  std::vector<PlannedSection> planned;
+  planned.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], planned);
+  const std::vector<MoveLimits>& moves = path.section_limits();
+  for (PlannedSection& p : planned) {
+    // The rotational limit as one more term of the length (doc/planning.md eq. 23):
+    // |ω| = |ω_τ| ṡ / L ≤ ω_max.
+    if (limits.angular_velocity) p.length = std::max(p.length, p.bounds.omega * rotation_scale);
   }
   // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
-  // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening.
-  for (std::size_t k = 0; k < minimum.size(); ++k) lengths[k] = std::max(lengths[k], minimum[k]);
-  SampledPath sampled(sections, lengths);
+  // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening (doc/planning.md eq. 6). A piece
+  // of a section spans a share h of its τ and takes that share of its minimum.
+  if (!minimum.empty()) {
+    for (PlannedSection& p : planned) {
+      const double share = p.source.tau_end - p.source.tau_start;
+      p.length = std::max(p.length, share * minimum[p.source.section]);
+    }
+  }
+
+  // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
+  // steps by less than 1 % there (eq. 9): lengthening the faster side, forward then backward,
+  // brings every such junction within 0.5 % (doc/planning.md eq. 21).
+  const std::size_t count = planned.size();
+  std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);
+  for (std::size_t k = 0; k + 1 < count; ++k) junctions[k] = direction_continuous(planned[k].section, planned[k + 1].section);
+  constexpr double step_ratio = 0.995;
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    if (!junctions[k]) continue;
+    const double out = junctions[k]->out / planned[k].length;
+    planned[k + 1].length = std::max(planned[k + 1].length, junctions[k]->in * step_ratio / out);
+  }
+  for (std::size_t k = count - 1; k-- > 0;) {
+    if (!junctions[k]) continue;
+    const double in = junctions[k]->in / planned[k + 1].length;
+    planned[k].length = std::max(planned[k].length, junctions[k]->out * step_ratio / in);
+  }
+  std::vector<Section> planned_sections;
+  std::vector<double> lengths;
+  std::vector<SectionSource> sources;
+  planned_sections.reserve(count);
+  lengths.reserve(count);
+  sources.reserve(count);
+  for (const PlannedSection& p : planned) {
+    planned_sections.push_back(p.section);
+    lengths.push_back(p.length);
+    sources.push_back(p.source);
+  }
+  SampledPath sampled(planned_sections, lengths);
 
   // Rest-to-rest runs between corners; within a run the velocity-limit curve.
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
   TimeLaw law;
   std::vector<SpeedLimit> speed_limits;
   std::vector<double> rests{0.0};
+  std::vector<Stop> stops;
   std::size_t first = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k + 1 < n && tangent_continuous(sections[k], lengths[k], sections[k + 1], lengths[k + 1])) continue;
-    const std::vector<LimitedSegment> segments = speed_limit_segments(accelerations, lengths, first, k + 1, limits);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + 1 < count && junctions[k]) continue;
+    const std::vector<LimitedSegment> segments = speed_limit_segments(planned, moves, first, k + 1, limits);
     double start_s = sampled.section_start(first);
     double span_s = start_s;
     for (const LimitedSegment& segment : segments) {
@@ -187,10 +299,13 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
       start_s += piece.distance();
     }
     law.end_run();
-    rests.push_back(k + 1 == n ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1));
+    const double rest = k + 1 == count ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1);
+    rests.push_back(rest);
+    if (k + 1 < count) stops.push_back({rest, corner_reason(corner_stops, planned[k].source.section, options.corner_tolerance)});
     first = k + 1;
   }
-  return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests));
+  return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
+                    std::move(sources));
 }
 
 }  // namespace dispkin

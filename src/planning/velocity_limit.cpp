@@ -38,9 +38,20 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   require_positive(a_max, "a_max");
   if (j_max) require_positive(*j_max, "j_max");
   for (std::size_t i = 0; i < segments.size(); ++i) {
-    require_positive(segments[i].length, "segments[" + std::to_string(i) + "].length");
-    require_positive(segments[i].limit, "segments[" + std::to_string(i) + "].limit");
+    // The message is only formatted when a value is refused.
+    if (!(segments[i].length > 0.0 && std::isfinite(segments[i].length)))
+      require_positive(segments[i].length, "segments[" + std::to_string(i) + "].length");
+    if (!(segments[i].limit > 0.0 && std::isfinite(segments[i].limit)))
+      require_positive(segments[i].limit, "segments[" + std::to_string(i) + "].limit");
+    if (!(segments[i].acceleration >= 0.0 && std::isfinite(segments[i].acceleration)))
+      require(false, "segments[" + std::to_string(i) + "].acceleration", segments[i].acceleration,
+              "must be finite and not negative");
   }
+  // Each segment's own acceleration limit.
+  auto accel = [&](std::size_t i) {
+    const double own = segments[i].acceleration;
+    return own > 0.0 ? std::min(own, a_max) : a_max;
+  };
   require(std::isfinite(v_start) && v_start >= 0.0 && v_start <= segments.front().limit, "v_start", v_start,
           "must be in [0, limit of the first segment]");
   require(std::isfinite(v_end) && v_end >= 0.0 && v_end <= segments.back().limit, "v_end", v_end,
@@ -52,8 +63,8 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   u[0] = v_start;
   u[n] = v_end;
   for (std::size_t i = 1; i < n; ++i) u[i] = std::min(segments[i - 1].limit, segments[i].limit);
-  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], reachable(u[i + 1], u[i], segments[i].length, a_max, j_max));
-  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], reachable(u[i], u[i + 1], segments[i].length, a_max, j_max));
+  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], reachable(u[i + 1], u[i], segments[i].length, accel(i), j_max));
+  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], reachable(u[i], u[i + 1], segments[i].length, accel(i), j_max));
   if (std::abs(u[0] - v_start) > 1e-12 * std::max(1.0, v_start) || std::abs(u[n] - v_end) > 1e-12 * std::max(1.0, v_end)) {
     throw std::invalid_argument(describe("v_end", v_end, "cannot be reached from v_start = " + std::to_string(v_start) +
                                                              " within the segments' length"));
@@ -63,8 +74,8 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   laws.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const LimitedSegment& g = segments[i];
-    laws.push_back(j_max ? Profile::scurve(g.length, g.limit, a_max, *j_max, u[i], u[i + 1])
-                         : Profile::trapezoid(g.length, g.limit, a_max, u[i], u[i + 1]));
+    laws.push_back(j_max ? Profile::scurve(g.length, g.limit, accel(i), *j_max, u[i], u[i + 1])
+                         : Profile::trapezoid(g.length, g.limit, accel(i), u[i], u[i + 1]));
   }
   return laws;
 }

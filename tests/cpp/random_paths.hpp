@@ -61,6 +61,26 @@ inline Path random_path(Random& rnd, int family, const V& offset = V::Zero()) {
   }
 }
 
+// A random list of 4–8 poses joined by decoupled LINs about a random pivot, and a corner
+// tolerance of 1–30 % of its shortest move's pivot travel: a CAM-style path for continuous-path
+// mode (PlanOptions::corner_tolerance).
+struct PoseListPath {
+  Path path;
+  double corner_tolerance;
+};
+inline PoseListPath random_pose_list_path(Random& rnd) {
+  const V pivot = rnd.vector(0.1);
+  std::vector<Posed> poses{rnd.pose(0.5)};
+  for (int k = rnd.integer(3, 7); k > 0; --k) poses.push_back(rnd.nearby(poses.back(), 0.3, 1.0));
+  Path path = Path::lin(poses[0], poses[1], Interpolation::decoupled, pivot);
+  double shortest = ((poses[1] * pivot) - (poses[0] * pivot)).norm();
+  for (std::size_t k = 2; k < poses.size(); ++k) {
+    path.then(Path::lin(poses[k - 1], poses[k], Interpolation::decoupled, pivot));
+    shortest = std::min(shortest, ((poses[k] * pivot) - (poses[k - 1] * pivot)).norm());
+  }
+  return {path, rnd.uniform(0.01, 0.3) * std::max(shortest, 1e-3)};
+}
+
 // A random well-formed set with, sometimes, a second group held to a lower limit.
 inline MetricSetd random_set(Random& rnd, double v_sys) {
   MetricSetd set;

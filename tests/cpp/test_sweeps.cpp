@@ -56,6 +56,29 @@ void guarantee_sweep(int family, unsigned long salt) {
   record("guarantee_family_" + std::to_string(family), n, worst);
 }
 
+// The guarantee along pose lists planned in continuous-path mode (corners blended within a
+// tolerance, doc/planning.md §10): as guarantee_sweep, and the end pose reached.
+TEST(Sweep, GuaranteeBlendedPoseList) {
+  Random rnd(9106);
+  const int n = sweep_count();
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const testing::PoseListPath list = testing::random_pose_list_path(rnd);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    const Limits limits = testing::random_limits(rnd, v, kind);
+    PlanOptions options;
+    options.corner_tolerance = list.corner_tolerance;
+    const Trajectory traj = plan(list.path, set, limits, kind, options);
+    const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
+    worst = std::max(worst, ratio);
+    ASSERT_LE(ratio, 1.0 + 1e-6) << "blended pose list, case " << i;
+    ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(list.path.end(), 1e-9)) << "blended pose list, case " << i;
+  }
+  record("guarantee_blended_pose_list", n, worst);
+}
+
 TEST(Sweep, GuaranteeDecoupledLin) { guarantee_sweep(0, 9100); }
 TEST(Sweep, GuaranteeScrewLin) { guarantee_sweep(1, 9101); }
 TEST(Sweep, GuaranteeCirc) { guarantee_sweep(2, 9102); }

@@ -90,7 +90,8 @@ def test_pilz_limits_and_the_rotation_sphere():
     pilz = read_pilz_cartesian_limits(PILZ)
     assert (pilz.max_trans_vel, pilz.max_trans_acc, pilz.max_trans_dec, pilz.max_rot_vel) == (1.0, 2.25, -5.0, 1.57)
     limits = pilz.limits()
-    assert limits.velocity == 1.0 and limits.acceleration == 2.25
+    assert limits.velocity == 1.0 and limits.acceleration == 2.25 and limits.angular_velocity == 1.57
+    assert pilz.limits(angular=False).angular_velocity is None
     assert pilz.rotation_sphere_radius == pytest.approx(1.0 / 1.57)
     # A pure turn of the tool: with the sphere in the set, the angular speed stays <= max_rot_vel.
     tool = dispkin.MetricSet()
@@ -98,12 +99,28 @@ def test_pilz_limits_and_the_rotation_sphere():
     pilz.add_rotation_sphere(tool)
     start = dispkin.Pose.from_xyzuvw([0.4, 0.1, 0.3, 0, 0, 0])
     path = dispkin.Path.lin(start, start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0.0, 0.0, 2.5]))
-    traj = dispkin.plan(path, tool, pilz.limits(jerk=20.0))
+    traj = dispkin.plan(path, tool, pilz.limits(jerk=20.0, angular=False))
     poses = traj.sample(np.linspace(0, traj.duration, 2001))
     angles = [np.arccos(np.clip((np.trace(np.linalg.inv(a[:3, :3]) @ b[:3, :3]) - 1) / 2, -1, 1))
               for a, b in zip(poses[:-1], poses[1:])]
     omega = np.array(angles) / (traj.duration / 2000)
     assert omega.max() <= pilz.max_rot_vel * (1 + 1e-3) and omega.max() > 0.99 * pilz.max_rot_vel
+
+
+def test_pilz_angular_limit_binds_on_a_combined_move():
+    # The rotational limit itself: on a move that turns and translates, the angular speed never
+    # exceeds max_rot_vel and one of the two limits runs at its value in the cruise.
+    pilz = read_pilz_cartesian_limits(PILZ)
+    tool = dispkin.MetricSet()
+    tool.add_relative([0.0, 0.0, 0.0])
+    start = dispkin.Pose.from_xyzuvw([0.4, 0.1, 0.3, 0, 0, 0])
+    path = dispkin.Path.lin(start, start * dispkin.Pose.from_xyzuvw([1.0, 0, 0, 0.0, 0.0, 150.0]))
+    traj = dispkin.plan(path, tool, pilz.limits(jerk=20.0))
+    twist = traj.body_twist(np.linspace(0, traj.duration, 4001))
+    omega = np.linalg.norm(twist[:, 3:], axis=1)
+    speed = np.linalg.norm(twist[:, :3], axis=1)
+    assert omega.max() <= pilz.max_rot_vel * (1 + 1e-9) and speed.max() <= pilz.max_trans_vel * (1 + 1e-9)
+    assert max(omega.max() / pilz.max_rot_vel, speed.max() / pilz.max_trans_vel) >= 0.995
 
 
 @pytest.mark.parametrize("text, message", [

@@ -230,7 +230,8 @@ inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& fa
     length = std::max(length, factors.weight(i) * (speed + 0.5 * rate));
     acceleration = std::max(acceleration, rate);
   }
-  return {length, acceleration};
+  // |ω| = |J_r(φ) φ′| ≤ |φ′| (the right Jacobian's singular values are at most 1).
+  return {length, acceleration, motion.omega, motion.omega_dot};
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {

@@ -126,9 +126,12 @@ class GroupFactors {
 };
 
 //! A section's length (weighted, see CurveSection::length) and acceleration bound
-//! (unweighted, see CurveSection::acceleration_bound), from one evaluation.
+//! (unweighted, see CurveSection::acceleration_bound), from one evaluation, with bounds of the
+//! tool's angular velocity |ω| and its rate |ω̇| per unit τ (the rotational limit's terms,
+//! doc/planning.md §11).
 struct SectionBounds {
   double length, acceleration;
+  double omega = 0.0, omega_dot = 0.0;
 };
 
 inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -24,6 +25,10 @@
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
+
+namespace detail {
+struct BlendPlan;
+}  // namespace detail
 
 //! A straight section: the decoupled LIN (pivot on a line, SLERP about one axis) or a screw.
 struct LinSection {
@@ -140,7 +145,7 @@ struct ArcSection {
       acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
     }
     const double deviation = 2.0 * std::abs(angle) * radius * factors.sine(std::abs(angle) / 4.0);  // deviation_bound(radius)
-    return {length + (1.0 + std::abs(rotation_angle)) * deviation * factors.max_weight(), acceleration};
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation * factors.max_weight(), acceleration, motion.omega, 0.0};
   }
 
  private:
@@ -189,6 +194,10 @@ inline double section_acceleration_bound(const Section& section, const MetricSet
   return std::visit([&](const auto& s) { return s.acceleration_bound(set); }, section);
 }
 
+//! The part τ ∈ [t0, t1] of a section, as a section of the same kind run over its own τ (the
+//! same motion between the same poses).
+Section section_part(const Section& section, double t0, double t1);
+
 namespace detail {
 //! Length and acceleration bound of any section from `factors` (whose pivot it sets).
 SectionBounds section_bounds(const Section& section, GroupFactors& factors);
@@ -206,6 +215,26 @@ struct CircleThroughPoints {
 //! Throws std::invalid_argument if two points coincide or the three are collinear (relative
 //! tolerance 1e-9 of the triangle's sides).
 CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via, const Eigen::Vector3d& end);
+
+//! The speed and acceleration of one move (robot programs' per-motion $VEL/$ACC, G-code F):
+//! each optional, and capped by the plan's Limits. The velocity bounds ṡ, i.e. the speed of
+//! the fastest point of the metric set (groups: scaled like the system velocity).
+struct MoveLimits {
+  std::optional<double> velocity;      //!< m/s, > 0
+  std::optional<double> acceleration;  //!< m/s², > 0
+
+  //! The tighter of two limits, field by field (a blend between two moves keeps both).
+  static MoveLimits tighter(const MoveLimits& a, const MoveLimits& b) noexcept;
+  bool operator==(const MoveLimits& other) const noexcept {
+    return velocity == other.velocity && acceleration == other.acceleration;
+  }
+};
+
+//! A junction where corner blending (Path::blended) leaves the path with a corner, and why.
+struct CornerStop {
+  std::size_t section;  //!< the corner lies at the end of this section of the blended path
+  std::string reason;
+};
 
 //! A path: a chain of sections, each starting where the previous one ends.
 class Path {
@@ -247,7 +276,27 @@ class Path {
   Path& then(const Path& next, double before, double after, double tolerance = 1e-3);
   Path& then(const Path& next, double blend) { return then(next, blend, blend); }
 
+  //! Gives every move of this path the speed and acceleration `limits` (see MoveLimits; a
+  //! path built by lin/circ/spline is one move). then() keeps each move's limits; a blend
+  //! between two moves runs under the tighter of both. Throws std::invalid_argument naming
+  //! the field when a value is not finite and positive.
+  Path& with_limits(const MoveLimits& limits);
+
+  //! The path with every corner between two moves blended, continuous-path mode (as
+  //! LinuxCNC's G64 P, KUKA's C_DIS; doc/planning.md §10): each junction whose twist direction
+  //! changes gets the largest blend (then(next, ℓ, ℓ)) whose pivot stays within
+  //! `corner_tolerance` (m) of the corner's two legs and that takes at most half of each
+  //! neighbouring move. Junctions that cannot be blended — a reversal, a neighbour that stands
+  //! still, a tolerance too small for the turn — stay corners and are listed in `stops` (if
+  //! given) with the reason. Throws std::invalid_argument unless corner_tolerance is finite and
+  //! positive.
+  Path blended(double corner_tolerance, std::vector<CornerStop>* stops = nullptr, double tolerance = 1e-3) const;
+
   const std::vector<Section>& sections() const noexcept { return sections_; }
+  //! The move limits of every section (parallel to sections()).
+  const std::vector<MoveLimits>& section_limits() const noexcept { return limits_; }
+  //! The index of the first section of every move, in order (starts with 0).
+  const std::vector<std::size_t>& move_starts() const noexcept { return move_starts_; }
   std::size_t size() const noexcept { return sections_.size(); }
   Posed start() const noexcept { return section_start(sections_.front()); }
   Posed end() const noexcept { return section_end(sections_.back()); }
@@ -261,7 +310,11 @@ class Path {
 
  private:
   Path() = default;
-  void append(Section section);
+  void append(Section section, const MoveLimits& limits = {});
+  //! Builds a blend planned by Path::then / Path::blended (blend.cpp).
+  void apply_blend(const detail::BlendPlan& plan, const Path& next, double tolerance);
+  //! The sections [move_starts_[m], move_starts_[m + 1]) as a path of one move.
+  Path move(std::size_t m) const;
   //! Throws unless `next` starts where this path ends (to 1e-9 m and 1e-9 rad).
   void require_joins(const Path& next) const;
   //! Append the cubic pose curve R₀ exp(φ(v)), c(v), v ∈ [0, 1], cut into equal-v sections so
@@ -276,6 +329,8 @@ class Path {
   // most half of a move, so that two blends on one move never overlap).
   double first_move_size_ = 0.0, last_move_size_ = 0.0;
   std::vector<double> cumulative_;  // geometric size up to the end of each section
+  std::vector<MoveLimits> limits_;  // per section
+  std::vector<std::size_t> move_starts_{0};
 };
 
 //! A PTP move: the straight line between two joint vectors (joint space, no pose yet; the

@@ -6,11 +6,13 @@
 //! section k is traversed at τ = (s − s_k)/L_k: every point of every group then moves at most
 //! at ṡ · (its weight)⁻¹ ≤ its limit, at every instant (not only at samples).
 //!
-//! Rule at corners (this version): where the path's direction changes between two sections (their
-//! twists per unit of s differ), the trajectory comes to rest — the "lower speed at direction
-//! reversals" of the DISP patent JP7742490B2 in its simplest safe form (doc/planning.md §3).
-//! Tangent-continuous junctions (the sections of one CIRC, collinear LINs) are passed at speed
-//! within one time law.
+//! Rule at corners: where the path's direction changes between two sections (their twists per
+//! unit of s differ), the trajectory comes to rest — the "lower speed at direction reversals"
+//! of the DISP patent JP7742490B2 in its simplest safe form (doc/planning.md §3) — unless
+//! PlanOptions::corner_tolerance blends the corner. Tangent-continuous junctions (the sections
+//! of one CIRC, collinear LINs, blends) are passed at speed within one time law. Sections whose
+//! fastest point's speed varies are cut so that a cruise runs within 0.5 % of the limit
+//! (doc/planning.md §9); each move runs under its own MoveLimits.
 #pragma once
 
 #include <optional>
@@ -25,11 +27,19 @@
 namespace dispkin {
 
 //! System limits in the DISP metric: velocity (m/s), acceleration (m/s²), jerk (m/s³, for the
-//! S-curve). Each must be finite and positive.
+//! S-curve), and optionally the tool's angular velocity (rad/s) and angular acceleration
+//! (rad/s²) — the separate rotational limit of robot controllers ($VEL.ORI1, Pilz's
+//! max_rot_vel). Each given value must be finite and positive.
 struct Limits {
   double velocity = 0.0;       //!< v_sys (m/s): no point of the set faster (groups: their own limit)
   double acceleration = 0.0;   //!< |s̈| ≤ this (m/s²); the curvature rule lowers the speed where the path bends
   std::optional<double> jerk;  //!< |s⃛| ≤ this (m/s³), S-curve only
+  //! |ω| ≤ this (rad/s), exactly: one more term θ·v_sys/ω_max of each section's length
+  //! (doc/planning.md eq. 23).
+  std::optional<double> angular_velocity{};
+  //! |ω̇| ≤ this (rad/s²) from the path acceleration, and again from the curvature rule on
+  //! curved sections (doc/planning.md eq. 24).
+  std::optional<double> angular_acceleration{};
 
   //! Throws std::invalid_argument naming the limit; the jerk is required for the S-curve
   //! and refused for the trapezoid (it would be silently ignored).
@@ -43,6 +53,13 @@ struct PlanOptions {
   //! hexapod's leg speeds, Hexapod::joint_metric) enter the plan this way. Lengthening a
   //! section only slows it down, so the DISP guarantee of the set still holds.
   std::vector<double> min_section_lengths;
+
+  //! Continuous-path mode (doc/planning.md §10): 0 (the default) stops at every corner; a
+  //! positive distance (m) plans Path::blended(corner_tolerance) instead, so that every corner
+  //! the blends can round is passed at speed. Corners left (reversals, turns too sharp for
+  //! the tolerance) stop and are listed by Trajectory::stops(). Not combined with
+  //! min_section_lengths (those are per section of the path as given).
+  double corner_tolerance = 0.0;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest

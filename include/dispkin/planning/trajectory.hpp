@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -29,6 +30,20 @@ struct SpeedLimit {
   double start_s, length, limit;
 };
 
+//! A place inside the path where the trajectory comes to rest, and why.
+struct Stop {
+  double s;            //!< path position (m of DISP arc length)
+  std::string reason;  //!< e.g. "the motion reverses ..."
+};
+
+//! Where a section of a trajectory comes from: the part τ ∈ [tau_start, tau_end] of section
+//! `section` of the path as planned (the blended path in continuous-path mode). The planner
+//! cuts sections whose fastest point's speed varies (doc/planning.md §9).
+struct SectionSource {
+  std::size_t section = 0;
+  double tau_start = 0.0, tau_end = 1.0;
+};
+
 //! A planned trajectory. A control loop samples consecutive cycles fastest with a Cursor
 //! (sample(t, cursor)).
 class Trajectory {
@@ -36,11 +51,21 @@ class Trajectory {
   Trajectory() = default;
   //! `path` run through by `law`, planned under the velocity-limit curve `speed_limits` with rests
   //! at `rest_positions` (0, every corner, path.length()).
-  Trajectory(SampledPath path, TimeLaw law, std::vector<SpeedLimit> speed_limits, std::vector<double> rest_positions)
-      : path_(std::move(path)), law_(std::move(law)), speed_limits_(std::move(speed_limits)), rest_s_(std::move(rest_positions)) {}
+  //! `stops`: why it rests at each inner rest position.
+  //! `sources`: where each section comes from (empty: the path's own sections, one to one).
+  Trajectory(SampledPath path, TimeLaw law, std::vector<SpeedLimit> speed_limits, std::vector<double> rest_positions,
+             std::vector<Stop> stops = {}, std::vector<SectionSource> sources = {})
+      : path_(std::move(path)),
+        law_(std::move(law)),
+        speed_limits_(std::move(speed_limits)),
+        rest_s_(std::move(rest_positions)),
+        stops_(std::move(stops)),
+        sources_(std::move(sources)) {}
 
   //! The same path, velocity-limit curve and rests under another time law (re-timing).
-  Trajectory with_time_law(TimeLaw law) const { return Trajectory(path_, std::move(law), speed_limits_, rest_s_); }
+  Trajectory with_time_law(TimeLaw law) const {
+    return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_);
+  }
 
   const SampledPath& path() const noexcept { return path_; }
   const TimeLaw& time_law() const noexcept { return law_; }
@@ -65,6 +90,10 @@ class Trajectory {
   const std::vector<SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
   //! The path positions s where the trajectory is at rest: 0, every corner, length().
   const std::vector<double>& rest_positions() const noexcept { return rest_s_; }
+  //! The inner rests (rest_positions() without 0 and length()) with the reason of each.
+  const std::vector<Stop>& stops() const noexcept { return stops_; }
+  //! Where each section comes from in the path as planned (empty when one to one).
+  const std::vector<SectionSource>& section_sources() const noexcept { return sources_; }
 
   //! The pose at path position s (clamped to [0, length()]) and its body twist per unit of s
   //! (the body twist at ṡ = 1 m/s).
@@ -93,6 +122,8 @@ class Trajectory {
   TimeLaw law_;
   std::vector<SpeedLimit> speed_limits_;
   std::vector<double> rest_s_;
+  std::vector<Stop> stops_;
+  std::vector<SectionSource> sources_;
 };
 
 }  // namespace dispkin

@@ -20,10 +20,12 @@
 
 namespace dispkin {
 
-//! One piece of a piecewise-constant velocity limit: `length` of path at speed ≤ `limit`.
+//! One piece of a piecewise-constant velocity limit: `length` of path at speed ≤ `limit`, and
+//! acceleration ≤ `acceleration` when positive (a move's own limit; 0: the law's a_max).
 struct LimitedSegment {
-  double length;  //!< > 0
-  double limit;   //!< > 0
+  double length;             //!< > 0
+  double limit;              //!< > 0
+  double acceleration = 0.0; //!< ≥ 0; min(acceleration, a_max) when positive
 };
 
 //! The least distance a law needs to go from velocity u to w (both ≥ 0) under a (and j, if
@@ -31,7 +33,8 @@ struct LimitedSegment {
 double velocity_change_distance(double u, double w, double a, std::optional<double> j) noexcept;
 
 //! The time-optimal chain of laws over `segments` (see the file comment), from v_start to
-//! v_end (each at most the limit of its segment). Returns one Profile per segment, in order;
+//! v_end (each at most the limit of its segment); segment i accelerates at most at its own
+//! acceleration (when given) and a_max. Returns one Profile per segment, in order;
 //! their velocities join continuously. Throws std::invalid_argument for bad input (naming it)
 //! or if v_end cannot be reached (too little distance to slow down or speed up).
 std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,

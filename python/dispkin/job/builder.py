@@ -14,6 +14,7 @@ serial arm the joints at each part's start are the inverse-kinematics branch fol
 """
 
 import dataclasses
+import functools
 import json
 import math
 import pathlib
@@ -286,6 +287,10 @@ class _Builder:
             if blend is not None and i == 0:
                 raise self.fail(at + ("blend",), f"{blend}: the first move has no previous move to blend with")
             if "ptp" in move:
+                for key in ("velocity", "acceleration"):
+                    if key in move:
+                        raise self.fail(at + (key,), f"{move[key]}: a PTP move runs under the joint limits and `limits`; "
+                                                     "a move's own speed is for lin, circ and spline moves")
                 self.ptp_move(job, moves, at, blend)
             else:
                 self.cartesian_move(job, moves, at, move, blend)
@@ -313,6 +318,10 @@ class _Builder:
         kind = "lin" if "lin" in move else "circ" if "circ" in move else "spline"
         section = {"lin": self.lin, "circ": self.circ, "spline": self.spline}[kind]
         constructor, arguments, end = section(job, at, moves.current)
+        # The move's own speed and acceleration (keywords of Path.lin / circ / spline).
+        own = {key: move[key] for key in ("velocity", "acceleration") if key in move}
+        if own:
+            constructor = functools.partial(constructor, **own)
         path = self.call(at + (kind,), constructor, *arguments)
         moves.built.append(Move(kind, path, blend))
         moves.run.append(_RunMove(at[1], path, constructor, arguments))
@@ -409,12 +418,19 @@ class _Builder:
     # Limits and output -------------------------------------------------------------------------
 
     def limits(self) -> Tuple[Limits, str]:
-        """limits: (the path's velocity, acceleration and jerk limits, the profile)."""
+        """limits: (the path's velocity, acceleration and jerk limits, with the tool's angular
+        limits when given, the profile)."""
         lim = self.data["limits"]
         profile = lim.get("profile", "scurve")
         if profile == "scurve" and "jerk" not in lim:
             raise self.fail(("limits",), "missing key `jerk`: the scurve profile (the default) needs a jerk limit; give one or set profile: trapezoid")
-        return self.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk")), profile
+        # Angular limits are given in degrees (per second, per second squared), like the poses.
+        angular = {key: math.radians(lim[key]) for key in ("angular_velocity", "angular_acceleration") if key in lim}
+        return self.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular), profile
+
+    def corner_tolerance(self) -> float:
+        """limits.corner_tolerance (m, default 0: every corner stops)."""
+        return float(self.data["limits"].get("corner_tolerance", 0.0))
 
     def output(self, job: Dict[str, Any], name: str) -> None:
         """output: the sample period and the file names (default: from the job's name)."""
@@ -444,6 +460,7 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     start = builder.start(job)
     path_, moves, parts = builder.moves(job, start)
     limits, profile = builder.limits()
+    job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
                profile=profile, parts=parts, **job)

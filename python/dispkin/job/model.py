@@ -103,6 +103,8 @@ class Job:
     outputs: Dict[str, str] = dataclasses.field(default_factory=dict)
     #: The job in stretches planned as one: Cartesian runs and PTP moves, in order.
     parts: List[Part] = dataclasses.field(default_factory=list)
+    #: limits.corner_tolerance (m): corners blended within it (0: every corner stops).
+    corner_tolerance: float = 0.0
 
     @property
     def has_ptp(self) -> bool:

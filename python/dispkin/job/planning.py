@@ -77,15 +77,17 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     hexapod as joint metric when the job asks for rule (b). A job with PTP moves is planned
     part by part (a JobTrajectory): each Cartesian run as one path, each PTP move on the arm."""
     joint_metric = job.hexapod if job.joint_metric else None
+    blending = {"corner_tolerance": job.corner_tolerance}
     try:
         if not job.has_ptp:
-            return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)
+            return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric, **blending)
         planned = []
         for part in job.parts:
             if part.kind == "ptp":
                 planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)))
             else:
-                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric)))
+                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric,
+                                           **blending)))
         return JobTrajectory(planned)
     except (ValueError, RuntimeError) as error:
         raise JobError(f"{job.file}: planning failed: {error}") from error

@@ -42,7 +42,12 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
         "length": float(trajectory.length),
         "rest_to_rest_pieces": int(trajectory.piece_count),
         "profile": job.profile,
-        "limits": {"velocity": v, "acceleration": job.limits.acceleration, "jerk": job.limits.jerk},
+        "limits": {"velocity": v, "acceleration": job.limits.acceleration, "jerk": job.limits.jerk,
+                   "angular_velocity": job.limits.angular_velocity,
+                   "angular_acceleration": job.limits.angular_acceleration,
+                   "corner_tolerance": job.corner_tolerance},
+        # Where a Cartesian run comes to rest inside the path, and why (corners not blended).
+        "stops": [{"s": float(s), "reason": reason} for s, reason in getattr(trajectory, "stops", [])],
         "sample_period": float(job.sample_period),
         "samples": int(len(samples.time)),
         "peak_path_velocity": float(np.max(samples.path_velocity)),
@@ -105,6 +110,16 @@ def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any
             "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)}
 
 
+def _angular_text(lim: Dict[str, Any]) -> str:
+    """The angular limits in the summary's units (deg/s, deg/s²), when given."""
+    text = ""
+    if lim["angular_velocity"] is not None:
+        text += f", ω = {math.degrees(lim['angular_velocity']):g} °/s"
+    if lim["angular_acceleration"] is not None:
+        text += f", ω̇ = {math.degrees(lim['angular_acceleration']):g} °/s²"
+    return text
+
+
 def summary_text(summary: Dict[str, Any]) -> str:
     """The summary as lines of text (what `dispkin plan` prints)."""
     s = summary
@@ -113,7 +128,8 @@ def summary_text(summary: Dict[str, Any]) -> str:
     lines = [
         f"job {s['job']}: {len(s['moves'])} move(s) ({', '.join(s['moves'])}), machine: {s['machine']}",
         f"  duration {s['duration']:.4f} s, {s['rest_to_rest_pieces']} rest-to-rest piece(s), path length {s['length']:.6f} m",
-        f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}, profile {s['profile']}",
+        f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}{_angular_text(lim)}, "
+        f"profile {s['profile']}, corner tolerance {lim['corner_tolerance']:g} m",
         f"  peak path velocity {s['peak_path_velocity']:.6f} m/s ({s['samples']} samples, every {s['sample_period']:g} s)",
     ]
     for group, g in s["groups"].items():
@@ -128,5 +144,7 @@ def summary_text(summary: Dict[str, Any]) -> str:
         j = s["joints"]
         lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {j['acceleration_factor']:.4f} "
                      f"(<= 1 is within the URDF limits); within limits: {j['within_limits']}")
+    for stop in s["stops"]:
+        lines.append(f"  stops at s = {stop['s']:.6f} m: {stop['reason']}")
     lines.append(f"  binding limit: {s['binding']}")
     return "\n".join(lines) + "\n"
