@@ -28,10 +28,15 @@ def test_changelog_newest_entry_names_the_version():
 
 
 def test_package_xml_is_a_ros2_cmake_package_of_this_version():
-    """package.xml (colcon, ROS 2): format 3, the CMake build type, this version, and a key for
-    every library CMakeLists.txt looks for."""
+    """package.xml (colcon, ROS 2): valid for catkin_pkg (the parser colcon-ros uses), format 3,
+    the CMake build type, this version, and a key for every library CMakeLists.txt looks for."""
     import xml.etree.ElementTree as ET
 
+    from catkin_pkg.package import parse_package
+
+    parsed = parse_package(str(ROOT / "package.xml"))  # raises InvalidPackage on a malformed file
+    parsed.validate()
+    assert parsed.package_format == 3 and parsed.get_build_type() == "cmake"
     package = ET.parse(ROOT / "package.xml").getroot()
     assert package.tag == "package" and package.get("format") == "3"
     assert package.findtext("name") == "dispkin"
