@@ -2,7 +2,7 @@
 # The repaired wheel as a newcomer with only Python gets it: installed with pip into a fresh
 # venv, then, in a mount namespace where the system's copies of the libraries it bundles
 # (Qhull, urdfdom, console_bridge, TinyXML, Orocos KDL) are hidden under empty files, the
-# README's Python snippets run from an empty directory, and `dispkin plan` plans an example job.
+# Python snippets of the README and the user guide run from an empty directory, and `dispkin plan` plans an example job.
 #   tests/wheel/run_wheel_test.sh WHEEL_DIR WORK_DIR
 # Needs root (or CAP_SYS_ADMIN) for `unshare -m`; fails if it cannot hide the libraries.
 set -euo pipefail
@@ -45,7 +45,7 @@ done
 : >"$work/empty"
 
 cp "$here/run_snippets.py" "$work/run_snippets.py"
-cp "$root/README.md" "$work/README.md"
+cp "$root/README.md" "$root/doc/user-guide.md" "$work/"
 cp "$root/examples/jobs/hexapod_scan.yaml" "$work/hexapod_scan.yaml"
 export WHEEL_TEST_HIDDEN="${hidden[*]}" WHEEL_TEST_WORK="$work"
 unshare -m --propagation private bash -euo pipefail -c '
@@ -57,7 +57,7 @@ unshare -m --propagation private bash -euo pipefail -c '
   fi
   echo "wheel test: hid ${WHEEL_TEST_HIDDEN}"
   cd "$WHEEL_TEST_WORK/run"
-  "$WHEEL_TEST_WORK/venv/bin/python" -I "$WHEEL_TEST_WORK/run_snippets.py" "$WHEEL_TEST_WORK/README.md"
+  "$WHEEL_TEST_WORK/venv/bin/python" -I "$WHEEL_TEST_WORK/run_snippets.py" "$WHEEL_TEST_WORK/README.md" "$WHEEL_TEST_WORK/user-guide.md"
   "$WHEEL_TEST_WORK/venv/bin/python" -I -c "import dispkin, sys; assert hasattr(dispkin, \"SerialArm\"), \"no serial plugin\"; arm = dispkin.SerialArm.from_urdf(dispkin.data.path(\"ur5e.urdf\"), \"base_link\", \"tool0\"); print(\"wheel test: UR5e\", arm.dof, \"joints,\", len(arm.inverse(arm.forward([0.3, -1.2, 1.5, -0.4, 1.1, 0.2]))), \"IK solutions\")"
   "$WHEEL_TEST_WORK/venv/bin/dispkin" plan "$WHEEL_TEST_WORK/hexapod_scan.yaml" -o "$WHEEL_TEST_WORK/run/out" >"$WHEEL_TEST_WORK/plan.log"
   echo "wheel test: dispkin plan wrote $(ls "$WHEEL_TEST_WORK/run/out" | tr "\n" " ")"
