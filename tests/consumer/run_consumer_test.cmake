@@ -1,7 +1,8 @@
 # The find_package(dispkin) and pkg-config promises, checked end to end on an installed package.
 #   VARIANT=static (default): installs the build tree DISPKIN_BUILD_DIR into a scratch prefix;
 #     builds the consumer and the README's C++ quick start against the whole package, a consumer
-#     that asks only for COMPONENTS core hexapod, and checks that a missing component is named.
+#     that asks only for COMPONENTS core hexapod and one with `pkg-config --static`, and checks
+#     that a missing component is named.
 #   VARIANT=shared: configures and builds dispkin's libraries from DISPKIN_SOURCE_DIR with
 #     BUILD_SHARED_LIBS=ON (unoptimised: this checks packaging, not speed; the build directory
 #     SHARED_BUILD_DIR is kept between runs), installs them, moves the prefix elsewhere, checks
@@ -50,6 +51,21 @@ function(build_consumer name prefix)
   message(STATUS "${name}: ${out}")
 endfunction()
 
+# A Makefile user: the compiler and linker flags from pkg-config (with ARGN, e.g. --static),
+# nothing else.
+function(build_pkgconfig_consumer libdir)
+  find_program(PKG_CONFIG pkg-config REQUIRED)
+  set(ENV{PKG_CONFIG_PATH} ${libdir}/pkgconfig)
+  run(WHAT "pkg-config" COMMAND ${PKG_CONFIG} ${ARGN} --cflags --libs dispkin)
+  string(STRIP "${out}" flags)
+  separate_arguments(flags UNIX_COMMAND "${flags}")
+  find_program(CXX NAMES c++ g++ clang++ REQUIRED)
+  run(WHAT "compiling the consumer with pkg-config's flags" COMMAND ${CXX} -std=c++17 ${CONSUMER_SOURCE_DIR}/main.cpp
+      ${flags} -Wl,-rpath,${libdir} -o ${WORK_DIR}/consumer_pkgconfig)
+  run(WHAT "the pkg-config consumer" COMMAND ${WORK_DIR}/consumer_pkgconfig)
+  message(STATUS "pkg-config ${ARGN}: ${out}")
+endfunction()
+
 if(VARIANT STREQUAL "static")
   # The README's C++ quick start, wrapped in main(), is built as a second consumer program.
   file(READ ${DISPKIN_SOURCE_DIR}/README.md readme)
@@ -73,6 +89,9 @@ if(VARIANT STREQUAL "static")
   build_consumer(whole ${prefix} -DREADME_QUICKSTART=${WORK_DIR}/readme/readme_quickstart.cpp)
   run(WHAT "the README quick start" COMMAND ${WORK_DIR}/whole/readme_quickstart)
   build_consumer(components ${prefix} -DDISPKIN_COMPONENTS=core,hexapod)
+  file(GLOB libdirs LIST_DIRECTORIES true ${prefix}/lib*)
+  list(GET libdirs 0 libdir)
+  build_pkgconfig_consumer(${libdir} --static)
 
   # A component that does not exist is named in the error (configure only).
   execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/missing
@@ -112,17 +131,7 @@ elseif(VARIANT STREQUAL "shared")
   endforeach()
   build_consumer(shared ${prefix} -DDISPKIN_COMPONENTS=core,hexapod,serial -DDISPKIN_EXPECT_UMBRELLA=ON)
 
-  # A Makefile user: the compiler and linker flags from pkg-config, nothing else.
-  find_program(PKG_CONFIG pkg-config REQUIRED)
-  set(ENV{PKG_CONFIG_PATH} ${libdir}/pkgconfig)
-  run(WHAT "pkg-config" COMMAND ${PKG_CONFIG} --cflags --libs dispkin)
-  string(STRIP "${out}" flags)
-  separate_arguments(flags UNIX_COMMAND "${flags}")
-  find_program(CXX NAMES c++ g++ clang++ REQUIRED)
-  run(WHAT "compiling the consumer with pkg-config's flags" COMMAND ${CXX} -std=c++17 ${CONSUMER_SOURCE_DIR}/main.cpp
-      ${flags} -Wl,-rpath,${libdir} -o ${WORK_DIR}/consumer_pkgconfig)
-  run(WHAT "the pkg-config consumer" COMMAND ${WORK_DIR}/consumer_pkgconfig)
-  message(STATUS "pkg-config: ${out}")
+  build_pkgconfig_consumer(${libdir})
 elseif(VARIANT STREQUAL "missing_dependency")
   # Configuring dispkin where a dependency cannot be found stops with the Debian package to
   # install (configure only: stops at the first missing package).
