@@ -14,7 +14,7 @@
 int main() {
   using dispkin::Posed;
   const auto arm = dispkin::serial::SerialArm::from_urdf_file(
-      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
+      std::string(DISPKIN_SOURCE_DIR) + "/python/dispkin/data/ur5e.urdf", "base_link", "tool0");
   Eigen::VectorXd q_start(6);
   q_start << 0.0, -1.9, 1.9, -1.57, -1.57, 0.0;
   const Posed start = arm.forward(q_start);

@@ -1,6 +1,6 @@
 """04 — a LIN move of a UR5e in Cartesian space, and the joint path that drives it.
 
-The UR5e (tests/data/urdf/arm_ur5e_dh.urdf, written from its DH table) carries a 150 mm tool
+The UR5e shipped with the package (dispkin.data.path("ur5e.urdf"), written from its DH table) carries a 150 mm tool
 along its flange axis. The move: 200 mm along base x, 100 mm along y and 100 mm down while the tool turns 30°
 about its own axis, planned so that no point of the tool (its tip and a 40 mm ball around the
 flange) exceeds 0.25 m/s. Each sampled pose is solved by the analytic IK (`three_parallel`
@@ -9,14 +9,12 @@ family, all solutions) and the solution nearest to the previous one is kept (`fo
 """
 
 import math
-import pathlib
 
 import numpy as np
 
 import dispkin
 
-urdf = pathlib.Path(__file__).resolve().parents[1] / "tests" / "data" / "urdf" / "arm_ur5e_dh.urdf"
-arm = dispkin.SerialArm.from_urdf(str(urdf), "base_link", "tool0")
+arm = dispkin.SerialArm.from_urdf(dispkin.data.path("ur5e.urdf"), "base_link", "tool0")
 q_start = np.array([0.0, -1.9, 1.9, -1.57, -1.57, 0.0])
 start = arm.forward(q_start)
 goal = dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])

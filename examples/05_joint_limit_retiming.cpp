@@ -15,7 +15,7 @@ int main() {
   using dispkin::Posed;
   using V = Eigen::Vector3d;
   const auto arm = dispkin::serial::SerialArm::from_urdf_file(
-      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
+      std::string(DISPKIN_SOURCE_DIR) + "/python/dispkin/data/ur5e.urdf", "base_link", "tool0");
   Eigen::VectorXd q_start(6);
   q_start << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
   const Posed start = arm.forward(q_start);

@@ -2,7 +2,7 @@
 
 The move (a LIN of 350 mm with a 30° turn of the tool) is planned at 3 m/s and 400 m/s² for
 the tool points: the UR5e's joints cannot follow (joint speeds of 3.14 rad/s and torques of
-150 / 28 N·m, from tests/data/urdf/arm_ur5e_dh.urdf). Two re-timings keep every joint limit:
+150 / 28 N·m, from dispkin.data.path("ur5e.urdf")). Two re-timings keep every joint limit:
 - "scaling", the loop of the KUKA re-timing patent ("The robot drives through a preset working
   track"): lower the whole move's speed and acceleration until the largest joint velocity and
   dynamic torque fit (FVEL, FACC ≤ 1);
@@ -13,14 +13,11 @@ The plot (05_joint_limit_retiming.png) shows joint speeds and torques against th
 (The C++ twin is 05_joint_limit_retiming.cpp.)
 """
 
-import pathlib
-
 import numpy as np
 
 import dispkin
 
-urdf = pathlib.Path(__file__).resolve().parents[1] / "tests" / "data" / "urdf" / "arm_ur5e_dh.urdf"
-arm = dispkin.SerialArm.from_urdf(str(urdf), "base_link", "tool0")
+arm = dispkin.SerialArm.from_urdf(dispkin.data.path("ur5e.urdf"), "base_link", "tool0")
 q_start = np.array([0.3, -1.2, 1.5, -1.9, -1.57, 0.2])
 start = arm.forward(q_start)
 turned = dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, np.radians(30)]) * start

@@ -33,7 +33,7 @@ from ._core import (
     velocity_limited_law,
     xyzuvw_for_new_pivot,
 )
-from . import shapes
+from . import data, shapes
 
 # The serial-arm plugin (URDF via urdfdom into Orocos KDL) is there when the build has it
 # (CMake option DISPKIN_BUILD_SERIAL, on by default).
@@ -60,6 +60,7 @@ __all__ = [
     "Profile",
     "__version__",
     "convex_hull_vertices",
+    "data",
     "disp_distance",
     "interpolate",
     "plan",

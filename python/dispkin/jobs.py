@@ -7,7 +7,7 @@ the trajectory into joint values (hexapod legs, serial-arm joints) and poses (a
 :class:`JobSamples`); :mod:`dispkin.cli` writes these as CSV, JSON and a summary.
 
 Every mistake in a job raises :class:`JobError` (a ValueError) whose message starts with
-``FILE:LINE:COLUMN: key.path[index]: `` — the offending key, and where it is in the file.
+``FILE:LINE:COLUMN: key.path[index]:`` — the offending key, and where it is in the file.
 
 The names live in the modules of :mod:`dispkin.job` (reader, schema, model, builder, planning,
 sampling, summary, export); this module gathers them in one place.

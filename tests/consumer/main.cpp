@@ -1,5 +1,6 @@
-// Uses the header-only core, a compiled part (Qhull-backed hull reduction) and, when built,
-// the serial-arm plugin of the installed dispkin; prints the section length of a turn of a 1 m icosahedron.
+// Uses the header-only core, compiled parts of the core (Qhull-backed hull reduction) and of the
+// hexapod plugin (inverse kinematics, JSON) and, when built and linked, the serial-arm plugin of
+// the installed dispkin; prints the section length of a turn of a 1 m icosahedron.
 #include <cmath>
 #include <iostream>
 
@@ -11,6 +12,11 @@ int main() {
   const dispkin::Posed a;
   const dispkin::Posed b = dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0, 0, 0, 0.5).finished());
   const double length = dispkin::section_length(set, a, b, dispkin::Interpolation::screw);
+  // The hexapod plugin: legs of the home pose, and its JSON description read back.
+  const auto hexapod = dispkin::Hexapod::symmetric(0.2, 0.1, 0.1, 0.1, 0.2, 0.15, 0.35, 0.01);
+  const auto again = dispkin::Hexapod::from_json(hexapod.to_json());
+  const auto legs = again.inverse(dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0.2, 0, 0, 0).finished()));
+  if (legs.size() != 1 || legs[0].size() != 6 || !(legs[0].minCoeff() > 0.15 && legs[0].maxCoeff() < 0.35)) return 2;
 #if defined(DISPKIN_HAS_SERIAL)
   // The serial-arm plugin (urdfdom and KDL linked privately into dispkin::serial): a one-joint
   // arm from URDF text, so that the installed package's link dependencies are exercised.

@@ -298,8 +298,8 @@ def test_sample_times_end_exactly_at_the_duration():
     assert jobs.sample_times(1.1, 0.25)[-1] == 1.1 and len(jobs.sample_times(1.1, 0.25)) == 6
 
 
-def test_readme_minimal_job_runs_as_documented(tmp_path, capsys, monkeypatch):
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+def test_user_guide_minimal_job_runs_as_documented(tmp_path, capsys, monkeypatch):
+    readme = (ROOT / "doc" / "user-guide.md").read_text(encoding="utf-8")
     block = re.search(r"```yaml\n(.*?)```", readme, flags=re.S).group(1)
     (tmp_path / "lin.yaml").write_text(block)
     monkeypatch.chdir(tmp_path)
@@ -307,7 +307,7 @@ def test_readme_minimal_job_runs_as_documented(tmp_path, capsys, monkeypatch):
     assert cli.main(["plan", "lin.yaml", "-o", "out", "--plot"]) == 0
     for name in ("lin.csv", "lin.json", "lin.summary.txt", "lin.png"):
         assert (tmp_path / "out" / name).stat().st_size > 0
-    # The error quoted in the README is the one the code gives.
+    # The error quoted in the user guide is the one the code gives.
     quoted = re.search(r"`lin\.yaml:11:3: (limits\.velocty: unknown key \(allowed here: [^)]*\))`", readme.replace("\n", " "))
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(BAD / "bad_unknown_key.yaml")
