@@ -24,6 +24,8 @@ import numpy as np
 
 from .. import _core, shapes
 from .._core import Hexapod, Limits, MetricSet, Path, Pose, WorkToolFrames
+from ..limits_files import PilzCartesianLimits
+from .machine_limits import job_limits, read_limits_files, read_retime
 from .model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, value_at
 from .reader import Source
 from .schema import validate
@@ -408,13 +410,14 @@ class _Builder:
 
     # Limits and output -------------------------------------------------------------------------
 
-    def limits(self) -> Tuple[Limits, str]:
-        """limits: (the path's velocity, acceleration and jerk limits, the profile)."""
+    def limits(self, pilz: Optional[PilzCartesianLimits]) -> Tuple[Limits, str]:
+        """limits: (the path's velocity, acceleration and jerk limits, the profile); velocity and
+        acceleration come from a Pilz limits file when the job has one."""
         lim = self.data["limits"]
         profile = lim.get("profile", "scurve")
         if profile == "scurve" and "jerk" not in lim:
             raise self.fail(("limits",), "missing key `jerk`: the scurve profile (the default) needs a jerk limit; give one or set profile: trapezoid")
-        return self.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk")), profile
+        return job_limits(self, pilz), profile
 
     def output(self, job: Dict[str, Any], name: str) -> None:
         """output: the sample period and the file names (default: from the job's name)."""
@@ -441,9 +444,11 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     builder.machine(job)
     builder.frames(job)
     metric_set = builder.metric_set(job)
+    pilz = read_limits_files(builder, job, metric_set)  # before the moves: they keep the arm's limits
     start = builder.start(job)
     path_, moves, parts = builder.moves(job, start)
-    limits, profile = builder.limits()
+    limits, profile = builder.limits(pilz)
+    read_retime(builder, job)
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
                profile=profile, parts=parts, **job)
