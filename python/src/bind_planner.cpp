@@ -10,6 +10,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "path_state.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/planning/overlap.hpp"
@@ -21,21 +23,33 @@ namespace python {
 namespace {
 
 
-// Times as a (N,) array (a number is one time); each must be finite.
-std::vector<double> times_of(const py::object& times) {
-  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
-  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
-  std::vector<double> out(a.data(), a.data() + a.size());
-  for (double t : out) require_finite(t, "times");
-  return out;
+Limits make_limits(double velocity, double acceleration, std::optional<double> jerk) {
+  Limits limits{velocity, acceleration, jerk};
+  require_limit(velocity, "velocity");
+  require_limit(acceleration, "acceleration");
+  if (jerk) require_limit(*jerk, "jerk");
+  return limits;
 }
 
-// Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
+bool limits_close(const Limits& a, const Limits& b, double rel_tol, double abs_tol) {
+  require_tolerances(rel_tol, abs_tol);
+  if (a.jerk.has_value() != b.jerk.has_value()) return false;
+  return isclose(a.velocity, b.velocity, rel_tol, abs_tol) && isclose(a.acceleration, b.acceleration, rel_tol, abs_tol) &&
+         (!a.jerk || isclose(*a.jerk, *b.jerk, rel_tol, abs_tol));
+}
+
+// Samples the trajectory at `times` (a number or (N,), each finite) and writes `columns` numbers
+// per sample with `write`: an (N, *shape_tail) array, or for a number one sample, shaped
+// shape_tail (a float when that is empty), as numpy does for a scalar.
 template <typename Sampled, typename Write>
-py::array_t<double> sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail,
-                            py::ssize_t columns, Write write) {
-  const std::vector<double> t = times_of(times);
-  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
+py::object sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail, py::ssize_t columns,
+                   Write write) {
+  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
+  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
+  const std::vector<double> t(a.data(), a.data() + a.size());
+  for (double x : t) require_finite(x, "times");
+  std::vector<py::ssize_t> shape;
+  if (a.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(t.size()));
   shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
   py::array_t<double> out(shape);
   double* data = out.mutable_data();
@@ -46,7 +60,8 @@ py::array_t<double> sampled(const Sampled& traj, const py::object& times, std::v
   } else {
     for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
   }
-  return out;
+  if (shape.empty()) return py::float_(*data);
+  return std::move(out);
 }
 
 // The sampling methods shared by Trajectory and OverlappedTrajectory.
@@ -60,7 +75,7 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
             });
           },
-          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices.")
+          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.")
       .def(
           "sample_xyzuvw",
           [](const T& traj, const py::object& times) {
@@ -68,7 +83,7 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
             });
           },
-          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians).")
+          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians); (6,) for a number.")
       .def(
           "body_twist",
           [](const T& traj, const py::object& times) {
@@ -76,38 +91,52 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
             });
           },
-          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s.")
+          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s; (6,) for a number.")
       .def(
           "path_position",
           [](const T& traj, const py::object& times) {
             return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
           },
-          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
+          py::arg("times"), "s at `times`, (N,), metres of DISP arc length; a float for a number.")
       .def(
           "path_velocity",
           [](const T& traj, const py::object& times) {
             return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
           },
-          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.");
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set; a float for a number.")
+      .def(
+          "path_acceleration",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_ddot; });
+          },
+          py::arg("times"), "s-double-dot at `times`, (N,), m/s^2; a float for a number.");
 }
 
 }  // namespace
 
 void bind_planner(py::module_& m) {
   py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only).")
-      .def(py::init([](double velocity, double acceleration, std::optional<double> jerk) {
-             Limits limits{velocity, acceleration, jerk};
-             require_limit(velocity, "velocity");
-             require_limit(acceleration, "acceleration");
-             if (jerk) require_limit(*jerk, "jerk");
-             return limits;
-           }),
+      .def(py::init(&make_limits),
            py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(),
            "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
            "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the trapezoid (plan checks).")
       .def_readonly("velocity", &Limits::velocity, "The path velocity limit, m/s: no point of the metric set moves faster.")
       .def_readonly("acceleration", &Limits::acceleration, "The path acceleration limit, m/s^2.")
       .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")
+      .def(
+          "__eq__",
+          [](const Limits& a, const Limits& b) {
+            return a.velocity == b.velocity && a.acceleration == b.acceleration && a.jerk == b.jerk;
+          },
+          py::is_operator(), "The same velocity, acceleration and jerk (both None or equal).")
+      .def("__hash__", [](const Limits& l) { return py::hash(py::make_tuple(l.velocity, l.acceleration, l.jerk)); })
+      .def("isclose", &limits_close, py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
+           "math.isclose for velocity, acceleration and jerk (a jerk of None only matches None).")
+      .def(py::pickle([](const Limits& l) { return py::make_tuple(l.velocity, l.acceleration, l.jerk); },
+                      [](const py::tuple& state) {
+                        const py::tuple s = state_tuple(state, 3, "Limits");
+                        return make_limits(s[0].cast<double>(), s[1].cast<double>(), s[2].cast<std::optional<double>>());
+                      }))
       .def("__repr__", [](const Limits& l) {
         return "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
                ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None")) + ")";
@@ -137,6 +166,7 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
         return out;
       }, "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
          "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
+      .def(py::pickle(&trajectory_state, &trajectory_from_state))
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });

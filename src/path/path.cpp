@@ -112,6 +112,24 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
   return path;
 }
 
+Path Path::from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size) {
+  require(!sections.empty(), "sections", 0L, "must hold at least one section");
+  require(std::isfinite(first_move_size) && first_move_size > 0.0, "first_move_size", first_move_size, "must be finite and > 0");
+  require(std::isfinite(last_move_size) && last_move_size > 0.0, "last_move_size", last_move_size, "must be finite and > 0");
+  Path path;
+  for (const Section& section : sections) {
+    if (!path.sections_.empty()) {
+      Path next;
+      next.sections_.push_back(section);
+      path.require_joins(next);
+    }
+    path.append(section);
+  }
+  path.first_move_size_ = first_move_size;
+  path.last_move_size_ = last_move_size;
+  return path;
+}
+
 void Path::require_joins(const Path& next) const {
   const Posed here = end();
   const Posed there = next.start();

@@ -247,8 +247,19 @@ class Path {
   Path& then(const Path& next, double before, double after, double tolerance = 1e-3);
   Path& then(const Path& next, double blend) { return then(next, blend, blend); }
 
+  //! The path of `sections` (as sections() gives them) whose first and last moves had the
+  //! geometric sizes given (what a later blend may take from them): a path made again from
+  //! what storing it kept (a pickle), bit for bit. Throws std::invalid_argument if there is no
+  //! section, a size is not finite and positive, or a section does not start where the one
+  //! before it ends (to 1e-9 m and 1e-9 rad).
+  static Path from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size);
+
   const std::vector<Section>& sections() const noexcept { return sections_; }
   std::size_t size() const noexcept { return sections_.size(); }
+  //! Geometric sizes (pivot travel + 0.1 m per radian) of the first and the last move before
+  //! any blend: a blend may take at most half of each.
+  double first_move_size() const noexcept { return first_move_size_; }
+  double last_move_size() const noexcept { return last_move_size_; }
   Posed start() const noexcept { return section_start(sections_.front()); }
   Posed end() const noexcept { return section_end(sections_.back()); }
 

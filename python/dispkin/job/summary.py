@@ -60,21 +60,24 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
         source = summary["joints"]["limits_from"] = job.joint_limits_from
         ratios[f"joint velocity ({source})"] = summary["joints"]["velocity_factor"]
         ratios[f"joint effort ({source})"] = summary["joints"]["acceleration_factor"]
-    summary["violations"] = [v.as_dict() for v in violations]
+    summary["violations"] = [broken.as_dict() for broken in violations]
     summary["within_machine_limits"] = not violations
     name, ratio = max(ratios.items(), key=lambda item: item[1])
     summary["highest_ratio"] = {"limit": name, "ratio": ratio}
-    # A limit the trajectory goes beyond does not bind it: it is broken.
-    kept = {k: r for k, r in ratios.items() if r <= 1.0 + TOLERANCE}
-    broken = sorted(k for k in ratios if k not in kept)
-    if violations or broken:
-        what = ", ".join(broken + [f"{v.kind} of {v.joint}" for v in violations])
-        summary["binding"] = f"none: the trajectory breaks limits ({what})"
-    else:
-        name, ratio = max(kept.items(), key=lambda item: item[1])
-        summary["binding"] = name if ratio >= BINDING_FRACTION else (
-            "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)")
+    summary["binding"] = _binding(ratios, violations)
     return summary
+
+
+def _binding(ratios: Dict[str, float], violations: List[Violation]) -> str:
+    """The limit the trajectory runs at: the highest ratio that reaches BINDING_FRACTION without
+    going beyond the limit. A broken limit does not bind the trajectory: then none does."""
+    if violations:
+        return "none: the trajectory breaks limits (" + ", ".join(f"{x.kind} of {x.joint}" for x in violations) + ")"
+    kept = {k: r for k, r in ratios.items() if r <= 1.0 + TOLERANCE}
+    name, ratio = max(kept.items(), key=lambda item: item[1], default=("", 0.0))
+    if ratio >= BINDING_FRACTION:
+        return name
+    return "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)"
 
 
 def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float, Any]:
