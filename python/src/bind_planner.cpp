@@ -16,6 +16,7 @@
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/planning/overlap.hpp"
 #include "dispkin/planning/planner.hpp"
+#include "dispkin/planning/trajectory_acceleration.hpp"
 
 namespace dispkin {
 namespace python {
@@ -38,30 +39,48 @@ bool limits_close(const Limits& a, const Limits& b, double rel_tol, double abs_t
          (!a.jerk || isclose(*a.jerk, *b.jerk, rel_tol, abs_tol));
 }
 
-// Samples the trajectory at `times` (a number or (N,), each finite) and writes `columns` numbers
-// per sample with `write`: an (N, *shape_tail) array, or for a number one sample, shaped
-// shape_tail (a float when that is empty), as numpy does for a scalar.
+// The times to sample at: a number (one time, `scalar`) or (N,), each finite.
+struct Times {
+  std::vector<double> t;
+  bool scalar;
+};
+
+Times times_of(const py::object& times) {
+  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
+  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
+  Times out{std::vector<double>(a.data(), a.data() + a.size()), a.ndim() == 0};
+  for (double x : out.t) require_finite(x, "times");
+  return out;
+}
+
+// An (N, *shape_tail) array for N times, or for a number one sample shaped shape_tail (a float
+// when that is empty), as numpy does for a scalar; `fill` writes the numbers.
+template <typename Fill>
+py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail, Fill fill) {
+  std::vector<py::ssize_t> shape;
+  if (!times.scalar) shape.push_back(static_cast<py::ssize_t>(times.t.size()));
+  shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
+  py::array_t<double> out(shape);
+  fill(out.mutable_data());
+  if (shape.empty()) return py::float_(*out.data());
+  return std::move(out);
+}
+
+// Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
 template <typename Sampled, typename Write>
 py::object sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail, py::ssize_t columns,
                    Write write) {
-  const Array a = as_array(times, "times", "a number or an array of shape (N,)");
-  if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
-  const std::vector<double> t(a.data(), a.data() + a.size());
-  for (double x : t) require_finite(x, "times");
-  std::vector<py::ssize_t> shape;
-  if (a.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(t.size()));
-  shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
-  py::array_t<double> out(shape);
-  double* data = out.mutable_data();
-  if constexpr (std::is_same_v<Sampled, Trajectory>) {
-    // A cursor: consecutive times (the usual array) find their section without search.
-    Trajectory::Cursor cursor;
-    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
-  } else {
-    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
-  }
-  if (shape.empty()) return py::float_(*data);
-  return std::move(out);
+  const Times at = times_of(times);
+  return shaped(at, shape_tail, [&](double* data) {
+    const std::vector<double>& t = at.t;
+    if constexpr (std::is_same_v<Sampled, Trajectory>) {
+      // A cursor: consecutive times (the usual array) find their section without search.
+      Trajectory::Cursor cursor;
+      for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
+    } else {
+      for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+    }
+  });
 }
 
 // The sampling methods shared by Trajectory and OverlappedTrajectory.
@@ -166,6 +185,18 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
         return out;
       }, "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
          "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
+      .def(
+          "body_acceleration",
+          [](const Trajectory& traj, const py::object& times) {
+            const Times at = times_of(times);
+            return shaped(at, {6}, [&](double* data) {
+              for (std::size_t i = 0; i < at.t.size(); ++i)
+                Eigen::Map<Eigen::Matrix<double, 6, 1>>(data + 6 * i) = body_acceleration(traj, at.t[i]).vector();
+            });
+          },
+          py::arg("times"),
+          "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
+          "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
       .def(py::pickle(&trajectory_state, &trajectory_from_state))
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";

@@ -291,3 +291,39 @@ def test_profiles_and_frames_round_trip():
     for c in round_trips(frames):
         assert c.work == frames.work and c.tool == frames.tool
         np.testing.assert_array_equal(c.pivot, frames.pivot)
+
+
+def central_differences_within_sections(traj, path, count, h=1e-5):
+    """(times, body_acceleration, central differences of body_twist, section kinds) at `count`
+    times whose difference window stays inside one section: across a junction the rate of the
+    twist per unit of path may jump (a blend meets a line, a spline's keys are C1 in rotation)."""
+    t = np.linspace(h, traj.duration - h, count)
+    starts = np.concatenate([[0.0], np.cumsum(traj.section_lengths())])
+    before, after = traj.path_position(t - h), traj.path_position(t + h)
+    inside = np.searchsorted(starts, before, side="right") == np.searchsorted(starts, after, side="right")
+    t = t[inside]
+    section = np.searchsorted(starts, traj.path_position(t), side="right") - 1
+    kinds = {path.sections()[k].kind for k in section}
+    central = (traj.body_twist(t + h) - traj.body_twist(t - h)) / (2 * h)
+    return t, traj.body_acceleration(t), central, kinds
+
+
+def test_body_acceleration_is_the_derivative_of_the_body_twist():
+    path = blended_path()
+    traj = dispkin.plan(path, tool(), dispkin.Limits(0.25, 1.0, 10.0))
+    t, acceleration, central, kinds = central_differences_within_sections(traj, path, 6001)
+    assert kinds == {"lin", "arc", "curve"}  # every kind of section is compared
+    # Linear and angular parts each at their own scale (the tool does turn faster and slower).
+    for part in (slice(0, 3), slice(3, 6)):
+        scale = np.max(np.abs(central[:, part]))
+        assert scale > 0.1
+        np.testing.assert_allclose(acceleration[:, part], central[:, part], atol=1e-6 * scale)
+    one = traj.body_acceleration(t[100])
+    assert one.shape == (6,)
+    np.testing.assert_array_equal(one, acceleration[100])
+    # A screw, and a spline turning so little that its curve coefficients come from their series.
+    a, b = pose(0, 0, 0, 0, 0, 0), pose(0.2, 0.1, 0, 0, 0, 0.01)
+    for other in (dispkin.Path.lin(a, b, "screw"), dispkin.Path.spline([a, pose(0.1, 0.08, 0, 0, 0, 0.004), b])):
+        traj = dispkin.plan(other, tool(), dispkin.Limits(0.25, 1.0, 10.0))
+        _, acceleration, central, _ = central_differences_within_sections(traj, other, 2001)
+        np.testing.assert_allclose(acceleration, central, atol=1e-6 * np.max(np.abs(central)))
