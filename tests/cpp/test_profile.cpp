@@ -188,7 +188,7 @@ bool close(double x, double y, double tolerance) { return std::abs(x - y) <= tol
 // A law made again from its parts gives the same states, bit for bit, at any time.
 TEST(Profile, FromPartsMakesTheSameLaw) {
   const Profile laws[] = {Profile::trapezoid(0.3, 0.25, 1.0, 0.1, 0.05), Profile::scurve(0.3, 0.25, 1.0, 10.0),
-                          Profile::scurve(2e-4, 0.25, 1.0, 10.0, 0.02, 0.0)};
+                          Profile::scurve(0.01, 0.25, 1.0, 10.0, 0.02, 0.0)};
   for (const Profile& law : laws) {
     const Profile copy = Profile::from_parts(law.parts());
     EXPECT_EQ(copy.kind(), law.kind());
