@@ -343,6 +343,39 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
 
 // --- explicit phases -------------------------------------------------------------------------
 
+Profile Profile::from_parts(const Parts& parts) {
+  require(parts.count >= 0 && parts.count <= max_phases, "count", static_cast<long>(parts.count), "must be within [0, 7]");
+  const auto finite_state = [](const ProfileState& x, const std::string& name) {
+    require(std::isfinite(x.s) && std::isfinite(x.v) && std::isfinite(x.a) && std::isfinite(x.j), name + ".s", x.s,
+            "every value of the state must be finite");
+  };
+  const std::size_t n = static_cast<std::size_t>(parts.count);
+  require(parts.times[0] == 0.0, "times[0]", parts.times[0], "must be 0");
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string name = "phases[" + std::to_string(i) + "]";
+    require(std::isfinite(parts.times[i + 1]) && parts.times[i + 1] >= parts.times[i], "times[" + std::to_string(i + 1) + "]",
+            parts.times[i + 1], "must be finite and not below the time before it");
+    require(std::isfinite(parts.phases[i].duration) && std::isfinite(parts.phases[i].jerk), name + ".duration",
+            parts.phases[i].duration, "duration and jerk must be finite");
+    finite_state(parts.phases[i].start, name + ".start");
+    finite_state(parts.phases[i].end, name + ".end");
+  }
+  require(std::isfinite(parts.distance) && std::isfinite(parts.peak_velocity), "distance", parts.distance,
+          "distance and peak_velocity must be finite");
+  finite_state(parts.start, "start");
+  finite_state(parts.end, "end");
+  Profile law;
+  law.kind_ = parts.kind;
+  law.count_ = parts.count;
+  law.phases_ = parts.phases;
+  law.time_ = parts.times;
+  law.distance_ = parts.distance;
+  law.peak_velocity_ = parts.peak_velocity;
+  law.start_ = parts.start;
+  law.end_ = parts.end;
+  return law;
+}
+
 Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
                              double distance, double v_end, double a_end) {
   require(count >= 1 && count <= max_phases, "count", static_cast<long>(count), "must be within [1, 7]");

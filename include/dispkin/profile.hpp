@@ -80,6 +80,24 @@ class Profile {
   static Profile from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
                              double distance, double v_end, double a_end);
 
+  //! Everything a law is made of: what storing a law (a pickle) keeps, and from_parts makes the
+  //! same law from again, bit for bit.
+  struct Parts {
+    ProfileKind kind = ProfileKind::trapezoid;
+    int count = 0;                                  //!< phases used, 0 … max_phases
+    std::array<ProfilePhase, max_phases> phases{};  //!< the first `count` are used
+    std::array<double, max_phases + 1> times{};     //!< start times of the phases, then T
+    double distance = 0.0;
+    double peak_velocity = 0.0;
+    ProfileState start{};  //!< the state before the start
+    ProfileState end{};    //!< the state from the end on
+  };
+  Parts parts() const noexcept { return {kind_, count_, phases_, time_, distance_, peak_velocity_, start_, end_}; }
+  //! The law of `parts`, taken as they are (nothing integrated again). Throws
+  //! std::invalid_argument unless count is within [0, max_phases], the used times start at 0
+  //! and do not decrease, and every used number is finite.
+  static Profile from_parts(const Parts& parts);
+
   //! Trapezoid (acceleration-limited) or S-curve (jerk-limited).
   ProfileKind kind() const noexcept { return kind_; }
   //! T, the time the law takes (0 for S = 0 with v_start = v_end).

@@ -14,6 +14,7 @@ import sys
 from typing import List, Optional
 
 from . import __version__
+from .progress import Progress
 # The check and plan commands, importable from here too.
 from .commands import run_check, run_plan, write_plots  # noqa: F401
 # The demo's names, importable from here too: callers of dispkin.cli.demo_tool & co. keep working.
@@ -91,14 +92,24 @@ def build_parser() -> argparse.ArgumentParser:
         "time_from_start; hexapod legs or serial-arm joints are the joints), plus poses as XYZUVW (m, degrees), the "
         "path velocity and the fastest point's speed per sample; and a summary (duration, peak point speed "
         "per group, which limit binds), also printed. File names and the sample period come from the job's "
-        "`output` section.",
+        "`output` section. Exit status: 0 done; 1 invalid job or planning failed; 2 bad arguments; 3 the "
+        "trajectory breaks a machine limit (hexapod leg range or speed, joint position, velocity, acceleration or "
+        "effort: each one is printed on stderr with the joint, the time and by how much) - the files are written "
+        "all the same; --allow-violations exits 0.",
     )
     plan_.add_argument("job", metavar="JOB.yaml", help="the job file")
     plan_.add_argument("-o", "--outdir", metavar="OUTDIR", default=".",
                        help="directory for the output files, created if missing (default: the current directory)")
     plan_.add_argument("--plot", action="store_true",
                        help="also write a PNG: path velocity and point speeds against the limit (and leg lengths "
-                       "for a hexapod); needs matplotlib")
+                       "for a hexapod); needs matplotlib (pip install 'dispkin[plot]')")
+    plan_.add_argument("--allow-violations", action="store_true",
+                       help="exit 0 even when the trajectory breaks a machine limit (the broken limits are still "
+                       "printed on stderr and listed in the summary)")
+    shown = plan_.add_mutually_exclusive_group()
+    shown.add_argument("--progress", action="store_true",
+                       help="progress on stderr even when it is not a terminal (by default only on a terminal)")
+    shown.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     return parser
 
 
@@ -114,7 +125,8 @@ def main(argv: Optional[List[str]] = None) -> int:
         if args.command == "check":
             return run_check(args.job, sys.stdout)
         if args.command == "plan":
-            return run_plan(args.job, args.outdir, args.plot, sys.stdout)
+            progress = Progress.for_stderr(sys.stderr, "dispkin plan", force=args.progress, quiet=args.quiet)
+            return run_plan(args.job, args.outdir, args.plot, sys.stdout, args.allow_violations, progress)
     except JobError as error:
         print(f"dispkin {args.command}: {error}", file=sys.stderr)
         return 1

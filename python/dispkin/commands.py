@@ -1,16 +1,20 @@
 """The job commands of the ``dispkin`` command line: ``check`` validates a job file and builds its
-paths, ``plan`` plans it and writes the sampled trajectory (CSV, JSON with ROS JointTrajectory
-field names), a summary and, on request, PNG plots (see :mod:`dispkin.jobs`). The demo
-(:mod:`dispkin.demo`) plans its job through ``run_plan`` too.
+paths, ``plan`` plans it and writes the sampled trajectory (CSV, and JSON that loads as a ROS
+JointTrajectory), a summary and, on request, PNG plots (see :mod:`dispkin.jobs`), and fails when
+the trajectory breaks a machine limit. The demo (:mod:`dispkin.demo`) plans its job through
+``run_plan`` too.
 """
 
 import json
 import pathlib
-from typing import List, TextIO
+import sys
+from typing import List, Optional, TextIO
 
 import numpy as np
 
 from . import Trajectory
+from .job.violations import Violation
+from .progress import Progress
 
 
 def run_check(job_file: str, out: TextIO) -> int:
@@ -57,18 +61,38 @@ def run_check(job_file: str, out: TextIO) -> int:
     lim = job.limits
     jerk = f", j = {lim.jerk:g} m/s³" if lim.jerk is not None else ""
     print(f"  limits: v = {lim.velocity:g} m/s, a = {lim.acceleration:g} m/s²{jerk}, profile {job.profile}", file=out)
+    for file in job.limits_files:
+        print(f"  limits file: {file}", file=out)
+    if job.joint_acceleration is not None:
+        print(f"  joint accelerations: {np.round(job.joint_acceleration, 6).tolist()} (checked in the output)", file=out)
+    if job.retime is not None:
+        print(f"  re-timed to the joint limits: method {job.retime.method}", file=out)
     print(f"  output: every {job.sample_period:g} s -> {job.outputs['csv']}, {job.outputs['json']}, {job.outputs['summary']}", file=out)
     return 0
 
 
-def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO) -> int:
-    """`dispkin plan`: plan the job, write CSV, JSON, the summary and (plot) PNGs; returns 0."""
+#: Exit status of `dispkin plan` when the written trajectory breaks a machine limit.
+EXIT_LIMITS_BROKEN = 3
+
+
+def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violations: bool = False,
+             progress: Optional[Progress] = None, errors: Optional[TextIO] = None) -> int:
+    """`dispkin plan`: plan the job, write CSV, JSON, the summary and (plot) PNGs. Returns 0, or
+    EXIT_LIMITS_BROKEN when the trajectory breaks a machine limit (each one is described on
+    `errors`, default stderr) unless `allow_violations`; the files are written either way."""
     from . import jobs
 
+    progress = progress or Progress(None, "")
+    errors = errors or sys.stderr
+    if plot:
+        require_matplotlib()  # before the work, not after it
     job = jobs.load_job(job_file)
+    progress.stage("planning")
     trajectory = jobs.plan_job(job)
-    samples = jobs.sample_job(job, trajectory)
+    samples = jobs.sample_job(job, trajectory, progress=lambda stage, done, total: progress.step(f"sampling ({stage})", done, total))
+    progress.stage("checking the limits")
     summary = jobs.summarize(job, trajectory, samples)
+    progress.stage("writing")
     directory = pathlib.Path(outdir)
     directory.mkdir(parents=True, exist_ok=True)
     written = [directory / job.outputs["csv"], directory / job.outputs["json"], directory / job.outputs["summary"]]
@@ -78,9 +102,29 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO) -> int:
     written[2].write_text(text, encoding="utf-8")
     if plot:
         written += write_plots(job, trajectory, samples, directory)
+    if progress.enabled:
+        progress.finish(f"{len(samples.time)} samples")
     out.write(text)
     print("wrote " + ", ".join(str(p) for p in written), file=out)
-    return 0
+    broken = summary["violations"]
+    if not broken:
+        return 0
+    verdict = "allowed by --allow-violations" if allow_violations else "use --allow-violations to accept it"
+    print(f"dispkin plan: {job.file}: the trajectory breaks {len(broken)} machine limit(s) ({verdict}):", file=errors)
+    for v in broken:
+        print("  " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe(), file=errors)
+    return 0 if allow_violations else EXIT_LIMITS_BROKEN
+
+
+def require_matplotlib() -> None:
+    """Raise a JobError saying how to install matplotlib when it is missing (plots need it)."""
+    from .jobs import JobError
+
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError as error:
+        raise JobError("--plot needs matplotlib, which is not installed: pip install 'dispkin[plot]' "
+                       "(or pip install matplotlib)") from error
 
 
 def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -> List[pathlib.Path]:

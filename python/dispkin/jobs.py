@@ -10,16 +10,17 @@ Every mistake in a job raises :class:`JobError` (a ValueError) whose message sta
 ``FILE:LINE:COLUMN: key.path[index]:`` — the offending key, and where it is in the file.
 
 The names live in the modules of :mod:`dispkin.job` (reader, schema, model, builder, planning,
-sampling, summary, export); this module gathers them in one place.
+sampling, summary, violations, export); this module gathers them in one place.
 """
 
 from .job.builder import load_job
 from .job.export import POSE_COLUMNS, csv_header, time_from_start, trajectory_json, write_csv
-from .job.model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, format_key_path
+from .job.model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, Retime, format_key_path
 from .job.planning import JobTrajectory, plan_job
 from .job.sampling import ACCELERATION_STEP, JobSamples, group_sets, sample_job, sample_times
 from .job.schema import SCHEMA_PATH, load_schema, validate
 from .job.summary import BINDING_FRACTION, summarize, summary_text
+from .job.violations import Violation, check_samples
 
 __all__ = [
     "ACCELERATION_STEP",
@@ -33,7 +34,10 @@ __all__ = [
     "Move",
     "POSE_COLUMNS",
     "Part",
+    "Retime",
     "SCHEMA_PATH",
+    "Violation",
+    "check_samples",
     "csv_header",
     "format_key_path",
     "group_sets",

@@ -43,6 +43,11 @@ points around the tool origin, absolute points around the work origin.)doc")
            }),
            py::arg("work") = py::none(), py::arg("tool") = py::none(),
            "Work frame in world coordinates and tool frame in platform coordinates (Pose or (4, 4); default identity).")
+      .def(py::pickle([](const WorkToolFrames& f) { return py::make_tuple(f.work(), f.tool()); },
+                      [](const py::tuple& state) {
+                        if (state.size() != 2) throw py::value_error("WorkToolFrames.__setstate__: state: expected a tuple of 2 items");
+                        return WorkToolFrames(state[0].cast<Posed>(), state[1].cast<Posed>());
+                      }))
       .def_property_readonly("work", &WorkToolFrames::work, "W: the work frame in world coordinates")
       .def_property_readonly("tool", &WorkToolFrames::tool, "F: the tool frame in platform coordinates")
       .def_property_readonly("pivot", [](const WorkToolFrames& f) { return to_array(f.pivot()); },

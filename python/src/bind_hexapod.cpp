@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/planning/planner.hpp"
 
@@ -90,6 +91,41 @@ py::array_t<double> inverse_xyzuvw(const Hexapod& h, const py::object& xyzuvw, c
   return out;
 }
 
+// Pickled states of the check results: their fields, in declaration order.
+py::tuple violation_state(const LegViolation& v) { return py::make_tuple(v.leg, v.length, v.lower, v.upper, v.excess); }
+
+LegViolation violation_from_state(const py::tuple& state) {
+  const py::tuple s = state_tuple(state, 5, "LegViolation");
+  return LegViolation{s[0].cast<int>(), s[1].cast<double>(), s[2].cast<double>(), s[3].cast<double>(), s[4].cast<double>()};
+}
+
+const char* kind_name(const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; }
+
+py::tuple excursion_state(const LegExcursion& e) {
+  return py::make_tuple(kind_name(e), e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess);
+}
+
+LegExcursion excursion_from_state(const py::tuple& state) {
+  const py::tuple s = state_tuple(state, 7, "LegExcursion");
+  const std::string kind = s[0].cast<std::string>();
+  if (kind != "length" && kind != "speed") throw std::invalid_argument(describe("LegExcursion state kind", kind, "must be 'length' or 'speed'"));
+  return LegExcursion{kind == "length" ? LegExcursion::Kind::length : LegExcursion::Kind::speed, s[1].cast<int>(),
+                      s[2].cast<double>(), s[3].cast<double>(), s[4].cast<double>(), s[5].cast<double>(), s[6].cast<double>()};
+}
+
+std::string workspace_check_repr(const WorkspaceCheck& c) {
+  std::string legs;
+  for (const LegViolation& v : c.violations) legs += (legs.empty() ? "" : ", ") + std::to_string(v.leg);
+  return "WorkspaceCheck(reachable=" + std::string(c.reachable() ? "True" : "False") + ", lengths=" + tuple_repr(c.lengths) +
+         ", legs_out_of_range=[" + legs + "])";
+}
+
+std::string trajectory_check_repr(const TrajectoryCheck& c) {
+  return "TrajectoryCheck(ok=" + std::string(c.ok() ? "True" : "False") + ", min_length=" + tuple_repr(c.min_length) +
+         ", max_length=" + tuple_repr(c.max_length) + ", max_speed=" + tuple_repr(c.max_speed) +
+         ", excursions=" + std::to_string(c.excursions.size()) + ")";
+}
+
 }  // namespace
 
 void bind_hexapod(py::module_& m) {
@@ -102,13 +138,20 @@ void bind_hexapod(py::module_& m) {
       .def("__repr__", [](const LegViolation& v) {
         return "LegViolation(leg=" + std::to_string(v.leg) + ", length=" + float_repr(v.length) +
                ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) + ", excess=" + float_repr(v.excess) + ")";
-      });
+      })
+      .def(py::pickle(&violation_state, &violation_from_state));
 
   py::class_<WorkspaceCheck>(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).")
       .def_property_readonly("lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
       .def_readonly("violations", &WorkspaceCheck::violations, "list of LegViolation, empty when reachable")
       .def_property_readonly("reachable", &WorkspaceCheck::reachable, "True when every leg is within its range")
-      .def("__bool__", &WorkspaceCheck::reachable);
+      .def("__bool__", &WorkspaceCheck::reachable)
+      .def("__repr__", &workspace_check_repr)
+      .def(py::pickle([](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); },
+                      [](const py::tuple& state) {
+                        const py::tuple s = state_tuple(state, 2, "WorkspaceCheck");
+                        return WorkspaceCheck{vector<6>(s[0], "WorkspaceCheck state lengths"), s[1].cast<std::vector<LegViolation>>()};
+                      }));
 
   py::class_<LegExcursion>(m, "LegExcursion",
                            "A stretch of a trajectory where a leg leaves its range or exceeds its speed.")
@@ -121,10 +164,11 @@ void bind_hexapod(py::module_& m) {
       .def_readonly("worst_value", &LegExcursion::worst_value, "the leg's length (m) or speed (m/s) there")
       .def_readonly("excess", &LegExcursion::excess, "how far beyond the range or limit, > 0")
       .def("__repr__", [](const LegExcursion& e) {
-        return std::string("LegExcursion(kind='") + (e.kind == LegExcursion::Kind::length ? "length" : "speed") +
+        return std::string("LegExcursion(kind='") + kind_name(e) +
                "', leg=" + std::to_string(e.leg) + ", start_time=" + float_repr(e.start_time) +
                ", end_time=" + float_repr(e.end_time) + ", excess=" + float_repr(e.excess) + ")";
-      });
+      })
+      .def(py::pickle(&excursion_state, &excursion_from_state));
 
   py::class_<TrajectoryCheck>(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).")
       .def_property_readonly("min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
@@ -132,7 +176,17 @@ void bind_hexapod(py::module_& m) {
       .def_property_readonly("max_speed", [](const TrajectoryCheck& c) { return legs_array(c.max_speed); }, "(6,) m/s")
       .def_readonly("excursions", &TrajectoryCheck::excursions, "list of LegExcursion, empty when ok")
       .def_property_readonly("ok", &TrajectoryCheck::ok, "True when no leg leaves its range or exceeds its speed")
-      .def("__bool__", &TrajectoryCheck::ok);
+      .def("__bool__", &TrajectoryCheck::ok)
+      .def("__repr__", &trajectory_check_repr)
+      .def(py::pickle(
+          [](const TrajectoryCheck& c) {
+            return py::make_tuple(legs_array(c.min_length), legs_array(c.max_length), legs_array(c.max_speed), c.excursions);
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = state_tuple(state, 4, "TrajectoryCheck");
+            return TrajectoryCheck{vector<6>(s[0], "TrajectoryCheck state min_length"), vector<6>(s[1], "TrajectoryCheck state max_length"),
+                                   vector<6>(s[2], "TrajectoryCheck state max_speed"), s[3].cast<std::vector<LegExcursion>>()};
+          }));
 
   py::class_<Hexapod>(m, "Hexapod", R"doc(
 A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
@@ -215,6 +269,10 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
            "parameter), rigorous, within `tolerance` of the section's largest leg-speed demand.")
       .def("add_leg_speed_group", &Hexapod::add_leg_speed_group, py::arg("metric_set"), py::arg("group"),
            "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
+      .def(py::pickle([](const Hexapod& h) { return py::make_tuple(h.to_json()); },
+                      [](const py::tuple& state) {
+                        return Hexapod::from_json(state_tuple(state, 1, "Hexapod")[0].cast<std::string>());
+                      }))
       .def("__repr__", [](const Hexapod& h) {
         return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
                ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/convex_hull.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/metric_set.hpp"
@@ -27,6 +28,83 @@ py::list group_spheres(const MetricSetd& set, int group) {
   for (const auto& s : g.relative_spheres) out.append(py::make_tuple(to_array(s.center), s.radius, false));
   for (const auto& s : g.absolute_spheres) out.append(py::make_tuple(to_array(s.center), s.radius, true));
   return out;
+}
+
+// Two groups' points, coordinate by coordinate with `same`.
+template <typename Same>
+bool same_points(const PointColumns<double>& a, const PointColumns<double>& b, Same same) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!same(a[i], b[i])) return false;
+  return true;
+}
+
+template <typename Same>
+bool same_spheres(const std::vector<Sphere<double>>& a, const std::vector<Sphere<double>>& b, Same same) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Matrix<double, 4, 1> x(a[i].center.x(), a[i].center.y(), a[i].center.z(), a[i].radius);
+    const Eigen::Matrix<double, 4, 1> y(b[i].center.x(), b[i].center.y(), b[i].center.z(), b[i].radius);
+    if (!same(x, y)) return false;
+  }
+  return true;
+}
+
+// The same groups with the same objects in the same order and the same speed limits; `same`
+// compares two coordinate vectors, `same_speed` two speed limits.
+template <typename Same, typename SameSpeed>
+bool same_sets(const MetricSetd& a, const MetricSetd& b, Same same, SameSpeed same_speed) {
+  if (a.groups().size() != b.groups().size()) return false;
+  for (std::size_t k = 0; k < a.groups().size(); ++k) {
+    const MetricGroup<double>& g = a.groups()[k];
+    const MetricGroup<double>& h = b.groups()[k];
+    if (g.id != h.id || g.speed_limit.has_value() != h.speed_limit.has_value()) return false;
+    if (g.speed_limit && !same_speed(*g.speed_limit, *h.speed_limit)) return false;
+    if (!same_points(g.relative_points, h.relative_points, same) || !same_points(g.absolute_points, h.absolute_points, same) ||
+        !same_spheres(g.relative_spheres, h.relative_spheres, same) || !same_spheres(g.absolute_spheres, h.absolute_spheres, same))
+      return false;
+  }
+  return true;
+}
+
+// The state of a pickled MetricSet: per group (id, speed limit or None, relative points,
+// absolute points, relative spheres, absolute spheres), spheres as (N, 4) rows (centre, radius).
+py::list metric_set_state(const MetricSetd& set) {
+  const auto spheres = [](const std::vector<Sphere<double>>& list) {
+    py::array_t<double> out({static_cast<py::ssize_t>(list.size()), py::ssize_t{4}});
+    double* data = out.mutable_data();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      Eigen::Map<Eigen::Vector3d>(data + 4 * i) = list[i].center;
+      data[4 * i + 3] = list[i].radius;
+    }
+    return out;
+  };
+  py::list groups;
+  for (const auto& g : set.groups()) {
+    groups.append(py::make_tuple(g.id, g.speed_limit, to_array(g.relative_points), to_array(g.absolute_points),
+                                 spheres(g.relative_spheres), spheres(g.absolute_spheres)));
+  }
+  return groups;
+}
+
+MetricSetd metric_set_from_state(const py::list& groups) {
+  MetricSetd set;
+  for (const py::handle item : groups) {
+    const py::tuple g = state_tuple(item, 6, "MetricSet group");
+    const int id = g[0].cast<int>();
+    if (!g[1].is_none()) set.set_group_speed(id, g[1].cast<double>());
+    set.add_points(points(g[2], "MetricSet state relative points", false), Frame::relative, id);
+    set.add_points(points(g[3], "MetricSet state absolute points", false), Frame::absolute, id);
+    for (int k = 0; k < 2; ++k) {
+      const Array rows = as_array(g[4 + k], "MetricSet state spheres", "an array of shape (N, 4)");
+      if (rows.ndim() != 2 || rows.shape(1) != 4) wrong_shape("MetricSet state spheres", "an array of shape (N, 4)", rows);
+      for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+        const double* r = rows.data() + 4 * i;
+        set.add_sphere(Eigen::Vector3d(r[0], r[1], r[2]), r[3], k == 0 ? Frame::relative : Frame::absolute, id);
+      }
+    }
+  }
+  return set;
 }
 
 std::string metric_set_repr(const MetricSetd& set) {
@@ -112,6 +190,24 @@ Lengths in metres.)doc")
            "A new set with every group's relative and absolute points replaced by the vertices of "
            "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
            "length is the same.")
+      .def(
+          "__eq__",
+          [](const MetricSetd& a, const MetricSetd& b) {
+            return same_sets(a, b, [](const auto& x, const auto& y) { return x == y; },
+                             [](double x, double y) { return x == y; });
+          },
+          py::is_operator(),
+          "The same groups holding the same points and spheres in the same order, with the same speed limits.")
+      .def(
+          "isclose",
+          [](const MetricSetd& a, const MetricSetd& b, double rel_tol, double abs_tol) {
+            require_tolerances(rel_tol, abs_tol);
+            return same_sets(a, b, [&](const auto& x, const auto& y) { return all_close(x, y, rel_tol, abs_tol); },
+                             [&](double x, double y) { return isclose(x, y, rel_tol, abs_tol); });
+          },
+          py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
+          "Like ==, with math.isclose for every coordinate, radius and speed limit.")
+      .def(py::pickle(&metric_set_state, &metric_set_from_state))
       .def("__repr__", &metric_set_repr);
 }
 

@@ -8,6 +8,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "path_state.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/path/path.hpp"
 
 namespace dispkin {
@@ -94,6 +96,11 @@ upper bounds.)doc")
             return p.sample(u);
           },
           py::arg("u"), "q(u) = q_a + u (q_b - q_a), u clamped to [0, 1].")
+      .def(py::pickle([](const JointPath& p) { return py::make_tuple(p.start(), p.end()); },
+                      [](const py::tuple& state) {
+                        const py::tuple s = state_tuple(state, 2, "JointPath");
+                        return JointPath(s[0].cast<Eigen::VectorXd>(), s[1].cast<Eigen::VectorXd>());
+                      }))
       .def("__repr__", [](const JointPath& p) { return "JointPath(" + std::to_string(p.start().size()) + " joints)"; });
 
   py::class_<Path>(m, "Path", R"doc(
@@ -186,6 +193,7 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
       .def_property_readonly("start", &Path::start, "The first pose.")
       .def_property_readonly("end", &Path::end, "The last pose.")
       .def("__len__", &Path::size, "Number of sections.")
+      .def(py::pickle(&path_state, &path_from_state))
       .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " sections)"; });
 }
 

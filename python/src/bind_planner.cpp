@@ -10,10 +10,13 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "path_state.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/planning/overlap.hpp"
 #include "dispkin/planning/planner.hpp"
+#include "dispkin/planning/trajectory_acceleration.hpp"
 
 namespace dispkin {
 namespace python {
@@ -21,32 +24,76 @@ namespace python {
 namespace {
 
 
-// Times as a (N,) array (a number is one time); each must be finite.
-std::vector<double> times_of(const py::object& times) {
+Limits make_limits(double velocity, double acceleration, std::optional<double> jerk, std::optional<double> angular_velocity,
+                   std::optional<double> angular_acceleration) {
+  Limits limits{velocity, acceleration, jerk, angular_velocity, angular_acceleration};
+  require_limit(velocity, "velocity");
+  require_limit(acceleration, "acceleration");
+  if (jerk) require_limit(*jerk, "jerk");
+  if (angular_velocity) require_limit(*angular_velocity, "angular_velocity");
+  if (angular_acceleration) require_limit(*angular_acceleration, "angular_acceleration");
+  return limits;
+}
+
+// Both None, or both given and close.
+bool optional_close(const std::optional<double>& a, const std::optional<double>& b, double rel_tol, double abs_tol) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || isclose(*a, *b, rel_tol, abs_tol);
+}
+
+bool limits_close(const Limits& a, const Limits& b, double rel_tol, double abs_tol) {
+  require_tolerances(rel_tol, abs_tol);
+  return isclose(a.velocity, b.velocity, rel_tol, abs_tol) && isclose(a.acceleration, b.acceleration, rel_tol, abs_tol) &&
+         optional_close(a.jerk, b.jerk, rel_tol, abs_tol) && optional_close(a.angular_velocity, b.angular_velocity, rel_tol, abs_tol) &&
+         optional_close(a.angular_acceleration, b.angular_acceleration, rel_tol, abs_tol);
+}
+
+py::tuple limits_state(const Limits& l) {
+  return py::make_tuple(l.velocity, l.acceleration, l.jerk, l.angular_velocity, l.angular_acceleration);
+}
+
+// The times to sample at: a number (one time, `scalar`) or (N,), each finite.
+struct Times {
+  std::vector<double> t;
+  bool scalar;
+};
+
+Times times_of(const py::object& times) {
   const Array a = as_array(times, "times", "a number or an array of shape (N,)");
   if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
-  std::vector<double> out(a.data(), a.data() + a.size());
-  for (double t : out) require_finite(t, "times");
+  Times out{std::vector<double>(a.data(), a.data() + a.size()), a.ndim() == 0};
+  for (double x : out.t) require_finite(x, "times");
   return out;
+}
+
+// An (N, *shape_tail) array for N times, or for a number one sample shaped shape_tail (a float
+// when that is empty), as numpy does for a scalar; `fill` writes the numbers.
+template <typename Fill>
+py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail, Fill fill) {
+  std::vector<py::ssize_t> shape;
+  if (!times.scalar) shape.push_back(static_cast<py::ssize_t>(times.t.size()));
+  shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
+  py::array_t<double> out(shape);
+  fill(out.mutable_data());
+  if (shape.empty()) return py::float_(*out.data());
+  return std::move(out);
 }
 
 // Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
 template <typename Sampled, typename Write>
-py::array_t<double> sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail,
-                            py::ssize_t columns, Write write) {
-  const std::vector<double> t = times_of(times);
-  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
-  shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
-  py::array_t<double> out(shape);
-  double* data = out.mutable_data();
-  if constexpr (std::is_same_v<Sampled, Trajectory>) {
-    // A cursor: consecutive times (the usual array) find their section without search.
-    Trajectory::Cursor cursor;
-    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
-  } else {
-    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
-  }
-  return out;
+py::object sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail, py::ssize_t columns,
+                   Write write) {
+  const Times at = times_of(times);
+  return shaped(at, shape_tail, [&](double* data) {
+    const std::vector<double>& t = at.t;
+    if constexpr (std::is_same_v<Sampled, Trajectory>) {
+      // A cursor: consecutive times (the usual array) find their section without search.
+      Trajectory::Cursor cursor;
+      for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
+    } else {
+      for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+    }
+  });
 }
 
 // The sampling methods shared by Trajectory and OverlappedTrajectory.
@@ -60,7 +107,7 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
             });
           },
-          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices.")
+          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.")
       .def(
           "sample_xyzuvw",
           [](const T& traj, const py::object& times) {
@@ -68,7 +115,7 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
             });
           },
-          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians).")
+          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians); (6,) for a number.")
       .def(
           "body_twist",
           [](const T& traj, const py::object& times) {
@@ -76,19 +123,25 @@ void add_sampling(py::class_<T>& cls) {
               Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
             });
           },
-          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s.")
+          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s; (6,) for a number.")
       .def(
           "path_position",
           [](const T& traj, const py::object& times) {
             return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
           },
-          py::arg("times"), "s at `times`, (N,), metres of DISP arc length.")
+          py::arg("times"), "s at `times`, (N,), metres of DISP arc length; a float for a number.")
       .def(
           "path_velocity",
           [](const T& traj, const py::object& times) {
             return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
           },
-          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.");
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set; a float for a number.")
+      .def(
+          "path_acceleration",
+          [](const T& traj, const py::object& times) {
+            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_ddot; });
+          },
+          py::arg("times"), "s-double-dot at `times`, (N,), m/s^2; a float for a number.");
 }
 
 }  // namespace
@@ -96,16 +149,7 @@ void add_sampling(py::class_<T>& cls) {
 void bind_planner(py::module_& m) {
   py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
                                   "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).")
-      .def(py::init([](double velocity, double acceleration, std::optional<double> jerk, std::optional<double> angular_velocity,
-                       std::optional<double> angular_acceleration) {
-             Limits limits{velocity, acceleration, jerk, angular_velocity, angular_acceleration};
-             require_limit(velocity, "velocity");
-             require_limit(acceleration, "acceleration");
-             if (jerk) require_limit(*jerk, "jerk");
-             if (angular_velocity) require_limit(*angular_velocity, "angular_velocity");
-             if (angular_acceleration) require_limit(*angular_acceleration, "angular_acceleration");
-             return limits;
-           }),
+      .def(py::init(&make_limits),
            py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(), py::arg("angular_velocity") = py::none(),
            py::arg("angular_acceleration") = py::none(),
            "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
@@ -117,6 +161,18 @@ void bind_planner(py::module_& m) {
       .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")
       .def_readonly("angular_velocity", &Limits::angular_velocity, "The tool's angular velocity limit, rad/s, or None.")
       .def_readonly("angular_acceleration", &Limits::angular_acceleration, "The tool's angular acceleration limit, rad/s^2, or None.")
+      .def(
+          "__eq__", [](const Limits& a, const Limits& b) { return limits_state(a).equal(limits_state(b)); }, py::is_operator(),
+          "The same velocity, acceleration, jerk and angular limits (each both None or equal).")
+      .def("__hash__", [](const Limits& l) { return py::hash(limits_state(l)); })
+      .def("isclose", &limits_close, py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
+           "math.isclose for every limit (a limit of None only matches None).")
+      .def(py::pickle(&limits_state,
+                      [](const py::tuple& state) {
+                        const py::tuple s = state_tuple(state, 5, "Limits");
+                        return make_limits(s[0].cast<double>(), s[1].cast<double>(), s[2].cast<std::optional<double>>(),
+                                           s[3].cast<std::optional<double>>(), s[4].cast<std::optional<double>>());
+                      }))
       .def("__repr__", [](const Limits& l) {
         std::string out = "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
                           ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None"));
@@ -155,6 +211,19 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
         return out;
       }, "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
          "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
+      .def(
+          "body_acceleration",
+          [](const Trajectory& traj, const py::object& times) {
+            const Times at = times_of(times);
+            return shaped(at, {6}, [&](double* data) {
+              for (std::size_t i = 0; i < at.t.size(); ++i)
+                Eigen::Map<Eigen::Matrix<double, 6, 1>>(data + 6 * i) = body_acceleration(traj, at.t[i]).vector();
+            });
+          },
+          py::arg("times"),
+          "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
+          "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
+      .def(py::pickle(&trajectory_state, &trajectory_from_state))
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });

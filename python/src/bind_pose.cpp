@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/pose.hpp"
 
@@ -27,6 +28,39 @@ Posed make_pose(const py::object& quaternion, const py::object& translation) {
 Eigen::Vector4d wxyz(const Posed& pose) {
   const Eigen::Quaterniond& q = pose.quaternion();
   return Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+}
+
+// The same transform: q and −q are the same rotation (their matrices agree bit for bit).
+bool same_pose(const Posed& a, const Posed& b) {
+  const Eigen::Vector4d qa = wxyz(a), qb = wxyz(b);
+  return a.translation() == b.translation() && (qa == qb || qa == -qb);
+}
+
+// The quaternion with the sign that makes its first non-zero coefficient positive, so that q and
+// −q hash alike.
+Eigen::Vector4d canonical_wxyz(const Posed& pose) {
+  const Eigen::Vector4d q = wxyz(pose);
+  for (int i = 0; i < 4; ++i)
+    if (q(i) != 0.0) return q(i) < 0.0 ? Eigen::Vector4d(-q) : q;
+  return q;
+}
+
+// The state of a pickled Pose: the quaternion (w, x, y, z) and the translation as stored, so
+// that the copy is the same bit for bit (no normalisation on the way back).
+py::tuple pose_state(const Posed& pose) {
+  const Eigen::Vector4d q = wxyz(pose);
+  const Eigen::Vector3d& t = pose.translation();
+  return py::make_tuple(py::make_tuple(q(0), q(1), q(2), q(3)), py::make_tuple(t(0), t(1), t(2)));
+}
+
+Posed pose_from_state(const py::tuple& state) {
+  const py::tuple s = state_tuple(state, 2, "Pose");
+  const Eigen::Vector4d q = vector<4>(s[0], "Pose state quaternion");
+  const Eigen::Vector3d t = vector3(s[1], "Pose state translation");
+  require_finite(q, "Pose state quaternion");
+  require_finite(t, "Pose state translation");
+  require(std::abs(q.norm() - 1.0) <= 1e-12, "Pose state quaternion", q.norm(), "norm must be 1");
+  return Posed::unchecked(Eigen::Quaterniond(q(0), q(1), q(2), q(3)), t);
 }
 
 }  // namespace
@@ -121,6 +155,26 @@ velocity in rad/s, both in body coordinates.)doc")
           py::arg("other"), py::arg("tol") = 1e-9,
           "Whether `other` is the same transform to within `tol` (rotation-matrix entries, and "
           "translation in metres per coordinate).")
+      .def(
+          "__eq__", [](const Posed& self, const Posed& other) { return same_pose(self, other); }, py::is_operator(),
+          "The same transform, exactly: equal translations and equal quaternions up to sign (q and -q are one "
+          "rotation). Use isclose for poses computed in different ways.")
+      .def("__hash__", [](const Posed& self) {
+        const Eigen::Vector4d q = canonical_wxyz(self);
+        const Eigen::Vector3d& t = self.translation();
+        return hash_floats(q(0), q(1), q(2), q(3), t(0), t(1), t(2));
+      })
+      .def(
+          "isclose",
+          [](const Posed& self, const Posed& other, double rel_tol, double abs_tol) {
+            require_tolerances(rel_tol, abs_tol);
+            return all_close(self.translation(), other.translation(), rel_tol, abs_tol) &&
+                   all_close(Eigen::Matrix3d(self.rotation()), Eigen::Matrix3d(other.rotation()), rel_tol, abs_tol);
+          },
+          py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
+          "math.isclose for every coordinate: each translation coordinate (m) and each rotation-matrix "
+          "entry agree within max(rel_tol * larger magnitude, abs_tol). Entries near 0 need abs_tol.")
+      .def(py::pickle(&pose_state, &pose_from_state))
       .def("__repr__", [](const Posed& self) {
         return "Pose(quaternion=" + tuple_repr(wxyz(self)) + ", translation=" + tuple_repr(self.translation()) + ")";
       });

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "path_state.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
@@ -88,6 +89,7 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
       .def("sample", &sample, py::arg("times"),
            "States at `times` ((N,) seconds, finite) as an (N, 4) array of rows (s, v, a, jerk). Times "
            "outside [0, duration] give the start or end state.")
+      .def(py::pickle(&profile_state, [](const py::tuple& state) { return profile_from_state(state); }))
       .def("__repr__", &profile_repr);
 
   m.def(

@@ -18,26 +18,31 @@ namespace python {
 namespace {
 
 
-// Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail).
+// Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail); for a
+// number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar.
 template <typename Write>
-py::array_t<double> sampled(const JointTrajectory& traj, const py::object& times, std::vector<py::ssize_t> tail,
-                            py::ssize_t columns, Write write) {
+py::object sampled(const JointTrajectory& traj, const py::object& times, std::vector<py::ssize_t> tail,
+                   py::ssize_t columns, Write write) {
   const Array a = as_array(times, "times", "a number or an array of shape (N,)");
   if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
   std::vector<double> t(a.data(), a.data() + a.size());
   for (double x : t) require_finite(x, "times");
-  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(t.size())};
+  std::vector<py::ssize_t> shape;
+  if (a.ndim() == 1) shape.push_back(static_cast<py::ssize_t>(t.size()));
   shape.insert(shape.end(), tail.begin(), tail.end());
   py::array_t<double> out(shape);
   double* data = out.mutable_data();
   for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
-  return out;
+  if (shape.empty()) return py::float_(*data);
+  return std::move(out);
 }
 
 }  // namespace
 
 void bind_ptp(py::module_& m) {
-  py::class_<JointTrajectory> cls(m, "JointTrajectory", R"doc(
+  // dynamic_attr: a JointTrajectory keeps the arguments of the plan() that made it, from which
+  // pickling makes it again (planning is deterministic: the same samples, bit for bit).
+  py::class_<JointTrajectory> cls(m, "JointTrajectory", py::dynamic_attr(), R"doc(
 A planned PTP move of a serial arm: every joint on the line from q_a to q_b, all arriving
 together, timed so that no point or sphere of the metric set moves faster than its limit at any
 time and no joint faster than its velocity limit. Sample it at any times (seconds, clamped to
@@ -144,6 +149,18 @@ time and no joint faster than its velocity limit. Sample it at any times (second
             return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.s_dot; });
           },
           py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
+      .def("__reduce__", [](const py::object& self) -> py::tuple {
+        if (!py::hasattr(self, "_plan_arguments")) {
+          throw py::type_error("cannot pickle a JointTrajectory that dispkin.plan did not make");
+        }
+        const py::tuple a = self.attr("_plan_arguments");
+        py::dict keywords;
+        keywords["robot"] = a[4];
+        keywords["joint_acceleration"] = a[5];
+        keywords["tolerance"] = a[6];
+        const py::object replan = py::module_::import("functools").attr("partial")(py::module_::import("dispkin._core").attr("plan"), **keywords);
+        return py::make_tuple(replan, py::make_tuple(a[0], a[1], a[2], a[3]));
+      }, "Pickling: plan() again with the arguments that made this trajectory.")
       .def("__repr__", [](const JointTrajectory& t) {
         return "JointTrajectory(duration=" + float_repr(t.duration()) + ", joints=" + std::to_string(t.dof()) +
                ", sections=" + std::to_string(t.sections().size()) + ")";
@@ -161,7 +178,10 @@ time and no joint faster than its velocity limit. Sample it at any times (second
         PtpOptions options;
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
         options.tolerance = tolerance;
-        return plan(path, set, limits, kind, robot.cast<const serial::SerialArm&>(), options);
+        py::object trajectory = py::cast(plan(path, set, limits, kind, robot.cast<const serial::SerialArm&>(), options));
+        trajectory.attr("_plan_arguments") =
+            py::make_tuple(path, set, limits, profile, robot, joint_acceleration, tolerance);
+        return trajectory;
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::kw_only(),
       py::arg("robot") = py::none(), py::arg("joint_acceleration") = py::none(), py::arg("tolerance") = 1e-2,

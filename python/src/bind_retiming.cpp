@@ -1,5 +1,6 @@
 // Python binding of dispkin/planning/retiming.hpp with serial/serial_retiming.hpp and
 // hexapod/hexapod_retiming.hpp: check_joint_limits, retime.
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,8 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "path_state.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/hexapod/hexapod_retiming.hpp"
 #include "dispkin/serial/serial_retiming.hpp"
 
@@ -48,6 +51,59 @@ py::dict report_arrays(const JointLimitReport& r) {
   return d;
 }
 
+// Pickled states: every field, the samples as tuples of their vectors.
+py::tuple report_state(const JointLimitReport& r) {
+  py::list samples;
+  for (const JointSample& x : r.samples)
+    samples.append(py::make_tuple(x.time, x.s, x.q, x.qd, x.qdd, x.static_torque, x.dynamic_torque));
+  return py::make_tuple(py::tuple(samples), r.velocity_factor, r.acceleration_factor, r.velocity_joint, r.velocity_sample,
+                        r.torque_joint, r.torque_sample, r.position_excess, r.position_joint, r.position_sample);
+}
+
+JointLimitReport report_from_state(const py::handle& state) {
+  const py::tuple s = state_tuple(state, 10, "JointLimitReport");
+  JointLimitReport r;
+  for (const py::handle item : s[0].cast<py::sequence>()) {
+    const py::tuple x = state_tuple(item, 7, "JointSample");
+    r.samples.push_back(JointSample{x[0].cast<double>(), x[1].cast<double>(), x[2].cast<Eigen::VectorXd>(), x[3].cast<Eigen::VectorXd>(),
+                                    x[4].cast<Eigen::VectorXd>(), x[5].cast<Eigen::VectorXd>(), x[6].cast<Eigen::VectorXd>()});
+  }
+  r.velocity_factor = s[1].cast<double>();
+  r.acceleration_factor = s[2].cast<double>();
+  r.velocity_joint = s[3].cast<int>();
+  r.velocity_sample = s[4].cast<std::size_t>();
+  r.torque_joint = s[5].cast<int>();
+  r.torque_sample = s[6].cast<std::size_t>();
+  r.position_excess = s[7].cast<double>();
+  r.position_joint = s[8].cast<int>();
+  r.position_sample = s[9].cast<std::size_t>();
+  const std::size_t n = r.samples.size();
+  require(n == 0 || (r.velocity_sample < n && r.torque_sample < n && r.position_sample < n), "JointLimitReport state sample index",
+          static_cast<long>(std::max({r.velocity_sample, r.torque_sample, r.position_sample})), "must index a sample");
+  return r;
+}
+
+py::tuple optimal_state(const OptimalRetimeResult& r) {
+  return py::make_tuple(trajectory_state(r.trajectory), report_state(r.report), r.velocity_ratio, r.acceleration_ratio,
+                        r.torque_ratio, r.margin, r.refinements, r.grid_s, r.grid_speed, r.jerk_window);
+}
+
+OptimalRetimeResult optimal_from_state(const py::tuple& state) {
+  const py::tuple s = state_tuple(state, 10, "OptimalRetimeResult");
+  OptimalRetimeResult r;
+  r.trajectory = trajectory_from_state(s[0].cast<py::tuple>());
+  r.report = report_from_state(s[1]);
+  r.velocity_ratio = s[2].cast<double>();
+  r.acceleration_ratio = s[3].cast<double>();
+  r.torque_ratio = s[4].cast<double>();
+  r.margin = s[5].cast<double>();
+  r.refinements = s[6].cast<int>();
+  r.grid_s = s[7].cast<std::vector<double>>();
+  r.grid_speed = s[8].cast<std::vector<double>>();
+  r.jerk_window = s[9].cast<double>();
+  return r;
+}
+
 JointCheckOptions check_options(int samples_between, double difference_step) {
   JointCheckOptions o;
   o.samples_between = samples_between;
@@ -81,7 +137,8 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       .def("__repr__", [](const JointLimitReport& r) {
         return "JointLimitReport(velocity_factor=" + float_repr(r.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.acceleration_factor) + ", samples=" + std::to_string(r.samples.size()) + ")";
-      });
+      })
+      .def(py::pickle(&report_state, [](const py::tuple& state) { return report_from_state(state); }));
 
   m.def(
       "check_joint_limits",
@@ -111,7 +168,21 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       .def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
       .def_readonly("limits", &RetimeResult::limits, "The scaled limits it was planned with.")
       .def_readonly("iterations", &RetimeResult::iterations, "Plans made (1: the original plan already fits).")
-      .def_readonly("report", &RetimeResult::report, "The joint-limit report of the final trajectory (within_limits is True).");
+      .def_readonly("report", &RetimeResult::report, "The joint-limit report of the final trajectory (within_limits is True).")
+      .def("__repr__", [](const RetimeResult& r) {
+        return "RetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", iterations=" + std::to_string(r.iterations) +
+               ", velocity_factor=" + float_repr(r.report.velocity_factor) +
+               ", acceleration_factor=" + float_repr(r.report.acceleration_factor) + ")";
+      })
+      .def(py::pickle(
+          [](const RetimeResult& r) {
+            return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report));
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = state_tuple(state, 4, "RetimeResult");
+            return RetimeResult{trajectory_from_state(s[0].cast<py::tuple>()), s[1].cast<Limits>(), s[2].cast<int>(),
+                                report_from_state(s[3])};
+          }));
 
   py::class_<OptimalRetimeResult>(m, "OptimalRetimeResult", R"doc(
 What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
@@ -135,7 +206,14 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                     "runs, the time each run grew by; 0 without.")
       .def_property_readonly("grid_s", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_s.size()), r.grid_s.data()); }, "Grid positions s (m), (N+1,).")
       .def_property_readonly("grid_speed", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_speed.size()), r.grid_speed.data()); },
-                             "Path speed at the grid positions (m/s), (N+1,).");
+                             "Path speed at the grid positions (m/s), (N+1,).")
+      .def("__repr__", [](const OptimalRetimeResult& r) {
+        return "OptimalRetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", velocity_ratio=" +
+               float_repr(r.velocity_ratio) + ", acceleration_ratio=" + float_repr(r.acceleration_ratio) +
+               ", torque_ratio=" + float_repr(r.torque_ratio) + ", margin=" + float_repr(r.margin) +
+               ", refinements=" + std::to_string(r.refinements) + ")";
+      })
+      .def(py::pickle(&optimal_state, &optimal_from_state));
 
   m.def(
       "retime",

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "dispkin/serial/serial_retiming.hpp"
@@ -105,6 +106,44 @@ SerialArm from_urdf(const std::string& path_or_string, const std::string& base_l
   return SerialArm::from_urdf_file(path_or_string, base_link, tip_link);
 }
 
+serial::IkFamily family_named(const std::string& name) {
+  using serial::IkFamily;
+  for (IkFamily f : {IkFamily::spherical_wrist, IkFamily::three_parallel, IkFamily::offset_wrist, IkFamily::general})
+    if (serial::to_string(f) == name) return f;
+  throw std::invalid_argument(describe("family", name, "must be 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'"));
+}
+
+py::tuple joint_limits_state(const JointLimits& l) {
+  return py::make_tuple(to_vector_array(l.lower), to_vector_array(l.upper), to_vector_array(l.velocity), to_vector_array(l.effort));
+}
+
+JointLimits joint_limits_from_state(const py::handle& state) {
+  const py::tuple s = state_tuple(state, 4, "JointLimits");
+  return JointLimits{joint_vector(s[0], "JointLimits state lower"), joint_vector(s[1], "JointLimits state upper"),
+                     joint_vector(s[2], "JointLimits state velocity"), joint_vector(s[3], "JointLimits state effort")};
+}
+
+std::string inverse_result_repr(const InverseResult& r) {
+  std::size_t inside = 0;
+  for (bool b : r.within_limits) inside += b ? 1 : 0;
+  return "InverseResult(solutions=" + std::to_string(r.solutions.size()) + ", within_limits=" + std::to_string(inside) +
+         ", complete=" + (r.complete ? "True" : "False") + ", family='" + serial::to_string(r.family) + "')";
+}
+
+// The state of a pickled SerialArm: the URDF text and links it was read from, its joint limits
+// (with_joint_limits may have replaced the URDF's) and its gravity.
+py::tuple arm_state(const SerialArm& a) {
+  return py::make_tuple(a.urdf(), a.base_link(), a.tip_link(), joint_limits_state(a.joint_limits()), to_array(a.gravity()));
+}
+
+SerialArm arm_from_state(const py::tuple& state) {
+  const py::tuple s = state_tuple(state, 5, "SerialArm");
+  SerialArm arm = SerialArm::from_urdf_string(s[0].cast<std::string>(), s[1].cast<std::string>(), s[2].cast<std::string>())
+                      .with_joint_limits(joint_limits_from_state(s[3]));
+  arm.set_gravity(vector3(s[4], "SerialArm state gravity"));
+  return arm;
+}
+
 }  // namespace
 
 void bind_serial(py::module_& m) {
@@ -120,7 +159,8 @@ void bind_serial(py::module_& m) {
       .def("__repr__", [](const JointLimits& l) {
         return "JointLimits(lower=" + tuple_repr(l.lower) + ", upper=" + tuple_repr(l.upper) +
                ", velocity=" + tuple_repr(l.velocity) + ", effort=" + tuple_repr(l.effort) + ")";
-      });
+      })
+      .def(py::pickle(&joint_limits_state, &joint_limits_from_state));
 
   py::class_<InverseResult>(m, "InverseResult", "What SerialArm.inverse_solutions found.")
       .def_property_readonly("solutions", [](const InverseResult& r) { return to_list(r.solutions); },
@@ -130,7 +170,17 @@ void bind_serial(py::module_& m) {
       .def_readonly("complete", &InverseResult::complete,
                     "True: every solution (analytic family); False: what the numeric search found")
       .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
-                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'");
+                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'")
+      .def("__repr__", &inverse_result_repr)
+      .def(py::pickle(
+          [](const InverseResult& r) {
+            return py::make_tuple(to_list(r.solutions), py::cast(r.within_limits), r.complete, serial::to_string(r.family));
+          },
+          [](const py::tuple& state) {
+            const py::tuple s = state_tuple(state, 4, "InverseResult");
+            return InverseResult{joint_vectors(s[0], "InverseResult state solutions"), s[1].cast<std::vector<bool>>(),
+                                 s[2].cast<bool>(), family_named(s[3].cast<std::string>())};
+          }));
 
   py::class_<SerialArm>(m, "SerialArm", R"doc(
 A serial arm of revolute joints between two links of a URDF (urdfdom into an Orocos KDL chain).
@@ -265,6 +315,8 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           py::arg("trajectory"), py::arg("times"),
           "JointLimitReport of a PTP move (JointTrajectory) at `times` (s): the factors FVEL and FACC of its "
           "joint line's own q, qd, qdd. RuntimeError where the static torque alone reaches an effort limit.")
+      .def_property_readonly("urdf", &SerialArm::urdf, "the URDF text the arm was read from")
+      .def(py::pickle(&arm_state, &arm_from_state))
       .def("__repr__", [](const SerialArm& a) {
         return "SerialArm(robot='" + a.robot_name() + "', base_link='" + a.base_link() + "', tip_link='" +
                a.tip_link() + "', dof=" + std::to_string(a.dof()) + ", family='" + serial::to_string(a.family()) + "')";

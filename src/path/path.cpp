@@ -112,6 +112,43 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
   return path;
 }
 
+Path Path::from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size,
+                         const std::vector<MoveLimits>& section_limits, const std::vector<std::size_t>& move_starts) {
+  require(!sections.empty(), "sections", 0L, "must hold at least one section");
+  require(std::isfinite(first_move_size) && first_move_size > 0.0, "first_move_size", first_move_size, "must be finite and > 0");
+  require(std::isfinite(last_move_size) && last_move_size > 0.0, "last_move_size", last_move_size, "must be finite and > 0");
+  Path path;
+  for (const Section& section : sections) {
+    if (!path.sections_.empty()) {
+      Path next;
+      next.sections_.push_back(section);
+      path.require_joins(next);
+    }
+    path.append(section);
+  }
+  path.first_move_size_ = first_move_size;
+  path.last_move_size_ = last_move_size;
+  if (!section_limits.empty()) {
+    require(section_limits.size() == sections.size(), "section_limits size", static_cast<unsigned long>(section_limits.size()),
+            "must be the section count " + std::to_string(sections.size()));
+    for (std::size_t k = 0; k < section_limits.size(); ++k) {
+      if (section_limits[k].velocity) require_positive(*section_limits[k].velocity, "section_limits[" + std::to_string(k) + "].velocity");
+      if (section_limits[k].acceleration)
+        require_positive(*section_limits[k].acceleration, "section_limits[" + std::to_string(k) + "].acceleration");
+    }
+    path.limits_ = section_limits;
+  }
+  if (!move_starts.empty()) {
+    require(move_starts.front() == 0, "move_starts[0]", static_cast<unsigned long>(move_starts.front()), "must be 0");
+    for (std::size_t m = 1; m < move_starts.size(); ++m) {
+      require(move_starts[m] >= move_starts[m - 1] && move_starts[m] <= sections.size(), "move_starts[" + std::to_string(m) + "]",
+              static_cast<unsigned long>(move_starts[m]), "must not decrease and be at most the section count");
+    }
+    path.move_starts_ = move_starts;
+  }
+  return path;
+}
+
 void Path::require_joins(const Path& next) const {
   const Posed here = end();
   const Posed there = next.start();

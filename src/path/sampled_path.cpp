@@ -59,7 +59,8 @@ void SectionMotions::append(const Section& section) {
   arcs_.push_back(m);
 }
 
-SampledPath::SampledPath(const std::vector<Section>& sections, std::vector<double> lengths) : lengths_(std::move(lengths)) {
+SampledPath::SampledPath(const std::vector<Section>& sections, std::vector<double> lengths)
+    : sections_(sections), lengths_(std::move(lengths)) {
   const std::size_t n = sections.size();
   motions_.reserve(sections);
   for (const Section& section : sections) motions_.append(section);

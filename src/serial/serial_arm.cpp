@@ -53,6 +53,7 @@ RevoluteChain revolute_chain_of(const KDL::Chain& chain) {
 SerialArm::SerialArm(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
 
 const std::string& SerialArm::robot_name() const noexcept { return model_->robot_name; }
+const std::string& SerialArm::urdf() const noexcept { return model_->urdf; }
 const std::string& SerialArm::base_link() const noexcept { return model_->base_link; }
 const std::string& SerialArm::tip_link() const noexcept { return model_->tip_link; }
 int SerialArm::dof() const { return static_cast<int>(model_->joint_names.size()); }

@@ -22,6 +22,7 @@ struct SerialArm::Model {
   std::string robot_name;
   std::string base_link;
   std::string tip_link;
+  std::string urdf;  // the text read: an arm is stored (pickled) as its URDF and its options
   KDL::Chain chain;                     // fixed segments included; one movable joint per q entry
   std::vector<std::string> joint_names;  // order of q
   JointLimits limits;                    // lower/upper ±∞ for continuous joints, velocity/effort +∞ if unstated

@@ -270,6 +270,7 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
   model->robot_name = urdf->getName();
   model->base_link = base_link;
   model->tip_link = tip_link;
+  model->urdf = xml;
   std::vector<const urdf::Joint*> joints;
   for (std::size_t k = 1; k < path.size(); ++k) {
     const urdf::Joint& joint = *path[k]->parent_joint;

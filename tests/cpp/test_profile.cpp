@@ -185,6 +185,31 @@ bool close(double x, double y, double tolerance) { return std::abs(x - y) <= tol
 
 // --- sweeps ------------------------------------------------------------------------------------
 
+// A law made again from its parts gives the same states, bit for bit, at any time.
+TEST(Profile, FromPartsMakesTheSameLaw) {
+  const Profile laws[] = {Profile::trapezoid(0.3, 0.25, 1.0, 0.1, 0.05), Profile::scurve(0.3, 0.25, 1.0, 10.0),
+                          Profile::scurve(0.01, 0.25, 1.0, 10.0, 0.02, 0.0)};
+  for (const Profile& law : laws) {
+    const Profile copy = Profile::from_parts(law.parts());
+    EXPECT_EQ(copy.kind(), law.kind());
+    EXPECT_EQ(copy.phase_count(), law.phase_count());
+    for (int i = -10; i <= 1010; ++i) {
+      const double t = law.duration() * i / 1000.0;
+      const ProfileState x = copy.state_at(t), y = law.state_at(t);
+      ASSERT_EQ(x.s, y.s);
+      ASSERT_EQ(x.v, y.v);
+      ASSERT_EQ(x.a, y.a);
+      ASSERT_EQ(x.j, y.j);
+    }
+  }
+  Profile::Parts bad = laws[1].parts();
+  bad.count = 8;
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("count = 8"), std::string::npos);
+  bad = laws[1].parts();
+  bad.times[2] = bad.times[1] - 1.0;
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("times[2]"), std::string::npos);
+}
+
 TEST(Profile, TrapezoidRestToRestSweep) {
   Random random(401);
   const int n = case_count(10000);

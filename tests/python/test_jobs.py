@@ -152,7 +152,7 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     t = table[:, 0]
     assert t[0] == 0.0 and t[-1] == pytest.approx(traj.duration, rel=1e-15)
     np.testing.assert_allclose(np.diff(t)[:-1], job.sample_period, rtol=1e-9)
-    assert document["summary"]["duration"] == pytest.approx(traj.duration, rel=1e-15)
+    assert document["dispkin"]["summary"]["duration"] == pytest.approx(traj.duration, rel=1e-15)
     assert f"duration {traj.duration:.4f} s" in printed
     # ROS JointTrajectory fields.
     assert document["joint_names"] == job.joint_names
@@ -172,20 +172,20 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     expected[:, 3:] = np.degrees(expected[:, 3:])
     pose_columns = [header.index(c) for c in jobs.POSE_COLUMNS]
     np.testing.assert_allclose(table[:, pose_columns], expected, atol=1e-12)
-    np.testing.assert_allclose(document["poses_xyzuvw"], expected, atol=1e-12)
+    np.testing.assert_allclose(document["dispkin"]["poses_xyzuvw"], expected, atol=1e-12)
     # The fastest point never exceeds its group's limit, and the path velocity matches.
     twists = traj.body_twist(t)
     fastest = [dispkin.max_point_speed(job.metric_set, dispkin.Pose.from_matrix(m), xi, job.limits.velocity) for m, xi in zip(poses, twists)]
     assert max(fastest) <= job.limits.velocity * (1 + 1e-6)
     np.testing.assert_allclose(table[:, header.index("path_velocity_mps")], traj.path_velocity(t), atol=1e-15)
-    for group, g in document["summary"]["groups"].items():
+    for group, g in document["dispkin"]["summary"]["groups"].items():
         assert g["peak_speed"] <= g["limit"] * (1 + 1e-6)
     # Joints: positions agree with the machine's own inverse kinematics.
     if job.hexapod is not None:
         legs = job.hexapod.inverse(poses)
         np.testing.assert_allclose(table[:, [header.index(f"{n}.position") for n in job.joint_names]], legs, atol=1e-15)
         np.testing.assert_allclose([p["positions"] for p in document["points"]], legs, atol=1e-15)
-        assert document["summary"]["legs"]["within_limits"]
+        assert document["dispkin"]["summary"]["legs"]["within_limits"]
     elif job.arm is not None:
         q = np.array([p["positions"] for p in document["points"]])
         for qk, m in zip(q, poses):

@@ -292,12 +292,26 @@ class Path {
   //! positive.
   Path blended(double corner_tolerance, std::vector<CornerStop>* stops = nullptr, double tolerance = 1e-3) const;
 
+  //! The path of `sections` (as sections() gives them) whose first and last moves had the
+  //! geometric sizes given (what a later blend may take from them), with the move limits of
+  //! every section and the first section of every move (empty: no limits, one move): a path
+  //! made again from what storing it kept (a pickle), bit for bit. Throws
+  //! std::invalid_argument if there is no section, a size is not finite and positive, a section
+  //! does not start where the one before it ends (to 1e-9 m and 1e-9 rad), a limit is not
+  //! finite and positive, or the move starts do not begin with 0 and grow up to the size.
+  static Path from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size,
+                            const std::vector<MoveLimits>& section_limits = {}, const std::vector<std::size_t>& move_starts = {});
+
   const std::vector<Section>& sections() const noexcept { return sections_; }
   //! The move limits of every section (parallel to sections()).
   const std::vector<MoveLimits>& section_limits() const noexcept { return limits_; }
   //! The index of the first section of every move, in order (starts with 0).
   const std::vector<std::size_t>& move_starts() const noexcept { return move_starts_; }
   std::size_t size() const noexcept { return sections_.size(); }
+  //! Geometric sizes (pivot travel + 0.1 m per radian) of the first and the last move before
+  //! any blend: a blend may take at most half of each.
+  double first_move_size() const noexcept { return first_move_size_; }
+  double last_move_size() const noexcept { return last_move_size_; }
   Posed start() const noexcept { return section_start(sections_.front()); }
   Posed end() const noexcept { return section_end(sections_.back()); }
 

@@ -25,6 +25,8 @@ class SampledPath {
   double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
   std::size_t section_count() const noexcept { return motions_.size(); }
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }
+  //! The sections it was made from (what storing it keeps; sampling uses their motions).
+  const std::vector<Section>& sections() const noexcept { return sections_; }
   //! s_k, the path position where section k starts.
   double section_start(std::size_t k) const noexcept { return starts_[k].s; }
 
@@ -50,6 +52,7 @@ class SampledPath {
     double s, inverse_length;
   };
   SectionMotions motions_;
+  std::vector<Section> sections_;
   std::vector<double> lengths_;
   std::vector<SectionStart> starts_;
 };

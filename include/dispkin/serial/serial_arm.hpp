@@ -104,6 +104,9 @@ class SerialArm : public Kinematics {
   const std::string& robot_name() const noexcept;  //!< the URDF's <robot name>
   const std::string& base_link() const noexcept;
   const std::string& tip_link() const noexcept;
+  //! The URDF text the arm was read from (with base_link(), tip_link(), joint_limits() and
+  //! gravity() all it takes to make the same arm again).
+  const std::string& urdf() const noexcept;
 
   // Kinematics
   int dof() const override;

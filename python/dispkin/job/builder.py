@@ -25,6 +25,8 @@ import numpy as np
 
 from .. import _core, shapes
 from .._core import Hexapod, Limits, MetricSet, Path, Pose, WorkToolFrames
+from ..limits_files import PilzCartesianLimits
+from .machine_limits import job_limits, read_limits_files, read_retime
 from .model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, value_at
 from .reader import Source
 from .schema import validate
@@ -417,16 +419,15 @@ class _Builder:
 
     # Limits and output -------------------------------------------------------------------------
 
-    def limits(self) -> Tuple[Limits, str]:
+    def limits(self, pilz: Optional[PilzCartesianLimits]) -> Tuple[Limits, str]:
         """limits: (the path's velocity, acceleration and jerk limits, with the tool's angular
-        limits when given, the profile)."""
+        limits when given, the profile); velocity, acceleration and the angular velocity come
+        from a Pilz limits file when the job has one."""
         lim = self.data["limits"]
         profile = lim.get("profile", "scurve")
         if profile == "scurve" and "jerk" not in lim:
             raise self.fail(("limits",), "missing key `jerk`: the scurve profile (the default) needs a jerk limit; give one or set profile: trapezoid")
-        # Angular limits are given in degrees (per second, per second squared), like the poses.
-        angular = {key: math.radians(lim[key]) for key in ("angular_velocity", "angular_acceleration") if key in lim}
-        return self.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular), profile
+        return job_limits(self, pilz), profile
 
     def corner_tolerance(self) -> float:
         """limits.corner_tolerance (m, default 0: every corner stops)."""
@@ -457,9 +458,11 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     builder.machine(job)
     builder.frames(job)
     metric_set = builder.metric_set(job)
+    pilz = read_limits_files(builder, job, metric_set)  # before the moves: they keep the arm's limits
     start = builder.start(job)
     path_, moves, parts = builder.moves(job, start)
-    limits, profile = builder.limits()
+    limits, profile = builder.limits(pilz)
+    read_retime(builder, job)
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,

@@ -1,6 +1,7 @@
-"""Writing a sampled job: a CSV table, and a JSON document with the fields of ROS
-``trajectory_msgs/JointTrajectory`` (joint_names, points[].positions / velocities /
-accelerations / effort / time_from_start) plus the poses, speeds and the summary.
+"""Writing a sampled job: a CSV table, and a JSON document that loads as a ROS
+``trajectory_msgs/JointTrajectory`` (header, joint_names, points[].positions / velocities /
+accelerations / effort / time_from_start) with the poses, speeds and the summary under the one
+key ``dispkin`` (see doc/job-output.md).
 """
 
 import pathlib
@@ -42,24 +43,40 @@ def write_csv(samples: JobSamples, path: Union[str, pathlib.Path]) -> None:
     np.savetxt(path, table, delimiter=",", header=",".join(csv_header(samples)), comments="", fmt="%.17g")
 
 
+def ros_pose(row: np.ndarray) -> Dict[str, Dict[str, float]]:
+    """A geometry_msgs/Pose {position {x, y, z}, orientation {x, y, z, w}} from a row
+    (x, y, z, qx, qy, qz, qw) of JobSamples.poses."""
+    x, y, z, qx, qy, qz, qw = (float(v) for v in row)
+    return {"position": {"x": x, "y": y, "z": z}, "orientation": {"x": qx, "y": qy, "z": qz, "w": qw}}
+
+
 def trajectory_json(job: Job, samples: JobSamples, summary: Dict[str, Any]) -> Dict[str, Any]:
-    """The samples as a dict with the fields of ROS trajectory_msgs/JointTrajectory
-    (joint_names, points[].positions/velocities/accelerations/effort/time_from_start), plus
-    poses_xyzuvw, path_velocity, fastest_point_speed, group_speeds and the summary."""
+    """The samples as a ROS trajectory_msgs/JointTrajectory (header, joint_names, points with
+    positions / velocities / accelerations / effort / time_from_start {sec, nanosec}) with
+    dispkin's extras under the one key ``dispkin``: the poses as geometry_msgs/Pose (position,
+    and the orientation as a quaternion in ROS order x, y, z, w) and as XYZUVW (m, degrees), the
+    times, the path velocity, the fastest point's speed, each group's speed and the summary."""
     points = []
     for k, t in enumerate(samples.time):
         points.append({"positions": samples.positions[k].tolist(), "velocities": samples.velocities[k].tolist(),
                        "accelerations": samples.accelerations[k].tolist(), "effort": samples.effort[k].tolist(),
                        "time_from_start": time_from_start(float(t))})
+    frame = "tool frame in the work frame" if job.frames is not None else "platform/flange in base coordinates"
     return {
+        "header": {"stamp": {"sec": 0, "nanosec": 0}, "frame_id": ""},
         "joint_names": samples.joint_names,
         "points": points,
-        "poses_xyzuvw": samples.xyzuvw.tolist(),
-        "pose_units": "x, y, z in m; u, v, w in degrees",
-        "pose_frame": "tool frame in the work frame" if job.frames is not None else "platform/flange in base coordinates",
-        "time": samples.time.tolist(),
-        "path_velocity": samples.path_velocity.tolist(),
-        "fastest_point_speed": samples.fastest_point_speed.tolist(),
-        "group_speeds": {str(g): s.tolist() for g, s in samples.group_speeds.items()},
-        "summary": summary,
+        "dispkin": {
+            "job": job.name,
+            "poses": [ros_pose(row) for row in samples.poses],
+            "pose_frame": frame,
+            "pose_units": "position in m; orientation a unit quaternion (x, y, z, w), ROS order",
+            "poses_xyzuvw": samples.xyzuvw.tolist(),
+            "xyzuvw_units": "x, y, z in m; u, v, w in degrees",
+            "time": samples.time.tolist(),
+            "path_velocity": samples.path_velocity.tolist(),
+            "fastest_point_speed": samples.fastest_point_speed.tolist(),
+            "group_speeds": {str(g): s.tolist() for g, s in samples.group_speeds.items()},
+            "summary": summary,
+        },
     }

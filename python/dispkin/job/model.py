@@ -71,6 +71,17 @@ class Part:
 
 
 @dataclasses.dataclass
+class Retime:
+    """The job's `retime` section: after planning under the DISP limits, re-time the Cartesian
+    moves so that the machine keeps its joint limits (``dispkin.retime``)."""
+
+    #: "scaling" (the KUKA re-timing patent's loop; serial arms) or "optimal".
+    method: str
+    #: Joint acceleration limits for the optimal method ((dof,), inf where none), or None.
+    joint_acceleration: Optional[np.ndarray] = None
+
+
+@dataclasses.dataclass
 class Job:
     """A validated job, built into the library's objects (see :func:`dispkin.jobs.load_job`)."""
 
@@ -105,6 +116,16 @@ class Job:
     parts: List[Part] = dataclasses.field(default_factory=list)
     #: limits.corner_tolerance (m): corners blended within it (0: every corner stops).
     corner_tolerance: float = 0.0
+    #: Re-timing against the joint limits (None: the DISP limits only).
+    retime: Optional[Retime] = None
+    #: Joint acceleration limits ((dof,), inf where none) from a MoveIt limits file or
+    #: retime.joint_acceleration; None when no joint has one. The written joint accelerations
+    #: are checked against them.
+    joint_acceleration: Optional[np.ndarray] = None
+    #: The limits files read (MoveIt joint_limits.yaml, Pilz cartesian_limits.yaml).
+    limits_files: List[pathlib.Path] = dataclasses.field(default_factory=list)
+    #: Where a serial arm's joint limits come from: "URDF", or "MoveIt <file name>".
+    joint_limits_from: str = "URDF"
 
     @property
     def has_ptp(self) -> bool:

@@ -6,11 +6,12 @@ Cartesian run as one path, each PTP move on the arm) and the parts join at rest;
 ``doc/planning.md`` and ``doc/ptp.md``.
 """
 
-from typing import Any, List, Tuple, Union
+from typing import Any, List, Optional, Tuple, Union
 
 import numpy as np
 
-from .._core import Trajectory, plan
+from .. import _core
+from .._core import Path, Trajectory, plan
 from .model import Job, JobError, Part
 
 
@@ -72,22 +73,37 @@ class JobTrajectory:
         return self._gather(t, "path_position", ()) + self._start_s[self.part_indices(t)]
 
 
+def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory:
+    """A Cartesian run planned under the DISP limits, then re-timed to the joint limits if the
+    job asks (dispkin.retime: the arm from the joints at the run's start, or the hexapod)."""
+    if job.retime is None:
+        joint_metric = job.hexapod if job.joint_metric else None
+        return plan(path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric,
+                    corner_tolerance=job.corner_tolerance)
+    if job.corner_tolerance > 0.0:
+        path, _ = path.blended(job.corner_tolerance)  # re-timing keeps the blended path's rests
+    extra = {} if job.retime.joint_acceleration is None else {"joint_acceleration": job.retime.joint_acceleration}
+    if job.arm is not None:
+        result = _core.retime(path, job.metric_set, job.limits, job.arm, q_start, profile=job.profile, method=job.retime.method, **extra)
+    else:
+        result = _core.retime(path, job.metric_set, job.limits, job.hexapod, profile=job.profile, method="optimal", **extra)
+    return result.trajectory
+
+
 def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     """The job's trajectory: plan(job.path, job.metric_set, job.limits, job.profile), with the
-    hexapod as joint metric when the job asks for rule (b). A job with PTP moves is planned
-    part by part (a JobTrajectory): each Cartesian run as one path, each PTP move on the arm."""
-    joint_metric = job.hexapod if job.joint_metric else None
-    blending = {"corner_tolerance": job.corner_tolerance}
+    hexapod as joint metric when the job asks for rule (b), re-timed to the joint limits when
+    it has a `retime` section. A job with PTP moves is planned part by part (a JobTrajectory):
+    each Cartesian run as one path, each PTP move on the arm (within its joint velocity limits)."""
     try:
         if not job.has_ptp:
-            return plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric, **blending)
+            return _plan_run(job, job.path, job.q_start)
         planned = []
         for part in job.parts:
             if part.kind == "ptp":
                 planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)))
             else:
-                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric,
-                                           **blending)))
+                planned.append((part, _plan_run(job, part.path, part.q_start)))
         return JobTrajectory(planned)
     except (ValueError, RuntimeError) as error:
         raise JobError(f"{job.file}: planning failed: {error}") from error

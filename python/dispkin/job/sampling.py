@@ -10,7 +10,7 @@ parts give their joint line's own q, q-dot and q-double-dot.
 
 import dataclasses
 import math
-from typing import Dict, List, Optional, Tuple, Union
+from typing import Callable, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -20,6 +20,9 @@ from .planning import JobTrajectory
 
 #: Time step (s) of the central differences that give joint accelerations from joint velocities.
 ACCELERATION_STEP = 1e-4
+
+#: Samples between two progress reports.
+_PROGRESS_CHUNK = 500
 
 JointStates = Tuple[np.ndarray, np.ndarray, np.ndarray]
 
@@ -54,6 +57,8 @@ class JobSamples:
     #: XYZUVW of the commanded pose (the tool frame in the work frame with frames, else the
     #: platform/flange pose): metres and DEGREES.
     xyzuvw: np.ndarray
+    #: The same poses as (N, 7) rows x, y, z (m), qx, qy, qz, qw (a unit quaternion in ROS order).
+    poses: np.ndarray
     #: Path velocity s-dot (m/s).
     path_velocity: np.ndarray
     #: Speed of the fastest point of the whole metric set (m/s, not scaled by group limits).
@@ -139,21 +144,35 @@ def _joint_samples(job: Job, trajectory: Union[Trajectory, JobTrajectory], t: np
     return positions, velocities, accelerations, effort
 
 
-def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: Optional[float] = None) -> JobSamples:
+def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: Optional[float] = None,
+               progress: Optional[Callable[[str, int, int], None]] = None) -> JobSamples:
     """Sample the job's trajectory every `period` seconds (default: the job's sample_period).
     PTP moves give their joints directly (q, q-dot, q-double-dot of the joint line); Cartesian
-    moves follow the inverse-kinematics branch continuous from the joints at their start."""
+    moves follow the inverse-kinematics branch continuous from the joints at their start.
+    `progress(stage, done, total)` is called as the samples are worked through."""
+    report = progress or (lambda stage, done, total: None)
     t = sample_times(trajectory.duration, period or job.sample_period)
     poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
+    report("joints", 0, len(t))
     positions, velocities, accelerations, effort = _joint_samples(job, trajectory, t)
+    report("joints", len(t), len(t))
+    commanded = [Pose.from_matrix(m) for m in poses]
     if job.frames is not None:
-        xyzuvw = np.array([job.frames.xyzuvw(Pose.from_matrix(m)) for m in poses])
+        xyzuvw = np.array([job.frames.xyzuvw(p) for p in commanded])
+        commanded = [job.frames.tool_in_work(p) for p in commanded]
     else:
-        xyzuvw = np.array([Pose.from_matrix(m).to_xyzuvw() for m in poses])
+        xyzuvw = np.array([p.to_xyzuvw() for p in commanded])
     xyzuvw[:, 3:] = np.degrees(xyzuvw[:, 3:])
-    group_speeds = {}
-    for group, one in group_sets(job.metric_set).items():
-        group_speeds[group] = np.array([max_point_speed(one, Pose.from_matrix(m), xi) for m, xi in zip(poses, twists)])
+    # (w, x, y, z) -> ROS order (x, y, z, w).
+    quaternions = np.array([p.quaternion for p in commanded])[:, [1, 2, 3, 0]]
+    positions_xyz = np.array([p.translation for p in commanded])
+    groups = group_sets(job.metric_set)
+    group_speeds = {group: np.zeros(len(t)) for group in groups}
+    for start in range(0, len(t), _PROGRESS_CHUNK):
+        chunk = range(start, min(start + _PROGRESS_CHUNK, len(t)))
+        for group, one in groups.items():
+            group_speeds[group][chunk.start:chunk.stop] = [max_point_speed(one, Pose.from_matrix(poses[k]), twists[k]) for k in chunk]
+        report("point speeds", chunk.stop, len(t))
     fastest = np.max(np.vstack(list(group_speeds.values())), axis=0)
     return JobSamples(t, job.joint_names, positions, velocities, accelerations, effort, xyzuvw,
-                      np.asarray(trajectory.path_velocity(t)), fastest, group_speeds)
+                      np.hstack([positions_xyz, quaternions]), np.asarray(trajectory.path_velocity(t)), fastest, group_speeds)

@@ -46,6 +46,8 @@ def _schema_error_message(error: Any) -> Tuple[KeyPath, str]:
     if error.validator in ("minProperties", "maxProperties") and isinstance(error.instance, dict):
         choices = ", ".join(f"`{k}`" for k in error.schema.get("properties", {}))
         return key_path, f"expected exactly one of {choices}; found {len(error.instance)} key(s)"
+    if error.validator == "anyOf" and "title" in error.schema:  # a value of one of several shapes
+        return key_path, f"{error.instance!r}: expected {error.schema['title']}"
     if error.validator == "required":
         missing = re.match(r"'([^']*)'", error.message)
         return key_path, f"missing required key `{missing.group(1) if missing else error.message}`"

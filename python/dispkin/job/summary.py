@@ -1,11 +1,12 @@
 """The summary of a planned job: its duration and length, each metric-set group's peak point
 speed against its limit, the machine's own limits (hexapod legs, serial-arm joint velocities
-and efforts from the URDF), and which limit binds; :func:`summary_text` is what
-``dispkin plan`` prints.
+and efforts from the URDF or a MoveIt file), the limits the trajectory breaks (see
+:mod:`~dispkin.job.violations`), and which limit binds — never one that is broken;
+:func:`summary_text` is what ``dispkin plan`` prints.
 """
 
 import math
-from typing import Any, Dict, Tuple, Union
+from typing import Any, Dict, List, Tuple, Union
 
 import numpy as np
 
@@ -14,6 +15,7 @@ from .._core import Trajectory
 from .model import Job
 from .planning import JobTrajectory
 from .sampling import JobSamples
+from .violations import TOLERANCE, Violation, between_samples, check_samples, hexapod_excursions
 
 #: A limit counts as binding when the trajectory reaches this fraction of it.
 BINDING_FRACTION = 0.99
@@ -53,39 +55,67 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
         "peak_path_velocity": float(np.max(samples.path_velocity)),
         "groups": groups,
     }
+    violations = check_samples(job, samples)
     if job.hexapod is not None:
-        summary["legs"], ratios["leg speed"] = _leg_report(job, trajectory)
+        summary["legs"], ratios["leg speed"], check = _leg_report(job, trajectory)
+        violations = between_samples(violations, hexapod_excursions(job, check))
     if job.arm is not None:
-        summary["joints"] = _joint_report(job, trajectory)
-        ratios["joint velocity (URDF)"] = summary["joints"]["velocity_factor"]
-        ratios["joint effort (URDF)"] = summary["joints"]["acceleration_factor"]
+        summary["joints"], dense = _joint_report(job, trajectory)
+        violations = between_samples(violations, dense)
+        source = summary["joints"]["limits_from"] = job.joint_limits_from
+        ratios[f"joint velocity ({source})"] = summary["joints"]["velocity_factor"]
+        ratios[f"joint effort ({source})"] = summary["joints"]["acceleration_factor"]
+    summary["violations"] = [broken.as_dict() for broken in violations]
+    summary["within_machine_limits"] = not violations
     name, ratio = max(ratios.items(), key=lambda item: item[1])
-    summary["binding"] = name if ratio >= BINDING_FRACTION else (
-        "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)")
     summary["highest_ratio"] = {"limit": name, "ratio": ratio}
+    summary["binding"] = _binding(ratios, violations)
     return summary
 
 
-def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float]:
+def _binding(ratios: Dict[str, float], violations: List[Violation]) -> str:
+    """The limit the trajectory runs at: the highest ratio that reaches BINDING_FRACTION without
+    going beyond the limit. A broken limit does not bind the trajectory: then none does."""
+    if violations:
+        return "none: the trajectory breaks limits (" + ", ".join(f"{x.kind} of {x.joint}" for x in violations) + ")"
+    kept = {k: r for k, r in ratios.items() if r <= 1.0 + TOLERANCE}
+    name, ratio = max(kept.items(), key=lambda item: item[1], default=("", 0.0))
+    if ratio >= BINDING_FRACTION:
+        return name
+    return "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)"
+
+
+def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float, Any]:
     """(the hexapod's leg lengths and speeds against its limits, the fastest leg's ratio to its
-    speed limit), from a check at the sample period or 1 ms, whichever is finer."""
+    speed limit, the TrajectoryCheck), from a check at the sample period or 1 ms, whichever is finer."""
     check = job.hexapod.check_trajectory(trajectory, min(job.sample_period, 1e-3))
     leg_ratio = float(np.max(check.max_speed / job.hexapod.leg_speed))
     legs = {"min_length": check.min_length.tolist(), "max_length": check.max_length.tolist(),
             "max_speed": check.max_speed.tolist(), "leg_speed": job.hexapod.leg_speed.tolist(),
             "within_limits": bool(check.ok)}
-    return legs, leg_ratio
+    return legs, leg_ratio, check
 
 
-def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Dict[str, Any]:
-    """The arm's joint-limit factors over the job (check_joint_limits, or part by part)."""
+def _velocity_violation(job: Job, report: Any, start_time: float) -> List[Violation]:
+    """The joint velocity limit a dense check (a JointLimitReport) finds broken, if any."""
+    j = int(report.velocity_joint)
+    if j < 0 or not report.velocity_factor > 1.0 + TOLERANCE:
+        return []
+    limit = float(job.arm.joint_limits.velocity[j])
+    t = start_time + float(report.velocity_time)
+    return [Violation("velocity", job.joint_names[j], float(report.velocity_factor) * limit, limit, t, None, t, t, "rad/s")]
+
+
+def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Tuple[Dict[str, Any], List[Violation]]:
+    """(the arm's joint-limit factors over the job, the velocity limit the dense check finds
+    broken): check_joint_limits, or part by part."""
     if isinstance(trajectory, JobTrajectory):
         return _joint_report_of_parts(job, trajectory)
     report = _core.check_joint_limits(trajectory, job.arm, job.q_start)
-    return {"velocity_factor": float(report.velocity_factor),
-            "acceleration_factor": float(report.acceleration_factor),
-            "position_excess": float(report.position_excess),
-            "within_limits": bool(report.within_limits)}
+    return ({"velocity_factor": float(report.velocity_factor),
+             "acceleration_factor": float(report.acceleration_factor),
+             "position_excess": float(report.position_excess),
+             "within_limits": bool(report.within_limits)}, _velocity_violation(job, report, 0.0))
 
 
 def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any]:
@@ -96,18 +126,31 @@ def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any
     position limits: both ends do, and the range is a box). See doc/retiming.md."""
     arm = job.arm
     velocity_factor = acceleration_factor = position_excess = 0.0
-    for part, traj in trajectory.parts:
+    dense: List[Violation] = []
+    for (part, traj), start_time in zip(trajectory.parts, trajectory.start_times):
         if part.kind == "path":
             report = _core.check_joint_limits(traj, arm, part.q_start)
             position_excess = max(position_excess, float(report.position_excess))
+            dense += _velocity_violation(job, report, float(start_time))
         else:
             t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
             report = arm.check_joint_limits(traj, t)
         velocity_factor = max(velocity_factor, float(report.velocity_factor))
         acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
-    return {"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
-            "position_excess": position_excess,
-            "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)}
+    return ({"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
+             "position_excess": position_excess,
+             "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)},
+            _worst_per_joint(dense))
+
+
+def _worst_per_joint(violations: List[Violation]) -> List[Violation]:
+    """The worst violation of each (kind, joint)."""
+    worst: Dict[Tuple[str, str], Violation] = {}
+    for v in violations:
+        key = (v.kind, v.joint)
+        if key not in worst or v.excess > worst[key].excess:
+            worst[key] = v
+    return list(worst.values())
 
 
 def _angular_text(lim: Dict[str, Any]) -> str:
@@ -143,7 +186,9 @@ def summary_text(summary: Dict[str, Any]) -> str:
     if "joints" in s:
         j = s["joints"]
         lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {j['acceleration_factor']:.4f} "
-                     f"(<= 1 is within the URDF limits); within limits: {j['within_limits']}")
+                     f"(<= 1 is within the {j.get('limits_from', 'URDF')} limits); within limits: {j['within_limits']}")
+    for v in s.get("violations", []):
+        lines.append("  LIMIT BROKEN: " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe())
     for stop in s["stops"]:
         lines.append(f"  stops at s = {stop['s']:.6f} m: {stop['reason']}")
     lines.append(f"  binding limit: {s['binding']}")
