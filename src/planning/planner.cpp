@@ -120,12 +120,12 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   double budget = max_pieces;
   auto emit = [&](double t0, double t1, const detail::SectionBounds* known) {
     const Section piece = section_part(section, t0, t1);
-    const detail::SectionBounds b = known ? *known : detail::section_bounds(piece, factors);
+    const detail::SectionBounds b = known ? *known : detail::section_bounds_from_middle(piece, factors);
     out.push_back({piece, {source, t0, t1}, b, b.length});
   };
   for (double i = 0; i < first_cut; ++i) {
     const double t0 = i / first_cut, t1 = i + 1.0 >= first_cut ? 1.0 : (i + 1.0) / first_cut;
-    const detail::SectionBounds b = detail::section_bounds(section_part(section, t0, t1), factors);
+    const detail::SectionBounds b = detail::section_bounds_from_middle(section_part(section, t0, t1), factors);
     const double again = std::min(pieces_needed(b), std::max(1.0, budget / (first_cut - i)));
     budget -= again;
     if (again <= 1.0) {
@@ -211,7 +211,8 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   // Continuous-path mode: the corners blended first (doc/planning.md §10).
   std::vector<CornerStop> corner_stops;
   std::optional<Path> blended;
-  if (options.corner_tolerance > 0.0) blended.emplace(given_path.blended(options.corner_tolerance, &corner_stops));
+  if (options.corner_tolerance > 0.0)
+    blended.emplace(given_path.blended(options.corner_tolerance, &corner_stops, options.blend_tolerance));
   const Path& path = blended ? *blended : given_path;
   const std::vector<Section>& sections = path.sections();
   const std::size_t n = sections.size();

@@ -60,7 +60,8 @@ void guarantee_sweep(int family, unsigned long salt) {
 // tolerance, doc/planning.md §10): as guarantee_sweep, and the end pose reached.
 TEST(Sweep, GuaranteeBlendedPoseList) {
   Random rnd(9106);
-  const int n = sweep_count();
+  // A tenth of the count: a case plans some 3000 sections (tight blends cut to the cruise rule).
+  const int n = std::max(100, sweep_count() / 10);
   double worst = 0.0;
   for (int i = 0; i < n; ++i) {
     const double v = rnd.uniform(0.05, 1.0);
@@ -70,6 +71,7 @@ TEST(Sweep, GuaranteeBlendedPoseList) {
     const Limits limits = testing::random_limits(rnd, v, kind);
     PlanOptions options;
     options.corner_tolerance = list.corner_tolerance;
+    options.blend_tolerance = 1e-2;  // as the other families' curves: fewer sections, the same guarantee
     const Trajectory traj = plan(list.path, set, limits, kind, options);
     const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
     worst = std::max(worst, ratio);

@@ -201,6 +201,10 @@ Section section_part(const Section& section, double t0, double t1);
 namespace detail {
 //! Length and acceleration bound of any section from `factors` (whose pivot it sets).
 SectionBounds section_bounds(const Section& section, GroupFactors& factors);
+//! The same with a LIN's length bounded from its middle instead of solved exactly: the
+//! fastest object's speed at the middle plus half the weighted acceleration bound. Tight on
+//! short pieces of a LIN (the planner's cut, doc/planning.md §9), and cheaper.
+SectionBounds section_bounds_from_middle(const Section& section, GroupFactors& factors);
 }  // namespace detail
 
 //! Geometry of a circle through three points (doc/section-length.md §4: circumcentre), with the arc

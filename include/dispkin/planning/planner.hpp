@@ -60,6 +60,9 @@ struct PlanOptions {
   //! the tolerance) stop and are listed by Trajectory::stops(). Not combined with
   //! min_section_lengths (those are per section of the path as given).
   double corner_tolerance = 0.0;
+  //! How finely the corner blends are cut into sections (Path::blended's `tolerance`, in
+  //! (0, 0.1]): coarser plans faster, at a slightly lower speed through the blends.
+  double blend_tolerance = 1e-3;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
