@@ -4,6 +4,7 @@
 (Limits(angular_velocity=...), limits.angular_velocity in deg/s). doc/planning.md §9-§11."""
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -162,3 +163,14 @@ def test_job_move_velocity(tmp_path):
 def test_job_bad_corner_tolerance_names_the_key(tmp_path):
     with pytest.raises(jobs.JobError, match=r"limits\.corner_tolerance"):
         jobs.load_job(write_pose_list_job(tmp_path / "bad.yaml", 3, "  corner_tolerance: -1\n"))
+
+
+def test_the_pose_list_example_is_one_continuous_run():
+    example = pathlib.Path(__file__).resolve().parents[2] / "examples" / "jobs" / "pose_list_continuous.yaml"
+    job = jobs.load_job(example)
+    assert len(job.moves) == 49 and job.corner_tolerance == 0.001
+    traj = jobs.plan_job(job)
+    assert traj.stops == [] and traj.piece_count == 1
+    # It reaches the speed limit: the fastest point runs at v somewhere.
+    speeds, _ = fastest_speeds(traj, np.vstack([icosahedron(0.02), icosahedron(0.02) + [0, 0, 0.2]]))
+    assert 0.995 * 0.1 <= speeds.max() <= 0.1 * (1 + 1e-6)
