@@ -103,6 +103,8 @@ class Job:
     outputs: Dict[str, str] = dataclasses.field(default_factory=dict)
     #: The job in stretches planned as one: Cartesian runs and PTP moves, in order.
     parts: List[Part] = dataclasses.field(default_factory=list)
+    #: The job file as read (dispkin.job.reader.Source): where a key is, for later messages.
+    source: Optional[Any] = None
 
     @property
     def has_ptp(self) -> bool:

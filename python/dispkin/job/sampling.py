@@ -15,6 +15,7 @@ from typing import Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from .._core import MetricSet, Pose, Trajectory, max_point_speed
+from . import limits
 from .model import Job, JobError
 from .planning import JobTrajectory
 
@@ -143,7 +144,15 @@ def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: O
     """Sample the job's trajectory every `period` seconds (default: the job's sample_period).
     PTP moves give their joints directly (q, q-dot, q-double-dot of the joint line); Cartesian
     moves follow the inverse-kinematics branch continuous from the joints at their start."""
-    t = sample_times(trajectory.duration, period or job.sample_period)
+    period = period or job.sample_period
+    count = trajectory.duration / period
+    if not count <= limits.MAX_SAMPLES:
+        message = (f"{period!r}: the {trajectory.duration:g} s trajectory would be {count:.3g} samples, more than "
+                   f"{limits.MAX_SAMPLES} (doc/resource-limits.md)")
+        if job.source is not None:
+            raise job.source.error(("output", "sample_period"), message)
+        raise JobError(f"{job.file}: output.sample_period: {message}")
+    t = sample_times(trajectory.duration, period)
     poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
     positions, velocities, accelerations, effort = _joint_samples(job, trajectory, t)
     if job.frames is not None:
