@@ -5,6 +5,7 @@
 // forward kinematics (2e300 m) and torques (NaN).
 #include "urdf_numbers.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
