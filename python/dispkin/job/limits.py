@@ -20,8 +20,9 @@ MAX_FILE_BYTES = 32 * 2**20
 #: and the builder recurse once or more per level, within Python's limit of 1000 frames.
 MAX_DEPTH = 32
 #: Most nodes (mappings, lists, scalars) of the job with every alias expanded: 10⁴ moves of
-#: about 20 nodes each are 2·10⁵.
-MAX_NODES = 2_000_000
+#: about 20 nodes each are 2·10⁵. Reading, validating and building a job just below it takes
+#: about 150 MB and a few seconds (the key path of every node is kept for messages).
+MAX_NODES = 500_000
 #: Most aliases (*name) in a job: a real job repeats a pose or a tool now and then.
 MAX_ALIASES = 10_000
 #: Longest scalar (characters): file names and numbers. Python refuses to read an integer of
@@ -44,7 +45,8 @@ def read_bounded(path: pathlib.Path) -> bytes:
 
 
 class _Collection:
-    """A mapping or list being read: its anchor and the nodes under it, aliases expanded."""
+    """A mapping or list being read: its anchor and its nodes (itself and all under it, aliases
+    expanded)."""
 
     __slots__ = ("anchor", "nodes")
 
@@ -66,7 +68,8 @@ def check_events(path: pathlib.Path, events: Any) -> None:
         return JobError(f"{path}:{mark.line + 1}:{mark.column + 1}: (job): {reason} (doc/resource-limits.md)",
                         (), mark.line + 1)
 
-    def add(event: Any, nodes: int) -> None:
+    def count(event: Any, nodes: int) -> None:
+        """`nodes` more values at `event`, in the whole job and in the collection being read."""
         nonlocal total
         total += nodes
         if stack:
@@ -78,22 +81,24 @@ def check_events(path: pathlib.Path, events: Any) -> None:
         if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
             if len(stack) >= MAX_DEPTH:
                 raise fail(event, f"mappings and lists nest deeper than {MAX_DEPTH} levels")
+            count(event, 1)
             stack.append(_Collection(event.anchor))
         elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
             done = stack.pop()
             if done.anchor is not None:
                 anchored[done.anchor] = done.nodes
-            add(event, done.nodes)
+            if stack:  # already in the total, value by value
+                stack[-1].nodes += done.nodes
         elif isinstance(event, yaml.ScalarEvent):
             if len(event.value) > MAX_SCALAR_CHARS:
                 raise fail(event, f"a value of {len(event.value)} characters, more than {MAX_SCALAR_CHARS}")
             if event.anchor is not None:
                 anchored[event.anchor] = 1
-            add(event, 1)
+            count(event, 1)
         elif isinstance(event, yaml.AliasEvent):
             aliases += 1
             if any(open_.anchor == event.anchor for open_ in stack):
                 raise fail(event, f"the alias *{event.anchor} is inside its own anchor: a job is a tree, not a cycle")
             if aliases > MAX_ALIASES:
                 raise fail(event, f"more than {MAX_ALIASES} aliases")
-            add(event, anchored.get(event.anchor, 1))
+            count(event, anchored.get(event.anchor, 1))
