@@ -365,7 +365,7 @@ def test_the_alias_bomb_is_refused_within_a_small_memory():
     status, out, err = run_isolated(f"from dispkin import cli; sys.exit(cli.main(['check', {str(bomb)!r}]))",
                                     address_space=1 << 30)
     assert status == 1 and "Traceback" not in err, err[-2000:]
-    assert "the job expands to more than 2000000 values" in err
+    assert "the job expands to more than 500000 values" in err
 
 
 def test_yaml_nesting_up_to_the_limit_is_read(tmp_path):
