@@ -650,7 +650,7 @@ row("jobs.load_job", "sample_period 1e-9", lambda: hostile_job("tiny.yaml", GOOD
 row("jobs.load_job", "integer beyond 64 bits", lambda: hostile_job("huge.yaml", GOOD_JOB.replace("jerk: 5.0", "jerk: 123456789012345678901234567890")), V,
     "huge.yaml:8:44: limits.jerk: an integer of 97 bits: numbers must be within ±2^53")
 
-section("Inverse kinematics: wide limits and long chains")
+section("Inverse kinematics with wide joint limits")
 accepted("SerialArm.inverse", "joint limits ±1e16 rad", lambda: ur5e_within(1e16).inverse(ur5e().forward(Q_UR)),
          lambda solutions: len(solutions) == 8 and all(np.abs(q).max() <= np.pi for q in solutions),
          "the 8 distinct solutions, every joint the 2π copy nearest 0 (was: none)")
