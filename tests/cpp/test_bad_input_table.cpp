@@ -397,7 +397,7 @@ std::vector<Row> rows() {
         std::string legs = "[";
         for (int i = 0; i < 10000; ++i) legs += std::string(i ? "," : "") + "{\"min\": 0.1}";
         Hexapod::from_json("{\"format\": \"dispkin.hexapod\", \"version\": 1, \"legs\": " + legs + "]}"); }, IA,
-      "… (");
+      ", … 10000 items]\": must be an array of 6 leg objects");
   row("Hexapod::from_json", "misspelt per-leg key", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\"", "\"sped\"")); }, IA,
       "legs[0].sped = 0.01: unknown key (allowed here: base, platform, min, max, speed)");
   row("Hexapod::from_json", "unknown top-level key", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"units\"", "\"leg_speed\": -1, \"units\"")); }, IA,
