@@ -382,7 +382,7 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndTheTwoPiCopiesOnRequest) 
     // copy nearest 0.
     const InverseResult base = arm.inverse_solutions(pose);
     EXPECT_EQ(result.solutions.size(), base.solutions.size() * 64u);
-    for (const Eigen::VectorXd& s : base.solutions) EXPECT_LE(s.cwiseAbs().maxCoeff(), pi) << s.transpose();
+    for (const Eigen::VectorXd& s : base.solutions) EXPECT_LE(s.cwiseAbs().maxCoeff(), pi + 1e-9) << s.transpose();
   }
 }
 
@@ -405,7 +405,7 @@ TEST(SerialArmInverse, WideLimitsGiveTheDistinctSolutionsNearestZero) {
       bool has_q = false;
       for (const Eigen::VectorXd& s : result.solutions) {
         EXPECT_TRUE(arm.forward(s).is_approx(pose, inverse_tolerance));
-        EXPECT_LE(s.cwiseAbs().maxCoeff(), pi) << s.transpose();
+        EXPECT_LE(s.cwiseAbs().maxCoeff(), pi + 1e-9) << s.transpose();
         bool same = true;
         for (int i = 0; i < 6; ++i) same = same && std::abs(std::remainder(s(i) - q(i), 2 * pi)) <= 1e-9;
         has_q = has_q || same;
