@@ -35,17 +35,17 @@ std::string link_attribute(const TiXmlElement& joint, const char* element) {
 void require_joint_tree(const TiXmlElement& robot) {
   std::map<std::string, std::vector<Edge>> children;  // parent link → joints to its children
   std::map<std::string, std::string> parent_joint;     // child link → the joint to its parent
+  std::string second_parent;  // the first link met with two parent joints, said after any cycle
   for (const TiXmlElement* joint = robot.FirstChildElement("joint"); joint != nullptr;
        joint = joint->NextSiblingElement("joint")) {
     const char* name = joint->Attribute("name");
     const std::string parent = link_attribute(*joint, "parent"), child = link_attribute(*joint, "child");
     if (name == nullptr || parent.empty() || child.empty()) continue;
     const auto [known, first] = parent_joint.emplace(child, name);
-    if (!first) {
-      throw std::invalid_argument(describe("link", child,
-                                           "is the child of two joints, \"" + known->second + "\" and \"" + name +
-                                               "\" (line " + std::to_string(joint->Row()) +
-                                               "): a link has one parent joint"));
+    if (!first && second_parent.empty()) {
+      second_parent = describe("link", child,
+                               "is the child of two joints, \"" + known->second + "\" and \"" + name + "\" (line " +
+                                   std::to_string(joint->Row()) + "): a link has one parent joint");
     }
     children[parent].push_back({name, child});
   }
@@ -89,6 +89,9 @@ void require_joint_tree(const TiXmlElement& robot) {
       }
     }
   }
+  // A cycle hanging off a tree gives one of its links a second parent too: the cycle, said
+  // above, is the clearer message.
+  if (!second_parent.empty()) throw std::invalid_argument(second_parent);
 }
 
 }  // namespace serial
