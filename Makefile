@@ -131,7 +131,7 @@ FUZZ_CI_SECONDS ?= 35
 fuzz-ci: deps
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_jobs py_fuzz_urdf py_fuzz_hexapod_json
 
-# The sweeps at 10⁷ cases per family (issue 9): their own Release build directory, only the
+# The sweeps at 10⁷ cases per family (doc/guarantees-and-measurements.md): their own Release build directory, only the
 # tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.
 SWEEP_BUILD ?= build/sweep
 SWEEP_COUNT ?= 10000000
