@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python wheel wheel-test docs stubs layers test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz clean
+.PHONY: all deps build python wheel wheel-test docs stubs layers test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz fuzz-ci clean
 
 all: build
 
@@ -122,7 +122,16 @@ fuzz: deps python
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh $(FUZZERS)
 
-# The sweeps at 10⁷ cases per family (issue 9): their own Release build directory, only the
+# The three loaders fuzzed briefly without clang, as CI does after `make test` (which installs the
+# package): job files (fuzz_jobs), URDFs and hexapod descriptions through the package
+# (tests/fuzz/fuzz_loaders.py), FUZZ_CI_SECONDS each from their seeds and dictionaries
+# (deep nesting, aliases, huge numbers, bytes that are not UTF-8). Any finding fails. With
+# atheris' start-up (it instruments PyYAML, jsonschema, numpy) the three take under 3 minutes.
+FUZZ_CI_SECONDS ?= 35
+fuzz-ci: deps
+	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_jobs py_fuzz_urdf py_fuzz_hexapod_json
+
+# The sweeps at 10⁷ cases per family (doc/guarantees-and-measurements.md): their own Release build directory, only the
 # tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.
 SWEEP_BUILD ?= build/sweep
 SWEEP_COUNT ?= 10000000

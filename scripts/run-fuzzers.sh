@@ -8,7 +8,9 @@
 #
 # fuzz_jobs is the Python job-file fuzzer (tests/fuzz/fuzz_jobs.py, atheris): it runs in .venv
 # with the installed dispkin package (`make python`); atheris comes from requirements-fuzz.txt,
-# installed here on first use. Its seeds are examples/jobs and tests/data/jobs.
+# installed here on first use. Its seeds are examples/jobs and tests/data/jobs. py_fuzz_urdf and
+# py_fuzz_hexapod_json (tests/fuzz/fuzz_loaders.py) fuzz the C++ loaders the same way, through
+# the package, without clang: `make fuzz-ci` runs the three for a short time.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 
@@ -16,6 +18,9 @@ build=${FUZZ_BUILD:-build/fuzz}
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs)
+# The dictionary of a target (tests/fuzz/dict/<target>.dict: deep nesting, aliases, huge numbers,
+# bytes that are not UTF-8), when it has one; py_<loader> shares the C++ target's.
+dict_of() { local d="tests/fuzz/dict/${1#py_}.dict"; [ -f "$d" ] && echo "-dict=$d"; }
 venv=${VENV:-.venv}
 if [ -n "${FUZZ_RUNS:-}" ]; then stop=(-runs="$FUZZ_RUNS"); seconds="(${FUZZ_RUNS} runs)"; else stop=(-max_total_time="$seconds"); fi
 export UBSAN_OPTIONS="print_stacktrace=1"
@@ -24,16 +29,25 @@ failed=0
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/artifacts/$t" "$build/logs"
   log="$build/logs/$t.log"
-  if [ "$t" = fuzz_jobs ]; then
+  if [ "$t" = fuzz_jobs ] || [ "${t#py_}" != "$t" ]; then
     if ! "$venv/bin/python" -c "import atheris" 2>/dev/null; then
-      "$venv/bin/python" -m pip install -q -r requirements-fuzz.txt || { echo "fuzz_jobs: cannot install atheris"; failed=1; continue; }
+      "$venv/bin/python" -m pip install -q -r requirements-fuzz.txt || { echo "$t: cannot install atheris"; failed=1; continue; }
     fi
+  fi
+  if [ "${t#py_}" != "$t" ]; then
+    # py_fuzz_hexapod_json, py_fuzz_urdf: the C++ loaders through the installed package
+    # (tests/fuzz/fuzz_loaders.py), from the C++ target's seeds.
+    loader=${t#py_fuzz_}
+    "$venv/bin/python" tests/fuzz/fuzz_loaders.py "$loader" "${stop[@]}" -timeout=60 $(dict_of "${t#py_}") \
+      -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" "$build/corpus/$t" "tests/fuzz/corpus/${t#py_}" >"$log" 2>&1
+  elif [ "$t" = fuzz_jobs ]; then
     # The seeds (copied: libFuzzer adds to the first corpus directory only).
     cp -n examples/jobs/*.yaml tests/data/jobs/*.yaml "$build/corpus/$t/"
-    FUZZ_JOBS_SCRATCH="$build/jobs_scratch" "$venv/bin/python" tests/fuzz/fuzz_jobs.py "${stop[@]}" -timeout=20 \
+    # -timeout=60: instrumented, PyYAML reads the 1000-level seed in seconds, not milliseconds.
+    FUZZ_JOBS_SCRATCH="$build/jobs_scratch" "$venv/bin/python" tests/fuzz/fuzz_jobs.py "${stop[@]}" -timeout=60 $(dict_of "$t") \
       -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" "$build/corpus/$t" >"$log" 2>&1
   else
-    "$build/tests/fuzz/$t" "${stop[@]}" -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" \
+    "$build/tests/fuzz/$t" "${stop[@]}" $(dict_of "$t") -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" \
       "$build/corpus/$t" "tests/fuzz/corpus/$t" >"$log" 2>&1
   fi
   rc=$?

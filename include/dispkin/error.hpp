@@ -3,7 +3,9 @@
 //! Only planning code throws. Sampling code never includes a check that can throw.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -23,6 +25,65 @@ struct non_deduced_wrapper {
 template <typename T>
 using non_deduced = typename non_deduced_wrapper<T>::type;
 
+//! How much of a value a message repeats: a message names the value, it does not echo a whole
+//! file back (a 150 MB JSON array, a 10⁵-character attribute). Longer strings are cut, with
+//! their length given; vectors and matrices show their first coefficients.
+constexpr std::size_t max_echoed_characters = 200;
+constexpr Eigen::Index max_echoed_coefficients = 24;
+
+namespace detail {
+
+//! Length of the valid UTF-8 sequence starting at text[i] (0 when there is none): the byte
+//! ranges of RFC 3629 §4, which exclude overlong forms, surrogates and values beyond U+10FFFF.
+inline std::size_t utf8_sequence(std::string_view text, std::size_t i) noexcept {
+  const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+  const unsigned c = byte(i);
+  const auto tail = [&](std::size_t k) { return byte(k) >= 0x80 && byte(k) <= 0xBF; };
+  if (c < 0x80) return 1;
+  if (c >= 0xC2 && c <= 0xDF) return tail(i + 1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+    return byte(i + 1) >= lo && byte(i + 1) <= hi && tail(i + 2) ? 3 : 0;
+  }
+  if (c >= 0xF0 && c <= 0xF4) {
+    const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+    return byte(i + 1) >= lo && byte(i + 1) <= hi && tail(i + 2) && tail(i + 3) ? 4 : 0;
+  }
+  return 0;
+}
+
+}  // namespace detail
+
+//! The text with every byte that is not part of valid UTF-8 written as \xNN: a message is
+//! shown as a Python str (and on terminals), which must decode, whatever bytes a file held.
+inline std::string valid_utf8(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = detail::utf8_sequence(text, i);
+    if (n > 0) {
+      out.append(text.substr(i, n));
+      i += n;
+    } else {
+      static const char hex[] = "0123456789abcdef";
+      const auto c = static_cast<unsigned char>(text[i++]);
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+//! At most max_echoed_characters of the text (cut on a character boundary), then
+//! "… (N characters)"; valid UTF-8 either way.
+inline std::string echoed(std::string_view text) {
+  if (text.size() <= max_echoed_characters) return valid_utf8(text);
+  std::size_t cut = max_echoed_characters;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return valid_utf8(text.substr(0, cut)) + "… (" + std::to_string(text.size()) + " characters)";
+}
+
 namespace detail {
 
 inline void append_value(std::ostringstream& out, double value) { out << value; }
@@ -32,16 +93,18 @@ inline void append_value(std::ostringstream& out, int value) { out << value; }
 inline void append_value(std::ostringstream& out, long value) { out << value; }
 inline void append_value(std::ostringstream& out, long long value) { out << value; }
 inline void append_value(std::ostringstream& out, unsigned long value) { out << value; }
-inline void append_value(std::ostringstream& out, const std::string& value) { out << '"' << value << '"'; }
-inline void append_value(std::ostringstream& out, const char* value) { out << '"' << value << '"'; }
+inline void append_value(std::ostringstream& out, const std::string& value) { out << '"' << echoed(value) << '"'; }
+inline void append_value(std::ostringstream& out, const char* value) { out << '"' << echoed(value) << '"'; }
 
 template <typename Derived>
 void append_value(std::ostringstream& out, const Eigen::DenseBase<Derived>& value) {
   out << '(';
-  for (Eigen::Index i = 0; i < value.size(); ++i) {
+  const Eigen::Index shown = std::min(value.size(), max_echoed_coefficients);
+  for (Eigen::Index i = 0; i < shown; ++i) {
     if (i > 0) out << ", ";
     out << value.derived().coeff(i);
   }
+  if (shown < value.size()) out << ", … (" << value.size() << " values)";
   out << ')';
 }
 
@@ -66,7 +129,7 @@ std::string describe(std::string_view argument, const Value& value, std::string_
   out.precision(12);  // enough to recognise a value, short enough to read
   out << argument << " = ";
   detail::append_value(out, value);
-  out << ": " << reason;
+  out << ": " << valid_utf8(reason);
   return out.str();
 }
 

@@ -519,12 +519,12 @@ class SerialArm:
     @gravity.setter
     def gravity(self, value: _ArrayLike) -> None: ...
     def forward(self, q: _ArrayLike) -> Pose: ...
-    def inverse(self, pose: Union[Pose, _ArrayLike]) -> List[_Array]: ...
+    def inverse(self, pose: Union[Pose, _ArrayLike], offer_equivalents: bool = False) -> List[_Array]: ...
     def inverse_solutions(
         self,
         pose: Union[Pose, _ArrayLike],
         keep_outside_limits: bool = False,
-        offer_equivalents: bool = True,
+        offer_equivalents: bool = False,
         max_attempts: int = 64,
         time_budget: float = 0.05,
         seed: int = 1,

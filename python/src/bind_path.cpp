@@ -43,7 +43,10 @@ Path& then_blended(Path& path, const Path& next, std::optional<double> blend, st
 // A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices.
 py::object sample_path(const Path& path, const py::object& u) {
   const Array a = as_array(u, "u", "a number or an array of shape (N,)");
-  if (a.ndim() == 0) return py::cast(path.sample(*a.data()));
+  if (a.ndim() == 0) {
+    require_finite(*a.data(), "u");  // as for every element of an array below
+    return py::cast(path.sample(*a.data()));
+  }
   if (a.ndim() != 1) wrong_shape("u", "a number or an array of shape (N,)", a);
   py::array_t<double> out({a.shape(0), py::ssize_t{4}, py::ssize_t{4}});
   double* data = out.mutable_data();

@@ -223,6 +223,11 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
          bool torque_limits) -> py::object {
         const ProfileKind kind = profile_kind(profile);
         if (method == "scaling") {
+          // The scaling loop has no joint acceleration limit to scale against: refused, not ignored.
+          if (joint_acceleration)
+            throw std::invalid_argument(describe("joint_acceleration", *joint_acceleration,
+                                                 "is not a limit of method=\"scaling\" (it scales the Cartesian limits "
+                                                 "until the joint speed and effort limits hold); use method=\"optimal\""));
           return py::cast(retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
                                             max_iterations));
         }

@@ -219,19 +219,27 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
                     "(3,) gravitational acceleration in base coordinates (m/s^2), default (0, 0, -9.81)")
       .def("forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); }, py::arg("q"),
            "The tip pose in base coordinates for joint positions q (n,).")
-      .def("inverse", [](const SerialArm& a, const py::object& pose) { return to_list(a.inverse(pose_of(pose, "pose"))); },
-           py::arg("pose"),
-           "All joint vectors (list of (n,) arrays) inside the limits whose forward() is `pose` (a Pose or (4, 4)) "
-           "to 1e-10, 2pi-equivalent values included; empty when unreachable.")
+      .def("inverse",
+           [](const SerialArm& a, const py::object& pose, bool equivalents) {
+             InverseOptions options;
+             options.offer_equivalents = equivalents;
+             return to_list(a.inverse_solutions(pose_of(pose, "pose"), options).solutions);
+           },
+           py::arg("pose"), py::arg("offer_equivalents") = false,
+           "The distinct joint vectors (list of (n,) arrays) inside the limits whose forward() is `pose` (a Pose or "
+           "(4, 4)) to 1e-10, one per solution, each angle the 2pi-equivalent nearest to 0 inside the limits; with "
+           "offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else ValueError); "
+           "empty when unreachable.")
       .def("inverse_solutions",
            [](const SerialArm& a, const py::object& pose, bool keep, bool equivalents, int attempts, double budget,
               unsigned seed) {
              return a.inverse_solutions(pose_of(pose, "pose"), options_of(keep, equivalents, attempts, budget, seed));
            },
-           py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = true,
+           py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
            py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u,
            "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
-           "2pi copies on or off; for the numeric fallback the restarts, time budget (s) and seed.")
+           "2pi copies on request (at most 10000, else ValueError); for the numeric fallback the restarts, time budget (s, "
+           "bounding the search's time) and seed.")
       .def("jacobian",
            [](const SerialArm& a, const py::object& q) {
              return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.jacobian(joint_vector(q, "q")));

@@ -5,8 +5,10 @@
 // (nlohmann-json3-dev) linked only at build time, so the installed library gains no runtime
 // dependency, and Python reads the same file with the standard library.
 #include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/input_limits.hpp"
 #include "dispkin/numbers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -32,8 +34,36 @@ bool spans_plane(const Hexapod::Joints& joints) {
   return s2(2) > 0.0 && s2(1) > 1e-18 * s2(2);
 }
 
-// A JSON value as it appears in a message: strings bare (describe() quotes them), the rest as JSON.
-std::string json_text(const nlohmann::json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+// A JSON value as it appears in a message: strings bare (describe() quotes them), the rest as
+// JSON written only as far as a message shows it (describe() cuts at max_echoed_characters):
+// a million-element array is not serialised to be cut afterwards. Arrays and objects cut short
+// end with their size.
+constexpr std::size_t json_preview = 120;
+constexpr std::size_t json_preview_scalar = 40;
+
+void append_json(const nlohmann::json& value, std::string& out) {
+  if (value.is_array() || value.is_object()) {
+    out += value.is_array() ? '[' : '{';
+    std::size_t shown = 0;
+    for (auto it = value.begin(); it != value.end() && out.size() <= json_preview; ++it, ++shown) {
+      if (shown > 0) out += ',';
+      if (value.is_object()) out += nlohmann::json(it.key()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ':';
+      append_json(*it, out);
+    }
+    if (shown < value.size()) out += ", … " + std::to_string(value.size()) + (value.is_array() ? " items" : " keys");
+    out += value.is_array() ? ']' : '}';
+  } else {
+    const std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    out += text.size() <= json_preview_scalar ? text : text.substr(0, json_preview_scalar) + "…";
+  }
+}
+
+std::string json_text(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  std::string out;
+  append_json(value, out);
+  return out;
+}
 
 std::string leg_argument(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 
@@ -58,7 +88,9 @@ Hexapod::Hexapod(const Joints& base_joints, const Joints& platform_joints, const
             "must be finite and not negative");
     require(std::isfinite(leg_max(i)) && leg_max(i) > leg_min(i), leg_argument("leg_max", i), leg_max(i),
             "must be finite and greater than leg_min[" + std::to_string(i) + "]");
-    require_positive(leg_speed(i), leg_argument("leg_speed", i));
+    require(leg_max(i) <= numeric_range::max_translation, leg_argument("leg_max", i), leg_max(i),
+            "must be at most 1e12 m (dispkin's numeric range)");
+    require_limit(leg_speed(i), leg_argument("leg_speed", i));
   }
   const Eigen::Vector3d centroid = platform_joints.rowwise().mean();
   platform_scale_ = (platform_joints.colwise() - centroid).colwise().norm().maxCoeff();
@@ -233,6 +265,51 @@ namespace {
 
 using nlohmann::json;
 
+// The keys a description's objects may have: any other (a misspelt "sped", a misplaced
+// "leg_speed") is refused rather than silently ignored.
+void require_known_keys(const json& object, std::initializer_list<const char*> known, const std::string& where) {
+  if (!object.is_object()) return;  // member() says what is wrong with it
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    bool is_known = false;
+    for (const char* k : known) is_known = is_known || it.key() == k;
+    if (is_known) continue;
+    std::string allowed;
+    for (const char* k : known) allowed += std::string(allowed.empty() ? "" : ", ") + k;
+    const std::string name = where.empty() ? it.key() : where + "." + it.key();
+    const std::string reason = "unknown key (allowed here: " + allowed + ")";
+    if (it->is_number()) throw std::invalid_argument(describe(name, it->get<double>(), reason));
+    throw std::invalid_argument(describe(name, json_text(*it), reason));
+  }
+}
+
+// nlohmann's parser keeps its own stack, but dump() and the messages that show a value
+// recurse once per level: nesting is refused while parsing, at max_nesting_depth.
+struct TooDeep {
+  std::size_t position;
+};
+
+json parse_bounded(const std::string& text) {
+  require(text.size() <= input_limits::max_hexapod_json_bytes, "description size", static_cast<unsigned long>(text.size()),
+          "more than " + std::to_string(input_limits::max_hexapod_json_bytes) +
+              " bytes, the limit of a hexapod description (doc/resource-limits.md)");
+  const json::parser_callback_t depth_check = [](int depth, json::parse_event_t event, json&) {
+    if (depth >= input_limits::max_nesting_depth &&
+        (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
+      throw TooDeep{static_cast<std::size_t>(depth) + 1};
+    return true;
+  };
+  try {
+    return json::parse(text, depth_check);
+  } catch (const TooDeep& deep) {
+    throw std::invalid_argument(describe("description nesting depth", static_cast<long>(deep.position),
+                                         "arrays and objects nest at most " +
+                                             std::to_string(input_limits::max_nesting_depth) +
+                                             " deep (doc/resource-limits.md)"));
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
+    throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
+  }
+}
+
 const json& member(const json& object, const std::string& key, const std::string& where) {
   const std::string name = where.empty() ? key : where + "." + key;
   require(object.is_object(), where.empty() ? std::string("description") : where, json_text(object),
@@ -278,12 +355,8 @@ std::string Hexapod::to_json() const {
 }
 
 Hexapod Hexapod::from_json(const std::string& text) {
-  json d;
-  try {
-    d = json::parse(text);
-  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
-    throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
-  }
+  const json d = parse_bounded(text);
+  require_known_keys(d, {"format", "version", "units", "legs", "home"}, "");
   const json& format = member(d, "format", "");
   require(format == "dispkin.hexapod", "format", json_text(format), "must be \"dispkin.hexapod\"");
   const json& version = member(d, "version", "");
@@ -296,6 +369,7 @@ Hexapod Hexapod::from_json(const std::string& text) {
   for (int i = 0; i < 6; ++i) {
     const std::string where = "legs[" + std::to_string(i) + "]";
     const json& leg = legs[static_cast<std::size_t>(i)];
+    require_known_keys(leg, {"base", "platform", "min", "max", "speed"}, where);
     base.col(i) = vector3(member(leg, "base", where), where + ".base");
     platform.col(i) = vector3(member(leg, "platform", where), where + ".platform");
     lo(i) = number(member(leg, "min", where), where + ".min");
@@ -303,6 +377,7 @@ Hexapod Hexapod::from_json(const std::string& text) {
     speed(i) = number(member(leg, "speed", where), where + ".speed");
   }
   const json& home = member(d, "home", "");
+  require_known_keys(home, {"translation", "quaternion_wxyz"}, "home");
   const Eigen::Vector3d t = vector3(member(home, "translation", "home"), "home.translation");
   const json& q = member(home, "quaternion_wxyz", "home");
   require(q.is_array() && q.size() == 4, "home.quaternion_wxyz", json_text(q), "must be an array of 4 numbers");
@@ -312,14 +387,16 @@ Hexapod Hexapod::from_json(const std::string& text) {
 }
 
 Hexapod Hexapod::load(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   require(static_cast<bool>(in), "path", path, "cannot be opened for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read in blocks up to the limit: a larger file is refused without being read to its end.
+  std::string text;
+  require(input_limits::read_at_most(in, input_limits::max_hexapod_json_bytes, text), "path", path,
+          "is larger than " + std::to_string(input_limits::max_hexapod_json_bytes) + " bytes, the limit of a hexapod description (doc/resource-limits.md)");
   try {
-    return from_json(text.str());
+    return from_json(text);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(path + ": " + e.what());
+    throw std::invalid_argument(echoed(path) + ": " + e.what());
   }
 }
 

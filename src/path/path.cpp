@@ -50,6 +50,21 @@ CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Ve
   double angle = std::atan2(circle.normal.dot(ra.cross(rb)), ra.dot(rb));
   if (angle <= 0.0) angle += 2.0 * pi;
   circle.angle = angle;
+  // A via point almost on the line through start and end but outside the segment between
+  // them makes a circle of huge radius that the arc goes almost all the way round (1e-9 m
+  // off a 0.1 m line: a 9.4e7 m arc). No real arc is that much longer than the polyline
+  // start → via → end; a full circle through three well-spread points is at most π times it.
+  const double polyline = u.norm() + (end - via).norm();
+  constexpr double max_arc_to_polyline = 1000.0;
+  if (!(circle.radius * angle <= max_arc_to_polyline * polyline)) {
+    std::ostringstream why;
+    why.precision(6);
+    why << "is almost collinear with the start and end points and outside the segment between them: the arc through "
+           "the three points would be "
+        << circle.radius * angle << " m long, more than " << max_arc_to_polyline
+        << " times the distance start → via → end (" << polyline << " m)";
+    throw std::invalid_argument(describe("via", via, why.str()));
+  }
   return circle;
 }
 

@@ -34,13 +34,14 @@ bool in_rule_form(Eigen::VectorXd& q, const Eigen::VectorXd& q_ref, const JointL
   const bool inside = into_limits(q, limits);
   if (!inside && !rule.options.keep_outside_limits) return false;
   if (!inside || !rule.options.offer_equivalents) return true;
-  // The listed 2π copies of joint i are q(i) + 2π, + 2π, … up to the upper limit: the nearest.
+  // The 2π copies of joint i inside the limits are q(i) + 2πk, k_lo ≤ k ≤ k_hi: the nearest to
+  // q_ref(i) has the k nearest (q_ref(i) − q(i)) / 2π, in closed form however wide the limits.
   for (Eigen::Index i = 0; i < q.size(); ++i) {
     if (!std::isfinite(limits.lower(i)) || !std::isfinite(limits.upper(i))) continue;
-    double best = q(i);
-    for (double value = q(i) + two_pi; value <= limits.upper(i) + limit_slack; value += two_pi)
-      if (std::abs(value - q_ref(i)) < std::abs(best - q_ref(i))) best = value;
-    q(i) = best;
+    const double k_lo = std::ceil((limits.lower(i) - limit_slack - q(i)) / two_pi);
+    const double k_hi = std::floor((limits.upper(i) + limit_slack - q(i)) / two_pi);
+    const double k = std::min(std::max(std::round((q_ref(i) - q(i)) / two_pi), k_lo), k_hi);
+    q(i) += two_pi * k;
   }
   return true;
 }
@@ -70,11 +71,11 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
   if (arm.dof() == 6) {
     if (std::optional<Eigen::VectorXd> q = tracked(arm, pose, q_ref, rule, guess ? *guess : q_ref)) return q;
   }
+  // The distinct solutions; their 2π copies are the rule's, placed by in_rule_form below.
   InverseOptions options = rule.options;
-  if (rule.turns == Turns::nearest) options.offer_equivalents = false;  // the 2π moves below make them
+  options.offer_equivalents = false;
   const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
   if (solutions.empty()) return std::nullopt;
-  if (rule.turns == Turns::listed) return nearest(solutions, q_ref);
   const JointLimits limits = arm.joint_limits();
   Eigen::VectorXd best;
   double best_distance = std::numeric_limits<double>::infinity();
@@ -100,7 +101,10 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   // inverse_solutions' own checks, which tracking would skip.
   require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
   require_positive(options.time_budget, "time_budget");
-  const detail::BranchRule rule{options, detail::Turns::listed};
+  // A branch turns on through the joints' whole range: the 2π copies inside the limits are
+  // candidates whatever offer_equivalents says (found in closed form, not enumerated).
+  detail::BranchRule rule{options, detail::Turns::listed};
+  rule.options.offer_equivalents = true;
   std::vector<Eigen::VectorXd> path;
   path.reserve(poses.size());
   Eigen::VectorXd previous = q_start;

@@ -130,6 +130,9 @@ Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::Vector
   require_joint_vector(q, "q");
   require_joint_vector(qd, "qd");
   require_joint_vector(qdd, "qdd");
+  if (!model_->impossible_inertia.empty())
+    throw std::invalid_argument(model_->impossible_inertia + ": the torques of robot \"" + model_->robot_name +
+                                "\" need a rigid body's inertia on every link from base_link to tip_link");
   KDL::ChainIdSolver_RNE solver(model_->chain, KDL::Vector(gravity_.x(), gravity_.y(), gravity_.z()));
   const KDL::Wrenches no_external(model_->chain.getNrOfSegments(), KDL::Wrench::Zero());
   KDL::JntArray tau(static_cast<unsigned>(dof()));

@@ -27,6 +27,9 @@ struct SerialArm::Model {
   std::vector<std::string> joint_names;  // order of q
   JointLimits limits;                    // lower/upper ±∞ for continuous joints, velocity/effort +∞ if unstated
   std::vector<BodyInertia> inertias;     // per joint, in its child link's frame
+  // Empty, or why a link of the chain has no rigid body's inertia (named): the dynamics refuse
+  // such a model, kinematics do not need the inertias.
+  std::string impossible_inertia;
   RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
   IkFamily family = IkFamily::general;
   // Configuration flags, base coordinates at q = 0: the point of axis 4 nearest to axis 5
@@ -57,9 +60,9 @@ inline Eigen::Vector3d to_eigen(const KDL::Vector& v) { return Eigen::Vector3d(v
 // at a limit (e.g. exactly π) comes back off by rounding.
 constexpr double limit_slack = 1e-10;
 
-// q brought into the limits by ±2π where possible (each joint to its smallest equivalent value
-// ≥ lower; joints without limits, and those that do not fit, into (−π, π]): the form in which
-// inverse_solutions returns a solution. Whether every joint fits.
+// q brought into the limits by ±2π where possible (each joint to its equivalent value nearest 0
+// inside them; joints without limits, and those that do not fit, into (−π, π]): the form in
+// which inverse_solutions returns a solution. Whether every joint fits.
 bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept;
 
 // The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.

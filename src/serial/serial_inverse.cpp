@@ -1,10 +1,12 @@
 // SerialArm inverse kinematics: the analytic family when there is one, else a numeric search
 // with KDL's Levenberg–Marquardt solver from random starts; then joint limits, 2π-equivalent
 // values, verification by forward kinematics, and the choice among solutions.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 
 #include "angles.hpp"
 #include "dispkin/error.hpp"
+#include "dispkin/input_limits.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "ik_newton.hpp"
 #include "serial_arm_model.hpp"
@@ -29,6 +32,9 @@ using detail::two_pi;
 // Joint values this close count as one solution; numeric restarts land on the same root with
 // differences of the order of their convergence tolerance.
 constexpr double duplicate_tolerance = 1e-7;
+// The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
+constexpr int lma_run_length = 25;
+constexpr int lma_runs = 20;
 // q into (−π, π].
 double wrap(double q) {
   double r = std::remainder(q, two_pi);  // in [−π, π]
@@ -67,22 +73,89 @@ bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pos
 bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept {
   bool inside = true;
   for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const double w = wrap(q(i));
     const double lo = limits.lower(i);
     const double hi = limits.upper(i);
     if (!std::isfinite(lo) || !std::isfinite(hi)) {
-      q(i) = wrap(q(i));
+      q(i) = w;
       continue;
     }
-    const double shifted = q(i) - two_pi * std::floor((q(i) - lo + limit_slack) / two_pi);
-    if (shifted <= hi + limit_slack) {
-      q(i) = shifted;
-    } else {
-      q(i) = wrap(q(i));
+    // The copies w + 2πk inside the limits are k_lo ≤ k ≤ k_hi; the one nearest 0 has the k
+    // nearest 0 (|w| ≤ π). Computed from w, never by stepping through the range, and never
+    // from the limits' end, so ±1e16 rad keeps every digit of the angle.
+    const double k_lo = std::ceil((lo - limit_slack - w) / two_pi);
+    const double k_hi = std::floor((hi + limit_slack - w) / two_pi);
+    if (k_lo > k_hi) {
+      q(i) = w;
       inside = false;
+      continue;
     }
+    q(i) = w + two_pi * std::min(std::max(0.0, k_lo), k_hi);
   }
   return inside;
 }
+
+namespace {
+
+// The whole turns k that keep q + 2πk inside [lo, hi] (with limit_slack): [first, last], k = 0
+// among them when q is inside; {0, 0} for a joint without limits.
+struct TurnRange {
+  double first = 0.0, last = 0.0;
+  double count() const { return last - first + 1.0; }
+};
+
+TurnRange turns_within(double q, double lo, double hi) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return {};
+  return {std::ceil((lo - limit_slack - q) / two_pi), std::floor((hi + limit_slack - q) / two_pi)};
+}
+
+// Every 2π copy of q inside the limits, q first: the product of the joints' turn ranges.
+std::vector<Eigen::VectorXd> copies_within(const Eigen::VectorXd& q, const JointLimits& limits) {
+  std::vector<Eigen::VectorXd> variants{q};
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const TurnRange turns = turns_within(q(i), limits.lower(i), limits.upper(i));
+    const std::size_t count = variants.size();
+    for (double k = turns.first; k <= turns.last; ++k) {
+      if (k == 0.0) continue;
+      for (std::size_t v = 0; v < count; ++v) {
+        Eigen::VectorXd other = variants[v];
+        other(i) = q(i) + two_pi * k;
+        variants.push_back(std::move(other));
+      }
+    }
+  }
+  return variants;
+}
+
+// How many solutions the copies of `representatives` are, counted before any is made (a
+// double: ±100 rad on six joints make 10¹⁰ per solution). One outside the limits has none.
+double copy_count(const std::vector<Eigen::VectorXd>& representatives, const std::vector<bool>& inside,
+                  const JointLimits& limits) {
+  double total = 0.0;
+  for (std::size_t r = 0; r < representatives.size(); ++r) {
+    const Eigen::VectorXd& q = representatives[r];
+    double product = 1.0;
+    for (Eigen::Index i = 0; inside[r] && i < q.size(); ++i)
+      product *= turns_within(q(i), limits.lower(i), limits.upper(i)).count();
+    total += product;
+  }
+  return total;
+}
+
+// KDL's Levenberg–Marquardt solver from q_init, its 500 iterations run in runs of 25 so that the
+// time budget is looked at between them (one run of 500 on a 10⁴-joint chain takes seconds).
+// False when the deadline passed first.
+bool solve_before(KDL::ChainIkSolverPos_LMA& solver, const KDL::Frame& goal, KDL::JntArray& q_init,
+                  KDL::JntArray& q_out, std::chrono::steady_clock::time_point deadline) {
+  for (int run = 0; run < lma_runs; ++run) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    if (solver.CartToJnt(q_init, goal, q_out) != KDL::SolverI::E_MAX_ITERATIONS_EXCEEDED) return true;
+    q_init = q_out;
+  }
+  return true;
+}
+
+}  // namespace
 
 InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptions& options) const {
   {
@@ -103,24 +176,34 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
   } else {
-    // Numeric fallback: restarts drawn uniformly inside the limits (continuous joints in
-    // [−π, π]), until the attempts or the time budget run out.
-    KDL::ChainIkSolverPos_LMA solver(model_->chain, 1e-12, 500, 1e-15);
+    // Numeric fallback: restarts drawn uniformly inside the limits within one turn, until the
+    // attempts or the time budget run out.
+    KDL::ChainIkSolverPos_LMA solver(model_->chain, 1e-12, lma_run_length, 1e-15);
     std::mt19937_64 generator(options.seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const KDL::Frame goal = to_frame(pose);
-    const auto start = std::chrono::steady_clock::now();
+    // A budget beyond a million seconds is no budget; capped so that it converts to the clock's
+    // integer ticks without overflow.
+    const auto budget = std::chrono::duration<double>(std::min(options.time_budget, 1e6));
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget);
     KDL::JntArray q_init(static_cast<unsigned>(n));
     KDL::JntArray q_out(static_cast<unsigned>(n));
     for (int attempt = 0; attempt < options.max_attempts; ++attempt) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed > options.time_budget) break;
+      if (std::chrono::steady_clock::now() > deadline) break;
       for (int i = 0; i < n; ++i) {
-        const double lo = std::isfinite(limits.lower(i)) ? limits.lower(i) : -pi;
-        const double hi = std::isfinite(limits.upper(i)) ? limits.upper(i) : pi;
+        // One turn is enough to start from: inside the limits and [−π, π] where they meet,
+        // else the limits' first turn (±1e16 rad limits would otherwise start at 1e15 rad).
+        double lo = std::isfinite(limits.lower(i)) ? std::max(limits.lower(i), -pi) : -pi;
+        double hi = std::isfinite(limits.upper(i)) ? std::min(limits.upper(i), pi) : pi;
+        if (!(lo < hi)) {
+          lo = limits.lower(i);
+          hi = std::min(limits.upper(i), lo + two_pi);
+        }
         q_init(static_cast<unsigned>(i)) = lo + (hi - lo) * unit(generator);
       }
-      solver.CartToJnt(q_init, goal, q_out);  // the return code says little; FK below decides
+      // The return code says little; forward kinematics below decides.
+      if (!solve_before(solver, goal, q_init, q_out, deadline)) break;
       Eigen::VectorXd q = q_out.data;
       if (!q.allFinite()) continue;
       if (!polish(*this, pose, q)) continue;
@@ -130,6 +213,7 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   }
 
   std::vector<Eigen::VectorXd> representatives;
+  std::vector<bool> inside_limits;
   for (Eigen::VectorXd q : raw) {
     if (q.size() != n || !q.allFinite()) continue;
     const bool inside = into_limits(q, limits);
@@ -141,26 +225,34 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     // the copies of different representatives are then different too.
     if (is_duplicate(representatives, q)) continue;
     representatives.push_back(q);
-    // The 2π-equivalent values inside the limits: every combination.
-    std::vector<Eigen::VectorXd> variants{q};
-    if (inside && options.offer_equivalents) {
-      for (int i = 0; i < n; ++i) {
-        if (!std::isfinite(limits.lower(i)) || !std::isfinite(limits.upper(i))) continue;
-        const std::size_t count = variants.size();
-        for (std::size_t v = 0; v < count; ++v) {
-          for (double value = variants[v](i) + two_pi; value <= limits.upper(i) + limit_slack; value += two_pi) {
-            Eigen::VectorXd other = variants[v];
-            other(i) = value;
-            variants.push_back(other);
-          }
-        }
-      }
+    inside_limits.push_back(inside);
+  }
+  if (!options.offer_equivalents) {
+    result.solutions = std::move(representatives);
+    result.within_limits = std::move(inside_limits);
+    return result;
+  }
+  // The 2π copies inside the limits: counted first, refused beyond the cap, then made.
+  const double count = copy_count(representatives, inside_limits, limits);
+  if (count > static_cast<double>(input_limits::max_ik_solutions)) {
+    std::ostringstream why;
+    why << "asks for the 2π copies of the " << representatives.size() << " solutions inside the joint limits, "
+        << count << " in all, more than " << input_limits::max_ik_solutions
+        << " (doc/resource-limits.md); leave it false for the distinct solutions, or narrow the limits";
+    throw std::invalid_argument(describe("offer_equivalents", std::string("true"), why.str()));
+  }
+  for (std::size_t r = 0; r < representatives.size(); ++r) {
+    if (!inside_limits[r]) {  // kept outside the limits: no copies of it are inside
+      result.solutions.push_back(representatives[r]);
+      result.within_limits.push_back(false);
+      continue;
     }
+    std::vector<Eigen::VectorXd> variants = copies_within(representatives[r], limits);
     for (Eigen::VectorXd& candidate : variants) {
       if (&candidate != &variants.front() && !reproduces(*this, candidate, pose) && !polish(*this, pose, candidate))
         continue;
       result.solutions.push_back(candidate);
-      result.within_limits.push_back(inside);
+      result.within_limits.push_back(true);
     }
   }
   return result;

@@ -1,5 +1,6 @@
 // The joint graph of a URDF, read before urdfdom builds its model: a URDF whose joints form a
-// cycle is refused here. urdfdom's links own their children (shared_ptr) and point to their
+// cycle, or give a link two parents, is refused here. urdfdom keeps the last parent joint of a
+// link and drops the others without a word (a three-joint arm became a two-joint one). urdfdom's links own their children (shared_ptr) and point to their
 // parent weakly, so a cycle of joints is a ring of links that own each other. When urdfdom
 // refuses such a document (no root link left) it drops its model with the ring
 // inside, and the links are never freed; the leak is in urdfdom's error path, out of our reach
@@ -31,20 +32,21 @@ std::string link_attribute(const TiXmlElement& joint, const char* element) {
 
 }  // namespace
 
-void require_acyclic_joints(const std::string& xml) {
-  TiXmlDocument document;
-  document.Parse(xml.c_str());
-  // Malformed XML and missing names are urdfdom's to report, with its own messages.
-  if (document.Error()) return;
-  const TiXmlElement* robot = document.FirstChildElement("robot");
-  if (robot == nullptr) return;
-
+void require_joint_tree(const TiXmlElement& robot) {
   std::map<std::string, std::vector<Edge>> children;  // parent link → joints to its children
-  for (const TiXmlElement* joint = robot->FirstChildElement("joint"); joint != nullptr;
+  std::map<std::string, std::string> parent_joint;     // child link → the joint to its parent
+  std::string second_parent;  // the first link met with two parent joints, said after any cycle
+  for (const TiXmlElement* joint = robot.FirstChildElement("joint"); joint != nullptr;
        joint = joint->NextSiblingElement("joint")) {
     const char* name = joint->Attribute("name");
     const std::string parent = link_attribute(*joint, "parent"), child = link_attribute(*joint, "child");
     if (name == nullptr || parent.empty() || child.empty()) continue;
+    const auto [known, first] = parent_joint.emplace(child, name);
+    if (!first && second_parent.empty()) {
+      second_parent = describe("link", child,
+                               "is the child of two joints, \"" + known->second + "\" and \"" + name + "\" (line " +
+                                   std::to_string(joint->Row()) + "): a link has one parent joint");
+    }
     children[parent].push_back({name, child});
   }
 
@@ -87,6 +89,9 @@ void require_acyclic_joints(const std::string& xml) {
       }
     }
   }
+  // A cycle hanging off a tree gives one of its links a second parent too: the cycle, said
+  // above, is the clearer message.
+  if (!second_parent.empty()) throw std::invalid_argument(second_parent);
 }
 
 }  // namespace serial

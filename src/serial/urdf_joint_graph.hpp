@@ -1,14 +1,15 @@
 // Checks on a URDF's joint graph made before urdfdom parses the document (urdf_joint_graph.cpp).
 #pragma once
 
-#include <string>
+class TiXmlElement;
 
 namespace dispkin {
 namespace serial {
 
-// Throws std::invalid_argument naming a link on the cycle (and the cycle, joint by joint) when
-// the joints of the URDF text form one. Malformed XML passes: urdfdom reports it.
-void require_acyclic_joints(const std::string& xml);
+// Throws std::invalid_argument naming the link when the joints under <robot> do not form a
+// forest: a cycle (spelled out joint by joint), or a link that is the child of two joints.
+// Joints without a name or links are urdfdom's to report.
+void require_joint_tree(const TiXmlElement& robot);
 
 }  // namespace serial
 }  // namespace dispkin

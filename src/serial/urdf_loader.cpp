@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 #include <console_bridge/console.h>
+#include <tinyxml.h>
 #include <kdl/chain.hpp>
 #include <kdl/joint.hpp>
 #include <kdl/rigidbodyinertia.hpp>
@@ -24,8 +25,11 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "dispkin/error.hpp"
+#include "dispkin/input_limits.hpp"
 #include "serial_arm_model.hpp"
 #include "urdf_joint_graph.hpp"
+#include "urdf_numbers.hpp"
+#include "xml_bounds.hpp"
 
 namespace dispkin {
 namespace serial {
@@ -92,14 +96,29 @@ void require_no_percent_sign(const std::string& xml) {
   }
 }
 
+// Everything refused before urdfdom reads the text: its size, nesting and attribute counts
+// (xml_bounds.cpp), then, read by TinyXML as urdfdom will, a joint graph that is not a tree
+// (urdf_joint_graph.cpp) and any number that is not one (urdf_numbers.cpp).
+void require_sound_urdf(const std::string& padded) {
+  TiXmlDocument document;
+  document.Parse(padded.c_str());
+  // Malformed XML and missing names are urdfdom's to report, with its own messages.
+  if (document.Error()) return;
+  const TiXmlElement* robot = document.FirstChildElement("robot");
+  if (robot == nullptr) return;
+  require_joint_tree(*robot);
+  require_valid_numbers(*robot);
+}
+
 urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& messages) {
+  require_bounded_xml(xml);
   require_no_percent_sign(xml);
-  // TinyXML 2.6.2 (urdfdom's XML parser, and ours in require_acyclic_joints) steps over a UTF-8
+  // TinyXML 2.6.2 (urdfdom's XML parser, and ours in require_sound_urdf) steps over a UTF-8
   // lead byte by the length it announces, so a text ending inside such a sequence ("…\xe6") was
   // read up to 3 bytes past its terminating NUL (an ASan heap-buffer-overflow).
   // Both parsers read the text as a C string: NULs appended keep those reads inside the buffer.
   const std::string padded = xml + std::string(4, '\0');
-  require_acyclic_joints(padded);
+  require_sound_urdf(padded);
   const std::lock_guard<std::mutex> lock(parse_mutex);
   CapturingOutput capture;
   console_bridge::useOutputHandler(&capture);
@@ -112,7 +131,7 @@ urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& message
   }
   console_bridge::restorePreviousOutputHandler();
   messages = capture.messages;
-  // No cycle reaches urdfdom (require_acyclic_joints reads the same text with the same
+  // No cycle reaches urdfdom (require_joint_tree reads the same text with the same
   // parser), so its links, which own their children, are freed with the model.
   return model;
 }
@@ -135,8 +154,9 @@ KDL::Frame checked_frame(const urdf::Pose& pose, const std::string& what) {
                     KDL::Vector(p.x(), p.y(), p.z()));
 }
 
-// The link's own inertia about the link frame's origin, in link axes (KDL's convention).
-KDL::RigidBodyInertia link_inertia(const urdf::Link& link) {
+// The link's own inertia about the link frame's origin, in link axes (KDL's convention). The
+// first physically impossible inertia met is described in `impossible` (kept empty otherwise).
+KDL::RigidBodyInertia link_inertia(const urdf::Link& link, std::string& impossible) {
   if (!link.inertial) return KDL::RigidBodyInertia::Zero();
   const urdf::Inertial& in = *link.inertial;
   const std::string what = "link \"" + link.name + "\" inertial";
@@ -144,6 +164,11 @@ KDL::RigidBodyInertia link_inertia(const urdf::Link& link) {
   Eigen::Matrix3d inertia;
   inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
   require_finite(inertia, what + " inertia");
+  const std::string why = impossible_inertia(inertia);
+  if (impossible.empty() && !why.empty()) {
+    impossible = describe(what + " inertia (ixx, ixy, ixz, iyy, iyz, izz)",
+                          (Eigen::Matrix<double, 6, 1>() << in.ixx, in.ixy, in.ixz, in.iyy, in.iyz, in.izz).finished(), why);
+  }
   const KDL::Frame origin = checked_frame(in.origin, what + " origin");
   // URDF gives the inertia about the centre of mass in the <inertial><origin> axes; turn it
   // into link axes (R I Rᵀ) before handing it to KDL, which wants it about the centre of mass.
@@ -158,14 +183,14 @@ KDL::RigidBodyInertia link_inertia(const urdf::Link& link) {
 
 // `link` plus every link hanging off it through fixed joints, except `skip` (the next link on
 // the path, which is a segment of its own), in `link`'s frame.
-KDL::RigidBodyInertia rigid_body_inertia(const urdf::Link& link, const std::string& skip) {
-  KDL::RigidBodyInertia total = link_inertia(link);
+KDL::RigidBodyInertia rigid_body_inertia(const urdf::Link& link, const std::string& skip, std::string& impossible) {
+  KDL::RigidBodyInertia total = link_inertia(link, impossible);
   for (const urdf::JointSharedPtr& joint : link.child_joints) {
     if (!joint || joint->type != urdf::Joint::FIXED || joint->child_link_name == skip) continue;
     for (const urdf::LinkSharedPtr& child : link.child_links) {
       if (child && child->name == joint->child_link_name) {
         const KDL::Frame offset = checked_frame(joint->parent_to_joint_origin_transform, joint_label(*joint) + " origin");
-        total = total + offset * rigid_body_inertia(*child, "");
+        total = total + offset * rigid_body_inertia(*child, "", impossible);
       }
     }
   }
@@ -227,14 +252,16 @@ Eigen::Vector3d nearest_point_on_line(const Eigen::Vector3d& pa, const Eigen::Ve
 }  // namespace
 
 SerialArm SerialArm::from_urdf_file(const std::string& path, const std::string& base_link, const std::string& tip_link) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(describe("path", path, "cannot be opened"));
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read in blocks up to the limit: a larger file is refused without being read to its end.
+  std::string text;
+  require(input_limits::read_at_most(in, input_limits::max_urdf_bytes, text), "path", path,
+          "is larger than " + std::to_string(input_limits::max_urdf_bytes) + " bytes, the limit of a URDF (doc/resource-limits.md)");
   try {
-    return from_urdf_string(text.str(), base_link, tip_link);
+    return from_urdf_string(text, base_link, tip_link);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(path + ": " + e.what());
+    throw std::invalid_argument(echoed(path) + ": " + e.what());
   }
 }
 
@@ -305,7 +332,7 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
     const urdf::Link& child = *path[k + 1];
     const std::string next = k + 2 < path.size() ? path[k + 2]->name : "";
     const KDL::Frame origin = checked_frame(joint.parent_to_joint_origin_transform, joint_label(joint) + " origin");
-    const KDL::RigidBodyInertia inertia = rigid_body_inertia(child, next);
+    const KDL::RigidBodyInertia inertia = rigid_body_inertia(child, next, model->impossible_inertia);
     if (joint.type == urdf::Joint::FIXED) {
       model->chain.addSegment(KDL::Segment(child.name, KDL::Joint(joint.name, KDL::Joint::Fixed), origin, inertia));
       continue;

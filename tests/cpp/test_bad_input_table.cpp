@@ -245,6 +245,8 @@ std::vector<Row> rows() {
       "pivot = (117, 6.3e+257, 117): must have coordinates within ±1e12 m");
   row("Path::lin", "coinciding poses", [] { Path::lin(A, A); }, IA, "b = (0, 0, 0): start and end poses coincide");
   row("Path::circ", "collinear via", [] { Path::circ(A, Posed::from_xyzuvw(v6(0.05, 0, 0, 0, 0, 0)), Posed::from_xyzuvw(v6(0.1, 0, 0, 0, 0, 0))); }, IA, "via = (0.05, 0, 0): is collinear with the start and end points");
+  row("Path::circ", "via 1e-9 m off the line, beyond the end", [] { Path::circ(A, Posed::from_xyzuvw(v6(0.2, 1e-9, 0, 0, 0, 0)), Posed::from_xyzuvw(v6(0.1, 0, 0, 0, 0, 0))); }, IA,
+      "via = (0.2, 1e-09, 0): is almost collinear with the start and end points and outside the segment between them");
   row("Path::circ", "via equals start", [] { Path::circ(A, A, C); }, IA, "via = (0, 0, 0): coincides with the start point");
   row("Path::circ", "zero tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), 0.0); }, IA, "tolerance = 0");
   row("Path::circ", "negative tolerance", [] { Path::circ(A, B, C, Vector3d::Zero(), -1e-3); }, IA, "tolerance = -0.001");
@@ -365,7 +367,7 @@ std::vector<Row> rows() {
   row("Hexapod::from_json", "truncated JSON", [] { Hexapod::from_json("{"); }, IA, "description = \"<text>\": is not JSON");
   row("Hexapod::from_json", "empty text", [] { Hexapod::from_json(""); }, IA, "description = \"<text>\": is not JSON");
   row("Hexapod::from_json", "not an object", [] { Hexapod::from_json("[1, 2]"); }, IA, "description = \"[1,2]\": must be a JSON object");
-  row("Hexapod::from_json", "negative speed", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": -1.0")); }, IA, "leg_speed[0] = -1: must be finite and greater than zero");
+  row("Hexapod::from_json", "negative speed", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": -1.0")); }, IA, "leg_speed[0] = -1: must be in [1e-12, 1e12]");
   row("Hexapod::from_json", "string speed", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": \"fast\"")); }, IA, "legs[0].speed = \"fast\": must be a number");
   row("Hexapod::from_json", "NaN literal", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": NaN")); }, IA, "description = \"<text>\": is not JSON");
   row("Hexapod::from_json", "wrong format tag", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"dispkin.hexapod\"", "\"urdf\"")); }, IA,
@@ -382,6 +384,32 @@ std::vector<Row> rows() {
         std::remove(path.c_str());
       }, IA,
       "dispkin_bad_input_malformed.json: description = \"<text>\": is not JSON");
+  // Hostile hexapod descriptions: depth, size, unknown keys, numbers beyond the range, bytes.
+  row("Hexapod::from_json", "arrays nested 10⁵ deep", [] { Hexapod::from_json(std::string(100000, '[') + std::string(100000, ']')); }, IA,
+      "description nesting depth = 101: arrays and objects nest at most 100 deep");
+  row("Hexapod::from_json", "objects nested 10⁵ deep", [] {
+        std::string text;
+        for (int i = 0; i < 100000; ++i) text += "{\"a\":";
+        Hexapod::from_json(text + "1" + std::string(100000, '}')); }, IA, "description nesting depth = 101");
+  row("Hexapod::from_json", "text over 1 MiB", [] { Hexapod::from_json(std::string((1 << 20) + 1, ' ')); }, IA,
+      "description size = 1048577: more than 1048576 bytes, the limit of a hexapod description");
+  row("Hexapod::from_json", "10⁴ legs (message not echoing them)", [] {
+        std::string legs = "[";
+        for (int i = 0; i < 10000; ++i) legs += std::string(i ? "," : "") + "{\"min\": 0.1}";
+        Hexapod::from_json("{\"format\": \"dispkin.hexapod\", \"version\": 1, \"legs\": " + legs + "]}"); }, IA,
+      ", … 10000 items]\": must be an array of 6 leg objects");
+  row("Hexapod::from_json", "misspelt per-leg key", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\"", "\"sped\"")); }, IA,
+      "legs[0].sped = 0.01: unknown key (allowed here: base, platform, min, max, speed)");
+  row("Hexapod::from_json", "unknown top-level key", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"units\"", "\"leg_speed\": -1, \"units\"")); }, IA,
+      "leg_speed = -1: unknown key (allowed here: format, version, units, legs, home)");
+  row("Hexapod::from_json", "leg speed 5e-324", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": 5e-324")); }, IA,
+      "leg_speed[0] = 4.94065645841e-324: must be in [1e-12, 1e12]");
+  row("Hexapod::from_json", "leg speed 1e300", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"speed\": 0.01", "\"speed\": 1e300")); }, IA,
+      "leg_speed[0] = 1e+300: must be in [1e-12, 1e12]");
+  row("Hexapod::from_json", "leg max 1e300", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"max\": 0.32", "\"max\": 1e300")); }, IA,
+      "leg_max[0] = 1e+300: must be at most 1e12 m");
+  row("Hexapod::from_json", "invalid UTF-8 in a string", [] { Hexapod::from_json(replace_once(hexapod().to_json(), "\"m, m/s\"", "\"m\xff\xfe\"")); }, IA,
+      "invalid string: ill-formed UTF-8 byte; last read: '\"m\\xff");
   row("Hexapod::forward", "NaN legs", [] { Hexapod::Legs l = Hexapod::Legs::Constant(0.2); l(0) = nan_; hexapod().forward(l); }, IA, "legs[0] = nan");
   row("Hexapod::forward", "negative legs", [] { hexapod().forward(Hexapod::Legs(Hexapod::Legs::Constant(-0.2))); }, IA, "legs[0] = -0.2");
   row("Hexapod::forward", "zero tolerance", [] { ForwardOptions o; o.tolerance = 0; Hexapod h = hexapod(); h.forward(Hexapod::Legs(Hexapod::Legs::Constant(0.2)), h.home(), o); }, IA,
@@ -450,6 +478,48 @@ std::vector<Row> rows() {
       [] { SerialArm::from_urdf_string("<robot name=\"r\"><link name=\"a%n\"/></robot>", "a", "b"); }, IA,
       "URDF = \"line 1, column 30\": contains '%' outside a comment");
   row("SerialArm::from_urdf_string", "empty base link", [] { SerialArm::from_urdf_string("<robot/>", "", "link2"); }, IA, "base_link = \"\": must name a link");
+  // Hostile URDFs: depth, attribute count, numbers, inertias, the joint graph.
+  const auto planar_text = [] {
+    std::ifstream in(urdf + "arm_planar_two_link.urdf");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  row("SerialArm::from_urdf_string", "elements nested 4·10⁴ deep", [planar_text] {
+        std::string deep;
+        for (int i = 0; i < 40000; ++i) deep += "<a>";
+        for (int i = 0; i < 40000; ++i) deep += "</a>";
+        SerialArm::from_urdf_string(replace_once(planar_text(), "<link name=\"base\"/>", "<link name=\"base\"/>" + deep), "base", "link2"); },
+      IA, "nests deeper than 100 elements");
+  row("SerialArm::from_urdf_string", "4·10⁴ attributes on <robot>", [planar_text] {
+        std::string attributes;
+        for (int i = 0; i < 40000; ++i) attributes += " a" + std::to_string(i) + "=\"1\"";
+        SerialArm::from_urdf_string(replace_once(planar_text(), "<robot name=\"planar_two_link\"", "<robot name=\"planar_two_link\"" + attributes), "base", "link2"); },
+      IA, "has more than 100 attributes");
+  row("SerialArm::from_urdf_string", "NaN mass", [planar_text] {
+        SerialArm::from_urdf_string(replace_once(planar_text(), "<mass value=\"2.0\"/>", "<mass value=\"nan\"/>"), "base", "link2"); }, IA,
+      "link \"link1\" inertial mass = nan: must be finite");
+  row("SerialArm::from_urdf_string", "infinite ixx", [planar_text] {
+        SerialArm::from_urdf_string(replace_once(planar_text(), "ixx=\"0.11\"", "ixx=\"inf\""), "base", "link2"); }, IA,
+      "link \"link1\" inertial inertia ixx = inf: must be finite");
+  row("SerialArm::torques", "a link breaking the triangle inequality", [planar_text] {
+        SerialArm::from_urdf_string(replace_once(planar_text(), "ixx=\"0.11\"", "ixx=\"0.5\""), "base", "link2").static_torques(Eigen::Vector2d::Zero()); }, IA,
+      "is not the inertia of a body: its principal moments break the triangle inequality");
+  row("SerialArm::from_urdf_string", "joint origin 1e300 m", [planar_text] {
+        SerialArm::from_urdf_string(replace_once(planar_text(), "<origin xyz=\"0 0 0.3\"", "<origin xyz=\"0 0 1e300\""), "base", "link2"); }, IA,
+      "joint \"mount_joint\" origin xyz = (0, 0, 1e+300): must be within ±1e12");
+  row("SerialArm::from_urdf_string", "a link with two parent joints", [planar_text] {
+        SerialArm::from_urdf_string(replace_once(planar_text(), "</robot>",
+            "<joint name=\"again\" type=\"fixed\"><parent link=\"base\"/><child link=\"link2\"/></joint></robot>"), "base", "link2"); }, IA,
+      "is the child of two joints");
+  row("SerialArm::inverse_solutions", "2π copies of ±100 rad limits", [] {
+        const SerialArm ur = SerialArm::from_urdf_file(urdf + "arm_ur5e_dh.urdf", "base_link", "tool0");
+        JointLimits l = ur.joint_limits();
+        l.lower.setConstant(-100.0);
+        l.upper.setConstant(100.0);
+        const SerialArm wide = ur.with_joint_limits(l);
+        serial::InverseOptions o;
+        o.offer_equivalents = true;
+        wide.inverse_solutions(wide.forward((Eigen::VectorXd(6) << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2).finished()), o); }, IA,
+      "offer_equivalents = \"true\": asks for the 2π copies of the 8 solutions inside the joint limits");
   row("SerialArm::from_urdf_string", "tip equal to base", [] { SerialArm::from_urdf_string("<robot/>", "a", "a"); }, IA, "tip_link = \"a\": must differ from base_link");
   row("SerialArm::forward", "wrong size q (3)", [arm] { arm().forward(Eigen::Vector3d::Zero()); }, IA, "q = (0, 0, 0): expected 2 joint values, got 3");
   row("SerialArm::forward", "NaN q", [arm] { arm().forward(Eigen::Vector2d(0, nan_)); }, IA, "q = (0, nan): must be finite");

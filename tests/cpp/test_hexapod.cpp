@@ -578,13 +578,22 @@ std::string edited(const std::string& from, const std::string& to) {
 }
 
 TEST(HexapodJson, MissingKeyIsNamed) {
+  const std::string text = edited("\"min\": 0.15,", "");
+  EXPECT_NE(message_of([&] { Hexapod::from_json(text); }).find("legs[0].min = \"<missing>\": required key is missing"),
+            std::string::npos)
+      << message_of([&] { Hexapod::from_json(text); });
+}
+
+TEST(HexapodJson, MisspeltKeyIsNamed) {
   const std::string text = edited("\"speed\"", "\"sped\"");
-  EXPECT_NE(message_of([&] { Hexapod::from_json(text); }).find("legs[0].speed = \"<missing>\": required key is missing"),
-            std::string::npos);
+  EXPECT_EQ(message_of([&] { Hexapod::from_json(text); })
+                .rfind("legs[0].sped = 0.01: unknown key (allowed here: base, platform, min, max, speed)", 0),
+            0u)
+      << message_of([&] { Hexapod::from_json(text); });
 }
 
 TEST(HexapodJson, WrongTypeIsNamed) {
-  const std::string text = edited("\"min\": ", "\"min\": \"short\", \"x\": ");
+  const std::string text = edited("\"min\": 0.15", "\"min\": \"short\"");
   EXPECT_NE(message_of([&] { Hexapod::from_json(text); }).find("legs[0].min = \"short\": must be a number"),
             std::string::npos)
       << message_of([&] { Hexapod::from_json(text); });

@@ -70,7 +70,9 @@ struct Configuration {
 //! How inverse() searches and what it returns.
 struct InverseOptions {
   bool keep_outside_limits = false;  //!< also return solutions outside the position limits (flagged)
-  bool offer_equivalents = true;     //!< add q ± 2πk for joints whose range exceeds 2π
+  //! Also return every q + 2πk inside the limits of joints whose range exceeds a turn, at most
+  //! input_limits::max_ik_solutions in all (more is refused: ±20 rad on a 6R arm make 5·10⁵).
+  bool offer_equivalents = false;
   // Numeric fallback (family general) only:
   int max_attempts = 64;             //!< random restarts of the KDL solver, > 0
   double time_budget = 0.05;         //!< s of wall-clock time for the restarts, > 0
@@ -125,9 +127,13 @@ class SerialArm : public Kinematics {
 
   //! All IK solutions: the analytic family of chain() when there is one (complete), else the
   //! numeric fallback (KDL ChainIkSolverPos_LMA from random starts inside the limits, within
-  //! options.max_attempts and options.time_budget; not complete). Joint values are brought
-  //! into the limits by ±2π where possible (continuous joints into (−π, π]); duplicates (equal
-  //! up to 2π, every joint within 1e-7) are removed. An unreachable pose gives none. For a
+  //! options.max_attempts and options.time_budget, which bounds the search's wall-clock time;
+  //! not complete). Each distinct solution comes once, every joint value the 2π-equivalent
+  //! nearest to 0 inside the limits (continuous joints: in (−π, π]), however wide the limits
+  //! (±1e16 rad included); duplicates (equal up to 2π, every joint within 1e-7) are removed.
+  //! options.offer_equivalents adds the 2π copies inside the limits, and throws
+  //! std::invalid_argument when they would be more than input_limits::max_ik_solutions.
+  //! An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
   //! Every solution (each 2π copy too) is checked by forward() to inverse_tolerance. Thread
   //! safety: const and without shared mutable state (the KDL solvers are made per call, the
@@ -143,7 +149,9 @@ class SerialArm : public Kinematics {
   Eigen::MatrixXd body_jacobian(const Eigen::VectorXd& q) const;
 
   //! Joint torques τ = M(q) q̈ + C(q, q̇) q̇ + g(q) (N·m) by KDL's recursive Newton–Euler
-  //! (ChainIdSolver_RNE), no external wrenches.
+  //! (ChainIdSolver_RNE), no external wrenches. Throws std::invalid_argument naming the link
+  //! when a link of the chain has an inertia no rigid body has (not positive semidefinite, or
+  //! breaking the triangle inequality): such a URDF loads for kinematics only.
   Eigen::VectorXd torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const;
   //! The static part g(q) = torques(q, 0, 0): what holding the arm still costs.
   Eigen::VectorXd static_torques(const Eigen::VectorXd& q) const;
@@ -182,8 +190,9 @@ Eigen::VectorXd nearest(const std::vector<Eigen::VectorXd>& solutions, const Eig
 std::vector<Eigen::VectorXd> with_configuration(const SerialArm& arm, const std::vector<Eigen::VectorXd>& solutions,
                                                 const Configuration& wanted);
 
-//! Continuity along a path: for each pose in turn the solution nearest to the previous one,
-//! starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
+//! Continuity along a path: for each pose in turn the solution nearest to the previous one
+//! among all solutions and their 2π copies inside the limits (found in closed form, never
+//! enumerated; options.offer_equivalents is not needed for them), starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
 //! first, where that converges close by). Throws std::runtime_error naming the index of a pose
 //! without a solution.
 std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,

@@ -126,6 +126,8 @@ class Job:
     limits_files: List[pathlib.Path] = dataclasses.field(default_factory=list)
     #: Where a serial arm's joint limits come from: "URDF", or "MoveIt <file name>".
     joint_limits_from: str = "URDF"
+    #: The job file as read (dispkin.job.reader.Source): where a key is, for later messages.
+    source: Optional[Any] = None
 
     @property
     def has_ptp(self) -> bool:

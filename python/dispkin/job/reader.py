@@ -11,6 +11,7 @@ import pathlib
 import re
 from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
+from . import limits
 from .model import JobError, KeyPath, format_key_path
 
 try:
@@ -56,7 +57,7 @@ class Source:
     @staticmethod
     def _read_text(path: pathlib.Path) -> str:
         try:
-            return path.read_text(encoding="utf-8")
+            return limits.read_bounded(path).decode("utf-8")
         except OSError as error:
             raise JobError(f"{path}: cannot read the job file: {error.strerror or error}") from error
         except UnicodeDecodeError as error:
@@ -74,6 +75,8 @@ class Source:
             raise JobError(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
                            (), line) from error
         try:
+            # The limits first, from the parser's events: nothing is built beyond them.
+            limits.check_events(path, yaml.parse(text, Loader=_Loader))
             node = loader.get_single_node()
             if node is None:
                 raise JobError(f"{path}: the job file is empty")

@@ -15,6 +15,7 @@ from typing import Callable, Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from .._core import MetricSet, Pose, Trajectory, max_point_speed
+from . import limits
 from .model import Job, JobError
 from .planning import JobTrajectory
 
@@ -151,7 +152,15 @@ def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: O
     moves follow the inverse-kinematics branch continuous from the joints at their start.
     `progress(stage, done, total)` is called as the samples are worked through."""
     report = progress or (lambda stage, done, total: None)
-    t = sample_times(trajectory.duration, period or job.sample_period)
+    period = period or job.sample_period
+    count = trajectory.duration / period
+    if not count <= limits.MAX_SAMPLES:
+        message = (f"{period!r}: the {trajectory.duration:g} s trajectory would be {count:.3g} samples, more than "
+                   f"{limits.MAX_SAMPLES} (doc/resource-limits.md)")
+        if job.source is not None:
+            raise job.source.error(("output", "sample_period"), message)
+        raise JobError(f"{job.file}: output.sample_period: {message}")
+    t = sample_times(trajectory.duration, period)
     poses, twists = np.asarray(trajectory.sample(t)), np.asarray(trajectory.body_twist(t))
     report("joints", 0, len(t))
     positions, velocities, accelerations, effort = _joint_samples(job, trajectory, t)

@@ -3,8 +3,9 @@ the package), with messages that say what to write instead.
 
 jsonschema's own messages quote whole sub-documents; here each violation names the offending
 key and its place in the file, lists the keys allowed where an unknown one stands, and lists
-the alternatives of a choice (a move is exactly one of lin, circ, spline, ptp). NaN and the
-infinities are refused before the schema is consulted: JSON Schema has no word for them.
+the alternatives of a choice (a move is exactly one of lin, circ, spline, ptp). NaN, the
+infinities and integers beyond ±2^53 are refused before the schema is consulted: JSON Schema
+has no word for them.
 """
 
 import json
@@ -13,7 +14,7 @@ import pathlib
 import re
 from typing import Any, Dict, Optional, Tuple
 
-from .model import JobError, KeyPath, value_at
+from .model import JobError, KeyPath
 from .reader import Source
 
 #: The JSON Schema of job files (draft 2020-12), shipped next to the package's modules.
@@ -59,18 +60,34 @@ def _schema_error_message(error: Any) -> Tuple[KeyPath, str]:
     return key_path, error.message
 
 
-def _non_finite(value: Any, key_path: KeyPath) -> Optional[KeyPath]:
-    """The first key path under value holding NaN or an infinity."""
+#: Largest integer a job may hold: every integer up to it is a double, as the library reads it
+#: (beyond, an integer of 20 digits is a TypeError and one of 400 an OverflowError in Python).
+MAX_INTEGER = 2**53
+
+
+def _not_a_number(value: Any) -> Optional[str]:
+    """Why a YAML number is no number of the library's (None when it is one)."""
     if isinstance(value, float) and not math.isfinite(value):
-        return key_path
+        return f"{value!r}: must be finite"
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) > MAX_INTEGER:
+        return f"an integer of {value.bit_length()} bits: numbers must be within ±2^53 ({MAX_INTEGER})"
+    return None
+
+
+def _bad_number(value: Any, key_path: KeyPath) -> Optional[Tuple[KeyPath, str]]:
+    """The first key path under value holding NaN, an infinity or an integer beyond ±2^53,
+    with the reason."""
+    reason = _not_a_number(value)
+    if reason is not None:
+        return key_path, reason
     if isinstance(value, dict):
         for k, v in value.items():
-            found = _non_finite(v, key_path + (k,))
+            found = _bad_number(v, key_path + (k,))
             if found is not None:
                 return found
     if isinstance(value, list):
         for i, v in enumerate(value):
-            found = _non_finite(v, key_path + (i,))
+            found = _bad_number(v, key_path + (i,))
             if found is not None:
                 return found
     return None
@@ -82,9 +99,9 @@ def validate(source: Source) -> None:
 
     if not isinstance(source.data, dict):
         raise source.error((), f"a job is a mapping of keys (machine, metric_set, moves, limits, ...), got {type(source.data).__name__}")
-    bad = _non_finite(source.data, ())
+    bad = _bad_number(source.data, ())
     if bad is not None:
-        raise source.error(bad, f"{value_at(source.data, bad)!r}: must be finite")
+        raise source.error(*bad)
     validator = jsonschema.Draft202012Validator(load_schema())
     errors = []
     for error in validator.iter_errors(source.data):

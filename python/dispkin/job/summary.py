@@ -163,13 +163,20 @@ def _angular_text(lim: Dict[str, Any]) -> str:
     return text
 
 
+#: Moves listed by name in the summary's first line.
+SUMMARY_MOVES = 20
+
+
 def summary_text(summary: Dict[str, Any]) -> str:
     """The summary as lines of text (what `dispkin plan` prints)."""
     s = summary
     lim = s["limits"]
     jerk = f", j = {lim['jerk']:g} m/s³" if lim["jerk"] is not None else ""
+    # The moves one by one up to SUMMARY_MOVES, then how many more: a job of 10⁴ moves is not a
+    # line of 200 kB.
+    moves = ", ".join(s["moves"][:SUMMARY_MOVES]) + (f", … {len(s['moves']) - SUMMARY_MOVES} more" if len(s["moves"]) > SUMMARY_MOVES else "")
     lines = [
-        f"job {s['job']}: {len(s['moves'])} move(s) ({', '.join(s['moves'])}), machine: {s['machine']}",
+        f"job {s['job']}: {len(s['moves'])} move(s) ({moves}), machine: {s['machine']}",
         f"  duration {s['duration']:.4f} s, {s['rest_to_rest_pieces']} rest-to-rest piece(s), path length {s['length']:.6f} m",
         f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}{_angular_text(lim)}, "
         f"profile {s['profile']}, corner tolerance {lim['corner_tolerance']:g} m",
