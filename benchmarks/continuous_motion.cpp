@@ -85,8 +85,8 @@ int main() {
   std::printf("0.3 m + 90 deg LIN (0.3 m icosahedron): as one section %.4f s, planned %.4f s, ratio %.4f\n", one_section, cut,
               one_section / cut);
 
-  // A combined move (0.3 m and 120°) under v = 0.2 m/s and ω = 0.5 rad/s: the rotational limit
-  // against the sphere of radius v/ω around the tool centre.
+  // A combined move (0.3 m and 120°) of the tool centre under v = 0.2 m/s and ω = 0.5 rad/s: the
+  // rotational limit against the sphere of radius v/ω around the tool centre.
   dispkin::Limits rotational{0.2, 1.0, 10.0};
   rotational.angular_velocity = 0.5;
   const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(2.0 * dispkin::pi / 3.0, V::UnitZ())), V(0.3, 0.0, 0.0));

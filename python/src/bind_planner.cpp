@@ -196,6 +196,15 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
       .def("rest_positions", [](const Trajectory& t) {
         return py::array_t<double>(static_cast<py::ssize_t>(t.rest_positions().size()), t.rest_positions().data());
       }, "Path positions s (m) where the trajectory is at rest: 0, every corner, the length.")
+      .def("section_sources", [](const Trajectory& t) {
+        Eigen::MatrixXd out(static_cast<Eigen::Index>(t.section_sources().size()), 3);
+        for (std::size_t k = 0; k < t.section_sources().size(); ++k) {
+          const SectionSource& source = t.section_sources()[k];
+          out.row(static_cast<Eigen::Index>(k)) << static_cast<double>(source.section), source.tau_start, source.tau_end;
+        }
+        return out;
+      }, "Where each section comes from, as (K, 3) rows (section of the path as planned, tau start, tau end): the "
+         "planner cuts sections whose fastest point's speed varies, and plans the blended path in continuous-path mode.")
       .def_property_readonly("stops", [](const Trajectory& t) {
         py::list out;
         for (const Stop& stop : t.stops()) out.append(py::make_tuple(stop.s, stop.reason));

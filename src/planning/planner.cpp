@@ -201,7 +201,10 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
 Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                 const PlanOptions& options) {
   limits.validate(profile);
-  set.require_well_formed();
+  // With a rotational limit every rotation has a length of its own (doc/planning.md eq. 23):
+  // a set that does not see some rotation (one tool-centre point, as Pilz's TCP speed and
+  // rotation limits) is enough then, if it is not empty.
+  if (!limits.angular_velocity || set.empty()) set.require_well_formed();
   const std::vector<double>& minimum = options.min_section_lengths;
   require(std::isfinite(options.corner_tolerance) && options.corner_tolerance >= 0.0, "corner_tolerance",
           options.corner_tolerance, "must be a finite distance ≥ 0 (m)");

@@ -277,6 +277,30 @@ TEST(ContinuousMotion, PureRotationCruisesAtTheAngularLimit) {
   EXPECT_LE(peak_rate, 2.0 * (1.0 + 1e-3));
 }
 
+// A tool-centre point and a rotational limit (a controller's TCP speed and rotation limits): the
+// set does not see a turn about the point, the angular limit does; without it the set is refused.
+TEST(ContinuousMotion, ToolCentrePointWithARotationalLimit) {
+  MetricSetd tcp;
+  tcp.add_relative(V::Zero());
+  const Posed a, b(Eigen::Quaterniond(Eigen::AngleAxisd(1.5, V(0.2, 0.3, 1.0).normalized())), V(0.2, 0.1, 0.0));
+  Limits limits{0.2, 2.0, std::nullopt};
+  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), tcp, limits, ProfileKind::trapezoid); }).find("not well-formed"), std::string::npos);
+  limits.angular_velocity = 0.5;
+  for (const Path& path : {Path::lin(a, b), Path::lin(a, Posed(b.quaternion(), V::Zero()))}) {
+    const Trajectory traj = plan(path, tcp, limits, ProfileKind::trapezoid);
+    const double dt = traj.duration() / 20000;
+    double peak = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+      const double w = chord_angular_speed(traj, k * dt, dt);
+      ASSERT_LE(w, 0.5 * (1.0 + 1e-6));
+      peak = std::max({peak, w / 0.5, chord_speed_ratio(traj, tcp, 0.2, k * dt, dt)});
+    }
+    EXPECT_LE(worst_speed_ratio(traj, tcp, 0.2, 20000), 1.0 + 1e-6);
+    EXPECT_GE(peak, 0.995);
+  }
+  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), MetricSetd(), limits, ProfileKind::trapezoid); }).find("empty"), std::string::npos);
+}
+
 TEST(ContinuousMotionBadInput, NamesTheArgument) {
   MetricSetd set;
   set.add_relative(shapes::icosahedron(0.05));

@@ -128,7 +128,7 @@ def test_unknown_numeric_key_is_a_job_error(tmp_path):
     job.write_text((EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml").read_text().replace("acceleration: 1.0", "acceleration: 1.0, 0: 1, zz: 2"))
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(job)
-    assert "limits.0: unknown key (allowed here: acceleration, jerk, profile, velocity)" in str(info.value)
+    assert "limits.0: unknown key (allowed here: acceleration, angular_acceleration, angular_velocity, corner_tolerance, jerk, profile, velocity)" in str(info.value)
 
 
 # --- valid jobs ------------------------------------------------------------------------------
@@ -154,7 +154,8 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     if job.has_ptp:
         traj = jobs.plan_job(job)
     else:
-        traj = dispkin.plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=job.hexapod if job.joint_metric else None)
+        traj = dispkin.plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=job.hexapod if job.joint_metric else None,
+                            corner_tolerance=job.corner_tolerance)
     t = table[:, 0]
     assert t[0] == 0.0 and t[-1] == pytest.approx(traj.duration, rel=1e-15)
     np.testing.assert_allclose(np.diff(t)[:-1], job.sample_period, rtol=1e-9)

@@ -222,7 +222,7 @@ def test_bad_states_are_refused_with_the_type_named():
     with pytest.raises(ValueError, match=r"Pose state quaternion = .*: norm must be 1"):
         dispkin.Pose.__new__(dispkin.Pose).__setstate__(((2.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
     state = blended_path().__getstate__()
-    broken = ((state[0][0],) + state[0][2:], state[1], state[2])  # a section left out: a gap
+    broken = ((state[0][0],) + state[0][2:], state[1], state[2], state[3][1:], (0,))  # a section left out: a gap
     with pytest.raises(ValueError, match=r"next = .*must start where the path ends"):
         dispkin.Path.__new__(dispkin.Path).__setstate__(broken)
 
@@ -303,7 +303,8 @@ def central_differences_within_sections(traj, path, count, h=1e-5):
     inside = np.searchsorted(starts, before, side="right") == np.searchsorted(starts, after, side="right")
     t = t[inside]
     section = np.searchsorted(starts, traj.path_position(t), side="right") - 1
-    kinds = {path.sections()[k].kind for k in section}
+    source = traj.section_sources()[section, 0].astype(int)  # the path's section each piece was cut from
+    kinds = {path.sections()[k].kind for k in source}
     central = (traj.body_twist(t + h) - traj.body_twist(t - h)) / (2 * h)
     return t, traj.body_acceleration(t), central, kinds
 

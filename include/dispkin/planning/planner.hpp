@@ -35,7 +35,8 @@ struct Limits {
   double acceleration = 0.0;   //!< |s̈| ≤ this (m/s²); the curvature rule lowers the speed where the path bends
   std::optional<double> jerk;  //!< |s⃛| ≤ this (m/s³), S-curve only
   //! |ω| ≤ this (rad/s), exactly: one more term θ·v_sys/ω_max of each section's length
-  //! (doc/planning.md eq. 23).
+  //! (doc/planning.md eq. 23). With it the metric set need not see every rotation: one
+  //! tool-centre point is enough (the TCP speed and rotation limits of robot controllers).
   std::optional<double> angular_velocity{};
   //! |ω̇| ≤ this (rad/s²) from the path acceleration, and again from the curvature rule on
   //! curved sections (doc/planning.md eq. 24).
@@ -66,7 +67,8 @@ struct PlanOptions {
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
-//! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed.
+//! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed (with an
+//! angular velocity limit: an empty set).
 Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile = ProfileKind::scurve);
 
 //! The same with `options`; also throws std::invalid_argument when min_section_lengths has the
