@@ -97,21 +97,29 @@ double speed_variation(const detail::SectionBounds& b, double max_weight, double
 // section's fastest instant has a larger relative variation, so each piece is checked again and
 // cut further where needed (at most 4096 pieces per section).
 void append_cut(const Section& section, std::size_t source, detail::GroupFactors& factors, double rotation_scale,
-                double minimum, std::vector<PlannedSection>& out) {
-  // 0.4 %: the cruise keeps ≥ 99.5 % with room for the junction rule's lengthening (eq. 21).
+                double minimum, double speed_cap, double acceleration, std::vector<PlannedSection>& out) {
+  // 0.4 %: the cruise keeps ≥ 99.5 %, and neighbouring pieces stay within the junction rule's
+  // 1 % (eq. 21) without lengthening.
   constexpr double cruise_ratio_loss = 0.004;
   constexpr double max_pieces = 4096.0;
-  // Along a screw every point keeps its speed: nothing to gain.
+  // Decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are cut
+  // where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE, blends),
+  // and their acceleration bound, dominated by the turning of the velocity rather than by a
+  // change of the speed, would cut them far finer than the speed varies.
   const auto* lin = std::get_if<LinSection>(&section);
-  const bool constant_speed = lin && lin->interpolation == Interpolation::screw;
+  const bool constant_speed = !lin || lin->interpolation == Interpolation::screw;
   auto pieces_needed = [&](const detail::SectionBounds& b) {
     const double variation = constant_speed ? 0.0 : speed_variation(b, factors.max_weight(), rotation_scale);
     return variation > cruise_ratio_loss ? std::ceil(variation / cruise_ratio_loss) : 1.0;
   };
   const detail::SectionBounds whole = detail::section_bounds(section, factors);
   // A minimum length at least the section's own runs the whole section at one speed: its
-  // fastest object is not what binds.
-  const double first_cut = minimum >= whole.length ? 1.0 : std::min(max_pieces, pieces_needed(whole));
+  // fastest object is not what binds. Nor where the curvature rule (eq. 11) holds the speed
+  // below the limit (v_lim = L √(a / A) is the same for every piece): there is no cruise at
+  // the limit to keep.
+  const bool curvature_binds = whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
+  const double first_cut =
+      minimum >= whole.length || curvature_binds ? 1.0 : std::min(max_pieces, pieces_needed(whole));
   if (first_cut <= 1.0) {
     out.push_back({section, {source, 0.0, 1.0}, whole, whole.length});
     return;
@@ -235,8 +243,13 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
   std::vector<PlannedSection> planned;
   planned.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], planned);
   const std::vector<MoveLimits>& moves = path.section_limits();
+  for (std::size_t k = 0; k < n; ++k) {
+    const MoveLimits& move = moves[k];
+    const double speed_cap = move.velocity ? std::min(*move.velocity, limits.velocity) : limits.velocity;
+    const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
+    append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], speed_cap, a, planned);
+  }
   for (PlannedSection& p : planned) {
     // The rotational limit as one more term of the length (doc/planning.md eq. 23):
     // |ω| = |ω_τ| ṡ / L ≤ ω_max.
@@ -254,11 +267,12 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
 
   // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
   // steps by less than 1 % there (eq. 9): lengthening the faster side, forward then backward,
-  // brings every such junction within 0.5 % (doc/planning.md eq. 21).
+  // brings every such junction within 1 % (doc/planning.md eq. 21); junctions already within it
+  // are left as they are.
   const std::size_t count = planned.size();
   std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);
   for (std::size_t k = 0; k + 1 < count; ++k) junctions[k] = direction_continuous(planned[k].section, planned[k + 1].section);
-  constexpr double step_ratio = 0.995;
+  constexpr double step_ratio = 0.99;
   for (std::size_t k = 0; k + 1 < count; ++k) {
     if (!junctions[k]) continue;
     const double out = junctions[k]->out / planned[k].length;
