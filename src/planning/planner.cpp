@@ -102,45 +102,43 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   // 1 % (eq. 21) without lengthening.
   constexpr double cruise_ratio_loss = 0.004;
   constexpr double max_pieces = 4096.0;
-  // Decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are cut
-  // where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE, blends),
-  // and their acceleration bound, dominated by the turning of the velocity rather than by a
-  // change of the speed, would cut them far finer than the speed varies.
+  // Only decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are
+  // cut where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE,
+  // blends), and their acceleration bound, dominated by the turning of the velocity rather than
+  // by a change of the speed, would cut them far finer than the speed varies.
+  const detail::SectionBounds whole = detail::section_bounds(section, factors);
   const auto* lin = std::get_if<LinSection>(&section);
-  const bool constant_speed = !lin || lin->interpolation == Interpolation::screw;
   auto pieces_needed = [&](const detail::SectionBounds& b) {
-    const double variation = constant_speed ? 0.0 : speed_variation(b, factors.max_weight(), rotation_scale);
+    const double variation = speed_variation(b, factors.max_weight(), rotation_scale);
     return variation > cruise_ratio_loss ? std::ceil(variation / cruise_ratio_loss) : 1.0;
   };
-  const detail::SectionBounds whole = detail::section_bounds(section, factors);
   // A minimum length at least the section's own runs the whole section at one speed: its
   // fastest object is not what binds. Nor where the curvature rule (eq. 11) holds the speed
   // below the limit (v_lim = L √(a / A) is the same for every piece): there is no cruise at
   // the limit to keep.
   const bool curvature_binds = whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
+  const bool decoupled_lin = lin && lin->interpolation == Interpolation::decoupled;
   const double first_cut =
-      minimum >= whole.length || curvature_binds ? 1.0 : std::min(max_pieces, pieces_needed(whole));
+      !decoupled_lin || minimum >= whole.length || curvature_binds ? 1.0 : std::min(max_pieces, pieces_needed(whole));
   if (first_cut <= 1.0) {
     out.push_back({section, {source, 0.0, 1.0}, whole, whole.length});
     return;
   }
   // Pieces [t0, t1] of the section's τ, each cut again (once) where it still varies too much.
   double budget = max_pieces;
-  auto emit = [&](double t0, double t1, const detail::SectionBounds* known) {
+  auto emit = [&](double t0, double t1) {
     const Section piece = section_part(section, t0, t1);
-    const detail::SectionBounds b = known ? *known : detail::section_bounds_from_middle(piece, factors);
+    const detail::SectionBounds b = detail::section_bounds_from_middle(piece, factors);
     out.push_back({piece, {source, t0, t1}, b, b.length});
   };
   for (double i = 0; i < first_cut; ++i) {
     const double t0 = i / first_cut, t1 = i + 1.0 >= first_cut ? 1.0 : (i + 1.0) / first_cut;
-    const detail::SectionBounds b = detail::section_bounds_from_middle(section_part(section, t0, t1), factors);
-    const double again = std::min(pieces_needed(b), std::max(1.0, budget / (first_cut - i)));
+    emit(t0, t1);
+    const double again = std::min(pieces_needed(out.back().bounds), std::max(1.0, budget / (first_cut - i)));
     budget -= again;
-    if (again <= 1.0) {
-      emit(t0, t1, &b);
-      continue;
-    }
-    for (double k = 0; k < again; ++k) emit(t0 + (t1 - t0) * k / again, k + 1.0 >= again ? t1 : t0 + (t1 - t0) * (k + 1.0) / again, nullptr);
+    if (again <= 1.0) continue;
+    out.pop_back();  // cut again
+    for (double k = 0; k < again; ++k) emit(t0 + (t1 - t0) * k / again, k + 1.0 >= again ? t1 : t0 + (t1 - t0) * (k + 1.0) / again);
   }
 }
 
