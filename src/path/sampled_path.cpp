@@ -59,11 +59,11 @@ void SectionMotions::append(const Section& section) {
   arcs_.push_back(m);
 }
 
-SampledPath::SampledPath(const std::vector<Section>& sections, std::vector<double> lengths)
-    : sections_(sections), lengths_(std::move(lengths)) {
-  const std::size_t n = sections.size();
-  motions_.reserve(sections);
-  for (const Section& section : sections) motions_.append(section);
+SampledPath::SampledPath(std::vector<Section> sections, std::vector<double> lengths)
+    : sections_(std::move(sections)), lengths_(std::move(lengths)) {
+  const std::size_t n = sections_.size();
+  motions_.reserve(sections_);
+  for (const Section& section : sections_) motions_.append(section);
   starts_.resize(n);
   double s = 0.0;
   for (std::size_t k = 0; k < n; ++k) {

@@ -73,13 +73,35 @@ std::optional<JunctionSpeeds> direction_continuous(const Section& before, const 
   return JunctionSpeeds{out_size, in_size};
 }
 
-// A part of a section of the path as planned: the section (or a piece of it), which section of
-// the path it came from, its bounds and its length as planned.
-struct PlannedSection {
-  Section section;
-  SectionSource source;
-  detail::SectionBounds bounds;
-  double length;
+// The sections of the path as planned — each a section of the path or a piece of one — with
+// which section they came from, their bounds and their lengths as planned. Kept as parallel
+// arrays: the sections move on into the sampled path and the sources into the trajectory
+// without being copied.
+struct PlannedSections {
+  std::vector<Section> sections;
+  std::vector<SectionSource> sources;
+  std::vector<detail::SectionBounds> bounds;
+  std::vector<double> lengths;
+
+  std::size_t size() const noexcept { return sections.size(); }
+  void reserve(std::size_t n) {
+    sections.reserve(n);
+    sources.reserve(n);
+    bounds.reserve(n);
+    lengths.reserve(n);
+  }
+  void push_back(const Section& section, const SectionSource& source, const detail::SectionBounds& b) {
+    sections.push_back(section);
+    sources.push_back(source);
+    bounds.push_back(b);
+    lengths.push_back(b.length);
+  }
+  void pop_back() {
+    sections.pop_back();
+    sources.pop_back();
+    bounds.pop_back();
+    lengths.pop_back();
+  }
 };
 
 // The relative variation of the fastest point's speed along a section, bounded: its speed per
@@ -97,7 +119,7 @@ double speed_variation(const detail::SectionBounds& b, double max_weight, double
 // section's fastest instant has a larger relative variation, so each piece is checked again and
 // cut further where needed (at most 4096 pieces per section).
 void append_cut(const Section& section, std::size_t source, detail::GroupFactors& factors, double rotation_scale,
-                double minimum, double speed_cap, double acceleration, std::vector<PlannedSection>& out) {
+                double minimum, double speed_cap, double acceleration, PlannedSections& out) {
   // 0.4 %: the cruise keeps ≥ 99.5 %, and neighbouring pieces stay within the junction rule's
   // 1 % (eq. 21) without lengthening.
   constexpr double cruise_ratio_loss = 0.004;
@@ -121,20 +143,23 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   const double first_cut =
       !decoupled_lin || minimum >= whole.length || curvature_binds ? 1.0 : std::min(max_pieces, pieces_needed(whole));
   if (first_cut <= 1.0) {
-    out.push_back({section, {source, 0.0, 1.0}, whole, whole.length});
+    out.push_back(section, {source, 0.0, 1.0}, whole);
     return;
   }
   // Pieces [t0, t1] of the section's τ, each cut again (once) where it still varies too much.
+  // Room for the first cut at once (growing geometrically beyond it), so a LIN's pieces take one
+  // block per array.
+  const std::size_t needed = out.size() + static_cast<std::size_t>(first_cut);
+  if (needed > out.sections.capacity()) out.reserve(std::max(needed, 2 * out.sections.capacity()));
   double budget = max_pieces;
   auto emit = [&](double t0, double t1) {
     const Section piece = section_part(section, t0, t1);
-    const detail::SectionBounds b = detail::section_bounds_from_middle(piece, factors);
-    out.push_back({piece, {source, t0, t1}, b, b.length});
+    out.push_back(piece, {source, t0, t1}, detail::section_bounds_from_middle(piece, factors));
   };
   for (double i = 0; i < first_cut; ++i) {
     const double t0 = i / first_cut, t1 = i + 1.0 >= first_cut ? 1.0 : (i + 1.0) / first_cut;
     emit(t0, t1);
-    const double again = std::min(pieces_needed(out.back().bounds), std::max(1.0, budget / (first_cut - i)));
+    const double again = std::min(pieces_needed(out.bounds.back()), std::max(1.0, budget / (first_cut - i)));
     budget -= again;
     if (again <= 1.0) continue;
     out.pop_back();  // cut again
@@ -146,32 +171,33 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
 // curvature rule (eq. 11) with each move's own acceleration, its rotational twin for the
 // angular acceleration, each move's own velocity, rounded down to 10 % steps below v_sys; and
 // each segment's acceleration: the move's own, lowered where the angular acceleration needs.
-std::vector<LimitedSegment> speed_limit_segments(const std::vector<PlannedSection>& planned, const std::vector<MoveLimits>& moves,
+std::vector<LimitedSegment> speed_limit_segments(const PlannedSections& planned, const std::vector<MoveLimits>& moves,
                                                  std::size_t first, std::size_t last, const Limits& limits) {
   constexpr double step = 0.9;
   std::vector<LimitedSegment> segments;
   for (std::size_t k = first; k < last; ++k) {
-    const PlannedSection& p = planned[k];
-    const MoveLimits& move = moves[p.source.section];
+    const detail::SectionBounds& bounds = planned.bounds[k];
+    const double length = planned.lengths[k];
+    const MoveLimits& move = moves[planned.sources[k].section];
     const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
     double v_lim = limits.velocity;
-    if (p.bounds.acceleration > 0.0) v_lim = std::min(v_lim, p.length * std::sqrt(a / p.bounds.acceleration));
-    if (limits.angular_acceleration && p.bounds.omega_dot > 0.0)
-      v_lim = std::min(v_lim, p.length * std::sqrt(*limits.angular_acceleration / p.bounds.omega_dot));
+    if (bounds.acceleration > 0.0) v_lim = std::min(v_lim, length * std::sqrt(a / bounds.acceleration));
+    if (limits.angular_acceleration && bounds.omega_dot > 0.0)
+      v_lim = std::min(v_lim, length * std::sqrt(*limits.angular_acceleration / bounds.omega_dot));
     double level = limits.velocity;
     if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
     if (move.velocity) level = std::min(level, *move.velocity);
     // The angular acceleration from s̈, |ω_τ| |s̈| / L ≤ α_max, caps the section's path
     // acceleration (doc/planning.md eq. 24).
     double own_acceleration = move.acceleration ? a : 0.0;
-    if (limits.angular_acceleration && p.bounds.omega > 0.0) {
-      const double angular_cap = *limits.angular_acceleration * p.length / p.bounds.omega;
+    if (limits.angular_acceleration && bounds.omega > 0.0) {
+      const double angular_cap = *limits.angular_acceleration * length / bounds.omega;
       if (angular_cap < a) own_acceleration = angular_cap;
     }
     if (!segments.empty() && segments.back().limit == level && segments.back().acceleration == own_acceleration) {
-      segments.back().length += p.length;
+      segments.back().length += length;
     } else {
-      segments.push_back({p.length, level, own_acceleration});
+      segments.push_back({length, level, own_acceleration});
     }
   }
   return segments;
@@ -239,7 +265,7 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   // fastest point's speed varies are cut into pieces.
   detail::GroupFactors factors(set, limits.velocity);
   const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
-  std::vector<PlannedSection> planned;
+  PlannedSections planned;
   planned.reserve(n);
   const std::vector<MoveLimits>& moves = path.section_limits();
   for (std::size_t k = 0; k < n; ++k) {
@@ -248,18 +274,19 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
     const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
     append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], speed_cap, a, planned);
   }
-  for (PlannedSection& p : planned) {
+  std::vector<double>& lengths = planned.lengths;
+  if (limits.angular_velocity) {
     // The rotational limit as one more term of the length (doc/planning.md eq. 23):
     // |ω| = |ω_τ| ṡ / L ≤ ω_max.
-    if (limits.angular_velocity) p.length = std::max(p.length, p.bounds.omega * rotation_scale);
+    for (std::size_t k = 0; k < planned.size(); ++k) lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
   }
   // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
   // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening (doc/planning.md eq. 6). A piece
   // of a section spans a share h of its τ and takes that share of its minimum.
   if (!minimum.empty()) {
-    for (PlannedSection& p : planned) {
-      const double share = p.source.tau_end - p.source.tau_start;
-      p.length = std::max(p.length, share * minimum[p.source.section]);
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+      const SectionSource& source = planned.sources[k];
+      lengths[k] = std::max(lengths[k], (source.tau_end - source.tau_start) * minimum[source.section]);
     }
   }
 
@@ -269,30 +296,29 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   // are left as they are.
   const std::size_t count = planned.size();
   std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);
-  for (std::size_t k = 0; k + 1 < count; ++k) junctions[k] = direction_continuous(planned[k].section, planned[k + 1].section);
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    const SectionSource& before = planned.sources[k];
+    const SectionSource& after = planned.sources[k + 1];
+    // Two pieces of one section: the same motion, each piece's twist per unit of its τ the
+    // section's own times the share of τ it spans.
+    if (before.section == after.section && before.tau_end == after.tau_start) {
+      junctions[k] = JunctionSpeeds{before.tau_end - before.tau_start, after.tau_end - after.tau_start};
+      continue;
+    }
+    junctions[k] = direction_continuous(planned.sections[k], planned.sections[k + 1]);
+  }
   constexpr double step_ratio = 0.99;
   for (std::size_t k = 0; k + 1 < count; ++k) {
     if (!junctions[k]) continue;
-    const double out = junctions[k]->out / planned[k].length;
-    planned[k + 1].length = std::max(planned[k + 1].length, junctions[k]->in * step_ratio / out);
+    const double out = junctions[k]->out / lengths[k];
+    lengths[k + 1] = std::max(lengths[k + 1], junctions[k]->in * step_ratio / out);
   }
   for (std::size_t k = count - 1; k-- > 0;) {
     if (!junctions[k]) continue;
-    const double in = junctions[k]->in / planned[k + 1].length;
-    planned[k].length = std::max(planned[k].length, junctions[k]->out * step_ratio / in);
+    const double in = junctions[k]->in / lengths[k + 1];
+    lengths[k] = std::max(lengths[k], junctions[k]->out * step_ratio / in);
   }
-  std::vector<Section> planned_sections;
-  std::vector<double> lengths;
-  std::vector<SectionSource> sources;
-  planned_sections.reserve(count);
-  lengths.reserve(count);
-  sources.reserve(count);
-  for (const PlannedSection& p : planned) {
-    planned_sections.push_back(p.section);
-    lengths.push_back(p.length);
-    sources.push_back(p.source);
-  }
-  SampledPath sampled(planned_sections, lengths);
+  SampledPath sampled(std::move(planned.sections), lengths);  // the lengths stay for the staircase
 
   // Rest-to-rest runs between corners; within a run the velocity-limit curve.
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
@@ -317,11 +343,11 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
     law.end_run();
     const double rest = k + 1 == count ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1);
     rests.push_back(rest);
-    if (k + 1 < count) stops.push_back({rest, corner_reason(corner_stops, planned[k].source.section, options.corner_tolerance)});
+    if (k + 1 < count) stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, options.corner_tolerance)});
     first = k + 1;
   }
   return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
-                    std::move(sources));
+                    std::move(planned.sources));
 }
 
 }  // namespace dispkin

@@ -174,6 +174,30 @@ TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
 // The closed-form IK families write into a fixed IkSolutionSet: no allocation at all (checks,
 // subproblems, Newton polish, de-duplication), over random poses of every closed-form robot
 // including wrist-singular ones (q5 = 0 exactly).
+// Planning a LIN allocates a small fixed number of blocks (at most 32: the path's, the time
+// law's and the trajectory's arrays), however many pieces the cut makes of a rotating one —
+// the planned sections' arrays are sized once for the whole cut (doc/planning.md §9).
+TEST(Realtime, PlanningALinAllocatesAFixedNumberOfBlocks) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.3));
+  const Limits limits{1.0, 2.0};
+  const Posed start;
+  std::vector<long> counts;
+  std::vector<std::size_t> pieces;
+  for (const double turn : {0.0, 0.3, 1.0, 2.5}) {
+    const Posed end(Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d(0.3, 0.2, 1.0).normalized())),
+                    Eigen::Vector3d(0.4, 0.1, 0.05));
+    const Path path = Path::lin(start, end);
+    Trajectory trajectory;
+    const long n = allocations_during([&] { trajectory = plan(path, set, limits, ProfileKind::trapezoid); });
+    counts.push_back(n);
+    pieces.push_back(trajectory.path().section_count());
+  }
+  for (std::size_t i = 0; i < counts.size(); ++i) EXPECT_LE(counts[i], 32) << "a LIN cut into " << pieces[i] << " pieces";
+  EXPECT_EQ(pieces.front(), 1u);
+  EXPECT_GT(pieces.back(), 500u);  // the cut is exercised
+}
+
 TEST(Realtime, ClosedFormInverseKinematicsDoesNotAllocate) {
   const std::vector<testing::NamedChain> robots = {{"kuka_kr6_r900", testing::kuka_kr6_r900()},
                                                    {"abb_irb120", testing::abb_irb120()},

@@ -19,7 +19,7 @@ class SampledPath {
   SampledPath() = default;
   //! The sections of a path with their lengths L_k (one per section, each > 0; planning side,
   //! allocates).
-  SampledPath(const std::vector<Section>& sections, std::vector<double> lengths);
+  SampledPath(std::vector<Section> sections, std::vector<double> lengths);
 
   //! Σ L_k, m.
   double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
