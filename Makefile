@@ -58,7 +58,7 @@ test-cpp: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 test-python: python
-	$(VENV)/bin/python -m pytest -q tests/python
+	$(VENV)/bin/python -m pytest -q -n $(JOBS) tests/python
 
 # Every #include points down the layers of doc/architecture.md (core, path, planning, plugins).
 layers:
@@ -80,29 +80,37 @@ demo: python
 # x86-64 like glibc's, so keeping Eigen on plain malloc is correct and matches the library.
 SANITIZE_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DEIGEN_MALLOC_ALREADY_ALIGNED=1
 SANITIZE_BUILD ?= build/sanitize
+# One sanitized build serves both runs: the C++ suites and the Python module dispkin._core (built
+# against the venv's interpreter and pybind11), so the library is compiled with the sanitizers once.
+# Debug information is line tables only (-g1: every report still names file and line), and the
+# bindings' glue is compiled at -O1; the library and the tests keep -O2.
+SANITIZE_CONFIGURE = cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON -DDISPKIN_SWEEP_COUNT=1000 \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DDISPKIN_PYTHON_COMPILE_OPTIONS=-O1 \
+	  -DDISPKIN_BUILD_PYTHON=ON -DPython_EXECUTABLE=$(abspath $(VENV))/bin/python \
+	  -Dpybind11_DIR="$$($(VENV)/bin/python -m pybind11 --cmakedir)" -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)"
+
 sanitize: deps
-	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDISPKIN_BUILD_TESTS=ON -DDISPKIN_SWEEP_COUNT=1000 \
-	  -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)"
+	$(SANITIZE_CONFIGURE)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  DISPKIN_TEST_COUNT=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
 
-# The Python suite against a module built with the same sanitizers: the extension, with the
-# library inside it, is compiled with ASan + UBSan into SANITIZE_PY (pip --target, no
-# dependencies: numpy and the rest come from the venv), and the venv's interpreter runs pytest
-# with that directory first on its path and the sanitizer runtimes preloaded (an interpreter
-# built without ASan cannot load an ASan library otherwise). Leak detection is off: CPython
-# keeps its own objects alive until exit by design.
+# The Python suite against the sanitized module: the package's Python files and the module built
+# in SANITIZE_BUILD are put together in SANITIZE_PY (as the wheel lays them out; numpy and the rest
+# come from the venv), and the venv's interpreter runs pytest with that directory first on its path
+# and the sanitizer runtimes preloaded (an interpreter built without ASan cannot load an ASan
+# library otherwise). Leak detection is off: CPython keeps its own objects alive until exit by design.
 SANITIZE_PY ?= build/sanitize-python
 sanitize-python: deps
-	rm -rf $(SANITIZE_PY)/site
-	$(VENV)/bin/python -m pip install -q --no-build-isolation --no-deps --target $(SANITIZE_PY)/site \
-	  -C build-dir=$(SANITIZE_PY)/build -C cmake.build-type=RelWithDebInfo \
-	  -C cmake.define.CMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" .
+	$(SANITIZE_CONFIGURE)
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target _core
+	rm -rf $(SANITIZE_PY)/site && mkdir -p $(SANITIZE_PY)/site
+	cp -r python/dispkin $(SANITIZE_PY)/site/
+	cp $(SANITIZE_BUILD)/python/_core*.so $(SANITIZE_PY)/site/dispkin/
 	PYTHONPATH=$(abspath $(SANITIZE_PY)/site) \
 	  LD_PRELOAD="$$(gcc -print-file-name=libasan.so) $$(gcc -print-file-name=libubsan.so)" \
 	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
-	  $(VENV)/bin/python -m pytest -q -p no:cacheprovider tests/python
+	  $(VENV)/bin/python -m pytest -q -n $(JOBS) -p no:cacheprovider tests/python
 
 # Everything: the README's tests, both sanitizer runs and the 10⁷ sweeps (hours).
 check-full: test sanitize sanitize-python sweep
