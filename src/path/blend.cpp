@@ -109,25 +109,42 @@ bool plan_blend(const std::vector<Section>& sections, const std::vector<double>&
   return true;
 }
 
-// Distance from x to the segment [p, q].
-double segment_distance(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-  const Eigen::Vector3d d = q - p;
-  const double size = d.squaredNorm();
-  const double t = size > 0.0 ? std::clamp((x - p).dot(d) / size, 0.0, 1.0) : 0.0;
-  return (x - (p + t * d)).norm();
-}
+// The segment [p, q], ready for distances to many points.
+struct Segment {
+  Eigen::Vector3d p, d;
+  double size2;
+  Segment(const Eigen::Vector3d& from, const Eigen::Vector3d& to) : p(from), d(to - from), size2(d.squaredNorm()) {}
+  double distance(const Eigen::Vector3d& x) const {
+    const double t = size2 > 0.0 ? std::clamp((x - p).dot(d) / size2, 0.0, 1.0) : 0.0;
+    return (x - (p + t * d)).norm();
+  }
+};
 
 // How far the blend's pivot strays from the corner's two legs [KP₁, corner] ∪ [corner, KP₂]
 // (the programmed path where the neighbours are straight), on a fine grid of the curve.
 double corner_deviation(const detail::BlendPlan& plan) {
-  const Eigen::Vector3d a = plan.position.value(0.0), b = plan.position.value(1.0);
+  const Segment leg_in(plan.position.value(0.0), plan.corner), leg_out(plan.corner, plan.position.value(1.0));
   double worst = 0.0;
   constexpr int samples = 128;
   for (int i = 1; i < samples; ++i) {
     const Eigen::Vector3d x = plan.position.value(double(i) / samples);
-    worst = std::max(worst, std::min(segment_distance(x, a, plan.corner), segment_distance(x, plan.corner, b)));
+    worst = std::max(worst, std::min(leg_in.distance(x), leg_out.distance(x)));
   }
   return worst;
+}
+
+// Whether a blend between the end of `last` and the start of `first` deviates from the corner
+// in proportion to its size: both are decoupled LINs (straight pivot lines, the legs
+// themselves) turning about one world axis (or not turning), so that the turn between the
+// sub-points grows linearly too. The blend of size ℓ is then the blend of size 1 scaled by ℓ
+// about the corner — sub-points, tangents and turn alike.
+bool proportional_corner(const Section& last, const Section& first) {
+  const auto* in = std::get_if<LinSection>(&last);
+  const auto* out = std::get_if<LinSection>(&first);
+  if (!(in && out && in->interpolation == Interpolation::decoupled && out->interpolation == Interpolation::decoupled)) return false;
+  const Eigen::Vector3d turn_in = in->start.quaternion() * in->twist(0.0).angular;
+  const Eigen::Vector3d turn_out = out->start.quaternion() * out->twist(0.0).angular;
+  return turn_in.cross(turn_out).norm() <= 1e-12 * turn_in.norm() * turn_out.norm();
 }
 
 // The unit direction of a body twist in geometric size (pivot velocity and 0.1 m per radian),
@@ -232,11 +249,18 @@ Path Path::blended(double corner_tolerance, std::vector<CornerStop>* stops, doub
     // deviation grows about linearly with the blend's size (exactly so between two straight
     // moves), so a few proportional steps find it.
     double size = 0.5 * std::min(result.last_move_size_, next.first_move_size_);
+    const bool proportional = proportional_corner(result.sections_.back(), next.sections_.front());
     detail::BlendPlan plan;
-    bool found = false, still = false;
+    bool found = false, still = false, scaled = false;
     for (int step = 0; step < 60 && size >= smallest_blend; ++step) {
       if (!plan_blend(result.sections_, result.cumulative_, next.sections_, next.cumulative_, size, size, plan)) {
         still = true;
+        break;
+      }
+      // Between straight legs a size scaled to 98 % of the tolerance keeps to it (the deviation
+      // is proportional to the size), so it needs no second look.
+      if (scaled && plan.k + 1 == result.sections_.size() && plan.j == 0) {
+        found = true;
         break;
       }
       const double deviation = corner_deviation(plan);
@@ -245,6 +269,7 @@ Path Path::blended(double corner_tolerance, std::vector<CornerStop>* stops, doub
         break;
       }
       size *= std::min(0.98 * corner_tolerance / deviation, 0.9);
+      scaled = proportional && 0.98 * corner_tolerance / deviation <= 0.9;
     }
     if (still) {
       stop("a neighbouring move stands still where the blend would join it: nothing to blend");
