@@ -187,6 +187,8 @@ class Path:
         before: Optional[float] = None,
         after: Optional[float] = None,
         tolerance: float = 1e-3,
+        orientation_blend: str = "rotation_vector",
+        weight: Optional[float] = None,
     ) -> Path: ...
     def blended(self, corner_tolerance: float, tolerance: float = 1e-3) -> Tuple[Path, List[Tuple[int, str]]]: ...
     @property
