@@ -26,18 +26,30 @@ struct SectionHolder {
 const char* section_kind(const SectionHolder& s) {
   if (std::holds_alternative<LinSection>(s.value)) return "lin";
   if (std::holds_alternative<ArcSection>(s.value)) return "arc";
+  if (std::holds_alternative<SlerpBlendSection>(s.value)) return "slerp_blend";
   return "curve";
 }
 
-// then(next), then(next, blend) or then(next, before=..., after=...).
+// then(next), then(next, blend=...), then(next, before=..., after=...) or then(next, weight=...),
+// each with the orientation blend by name.
 Path& then_blended(Path& path, const Path& next, std::optional<double> blend, std::optional<double> before,
-                   std::optional<double> after, double tolerance) {
-  if (!blend && !before && !after) return path.then(next);
+                   std::optional<double> after, double tolerance, const std::string& orientation_blend,
+                   std::optional<double> weight) {
+  const OrientationBlend orientation = orientation_blend_from_string(orientation_blend);
+  if (weight && (blend || before || after))
+    throw std::invalid_argument(describe("weight", *weight, "give either weight or blend or before/after, not both"));
+  if (weight) return path.then_weighted(next, *weight, orientation, tolerance);
+  if (!blend && !before && !after) {
+    if (orientation != OrientationBlend::rotation_vector)
+      throw std::invalid_argument(describe("orientation_blend", orientation_blend,
+                                           "needs a blend: give weight, blend or before and after"));
+    return path.then(next);
+  }
   if (blend && (before || after))
     throw std::invalid_argument("blend: give either blend or before/after, not both");
-  if (blend) return path.then(next, *blend, *blend, tolerance);
+  if (blend) return path.then(next, *blend, *blend, tolerance, orientation);
   if (!before || !after) throw std::invalid_argument(std::string(before ? "after" : "before") + " is missing: give both before and after");
-  return path.then(next, *before, *after, tolerance);
+  return path.then(next, *before, *after, tolerance, orientation);
 }
 
 // A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices.
@@ -66,9 +78,9 @@ void bind_path(py::module_& m) {
   py::class_<SectionHolder>(m, "Section", R"doc(
 One section of a Path: the motion from `start` to `end` as the section parameter tau runs over
 [0, 1]. `kind` is "lin" (straight: decoupled LIN or screw, exact length), "arc" (a piece of a
-CIRC) or "curve" (a piece of a SPLINE or of a blend); arcs and curves have lengths that are tight
-upper bounds.)doc")
-      .def_property_readonly("kind", &section_kind, "\"lin\", \"arc\" or \"curve\".")
+CIRC), "curve" (a piece of a SPLINE or of a blend) or "slerp_blend" (a piece of a blend with
+orientation_blend="nested_slerp"); arcs and curves have lengths that are tight upper bounds.)doc")
+      .def_property_readonly("kind", &section_kind, "\"lin\", \"arc\", \"curve\" or \"slerp_blend\".")
       .def_property_readonly("start", [](const SectionHolder& s) { return section_start(s.value); }, "Pose at tau = 0.")
       .def_property_readonly("end", [](const SectionHolder& s) { return section_end(s.value); }, "Pose at tau = 1.")
       .def(
@@ -152,12 +164,17 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).")
       .def("then", &then_blended, py::arg("next"), py::kw_only(), py::arg("blend") = py::none(),
            py::arg("before") = py::none(), py::arg("after") = py::none(), py::arg("tolerance") = 1e-3,
+           py::arg("orientation_blend") = "rotation_vector", py::arg("weight") = py::none(),
            py::return_value_policy::reference_internal,
            "Append `next`, which must start where this path ends; returns this path. With `blend` (or "
            "`before` and `after`, metres of pivot travel + 0.1 m per radian) the corner is replaced by a "
            "smooth pose curve from the point `before` ahead of the corner to the point `after` past it, "
            "joining both neighbours without a kink (the planner does not stop there). A blend may take "
-           "at most half of each neighbouring move.")
+           "at most half of each neighbouring move. `weight` w in (0, 0.5] instead gives the blend as a share "
+           "of the moves (before = w x the last move's size, after = w x next's first move's). "
+           "`orientation_blend`: \"rotation_vector\" (a cubic in the rotation vector, any neighbours) or "
+           "\"nested_slerp\" (the Mamezou article's nested SLERP through the corner orientation, the pivot "
+           "on the quadratic Bezier curve through the corner; both neighbours must be decoupled LINs).")
       .def(
           "blended",
           [](const Path& p, double corner_tolerance, double tolerance) {

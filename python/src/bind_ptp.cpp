@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "dispkin/error.hpp"
+#include "dispkin/serial/joint_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
@@ -20,8 +21,8 @@ namespace {
 
 // Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail); for a
 // number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar.
-template <typename Write>
-py::object sampled(const JointTrajectory& traj, const py::object& times, std::vector<py::ssize_t> tail,
+template <typename Traj, typename Write>
+py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ssize_t> tail,
                    py::ssize_t columns, Write write) {
   const Array a = as_array(times, "times", "a number or an array of shape (N,)");
   if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
@@ -164,6 +165,69 @@ time and no joint faster than its velocity limit. Sample it at any times (second
       .def("__repr__", [](const JointTrajectory& t) {
         return "JointTrajectory(duration=" + float_repr(t.duration()) + ", joints=" + std::to_string(t.dof()) +
                ", sections=" + std::to_string(t.sections().size()) + ")";
+      });
+
+  py::class_<OverlappedJointTrajectory>(m, "OverlappedJointTrajectory", R"doc(
+The Mamezou article's overlapped velocity method for PTP moves: `after` starts `overlap` seconds
+before `before` ends, and meanwhile the joint displacements add,
+theta(t) = theta_b(t) + theta_f(t') - theta_2 (t' the next move's own time, theta_2 the via
+joints), so the joint velocities and accelerations add too; the tool pose is the arm's forward
+kinematics. No speed guarantee of its own: check the peak point speed before using large
+overlaps.)doc")
+      .def(py::init([](const JointTrajectory& before, const JointTrajectory& after, double overlap) {
+             return OverlappedJointTrajectory(before, after, overlap);
+           }),
+           py::arg("before"), py::arg("after"), py::arg("overlap"),
+           "`before` must end where `after` starts (to 1e-9 rad), on the same arm; 0 <= overlap <= the shorter "
+           "duration (seconds).")
+      .def_property_readonly("duration", &OverlappedJointTrajectory::duration, "Seconds.")
+      .def_property_readonly("overlap", &OverlappedJointTrajectory::overlap, "Seconds during which both moves run.")
+      .def_property_readonly("overlap_start", &OverlappedJointTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def(
+          "sample",
+          [](const OverlappedJointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {4, 4}, 16, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+            });
+          },
+          py::arg("times"), "Tool poses at `times` as (N, 4, 4) homogeneous matrices.")
+      .def(
+          "body_twist",
+          [](const OverlappedJointTrajectory& t, const py::object& times) {
+            return sampled(t, times, {6}, 6, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+            });
+          },
+          py::arg("times"), "Body twists (v, omega) of the tool at `times`, (N, 6), m/s and rad/s.")
+      .def(
+          "joint_positions",
+          [](const OverlappedJointTrajectory& t, const py::object& times) {
+            const int n = t.before().dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.q;
+            });
+          },
+          py::arg("times"), "theta at `times`, (N, dof), rad.")
+      .def(
+          "joint_velocities",
+          [](const OverlappedJointTrajectory& t, const py::object& times) {
+            const int n = t.before().dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qd;
+            });
+          },
+          py::arg("times"), "theta-dot at `times`, (N, dof), rad/s: the sum of both moves' during the overlap.")
+      .def(
+          "joint_accelerations",
+          [](const OverlappedJointTrajectory& t, const py::object& times) {
+            const int n = t.before().dof();
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qdd;
+            });
+          },
+          py::arg("times"), "theta-double-dot at `times`, (N, dof), rad/s^2.")
+      .def("__repr__", [](const OverlappedJointTrajectory& o) {
+        return "OverlappedJointTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
       });
 
   m.def(

@@ -130,6 +130,9 @@ py::tuple section_state(const Section& section) {
   if (const auto* arc = std::get_if<ArcSection>(&section))
     return py::make_tuple("arc", pose_floats(arc->start), floats(arc->center), floats(arc->normal), arc->angle,
                           floats(arc->rotation_axis), arc->rotation_angle, floats(arc->pivot));
+  if (const auto* b = std::get_if<SlerpBlendSection>(&section))
+    return py::make_tuple("slerp_blend", floats(b->q_start.coeffs()), floats(b->a), floats(b->b), cubic_floats(b->position),
+                          b->v0, b->v1, floats(b->pivot));
   const CurveSection& c = std::get<CurveSection>(section);
   return py::make_tuple("curve", floats(c.q0.coeffs()), cubic_floats(c.position), cubic_floats(c.rotation), c.v0, c.v1,
                         floats(c.pivot));
@@ -137,7 +140,7 @@ py::tuple section_state(const Section& section) {
 
 Section section_from_state(const py::handle& state) {
   if (!py::isinstance<py::tuple>(state) || py::len(state) == 0) {
-    throw py::value_error("Section state: expected a tuple starting with \"lin\", \"arc\" or \"curve\", got " +
+    throw py::value_error("Section state: expected a tuple starting with \"lin\", \"arc\", \"curve\" or \"slerp_blend\", got " +
                           std::string(py::repr(state)));
   }
   const std::string kind = state.cast<py::tuple>()[0].cast<std::string>();
@@ -171,7 +174,28 @@ Section section_from_state(const py::handle& state) {
     c.pivot = finite3(s[6], "curve pivot");
     return c;
   }
-  throw std::invalid_argument(describe("Section state kind", kind, "must be \"lin\", \"arc\" or \"curve\""));
+  if (kind == "slerp_blend") {
+    const py::tuple s = state_tuple(state, 8, "Section (slerp_blend)");
+    SlerpBlendSection b;
+    const Eigen::Vector4d q = vector<4>(s[1], "slerp_blend q_start");  // Eigen's coeffs(): x, y, z, w
+    require_finite(q, "slerp_blend q_start");
+    require(std::abs(q.norm() - 1.0) <= 1e-12, "slerp_blend q_start", q.norm(), "quaternion norm must be 1");
+    b.q_start.coeffs() = q;
+    b.a = finite3(s[2], "slerp_blend a");
+    b.b = finite3(s[3], "slerp_blend b");
+    // Each turn of the nested SLERP is below π (a blend takes at most half a LIN's turn ≤ π):
+    // its logarithms, and so the motion, are smooth only there.
+    require(b.a.norm() < pi, "slerp_blend a", b.a.norm(), "must be a turn below pi rad");
+    require(b.b.norm() < pi, "slerp_blend b", b.b.norm(), "must be a turn below pi rad");
+    b.position = cubic_of_floats(s[4], "slerp_blend position");
+    b.v0 = finite(s[5], "slerp_blend v0");
+    b.v1 = finite(s[6], "slerp_blend v1");
+    require(0.0 <= b.v0 && b.v0 < b.v1 && b.v1 <= 1.0, "slerp_blend v0", b.v0, "must satisfy 0 <= v0 < v1 <= 1");
+    b.pivot = finite3(s[7], "slerp_blend pivot");
+    return b;
+  }
+  throw std::invalid_argument(
+      describe("Section state kind", kind, "must be \"lin\", \"arc\", \"curve\" or \"slerp_blend\""));
 }
 
 py::tuple path_state(const Path& path) {

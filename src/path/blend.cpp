@@ -11,6 +11,7 @@
 // pivot tangents — at both joins the twist keeps its direction.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -51,6 +52,7 @@ struct BlendPlan {
   Cubic3 position, rotation;   // pivot c(v) and rotation vector φ(v), v ∈ [0, 1]
   Eigen::Vector3d pivot;
   Eigen::Vector3d corner;      // the pivot at the junction
+  std::optional<SlerpBlendSection> slerp;  // with OrientationBlend::nested_slerp: the blend itself
 };
 
 }  // namespace detail
@@ -107,6 +109,77 @@ bool plan_blend(const std::vector<Section>& sections, const std::vector<double>&
   plan.pivot = pivot;
   plan.corner = section_end(sections.back()) * pivot;
   return true;
+}
+
+// The name of a section's kind, for messages.
+const char* kind_name(const Section& section) {
+  if (const auto* lin = std::get_if<LinSection>(&section)) return lin->interpolation == Interpolation::screw ? "screw LIN" : "LIN";
+  if (std::holds_alternative<ArcSection>(section)) return "CIRC";
+  if (std::holds_alternative<CurveSection>(section)) return "curve (SPLINE or blend)";
+  return "nested-SLERP blend";
+}
+
+const LinSection* decoupled_lin(const Section& section) {
+  const auto* lin = std::get_if<LinSection>(&section);
+  return lin && lin->interpolation == Interpolation::decoupled ? lin : nullptr;
+}
+
+// The nested-SLERP blend (doc/planning.md §6.1) of sizes `before` and `after` between the last
+// section of `sections` and the first of `next_sections`, both decoupled LINs with one pivot:
+// straight pivot lines and one-axis turns whose tangents point at the corner, so that the blend's
+// end slopes 2(c_m − c₁), 2a and 2(c₂ − c_m), 2b are the neighbours' twists scaled alike (eq. 28).
+void plan_slerp_blend(const std::vector<Section>& sections, const std::vector<double>& cumulative,
+                      const std::vector<Section>& next_sections, const std::vector<double>& next_cumulative, double before,
+                      double after, detail::BlendPlan& plan) {
+  const std::size_t k = sections.size() - 1;
+  const LinSection* in = decoupled_lin(sections[k]);
+  require(in != nullptr, "orientation_blend", std::string("nested_slerp"),
+          std::string("needs the path to end in a decoupled LIN section at the via point; it ends in a ") +
+              kind_name(sections[k]) + " section");
+  const LinSection* out = decoupled_lin(next_sections.front());
+  require(out != nullptr, "next", section_start(next_sections.front()).translation(),
+          std::string("must start with a decoupled LIN section for orientation_blend = nested_slerp; it starts with a ") +
+              kind_name(next_sections.front()) + " section");
+  require((in->pivot - out->pivot).norm() <= 1e-12, "next", out->pivot,
+          "has another pivot than the path: a nested_slerp blend moves one pivot on its Bézier curve");
+  const double size_in = cumulative[k] - (k == 0 ? 0.0 : cumulative[k - 1]), size_out = next_cumulative.front();
+  require(before <= size_in * (1.0 + 1e-12), "before", before,
+          "exceeds the LIN section before the via point (" + std::to_string(size_in) +
+              " m of geometric size): a nested_slerp blend starts within it");
+  require(after <= size_out * (1.0 + 1e-12), "after", after,
+          "exceeds the LIN section after the via point (" + std::to_string(size_out) +
+              " m of geometric size): a nested_slerp blend ends within it");
+  // Along a LIN the geometric size grows linearly in τ. Only slivers of the LINs left outside
+  // the blend snap away (as in plan_blend); the blend itself never shrinks to nothing.
+  constexpr double snap = 1e-6;
+  double tau_in = std::clamp(1.0 - before / size_in, 0.0, 1.0), tau_out = std::clamp(after / size_out, 0.0, 1.0);
+  if (tau_in < snap) tau_in = 0.0;
+  if (tau_out > 1.0 - snap) tau_out = 1.0;
+  plan.k = k;
+  plan.tau_in = tau_in;
+  plan.incoming = detail::section_part(sections[k], 0.0, tau_in);
+  plan.j = 0;
+  plan.tau_out = tau_out;
+  plan.outgoing = detail::section_part(next_sections.front(), tau_out, 1.0);
+
+  // q₁, c₁ at the first sub-point; q_m, c_m at the corner; q₂, c₂ at the second (eq. 27).
+  const Posed first = in->pose(tau_in), corner = in->end, second = out->pose(tau_out);
+  const Eigen::Vector3d& p = in->pivot;
+  const Eigen::Vector3d c1 = first * p, cm = corner * p, c2 = second * p;
+  SlerpBlendSection blend;
+  blend.q_start = first.quaternion();
+  blend.a = quaternion_log(Eigen::Quaterniond(first.quaternion().conjugate() * corner.quaternion()));
+  blend.b = quaternion_log(Eigen::Quaterniond(corner.quaternion().conjugate() * second.quaternion()));
+  // The quadratic Bézier (1 − v)² c₁ + 2v(1 − v) c_m + v² c₂ in powers of v.
+  blend.position.a[0] = c1;
+  blend.position.a[1] = 2.0 * (cm - c1);
+  blend.position.a[2] = c1 - 2.0 * cm + c2;
+  blend.position.a[3].setZero();
+  blend.pivot = p;
+  plan.q0 = first.quaternion();
+  plan.pivot = p;
+  plan.corner = cm;
+  plan.slerp = blend;
 }
 
 // The segment [p, q], ready for distances to many points.
@@ -167,7 +240,13 @@ std::string degrees(double radians) {
 
 }  // namespace
 
-Path& Path::then(const Path& next, double before, double after, double tolerance) {
+Path& Path::then_weighted(const Path& next, double weight, OrientationBlend orientation, double tolerance) {
+  require(std::isfinite(weight) && weight > 0.0 && weight <= 0.5, "weight", weight,
+          "must be in (0, 0.5]: the share of each neighbouring move the blend takes");
+  return then(next, weight * last_move_size_, weight * next.first_move_size_, tolerance, orientation);
+}
+
+Path& Path::then(const Path& next, double before, double after, double tolerance, OrientationBlend orientation) {
   require(std::isfinite(before) && before > 0.0, "before", before, "must be a positive distance (m)");
   require(std::isfinite(after) && after > 0.0, "after", after, "must be a positive distance (m)");
   require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");
@@ -178,9 +257,15 @@ Path& Path::then(const Path& next, double before, double after, double tolerance
   require(after <= 0.5 * next.first_move_size_ * (1.0 + 1e-12), "after", after,
           "exceeds half of the move after the via point (" + std::to_string(0.5 * next.first_move_size_) +
               " m of geometric size): shrink the blend");
+  require(orientation == OrientationBlend::rotation_vector || orientation == OrientationBlend::nested_slerp,
+          "orientation_blend", static_cast<long>(orientation), "must be rotation_vector or nested_slerp");
   detail::BlendPlan plan;
-  require(plan_blend(sections_, cumulative_, next.sections_, next.cumulative_, before, after, plan), "blend", before,
-          "meets a neighbour where it stands still: nothing to blend");
+  if (orientation == OrientationBlend::nested_slerp) {
+    plan_slerp_blend(sections_, cumulative_, next.sections_, next.cumulative_, before, after, plan);
+  } else {
+    require(plan_blend(sections_, cumulative_, next.sections_, next.cumulative_, before, after, plan), "blend", before,
+            "meets a neighbour where it stands still: nothing to blend");
+  }
   apply_blend(plan, next, tolerance);
   return *this;
 }
@@ -195,7 +280,11 @@ void Path::apply_blend(const detail::BlendPlan& plan, const Path& next, double t
   limits_.resize(plan.k);
   if (plan.tau_in > 0.0) append(plan.incoming, incoming_limits);
   const std::size_t blend_first = sections_.size();
-  cut_curve(plan.q0, plan.position, plan.rotation, plan.pivot, tolerance);
+  if (plan.slerp) {
+    cut_slerp_blend(*plan.slerp, tolerance);
+  } else {
+    cut_curve(plan.q0, plan.position, plan.rotation, plan.pivot, tolerance);
+  }
   for (std::size_t i = blend_first; i < sections_.size(); ++i) limits_[i] = blend_limits;
 
   // `next` from KP₂ on; its moves keep their first sections (shifted).

@@ -23,7 +23,7 @@ inline double geometric_size(const Section& section) {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, LinSection>) {
           return ((s.end * s.pivot) - (s.start * s.pivot)).norm() + metres_per_radian * rotation_angle(s.start, s.end);
-        } else if constexpr (std::is_same_v<T, CurveSection>) {
+        } else if constexpr (std::is_same_v<T, CurveSection> || std::is_same_v<T, SlerpBlendSection>) {
           // The chord: sections of a curve are short, cut to a small velocity deviation.
           const Posed a = s.pose(0.0), b = s.pose(1.0);
           return ((b * s.pivot) - (a * s.pivot)).norm() + metres_per_radian * rotation_angle(a, b);
@@ -50,7 +50,8 @@ inline Section section_part(const Section& section, double t0, double t1) {
           part.rotation_angle = s.rotation_angle * (t1 - t0);
           return part;
         } else {
-          CurveSection part = s;
+          // A part of a curve (cubic or nested SLERP): the same curve over a part of its v.
+          T part = s;
           part.v0 = s.v0 + t0 * s.span();
           part.v1 = s.v0 + t1 * s.span();
           return part;

@@ -8,18 +8,21 @@
 namespace dispkin {
 
 void SectionMotions::reserve(const std::vector<Section>& sections) {
-  std::size_t lines = 0, arcs = 0, screws = 0;
+  std::size_t lines = 0, arcs = 0, screws = 0, slerp_blends = 0;
   for (const Section& s : sections) {
     if (const auto* lin = std::get_if<LinSection>(&s)) {
       ++(lin->interpolation == Interpolation::screw ? screws : lines);
     } else if (std::holds_alternative<ArcSection>(s)) {
       ++arcs;
+    } else if (std::holds_alternative<SlerpBlendSection>(s)) {
+      ++slerp_blends;
     }
   }
   entries_.reserve(sections.size());
   lines_.reserve(lines);
   arcs_.reserve(arcs);
   screws_.reserve(screws);
+  slerp_blends_.reserve(slerp_blends);
 }
 
 void SectionMotions::append(const Section& section) {
@@ -44,6 +47,11 @@ void SectionMotions::append(const Section& section) {
       curves_.push_back(CurveMotion{curve->q0, curve->position, curve->rotation, curve->pivot});
     }
     entries_.push_back({Kind::curve, curves_.size() - 1, curve->v0, curve->span()});
+    return;
+  }
+  if (const auto* blend = std::get_if<SlerpBlendSection>(&section)) {
+    entries_.push_back({Kind::slerp_blend, slerp_blends_.size()});
+    slerp_blends_.push_back(*blend);
     return;
   }
   const auto& arc = std::get<ArcSection>(section);

@@ -21,11 +21,17 @@ namespace {
 // unbounded acceleration at any speed above zero).
 constexpr double junction_direction_tolerance = 1e-6;
 
-// Whether `after` continues the motion of `before`: the same cubic curve from the parameter
-// where `before` ends, or the same circular motion (its body twist is then a function of the
+// Whether `after` continues the motion of `before`: the same cubic curve (or nested-SLERP
+// blend) from the parameter where `before` ends, or the same circular motion (its body twist is then a function of the
 // pose alone, and the path joins its sections to 1e-9).
 bool continues(const CurveSection& before, const CurveSection& after) {
   return before.v1 == after.v0 && detail::same_curve(before.q0, before.position, before.rotation, before.pivot, after);
+}
+bool continues(const SlerpBlendSection& before, const SlerpBlendSection& after) {
+  return before.v1 == after.v0 && detail::same_bits(before.q_start.coeffs().data(), after.q_start.coeffs().data(), 4) &&
+         detail::same_bits(before.a.data(), after.a.data(), 3) && detail::same_bits(before.b.data(), after.b.data(), 3) &&
+         detail::same_bits(before.position.a[0].data(), after.position.a[0].data(), 12) &&
+         detail::same_bits(before.pivot.data(), after.pivot.data(), 3);
 }
 bool continues(const ArcSection& before, const ArcSection& after) {
   return before.center == after.center && before.normal == after.normal && before.angle == after.angle &&
@@ -42,6 +48,7 @@ bool moving(const CurveSection& after) {
   return slope != Eigen::Vector3d::Zero() &&
          right_jacobian_times(after.rotation.value(after.v0), slope) != Eigen::Vector3d::Zero();
 }
+bool moving(const SlerpBlendSection& after) { return after.twist(0.0).vector() != Eigen::Matrix<double, 6, 1>::Zero(); }
 bool moving(const ArcSection& after) {
   return after.rotation_angle != 0.0 ||
          (after.angle != 0.0 && after.normal.cross(after.start * after.pivot - after.center) != Eigen::Vector3d::Zero());
@@ -61,6 +68,12 @@ std::optional<JunctionSpeeds> direction_continuous(const Section& before, const 
   if (curve_before && curve_after && continues(*curve_before, *curve_after)) {
     if (!moving(*curve_after)) return std::nullopt;
     return JunctionSpeeds{curve_before->span(), curve_after->span()};
+  }
+  const auto* slerp_before = std::get_if<SlerpBlendSection>(&before);
+  const auto* slerp_after = std::get_if<SlerpBlendSection>(&after);
+  if (slerp_before && slerp_after && continues(*slerp_before, *slerp_after)) {
+    if (!moving(*slerp_after)) return std::nullopt;
+    return JunctionSpeeds{slerp_before->span(), slerp_after->span()};
   }
   if (arc_before && arc_after && continues(*arc_before, *arc_after)) {
     if (!moving(*arc_after)) return std::nullopt;

@@ -31,21 +31,6 @@ Twistd twist_rate(const ArcSection& arc, double tau) noexcept {
   return Twistd(-omega.cross(to_body * c_dot) + to_body * c_ddot, Eigen::Vector3d::Zero());
 }
 
-// The derivatives along φ of the coefficients of J_r(φ) = I − α [φ]ₓ + β [φ]ₓ², divided by θ:
-// α′(θ)/θ and β′(θ)/θ with α = (1 − cos θ)/θ², β = (θ − sin θ)/θ³. Their series below 0.1 rad,
-// where the closed forms cancel (next terms: θ⁶/453600 and θ⁶/3991680).
-void jacobian_coefficient_rates(double theta, double& alpha_rate, double& beta_rate) noexcept {
-  const double t2 = theta * theta;
-  if (theta < 0.1) {
-    alpha_rate = -1.0 / 12.0 + t2 * (1.0 / 180.0 - t2 / 6720.0);
-    beta_rate = -1.0 / 60.0 + t2 * (1.0 / 1260.0 - t2 / 60480.0);
-    return;
-  }
-  const double s = std::sin(theta), c = std::cos(theta), t4 = t2 * t2;
-  alpha_rate = (theta * s - 2.0 * (1.0 - c)) / t4;
-  beta_rate = (3.0 * s - 2.0 * theta - theta * c) / (t4 * theta);
-}
-
 // A pose curve R₀ exp(φ(v)), c(v), v = v0 + h τ. Per unit v, ω = J_r(φ) φ′ and
 //   ω′ = J_r(φ) φ″ + (dJ_r/dv) φ′ = J_r φ″ − α̇ φ × φ′ + β̇ φ × (φ × φ′) + β φ′ × (φ × φ′)
 // with α̇ = α′(θ) θ′, β̇ = β′(θ) θ′, θ′ = φ·φ′/θ (the [φ′]ₓ φ′ terms vanish). Per unit τ:
@@ -53,14 +38,7 @@ void jacobian_coefficient_rates(double theta, double& alpha_rate, double& beta_r
 Twistd twist_rate(const CurveSection& curve, double tau) noexcept {
   const double h = curve.span(), v = curve.v0 + tau * h;
   const Eigen::Vector3d phi = curve.rotation.value(v), phi_1 = curve.rotation.first(v), phi_2 = curve.rotation.second(v);
-  const double theta = phi.norm();
-  double alpha_rate = 0.0, beta_rate = 0.0;
-  jacobian_coefficient_rates(theta, alpha_rate, beta_rate);
-  const double beta = detail::coefficient_c(theta);
-  const double along = phi.dot(phi_1);  // θ θ′
-  const Eigen::Vector3d cross = phi.cross(phi_1);
-  const Eigen::Vector3d omega_rate = right_jacobian_times(phi, phi_2) - alpha_rate * along * cross +
-                                     beta_rate * along * phi.cross(cross) + beta * phi_1.cross(cross);
+  const Eigen::Vector3d omega_rate = right_jacobian_times(phi, phi_2) + detail::right_jacobian_rate_times(phi, phi_1);
   Posed at;
   Twistd xi;
   curve.at(tau, at, xi);
@@ -71,6 +49,9 @@ Twistd twist_rate(const CurveSection& curve, double tau) noexcept {
       angular_rate.cross(curve.pivot);
   return Twistd(linear_rate, angular_rate);
 }
+
+// A nested-SLERP blend: its own exact rate (doc/planning.md eq. 30).
+Twistd twist_rate(const SlerpBlendSection& blend, double tau) noexcept { return blend.twist_rate(tau); }
 
 }  // namespace
 

@@ -61,6 +61,20 @@ inline Path random_path(Random& rnd, int family, const V& offset = V::Zero()) {
   }
 }
 
+// A chain of three random decoupled LINs about a random pivot, blended at both via points by
+// nested SLERP (OrientationBlend::nested_slerp) with weights of 10–50 % of each move.
+inline Path random_slerp_blended_chain(Random& rnd, double tolerance = 1e-2) {
+  const Posed a = rnd.pose(0.5);
+  const V pivot = rnd.vector(0.1);
+  const Posed b = rnd.nearby(a, 0.3, 1.0), c = rnd.nearby(b, 0.3, 1.0), d = rnd.nearby(c, 0.3, 1.0);
+  Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
+  path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp,
+                     tolerance)
+      .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp,
+                     tolerance);
+  return path;
+}
+
 // A random list of 4–8 poses joined by decoupled LINs about a random pivot, and a corner
 // tolerance of 1–30 % of its shortest move's pivot travel: a CAM-style path for continuous-path
 // mode (PlanOptions::corner_tolerance).

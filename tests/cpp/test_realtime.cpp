@@ -26,6 +26,7 @@ std::atomic<long> eigen_assert_failures{0};
 #include "dispkin/profile.hpp"
 #include "dispkin/shapes.hpp"
 #ifdef DISPKIN_HAS_SERIAL
+#include "dispkin/serial/joint_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
 #include "ptp_moves.hpp"
@@ -170,6 +171,25 @@ TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum >= 0.0);
 }
+// Sampling a path blended by nested SLERP (SlerpBlendSection::at: exp, log and right Jacobians on
+// fixed-size vectors) allocates nothing.
+TEST(Realtime, SlerpBlendSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  using V = Eigen::Vector3d;
+  const Posed a, via(Eigen::Quaterniond(Eigen::AngleAxisd(0.4, V::UnitZ())), V(0.3, 0, 0));
+  const Posed b(Eigen::Quaterniond(Eigen::AngleAxisd(0.8, V::UnitX())), V(0.3, 0.3, 0));
+  Path path = Path::lin(a, via);
+  path.then_weighted(Path::lin(via, b), 0.4, OrientationBlend::nested_slerp);
+  const Trajectory traj = plan(path, set, Limits{0.1, 0.5, 5.0});
+  double checksum = 0.0;
+  const long allocated = allocations_during([&] {
+    for (int i = 0; i < 20000; ++i) checksum += traj.sample(traj.duration() * (1.2 * i / 20000 - 0.1)).body_twist.angular.norm();
+  });
+  EXPECT_EQ(allocated, 0) << "Trajectory::sample allocated on a nested-SLERP blend";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
+  EXPECT_TRUE(checksum > 0.0);
+}
 #ifdef DISPKIN_HAS_SERIAL
 // The closed-form IK families write into a fixed IkSolutionSet: no allocation at all (checks,
 // subproblems, Newton polish, de-duplication), over random poses of every closed-form robot
@@ -257,6 +277,28 @@ TEST(Realtime, JointTrajectorySamplingDoesNotAllocate) {
     EXPECT_EQ(allocated, 0) << "JointTrajectory::sample allocated";
     EXPECT_EQ(eigen_assert_failures.load(), 0) << "Eigen allocated (or an Eigen assertion failed) while sampling";
   }
+  EXPECT_TRUE(checksum > 0.0);
+}
+
+// Two PTP moves overlapped (OverlappedJointTrajectory::sample: inline JointVectors, FK of the sum).
+TEST(Realtime, OverlappedJointSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  Eigen::VectorXd q_a(6), via(6), q_b(6);
+  q_a << 0.1, -1.2, 1.3, -1.0, -1.2, 0.2;
+  via << 1.4, -0.6, 0.7, -1.6, -0.9, 1.1;
+  q_b << 0.5, -1.0, 1.0, -1.2, -1.5, 0.4;
+  const serial::SerialArm arm = testing::ur5e_arm();
+  const Limits limits{0.5, 2.0, 20.0};
+  const JointTrajectory first = plan(JointPath(q_a, via), set, limits, ProfileKind::scurve, arm);
+  const JointTrajectory second = plan(JointPath(via, q_b), set, limits, ProfileKind::scurve, arm);
+  const OverlappedJointTrajectory o(first, second, 0.5 * std::min(first.duration(), second.duration()));
+  double checksum = 0.0;
+  const long allocated = allocations_during([&] {
+    for (int i = 0; i < 20000; ++i) checksum += o.sample(o.duration() * (1.2 * i / 20000 - 0.1)).qd.norm();
+  });
+  EXPECT_EQ(allocated, 0) << "OverlappedJointTrajectory::sample allocated";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum > 0.0);
 }
 #endif

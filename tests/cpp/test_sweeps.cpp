@@ -81,6 +81,26 @@ TEST(Sweep, GuaranteeBlendedPoseList) {
   record("guarantee_blended_pose_list", n, worst);
 }
 
+// The guarantee along chains of LINs blended by nested SLERP (doc/planning.md §6.1): as
+// guarantee_sweep, on a twentieth of the count (the family's other blends are swept in full).
+TEST(Sweep, GuaranteeSlerpBlendedChain) {
+  Random rnd(9107);
+  const int n = std::max(50, sweep_count() / 20);
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const Path path = testing::random_slerp_blended_chain(rnd);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    const Trajectory traj = plan(path, set, testing::random_limits(rnd, v, kind), kind);
+    const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
+    worst = std::max(worst, ratio);
+    ASSERT_LE(ratio, 1.0 + 1e-6) << "nested-SLERP chain, case " << i;
+    ASSERT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-9)) << "nested-SLERP chain, case " << i;
+  }
+  record("guarantee_slerp_blended_chain", n, worst);
+}
+
 TEST(Sweep, GuaranteeDecoupledLin) { guarantee_sweep(0, 9100); }
 TEST(Sweep, GuaranteeScrewLin) { guarantee_sweep(1, 9101); }
 TEST(Sweep, GuaranteeCirc) { guarantee_sweep(2, 9102); }

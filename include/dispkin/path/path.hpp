@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include "dispkin/path/curve_section.hpp"
+#include "dispkin/path/slerp_blend_section.hpp"
 #include "dispkin/disp.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/metric_set.hpp"
@@ -163,7 +164,7 @@ struct ArcSection {
   }
 };
 
-using Section = std::variant<LinSection, ArcSection, CurveSection>;
+using Section = std::variant<LinSection, ArcSection, CurveSection, SlerpBlendSection>;
 
 //! The pose at τ of any section.
 inline Posed section_pose(const Section& section, double tau) noexcept {
@@ -234,6 +235,29 @@ struct MoveLimits {
   }
 };
 
+//! How a blend at a via point turns the orientation (Path::then with a blend, doc/planning.md §6).
+enum class OrientationBlend {
+  //! A cubic in the rotation vector whose end angular velocities are the neighbours' (eq. 15);
+  //! any neighbouring sections, the pivot on a cubic Hermite curve.
+  rotation_vector,
+  //! The Mamezou article's nested SLERP with the corner orientation as control point (eq. 27),
+  //! the pivot on the quadratic Bézier curve with the corner as control point; both neighbours
+  //! must be decoupled LIN sections at the sub-points.
+  nested_slerp,
+};
+
+inline const char* to_string(OrientationBlend kind) {
+  return kind == OrientationBlend::nested_slerp ? "nested_slerp" : "rotation_vector";
+}
+
+//! "rotation_vector" or "nested_slerp"; anything else throws std::invalid_argument naming the
+//! value (argument name `orientation_blend`).
+inline OrientationBlend orientation_blend_from_string(const std::string& name) {
+  if (name == "rotation_vector") return OrientationBlend::rotation_vector;
+  if (name == "nested_slerp") return OrientationBlend::nested_slerp;
+  throw std::invalid_argument(describe("orientation_blend", name, "must be \"rotation_vector\" or \"nested_slerp\""));
+}
+
 //! A junction where corner blending (Path::blended) leaves the path with a corner, and why.
 struct CornerStop {
   std::size_t section;  //!< the corner lies at the end of this section of the blended path
@@ -277,8 +301,25 @@ class Path {
   //! scaled alike — the twist keeps its direction through both joins, so the planner does not stop
   //! there. The pivot stays within max(before, after) of the corner. Throws if a distance is not
   //! positive or exceeds half of its neighbouring move (two blends on one move must not overlap).
-  Path& then(const Path& next, double before, double after, double tolerance = 1e-3);
+  //!
+  //! With `orientation` = OrientationBlend::nested_slerp the blend is the Mamezou article's
+  //! "Fitting Posture" instead (doc/planning.md §6.1): the orientation by nested SLERP from the
+  //! sub-point's orientation q₁ through the corner's q_m (control point) to q₂, the pivot on
+  //! the quadratic Bézier curve with the corner as control point, over one blend parameter; the
+  //! twist at each join is twice the neighbouring LIN's own (eq. 28), so the planner passes both
+  //! joins. It needs the sub-points on decoupled LIN sections with one pivot — the last section of
+  //! this path and the first of `next` — and throws std::invalid_argument naming
+  //! `orientation_blend` or `next` otherwise.
+  Path& then(const Path& next, double before, double after, double tolerance = 1e-3,
+             OrientationBlend orientation = OrientationBlend::rotation_vector);
   Path& then(const Path& next, double blend) { return then(next, blend, blend); }
+
+  //! The article's form of a blend: by a weight w ∈ (0, 0.5] of the neighbouring moves
+  //! (before = w × the size of the last move, after = w × the size of next's first move; with
+  //! nested_slerp, q₁ = Slerp(1 − w, q[m−1], q[m]) and q₂ = Slerp(w, q[m], q[m+1]) between
+  //! LINs). Throws std::invalid_argument naming `weight` outside (0, 0.5], else as then().
+  Path& then_weighted(const Path& next, double weight, OrientationBlend orientation = OrientationBlend::rotation_vector,
+                      double tolerance = 1e-3);
 
   //! Gives every move of this path the speed and acceleration `limits` (see MoveLimits; a
   //! path built by lin/circ/spline is one move). then() keeps each move's limits; a blend
@@ -341,6 +382,10 @@ class Path {
   //! the length bounds stay rigorous for any set, their slack grows with its radius.
   void cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
                  const Eigen::Vector3d& pivot, double tolerance);
+  //! Append a nested-SLERP blend (its section over v ∈ [0, 1]) cut into equal-v sections, so
+  //! that within each the velocity strays from its middle value by at most `tolerance` of the
+  //! speed as for cut_curve, from the blend's rigorous motion bounds (slerp_blend.cpp).
+  void cut_slerp_blend(const SlerpBlendSection& blend, double tolerance);
 
   std::vector<Section> sections_;
   // Geometric sizes of the first and of the last move, before any blend (blends may take at

@@ -245,11 +245,12 @@ class SectionMotions {
       case Kind::arc: arcs_[e.index].at(tau, pose, twist); return;
       case Kind::screw: screws_[e.index].at(tau, pose, twist); return;
       case Kind::curve: curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist); return;
+      case Kind::slerp_blend: slerp_blends_[e.index].at(tau, pose, twist); return;
     }
   }
 
  private:
-  enum class Kind : unsigned char { line, arc, screw, curve };
+  enum class Kind : unsigned char { line, arc, screw, curve, slerp_blend };
   struct Entry {
     Kind kind;
     std::size_t index;       // into the vector of its kind
@@ -260,6 +261,7 @@ class SectionMotions {
   std::vector<ArcMotion> arcs_;
   std::vector<ScrewMotion> screws_;
   std::vector<CurveMotion> curves_;
+  std::vector<SlerpBlendSection> slerp_blends_;  // their own form: at() is noexcept and allocation-free
 };
 
 }  // namespace dispkin

@@ -111,6 +111,8 @@ class JointTrajectory {
   const std::vector<SpeedLimit>& speed_limits() const noexcept { return speed_limits_; }
   //! The acceleration limit the time law kept to (the DISP one, lowered by joint acceleration limits).
   double law_acceleration() const noexcept { return law_acceleration_; }
+  //! The arm's chain the move was planned on (its forward kinematics gives sample().pose).
+  const serial::RevoluteChain& chain() const noexcept { return chain_; }
 
   //! The state at time t (clamped to [0, duration]); exactly q_a at t ≤ 0 and q_b at t ≥ duration.
   JointTrajectorySample sample(double t) const noexcept;
