@@ -51,7 +51,7 @@ def run_check(job_file: str, out: TextIO) -> int:
         print(f"  path: {len(job.moves)} move(s) in {len(job.parts)} part(s) planned one after the other "
               f"({ptp} PTP move(s) on the arm, at rest at both ends)", file=out)
     for i, move in enumerate(job.moves):
-        blend = f", blend {move.blend:g} m" if move.blend else ""
+        blend = f", {move.blend_text()}" if move.blend_text() else ""
         if move.kind == "ptp":
             print(f"    move {i}: ptp, ends at joints {np.round(move.path.end, 6).tolist()} (rad)", file=out)
             continue

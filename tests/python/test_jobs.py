@@ -274,6 +274,51 @@ def test_blend_removes_the_stops_and_matches_the_api():
     assert traj.duration == pytest.approx(api.duration, rel=1e-12)
 
 
+NESTED_SLERP_JOB = """
+name: nested_slerp
+metric_set:
+  points:
+    - {shape: icosahedron, radius: 0.02, center: [0, 0, 0.2]}
+start: {xyzuvw: [0, 0, 0, 0, 0, 0]}
+moves:
+  - lin: {to: {xyzuvw: [0.3, 0, 0, 0, 0, 20]}}
+  - lin: {to: {xyzuvw: [0.3, 0.25, 0, 10, 0, 60]}}
+    BLEND
+limits: {velocity: 0.25, acceleration: 1.0, jerk: 10.0}
+"""
+
+
+def test_blend_weight_and_nested_slerp_match_the_api(tmp_path):
+    """`blend_weight` and `orientation_blend` of a move are Path.then's weight and orientation_blend."""
+    def pose(x, y, u, w):
+        return dispkin.Pose.from_xyzuvw([x, y, 0, math.radians(u), 0, math.radians(w)])
+    for keys, kwargs in (("blend_weight: 0.3", {"weight": 0.3}),
+                         ("blend_weight: 0.3\n    orientation_blend: nested_slerp", {"weight": 0.3, "orientation_blend": "nested_slerp"}),
+                         ("blend: 0.05\n    orientation_blend: nested_slerp", {"blend": 0.05, "orientation_blend": "nested_slerp"})):
+        (tmp_path / "job.yaml").write_text(NESTED_SLERP_JOB.replace("BLEND", keys))
+        job = jobs.load_job(tmp_path / "job.yaml")
+        path = dispkin.Path.lin(pose(0, 0, 0, 0), pose(0.3, 0, 0, 20))
+        path.then(dispkin.Path.lin(pose(0.3, 0, 0, 20), pose(0.3, 0.25, 10, 60)), **kwargs)
+        api = dispkin.plan(path, job.metric_set, job.limits)
+        traj = jobs.plan_job(job)
+        assert traj.piece_count == 1 and traj.stops == [], keys  # one run through the blend
+        assert traj.duration == pytest.approx(api.duration, rel=1e-12), keys
+        assert ("nested SLERP" in job.moves[1].blend_text()) == ("nested_slerp" in keys)
+
+
+@pytest.mark.parametrize("keys, key, message", [
+    ("blend: 0.05\n    blend_weight: 0.3", "moves[1].blend_weight", "not both"),
+    ("orientation_blend: nested_slerp", "moves[1].orientation_blend", "no blend to shape"),
+    ("blend_weight: 0.7", "moves[1].blend_weight", "0.7"),
+    ("blend_weight: 0.3\n    orientation_blend: slerpy", "moves[1].orientation_blend", "slerpy"),
+])
+def test_blend_weight_and_orientation_blend_errors_name_the_key(tmp_path, keys, key, message):
+    (tmp_path / "job.yaml").write_text(NESTED_SLERP_JOB.replace("BLEND", keys))
+    with pytest.raises(jobs.JobError) as error:
+        jobs.plan_job(jobs.load_job(tmp_path / "job.yaml"))
+    assert key in str(error.value) and message in str(error.value)
+
+
 def test_center_is_the_spelling_and_centre_its_alias(tmp_path):
     """Job files spell `center` as the API does; `centre` (earlier job files) builds the same job."""
     for example in ("blended_tool_move.yaml", "ur5e_lin_move.yaml"):

@@ -287,20 +287,33 @@ class _Builder:
         for i, move in enumerate(self.data["moves"]):
             at: KeyPath = ("moves", i)
             blend = move.get("blend")
-            if blend is not None and i == 0:
-                raise self.fail(at + ("blend",), f"{blend}: the first move has no previous move to blend with")
+            self.blend_keys(at, move)
+            if i == 0:
+                for key in ("blend", "blend_weight"):
+                    if key in move:
+                        raise self.fail(at + (key,), f"{move[key]}: the first move has no previous move to blend with")
             if "ptp" in move:
                 for key in ("velocity", "acceleration"):
                     if key in move:
                         raise self.fail(at + (key,), f"{move[key]}: a PTP move runs under the joint limits and `limits`; "
                                                      "a move's own speed is for lin, circ and spline moves")
-                self.ptp_move(job, moves, at, blend)
+                self.ptp_move(job, moves, at, blend if blend is not None else move.get("blend_weight"))
             else:
                 self.cartesian_move(job, moves, at, move, blend)
         self.close_run(job, moves)
         parts = moves.parts
         whole_path = parts[0].path if len(parts) == 1 and parts[0].kind == "path" else None
         return whole_path, moves.built, parts
+
+    def blend_keys(self, at: KeyPath, move: Dict[str, Any]) -> None:
+        """A blend is given by its size (`blend`, m) or as the share of both moves (`blend_weight`,
+        the Mamezou article's w), not both; `orientation_blend` says how it turns the tool and needs one of them."""
+        if "blend" in move and "blend_weight" in move:
+            raise self.fail(at + ("blend_weight",), f"{move['blend_weight']}: give the blend by its size (`blend`, m) "
+                                                    "or as a share of both moves (`blend_weight`), not both")
+        if "orientation_blend" in move and "blend" not in move and "blend_weight" not in move:
+            raise self.fail(at + ("orientation_blend",), f"{move['orientation_blend']}: there is no blend to shape; "
+                                                         "give `blend` (m) or `blend_weight`")
 
     def ptp_move(self, job: Dict[str, Any], moves: _Moves, at: KeyPath, blend: Optional[float]) -> None:
         """A PTP move: the run before it becomes a part, the move a part of its own."""
@@ -316,8 +329,9 @@ class _Builder:
     def cartesian_move(self, job: Dict[str, Any], moves: _Moves, at: KeyPath, move: Dict[str, Any],
                        blend: Optional[float]) -> None:
         """A lin, circ or spline move from the current pose, added to the current run."""
-        if blend is not None and moves.built[-1].kind == "ptp":
-            raise self.fail(at + ("blend",), f"{blend}: the previous move is a PTP move, which ends at rest; nothing to blend with")
+        for key in ("blend", "blend_weight"):
+            if key in move and moves.built[-1].kind == "ptp":
+                raise self.fail(at + (key,), f"{move[key]}: the previous move is a PTP move, which ends at rest; nothing to blend with")
         kind = "lin" if "lin" in move else "circ" if "circ" in move else "spline"
         section = {"lin": self.lin, "circ": self.circ, "spline": self.spline}[kind]
         constructor, arguments, end = section(job, at, moves.current)
@@ -326,7 +340,7 @@ class _Builder:
         if own:
             constructor = functools.partial(constructor, **own)
         path = self.call(at + (kind,), constructor, *arguments)
-        moves.built.append(Move(kind, path, blend))
+        moves.built.append(Move(kind, path, blend, move.get("blend_weight"), move.get("orientation_blend", "rotation_vector")))
         moves.run.append(_RunMove(at[1], path, constructor, arguments))
         moves.current = end
 
@@ -363,9 +377,15 @@ class _Builder:
         first = run[0]
         whole = self.call(("moves", first.index, moves.built[first.index].kind), first.constructor, *first.arguments)
         for later in run[1:]:
-            blend = moves.built[later.index].blend
-            self.call(("moves", later.index, "blend") if blend is not None else ("moves", later.index), whole.then,
-                      later.path, blend=blend)
+            move = moves.built[later.index]
+            if move.blend_weight is not None:
+                self.call(("moves", later.index, "blend_weight"), whole.then, later.path, weight=move.blend_weight,
+                          orientation_blend=move.orientation_blend)
+            elif move.blend is not None:
+                self.call(("moves", later.index, "blend"), whole.then, later.path, blend=move.blend,
+                          orientation_blend=move.orientation_blend)
+            else:
+                self.call(("moves", later.index), whole.then, later.path)
         q_run = self.joints_at(arm, ("moves", first.index), whole.start, moves.q_current) if arm is not None else None
         moves.parts.append(Part("path", whole, q_run, [m.index for m in run]))
         if arm is not None:

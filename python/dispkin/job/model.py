@@ -49,11 +49,21 @@ def value_at(data: Any, key_path: KeyPath) -> Any:
 @dataclasses.dataclass
 class Move:
     """One move of a job as built: its kind, its Path (a JointPath for a PTP move), the blend
-    with the previous move (m)."""
+    with the previous move (m, or as the share `blend_weight` of both moves) and how that blend
+    turns the tool (`orientation_blend`: rotation_vector or nested_slerp)."""
 
     kind: str
     path: Union[Path, JointPath]
     blend: Optional[float]
+    blend_weight: Optional[float] = None
+    orientation_blend: str = "rotation_vector"
+
+    def blend_text(self) -> str:
+        """The blend in words ('' without one), e.g. 'blend 0.02 m' or 'blend 0.3 of each move, nested SLERP'."""
+        if self.blend is None and self.blend_weight is None:
+            return ""
+        size = f"blend {self.blend:g} m" if self.blend is not None else f"blend {self.blend_weight:g} of each move"
+        return size + (", nested SLERP" if self.orientation_blend == "nested_slerp" else "")
 
 
 @dataclasses.dataclass

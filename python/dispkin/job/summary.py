@@ -39,7 +39,7 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
     summary: Dict[str, Any] = {
         "job": job.name,
         "machine": job.machine,
-        "moves": [m.kind + (f" (blend {m.blend:g} m)" if m.blend else "") for m in job.moves],
+        "moves": [m.kind + (f" ({m.blend_text()})" if m.blend_text() else "") for m in job.moves],
         "duration": float(trajectory.duration),
         "length": float(trajectory.length),
         "rest_to_rest_pieces": int(trajectory.piece_count),
