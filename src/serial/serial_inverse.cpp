@@ -31,7 +31,7 @@ using detail::two_pi;
 
 // Joint values this close count as one solution; numeric restarts land on the same root with
 // differences of the order of their convergence tolerance.
-constexpr double duplicate_tolerance = 1e-7;
+constexpr double duplicate_tolerance = ik_duplicate_tolerance;
 // The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
 constexpr int lma_run_length = 25;
 constexpr int lma_runs = 20;
@@ -172,7 +172,14 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   result.family = model_->family;
 
   std::vector<Eigen::VectorXd> raw;
-  if (model_->family != IkFamily::general) {
+  if (model_->family == IkFamily::spherical_wrist || model_->family == IkFamily::three_parallel) {
+    // The closed forms write into a fixed set (no allocation per candidate).
+    IkSolutionSet closed_form;
+    analytic_inverse(model_->revolute, model_->family, pose, closed_form);
+    raw.reserve(static_cast<std::size_t>(closed_form.size()));
+    for (int i = 0; i < closed_form.size(); ++i) raw.emplace_back(closed_form[i]);
+    result.complete = true;
+  } else if (model_->family != IkFamily::general) {
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
   } else {
@@ -214,17 +221,24 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
 
   std::vector<Eigen::VectorXd> representatives;
   std::vector<bool> inside_limits;
-  for (Eigen::VectorXd q : raw) {
-    if (q.size() != n || !q.allFinite()) continue;
+  representatives.reserve(raw.size());
+  for (Eigen::VectorXd& found : raw) {
+    if (found.size() != n || !found.allFinite()) continue;
+    Eigen::VectorXd q = found;
     const bool inside = into_limits(q, limits);
     if (!inside && !options.keep_outside_limits) continue;
-    // Every solution is checked by forward kinematics (reproduces); one that misses by a little
-    // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
-    if (!reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
+    // An analytic solution left as it was already reproduces the pose: the families accept a
+    // candidate by doc/inverse-kinematics.md (eq. 25), which bounds every entry of R and t as
+    // forward()'s check does (eq. 26). Every other one (a numeric root, a solution moved by whole
+    // turns into the limits) is checked by forward kinematics; one that misses by a little gets
+    // Newton steps, one that misses by more is not a solution.
+    const bool analytic_as_found = result.complete && q == found;
+    if (!analytic_as_found && !reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
     // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
-    // the copies of different representatives are then different too.
-    if (is_duplicate(representatives, q)) continue;
-    representatives.push_back(q);
+    // the copies of different representatives are then different too. The analytic families
+    // return none (ik_duplicate_tolerance is this one), and whole turns keep them apart.
+    if (!result.complete && is_duplicate(representatives, q)) continue;
+    representatives.push_back(std::move(q));
     inside_limits.push_back(inside);
   }
   if (!options.offer_equivalents) {
