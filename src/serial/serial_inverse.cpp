@@ -35,8 +35,10 @@ constexpr double duplicate_tolerance = ik_duplicate_tolerance;
 // The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
 constexpr int lma_run_length = 25;
 constexpr int lma_runs = 20;
-// q into (−π, π].
+// q into (−π, π]: exact for any q (std::remainder), at once for one already there (what the
+// analytic families return; std::remainder would give it back unchanged, slower).
 double wrap(double q) {
+  if (q > -pi && q <= pi) return q;
   double r = std::remainder(q, two_pi);  // in [−π, π]
   if (r <= -pi) r += two_pi;
   return r;
@@ -76,8 +78,8 @@ bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept {
     const double w = wrap(q(i));
     const double lo = limits.lower(i);
     const double hi = limits.upper(i);
-    if (!std::isfinite(lo) || !std::isfinite(hi)) {
-      q(i) = w;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || (lo - limit_slack <= w && w <= hi + limit_slack)) {
+      q(i) = w;  // no limits, or w itself inside them: k = 0 below
       continue;
     }
     // The copies w + 2πk inside the limits are k_lo ≤ k ≤ k_hi; the one nearest 0 has the k
@@ -172,12 +174,9 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   result.family = model_->family;
 
   std::vector<Eigen::VectorXd> raw;
+  IkSolutionSet closed_form;  // the closed forms write into a fixed set (no allocation per candidate)
   if (model_->family == IkFamily::spherical_wrist || model_->family == IkFamily::three_parallel) {
-    // The closed forms write into a fixed set (no allocation per candidate).
-    IkSolutionSet closed_form;
     analytic_inverse(model_->revolute, model_->family, pose, closed_form);
-    raw.reserve(static_cast<std::size_t>(closed_form.size()));
-    for (int i = 0; i < closed_form.size(); ++i) raw.emplace_back(closed_form[i]);
     result.complete = true;
   } else if (model_->family != IkFamily::general) {
     raw = analytic_inverse(model_->revolute, model_->family, pose);
@@ -221,8 +220,14 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
 
   std::vector<Eigen::VectorXd> representatives;
   std::vector<bool> inside_limits;
-  representatives.reserve(raw.size());
-  for (Eigen::VectorXd& found : raw) {
+  const std::size_t found_count = raw.size() + static_cast<std::size_t>(closed_form.size());
+  representatives.reserve(found_count);
+  inside_limits.reserve(found_count);
+  for (std::size_t k = 0; k < found_count; ++k) {
+    // The solution as the solver found it: an entry of the search's list or of the closed form's set.
+    const Eigen::Map<const Eigen::VectorXd> found =
+        k < raw.size() ? Eigen::Map<const Eigen::VectorXd>(raw[k].data(), raw[k].size())
+                       : Eigen::Map<const Eigen::VectorXd>(closed_form[static_cast<int>(k - raw.size())].data(), 6);
     if (found.size() != n || !found.allFinite()) continue;
     Eigen::VectorXd q = found;
     const bool inside = into_limits(q, limits);
