@@ -10,10 +10,10 @@ workload below is a list of units of work; per round the script runs
 
 alternating which goes first from round to round, and prints per workload the median wall time
 of each and their ratio (the speed-up; 2.0 at best on two cores), the median over rounds of the
-per-round ratio, and the process CPU time over the wall time of the two-thread runs (how many
-cores were busy on average: 2.0 when both threads ran in parallel all the time; less means the
-threads waited for the lock, or for a core the machine's other load held). The results of the
-two threads are checked to be those of one thread, bit for bit.
+per-round ratio, and the process CPU time over the wall time of each (how many cores were busy
+on average: 1.0 for one thread and 2.0 for two threads running in parallel all the time; less
+means the threads waited for the lock, or for a core the machine's other load held). The results
+of the two threads are checked to be those of one thread, bit for bit.
 
 Workloads:
 - plan: plan() of a LIN-CIRC-LIN path with blended corners under a 2000-point metric set, then
@@ -134,7 +134,7 @@ def two_threads(unit):
 def measure(name, make_unit, rounds):
     unit = make_unit()
     reference = unit()
-    one, two, ratios, busy = [], [], [], []
+    one, two, ratios, busy_one, busy_two = [], [], [], [], []
     for r in range(rounds):
         order = (one_thread, two_threads) if r % 2 == 0 else (two_threads, one_thread)
         walls = {}
@@ -144,15 +144,14 @@ def measure(name, make_unit, rounds):
                 if not np.array_equal(found, reference):
                     raise RuntimeError(f"{name}: a result differs from the one-thread result")
             walls[runner] = wall
-            if runner is two_threads:
-                busy.append(cpu / wall)
+            (busy_two if runner is two_threads else busy_one).append(cpu / wall)
         one.append(walls[one_thread])
         two.append(walls[two_threads])
         ratios.append(walls[one_thread] / walls[two_threads])
     print(f"  {name:14s} 1 thread {statistics.median(one) * 1e3:8.1f} ms   2 threads {statistics.median(two) * 1e3:8.1f} ms"
           f"   speed-up {statistics.median(one) / statistics.median(two):.2f}"
           f" (per round: median {statistics.median(ratios):.2f}, {min(ratios):.2f} – {max(ratios):.2f})"
-          f"   cores busy {statistics.median(busy):.2f}")
+          f"   cores busy: 1 thread {statistics.median(busy_one):.2f}, 2 threads {statistics.median(busy_two):.2f}")
 
 
 def main() -> None:
