@@ -93,10 +93,9 @@ py::array_t<double> solution_rows(const std::vector<Eigen::VectorXd>& solutions,
   return out;
 }
 
-// Whether an IK call is long enough to hand the interpreter lock to other threads meanwhile:
-// the closed forms without 2π copies take a few µs, about what handing the lock over and back
-// costs when another thread wants it; the offset-wrist search, the numeric fallback and the
-// copies take tens of µs to seconds.
+// Whether an IK call is long enough to hand the interpreter lock to other threads meanwhile
+// (interpreter_lock.hpp): the closed forms without 2π copies take a few µs; the offset-wrist
+// search, the numeric fallback and the copies take tens of µs to seconds.
 bool long_inverse(const SerialArm& arm, const InverseOptions& options) {
   const serial::IkFamily f = arm.family();
   return options.offer_equivalents || !(f == serial::IkFamily::spherical_wrist || f == serial::IkFamily::three_parallel);

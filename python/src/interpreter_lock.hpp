@@ -1,8 +1,11 @@
 // When the bindings let other Python threads run: every call that can take more than about
 // 10 µs releases the interpreter lock (GIL) while its C++ work runs, after its arguments have
 // been converted to C++ values and before its result is converted back (no Python object is
-// touched meanwhile). Shorter calls keep it: handing the lock over and taking it back costs a
-// fraction of a µs, a visible share of a call that takes one.
+// touched meanwhile). Shorter calls keep it: releasing and taking it back costs a fraction of a
+// µs when no other thread wants it, a visible share of a call that takes one, and when another
+// thread runs Python code meanwhile, taking it back waits until that thread lets go of it (up
+// to the switch interval, 5 ms by default), so a loop of short calls that released the lock
+// would crawl beside a busy thread.
 //
 // What a released call reads must not change meanwhile: its C++ arguments are the objects
 // Python holds (a MetricSet, a Path, a Trajectory), not copies, so another thread must not

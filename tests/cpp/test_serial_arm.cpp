@@ -386,6 +386,43 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndTheTwoPiCopiesOnRequest) 
   }
 }
 
+TEST(SerialArmInverse, EverySolutionReproducesThePoseAndNoneRepeats) {
+  // inverse_solutions checks by forward kinematics only the solutions it moves by whole turns into
+  // the limits, and looks for duplicates only among the numeric search's roots: the analytic
+  // families' own acceptance implies the check (doc/inverse-kinematics.md (eq. 26)) and they
+  // return no duplicates. Limits of [0, 2π] on the UR5e move every negative joint value by a
+  // turn, the KR6-like arm's narrower limits drop some solutions and move others.
+  const SerialArm ur = ur5e();
+  JointLimits shifted = ur.joint_limits();
+  shifted.lower.setZero();
+  shifted.upper.setConstant(2 * pi);
+  const SerialArm kr6 = SerialArm::from_urdf_file(urdf_dir + "arm_kr6_like_dh.urdf", "base_link", "flange");
+  Random random(614);
+  for (const SerialArm& arm : {ur, ur.with_joint_limits(shifted), kr6}) {
+    const JointLimits limits = arm.joint_limits();
+    for (int k = 0; k < dispkin::testing::case_count(500); ++k) {
+      const Posed pose = arm.forward(random_q(random, ur));
+      for (const bool keep : {false, true}) {
+        InverseOptions options;
+        options.keep_outside_limits = keep;
+        const InverseResult result = arm.inverse_solutions(pose, options);
+        ASSERT_EQ(result.solutions.size(), result.within_limits.size());
+        for (std::size_t a = 0; a < result.solutions.size(); ++a) {
+          const Eigen::VectorXd& s = result.solutions[a];
+          EXPECT_TRUE(arm.forward(s).is_approx(pose, inverse_tolerance)) << arm.robot_name() << " " << s.transpose();
+          const bool inside = ((s - limits.lower).array() >= -1e-10).all() && ((limits.upper - s).array() >= -1e-10).all();
+          EXPECT_EQ(inside, static_cast<bool>(result.within_limits[a])) << s.transpose();
+          for (std::size_t b = 0; b < a; ++b) {
+            double apart = 0.0;
+            for (int i = 0; i < 6; ++i) apart = std::max(apart, std::abs(std::remainder(s(i) - result.solutions[b](i), 2 * pi)));
+            EXPECT_GT(apart, 1e-7) << "solutions " << b << " and " << a << " are one: " << s.transpose();
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(SerialArmInverse, WideLimitsGiveTheDistinctSolutionsNearestZero) {
   // Limits of ±1e8 and ±1e16 rad (example-robot-data's iris) once gave no solution at all: the
   // representative was the copy just above the lower limit, 1e16 rad, where no digit of the
