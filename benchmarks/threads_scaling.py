@@ -20,7 +20,10 @@ Workloads:
   the trajectory sampled at 2000 times;
 - inverse_many: SerialArm.inverse_many of 4000 poses of the UR5e;
 - retime: retime(method="scaling") of the same path on the UR5e and check_joint_limits of the
-  result.
+  result;
+- control: hashlib.sha256 of 50 MB, no dispkin: a C call known to release the lock for all its
+  work, so its speed-up is what the machine allows at the moment (on a machine whose cores are
+  busy with other work it falls short of 2 as dispkin's do).
 
 Run:  .venv/bin/python benchmarks/threads_scaling.py [--rounds 7]
 (build the binding first: make python). Wall time is the quantity here, so the machine's load
@@ -30,6 +33,7 @@ matters: note it (uptime) with the figures. No timing is asserted anywhere; this
 from __future__ import annotations
 
 import argparse
+import hashlib
 import os
 import pathlib
 import platform
@@ -104,7 +108,16 @@ def retime_unit():
     return unit
 
 
-WORKLOADS = {"plan": plan_unit, "inverse_many": inverse_many_unit, "retime": retime_unit}
+def control_unit():
+    data = np.random.default_rng(13).bytes(50_000_000)
+
+    def unit():
+        return np.frombuffer(hashlib.sha256(data).digest(), dtype=np.uint8)
+
+    return unit
+
+
+WORKLOADS = {"plan": plan_unit, "inverse_many": inverse_many_unit, "retime": retime_unit, "control": control_unit}
 
 
 def one_thread(unit):
