@@ -103,7 +103,8 @@ def retime_unit():
 
     def unit():
         result = dispkin.retime(p, s, dispkin.Limits(3.0, 100.0, 4000.0), arm, Q0)
-        return dispkin.check_joint_limits(result.trajectory, arm, Q0).samples["qd"]
+        samples = dispkin.check_joint_limits(result.trajectory, arm, Q0).samples
+        return np.concatenate([samples[key] for key in ("q", "qd", "qdd", "static_torque", "dynamic_torque")], axis=1)
 
     return unit
 

@@ -184,7 +184,10 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   } else {
     // Numeric fallback: restarts drawn uniformly inside the limits within one turn, until the
     // attempts or the time budget run out.
-    KDL::ChainIkSolverPos_LMA solver(model_->chain, 1e-12, lma_run_length, 1e-15);
+    // A copy of the KDL chain: its joints keep their last pose in mutable members, so the arm's
+    // own chain must not be used by two threads at once.
+    const KDL::Chain chain = model_->chain;
+    KDL::ChainIkSolverPos_LMA solver(chain, 1e-12, lma_run_length, 1e-15);
     std::mt19937_64 generator(options.seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const KDL::Frame goal = to_frame(pose);

@@ -3,11 +3,13 @@
 // inverse kinematics (analytic family or numeric fallback), solution choice, bad URDFs.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -384,6 +386,32 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndTheTwoPiCopiesOnRequest) 
     EXPECT_EQ(result.solutions.size(), base.solutions.size() * 64u);
     for (const Eigen::VectorXd& s : base.solutions) EXPECT_LE(s.cwiseAbs().maxCoeff(), pi + 1e-9) << s.transpose();
   }
+}
+
+TEST(SerialArmDynamics, TorquesFromTwoThreadsAreThoseOfOne) {
+  // KDL's joints keep their last pose in mutable members: two threads sharing one KDL chain got
+  // each other's joint poses and wrong torques (seen as different re-timing reports from Python
+  // threads). Each thread works on its own copy of the chain now.
+  const SerialArm arm = ur5e();
+  Random random(615);
+  std::vector<std::array<Eigen::VectorXd, 3>> states;
+  std::vector<Eigen::VectorXd> expected;
+  for (int k = 0; k < 200; ++k) {
+    std::array<Eigen::VectorXd, 3> x{random_q(random, arm), random_q(random, arm), random_q(random, arm)};
+    expected.push_back(arm.torques(x[0], x[1], x[2]));
+    states.push_back(std::move(x));
+  }
+  std::array<int, 2> differing{};
+  const auto run = [&](int t) {
+    for (int pass = 0; pass < 50; ++pass)
+      for (std::size_t k = 0; k < states.size(); ++k)
+        if (arm.torques(states[k][0], states[k][1], states[k][2]) != expected[k]) ++differing[static_cast<std::size_t>(t)];
+  };
+  std::thread first(run, 0);
+  std::thread second(run, 1);
+  first.join();
+  second.join();
+  EXPECT_EQ(differing[0] + differing[1], 0);
 }
 
 TEST(SerialArmInverse, EverySolutionReproducesThePoseAndNoneRepeats) {

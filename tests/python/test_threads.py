@@ -72,7 +72,8 @@ def retime_and_check():
     arm = ur5e()
     result = dispkin.retime(path(arm), tool(), dispkin.Limits(3.0, 100.0, 4000.0), arm, Q0)
     report = dispkin.check_joint_limits(result.trajectory, arm, Q0)
-    return [np.array([result.trajectory.duration, report.velocity_factor]), report.samples["q"], report.samples["qd"]]
+    return [np.array([result.trajectory.duration, report.velocity_factor, report.acceleration_factor])] + [
+        report.samples[key] for key in ("q", "qd", "qdd", "static_torque", "dynamic_torque")]
 
 
 def ptp_plan():
