@@ -3,14 +3,13 @@
 EAIK (PyPI `eaik`, Ostermeier et al., subproblem decomposition; already the solution-count
 oracle of tests/python/make_analytic_ik_reference.py) and dispkin each solve the same poses of
 seeded random joint vectors, for a three-parallel arm (the UR5e of tests/data/urdf) and a
-spherical-wrist arm (the KR6-like arm of tests/data/urdf). Both are timed from Python, one
-pose per call:
+spherical-wrist arm (the KR6-like arm of tests/data/urdf). Both are timed from Python:
 
-- dispkin `SerialArm.inverse_solutions(pose, offer_equivalents=False)`: the analytic IK plus
-  the SerialArm layer (joint limits, a KDL forward-kinematics check of every returned
-  solution, the conversion of the result to numpy arrays);
-- dispkin `SerialArm.inverse(pose)`: the same with the 2π-equivalent copies inside the limits
-  (the UR5e's ±2π limits turn 8 solutions into up to 512);
+- dispkin `SerialArm.inverse(pose)`, one pose per call, the pose a (4, 4) float64 array (C
+  order) or a dispkin Pose: the analytic IK plus the SerialArm layer (joint limits, each joint
+  the 2π copy nearest 0) and the (k, n) array of the solutions;
+- dispkin `SerialArm.inverse_solutions(pose)` (the InverseResult report: a list of arrays);
+- dispkin `SerialArm.inverse_many(poses)` on all poses at once (a list of (k, n) arrays);
 - EAIK `Robot.IK(pose)` (its C++ solver through pybind11), and `IK_batched` on all poses with
   one worker thread, which leaves out the per-call Python overhead.
 
@@ -18,12 +17,18 @@ pose per call:
 per-call figure contains. The C++ figures of dispkin's analytic IK alone are those of
 benchmarks/bench_ik.cpp (benchmarks/RESULTS.md, "Analytic IK").
 
+Timing: thread CPU time (time.thread_time_ns) around a block of calls over all poses, the
+contenders' blocks alternating within each round (the first contender changes from round to
+round), so that a change of machine load falls on all of them alike; per contender the median
+over the rounds of the time per pose, and the median over the rounds of the ratio
+dispkin inverse / EAIK IK in the same round.
+
 EAIK loads the URDF itself (urchin) and places its tool frame at the last joint with the base
 orientation, so its pose of q is dispkin's pose of q times a constant transform X⁻¹; the
 script works X out at q = 0, checks it at random q, and hands each solver the pose in its own
 convention. Solution counts are compared too (they must agree; a mismatch stops the script).
 
-Run:  .venv/bin/python benchmarks/ik_vs_eaik.py [--poses 2000] [--repeat 5]
+Run:  .venv/bin/python benchmarks/ik_vs_eaik.py [--poses 2000] [--rounds 15]
 (build the binding first: make python). No timing is asserted anywhere; this only prints.
 """
 
@@ -63,28 +68,33 @@ def distinct_count(solutions, tolerance=1e-6) -> int:
     return len(kept)
 
 
-def per_call(function, items, repeat: int) -> float:
-    """Median over `repeat` passes of the mean time per item (seconds) of function(item)."""
-    passes = []
-    for _ in range(repeat):
-        start = time.process_time()
-        for item in items:
-            function(item)
-        passes.append((time.process_time() - start) / len(items))
-    return statistics.median(passes)
+def per_call(function, items):
+    """A block: function(item) for every item; the thread CPU time per item (seconds)."""
+    start = time.thread_time_ns()
+    for item in items:
+        function(item)
+    return (time.thread_time_ns() - start) * 1e-9 / len(items)
 
 
-def whole_batch(function, items, repeat: int) -> float:
-    """Median over `repeat` passes of the time per item (seconds) of one call function(items)."""
-    passes = []
-    for _ in range(repeat):
-        start = time.process_time()
-        function(items)
-        passes.append((time.process_time() - start) / len(items))
-    return statistics.median(passes)
+def whole_batch(function, items):
+    """A block: one call function(items); the thread CPU time per item (seconds)."""
+    start = time.thread_time_ns()
+    function(items)
+    return (time.thread_time_ns() - start) * 1e-9 / len(items)
 
 
-def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, repeat: int, seed: int) -> None:
+def alternating_rounds(blocks, rounds):
+    """{label: [seconds per item, one per round]}: every round runs each block once, starting
+    from a different one each round."""
+    times = {label: [] for label in blocks}
+    labels = list(blocks)
+    for r in range(rounds):
+        for label in labels[r % len(labels):] + labels[: r % len(labels)]:
+            times[label].append(blocks[label]())
+    return times
+
+
+def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, rounds: int, seed: int) -> None:
     from eaik.IK_URDF import UrdfRobot
 
     arm = dispkin.SerialArm.from_urdf(str(path), base, tip)
@@ -98,7 +108,7 @@ def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, repe
     lower = np.maximum(np.array(arm.joint_limits.lower), -math.pi)
     upper = np.minimum(np.array(arm.joint_limits.upper), math.pi)
     qs = rng.uniform(lower, upper, size=(poses, arm.dof))
-    ours = [as_matrix(arm.forward(q)) for q in qs]
+    ours = [np.ascontiguousarray(as_matrix(arm.forward(q))) for q in qs]
     theirs = [pose @ np.linalg.inv(x) for pose in ours]
     for q, pose in zip(qs[:20], theirs[:20]):
         if np.abs(eaik_robot.fwdKin(q) - pose).max() > 1e-9:
@@ -113,37 +123,43 @@ def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, repe
         if distinct_count(mine) != distinct_count(exact):
             raise RuntimeError(f"{name}: {distinct_count(mine)} solutions from dispkin, {distinct_count(exact)} from EAIK")
 
-    mean_solutions = statistics.mean(len(arm.inverse_solutions(p, offer_equivalents=False).solutions) for p in ours)
-    mean_copies = statistics.mean(len(arm.inverse(p)) for p in ours)
-    rows = [
-        ("dispkin inverse_solutions(pose, offer_equivalents=False)",
-         per_call(lambda p: arm.inverse_solutions(p, offer_equivalents=False), ours, repeat), mean_solutions),
-        ("dispkin inverse(pose) (2π copies inside the limits)", per_call(arm.inverse, ours, repeat), mean_copies),
-        ("EAIK IK(pose)", per_call(eaik_robot.IK, theirs, repeat), None),
-        ("EAIK IK_batched(all poses, 1 thread)",
-         whole_batch(lambda batch: eaik_robot.IK_batched(batch, 1), theirs, repeat), None),
-        ("empty call (arm.dof)", per_call(lambda p: arm.dof, ours, repeat), None),
-    ]
-    print(f"\n{name}: {poses} poses, family {arm.family!r} / EAIK {eaik_robot.getKinematicFamily()!r}")
-    for label, seconds, solutions in rows:
-        extra = f"   {solutions:.2f} solutions per pose" if solutions is not None else ""
-        print(f"  {label:58s} {seconds * 1e6:9.2f} µs{extra}")
+    mean_solutions = statistics.mean(len(arm.inverse(p)) for p in ours)
+    as_poses = [dispkin.Pose.from_matrix(p) for p in ours]
+    blocks = {
+        "dispkin inverse(pose), pose a (4, 4) array": lambda: per_call(arm.inverse, ours),
+        "dispkin inverse(pose), pose a Pose": lambda: per_call(arm.inverse, as_poses),
+        "dispkin inverse_solutions(pose)": lambda: per_call(arm.inverse_solutions, ours),
+        "dispkin inverse_many(all poses)": lambda: whole_batch(arm.inverse_many, ours_batch),
+        "EAIK IK(pose)": lambda: per_call(eaik_robot.IK, theirs),
+        "EAIK IK_batched(all poses, 1 thread)": lambda: whole_batch(lambda batch: eaik_robot.IK_batched(batch, 1), theirs),
+        "empty call (arm.dof)": lambda: per_call(lambda p: arm.dof, ours),
+    }
+    ours_batch = np.array(ours)
+    times = alternating_rounds(blocks, rounds)
+    ratios = [d / e for d, e in zip(times["dispkin inverse(pose), pose a (4, 4) array"], times["EAIK IK(pose)"])]
+    print(f"\n{name}: {poses} poses, {mean_solutions:.2f} solutions per pose, family {arm.family!r} / EAIK "
+          f"{eaik_robot.getKinematicFamily()!r}")
+    for label, seconds in times.items():
+        print(f"  {label:48s} {statistics.median(seconds) * 1e6:8.2f} µs   "
+              f"(rounds: {min(seconds) * 1e6:.2f} – {max(seconds) * 1e6:.2f})")
+    print(f"  ratio dispkin inverse(array) / EAIK IK, median over rounds: {statistics.median(ratios):.3f} "
+          f"({min(ratios):.3f} – {max(ratios):.3f})")
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--poses", type=int, default=2000, help="poses per arm (default 2000)")
-    parser.add_argument("--repeat", type=int, default=5, help="timed passes, the median is printed (default 5)")
+    parser.add_argument("--rounds", type=int, default=15, help="alternating rounds, medians are printed (default 15)")
     parser.add_argument("--seed", type=int, default=20261122)
     args = parser.parse_args()
     import eaik  # noqa: F401  (fail early with a clear ImportError)
     from importlib.metadata import version
 
     print(f"dispkin {dispkin.__version__}, eaik {version('eaik')}, numpy {np.__version__}, "
-          f"Python {platform.python_version()}, {platform.machine()}; CPU time (time.process_time), "
-          f"median of {args.repeat} passes, per pose")
+          f"Python {platform.python_version()}, {platform.machine()}; thread CPU time (time.thread_time_ns) "
+          f"per pose, median of {args.rounds} alternating rounds")
     for name, (path, base, tip) in ARMS.items():
-        compare(name, path, base, tip, args.poses, args.repeat, args.seed)
+        compare(name, path, base, tip, args.poses, args.rounds, args.seed)
 
 
 if __name__ == "__main__":

@@ -311,8 +311,12 @@ class Pose {
   static Quaternion checked_quaternion(const Matrix3& r) {
     require_finite(r, "rotation");
     const Scalar orthogonality = (r.transpose() * r - Matrix3::Identity()).cwiseAbs().maxCoeff();
-    require(orthogonality <= Scalar(1e-6) && r.determinant() > Scalar(0), "rotation", r,
-            "must be orthonormal with determinant +1 (max |RᵀR − I| = " + std::to_string(orthogonality) + ")");
+    // The message only on failure: formatting a number costs more than the whole check.
+    if (!(orthogonality <= Scalar(1e-6) && r.determinant() > Scalar(0))) {
+      throw std::invalid_argument(describe("rotation", r,
+                                           "must be orthonormal with determinant +1 (max |RᵀR − I| = " +
+                                               std::to_string(orthogonality) + ")"));
+    }
     Quaternion q(r);
     q.normalize();
     return q;

@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "dispkin/convex_hull.hpp"
 #include "dispkin/disp.hpp"
 #include "dispkin/error.hpp"
@@ -28,6 +29,7 @@ Twistd checked_twist(const py::object& twist) {
 
 double distance(const MetricSetd& set, const Posed& a, const Posed& b, const std::string& norm,
                 OptionalSpeed system_velocity) {
+  const UnlockedIf unlocked(worth_releasing(set));
   if (norm == "euclidean") return disp_distance<EuclideanNorm, double>(set, a, b, system_velocity);
   if (norm == "max") return disp_distance<MaxNorm, double>(set, a, b, system_velocity);
   if (norm == "l1") return disp_distance<L1Norm, double>(set, a, b, system_velocity);
@@ -42,8 +44,11 @@ py::object speeds_of_points(const py::object& twist, const py::object& point) {
   if (a.ndim() == 1) return py::float_(point_speed<double>(xi, pts.front()));
   py::array_t<double> out(static_cast<py::ssize_t>(pts.size()));
   double* data = out.mutable_data();
-  for (std::size_t i = 0; i < pts.size(); ++i) data[i] = point_speed<double>(xi, pts[i]);
-  return out;
+  {
+    const UnlockedIf unlocked(worth_releasing(pts.size(), point_speed_ns));
+    for (std::size_t i = 0; i < pts.size(); ++i) data[i] = point_speed<double>(xi, pts[i]);
+  }
+  return std::move(out);
 }
 
 }  // namespace
@@ -64,6 +69,7 @@ void bind_disp(py::module_& m) {
          const py::object& pivot, OptionalSpeed system_velocity) {
         const Interpolation kind = interpolation_from_string(interpolation);
         const Eigen::Vector3d p = vector3(pivot, "pivot");
+        const UnlockedIf unlocked(worth_releasing(set));
         return section_length<double>(set, a, b, kind, p, system_velocity);
       },
       py::arg("metric_set"), py::arg("pose_a"), py::arg("pose_b"), py::arg("interpolation") = "decoupled",
@@ -92,7 +98,9 @@ void bind_disp(py::module_& m) {
   m.def(
       "max_point_speed",
       [](const MetricSetd& set, const Posed& pose, const py::object& twist, OptionalSpeed system_velocity) {
-        return max_point_speed<double>(set, pose, checked_twist(twist), system_velocity);
+        const Twistd xi = checked_twist(twist);
+        const UnlockedIf unlocked(worth_releasing(set));
+        return max_point_speed<double>(set, pose, xi, system_velocity);
       },
       py::arg("metric_set"), py::arg("pose"), py::arg("twist"), py::arg("system_velocity") = py::none(),
       "The largest speed (m/s) of any point or sphere of the set when the tool is at `pose` and moves "
@@ -113,7 +121,15 @@ void bind_disp(py::module_& m) {
       "as in section_length): the motion whose speed section_length bounds.");
   m.def(
       "convex_hull_vertices",
-      [](const py::object& pts) { return to_array(convex_hull_vertices(points(pts, "points", false))); },
+      [](const py::object& pts) {
+        const std::vector<Eigen::Vector3d> given = points(pts, "points", false);
+        std::vector<Eigen::Vector3d> vertices;
+        {
+          const UnlockedIf unlocked(worth_releasing(given.size(), hull_point_ns));
+          vertices = convex_hull_vertices(given);
+        }
+        return to_array(vertices);
+      },
       py::arg("points"),
       "The vertices of the convex hull of the rows of an (N, 3) array (Qhull), as an (M, 3) array of "
       "exact copies in input order. Only they can be the fastest or the farthest-moving points.");

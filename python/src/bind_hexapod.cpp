@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/planning/planner.hpp"
@@ -73,7 +74,11 @@ py::array_t<double> inverse(const Hexapod& h, const py::object& poses) {
     for (std::size_t i = 0; i < seq.size(); ++i) list.push_back(pose_of(seq[i], "pose[" + std::to_string(i) + "]"));
   }
   py::array_t<double> out({static_cast<py::ssize_t>(list.size()), py::ssize_t{6}});
-  for (std::size_t i = 0; i < list.size(); ++i) Eigen::Map<Legs>(out.mutable_data() + 6 * i) = h.leg_lengths(list[i]);
+  double* data = out.mutable_data();
+  {
+    const UnlockedIf unlocked(worth_releasing(list.size(), leg_lengths_ns));
+    for (std::size_t i = 0; i < list.size(); ++i) Eigen::Map<Legs>(data + 6 * i) = h.leg_lengths(list[i]);
+  }
   return out;
 }
 
@@ -85,8 +90,12 @@ py::array_t<double> inverse_xyzuvw(const Hexapod& h, const py::object& xyzuvw, c
   if (a.ndim() == 1 && a.shape(0) == 6) return legs_array(h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data())), p));
   if (a.ndim() != 2 || a.shape(1) != 6) wrong_shape("xyzuvw", expected, a);
   py::array_t<double> out({a.shape(0), py::ssize_t{6}});
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
-    Eigen::Map<Legs>(out.mutable_data() + 6 * i) = h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data() + 6 * i)), p);
+  double* data = out.mutable_data();
+  const double* given = a.data();
+  {
+    const UnlockedIf unlocked(worth_releasing(static_cast<std::size_t>(a.shape(0)), leg_lengths_ns));
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+      Eigen::Map<Legs>(data + 6 * i) = h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(given + 6 * i)), p);
   }
   return out;
 }
@@ -231,7 +240,9 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
       .def("forward",
            [](const Hexapod& h, const py::object& l, const py::object& guess) {
              const Legs target = vector<6>(l, "legs");
-             return guess.is_none() ? h.forward(target) : h.forward(target, pose_of(guess, "guess"));
+             const Posed start = guess.is_none() ? h.home() : pose_of(guess, "guess");
+             py::gil_scoped_release unlocked;  // Newton's method from the guess
+             return h.forward(target, start);
            },
            py::arg("legs"), py::arg("guess") = py::none(),
            "The pose with these leg lengths (Newton's method from `guess`, default home), to 1e-12 m. "
@@ -239,18 +250,23 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
       .def(
           "check",
           [](const Hexapod& h, const Trajectory& trajectory, double dt) { return h.check_trajectory(trajectory, dt); },
-          py::arg("trajectory"), py::arg("dt") = 1e-3,
+          py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("dt") = 1e-3,
           "For a planned Trajectory: leg lengths and leg speeds every `dt` seconds against the limits "
           "(a TrajectoryCheck with the margins and every excursion). Same as check_trajectory.")
       .def("check", [](const Hexapod& h, const py::object& pose) { return h.check(pose_of(pose, "pose")); },
            py::arg("pose"), "Which legs are out of range at `pose`, and by how much.")
       .def("require_reachable", [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); },
            py::arg("pose"), "ValueError naming the first leg out of range.")
-      .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::arg("trajectory"), py::arg("dt"),
+      .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::call_guard<py::gil_scoped_release>(),
+           py::arg("trajectory"), py::arg("dt"),
            "Dense check every `dt` seconds: leg lengths and leg speeds (J times the body twist) against the limits.")
       .def("leg_section_lengths",
            [](const Hexapod& h, const Path& path, double system_velocity, double tolerance) {
-             const std::vector<double> lengths = h.leg_section_lengths(path, system_velocity, tolerance);
+             std::vector<double> lengths;
+             {
+               py::gil_scoped_release unlocked;
+               lengths = h.leg_section_lengths(path, system_velocity, tolerance);
+             }
              return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
            },
            py::arg("path"), py::arg("system_velocity"), py::arg("tolerance") = 1e-3,
@@ -259,8 +275,10 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
       .def("leg_rate_bounds",
            [](const Hexapod& h, const Path& path, double tolerance) {
              py::array_t<double> out({static_cast<py::ssize_t>(path.size()), py::ssize_t{6}});
-             for (std::size_t k = 0; k < path.size(); ++k) {
-               Eigen::Map<Legs>(out.mutable_data() + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
+             double* data = out.mutable_data();
+             {
+               py::gil_scoped_release unlocked;
+               for (std::size_t k = 0; k < path.size(); ++k) Eigen::Map<Legs>(data + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
              }
              return out;
            },

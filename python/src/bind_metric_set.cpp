@@ -186,7 +186,7 @@ Lengths in metres.)doc")
            "Raise ValueError explaining why the set is not well-formed; do nothing if it is.")
       .def_property_readonly("point_count", &MetricSetd::point_count, "Number of points, all groups and frames.")
       .def_property_readonly("sphere_count", &MetricSetd::sphere_count, "Number of spheres, all groups and frames.")
-      .def("reduce_to_hull", &reduced_to_hull_vertices,
+      .def("reduce_to_hull", &reduced_to_hull_vertices, py::call_guard<py::gil_scoped_release>(),
            "A new set with every group's relative and absolute points replaced by the vertices of "
            "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
            "length is the same.")

@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "path_state.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/path/path.hpp"
@@ -52,7 +53,8 @@ Path& then_blended(Path& path, const Path& next, std::optional<double> blend, st
   return path.then(next, *before, *after, tolerance, orientation);
 }
 
-// A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices.
+// A scalar u gives one Pose; an array of u gives an (N, 4, 4) array of homogeneous matrices,
+// sampled with the interpreter lock released when there are many.
 py::object sample_path(const Path& path, const py::object& u) {
   const Array a = as_array(u, "u", "a number or an array of shape (N,)");
   if (a.ndim() == 0) {
@@ -62,12 +64,17 @@ py::object sample_path(const Path& path, const py::object& u) {
   if (a.ndim() != 1) wrong_shape("u", "a number or an array of shape (N,)", a);
   py::array_t<double> out({a.shape(0), py::ssize_t{4}, py::ssize_t{4}});
   double* data = out.mutable_data();
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) {
-    const double ui = a.data()[i];
-    require_finite(ui, "u");
-    Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(data + 16 * i) = path.sample(ui).matrix();
+  const double* u_data = a.data();
+  const py::ssize_t n = a.shape(0);
+  {
+    const UnlockedIf unlocked(worth_releasing(static_cast<std::size_t>(n), trajectory_sample_ns));
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const double ui = u_data[i];
+      require_finite(ui, "u");
+      Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(data + 16 * i) = path.sample(ui).matrix();
+    }
   }
-  return out;
+  return std::move(out);
 }
 
 }  // namespace
@@ -93,6 +100,7 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
       .def(
           "length",
           [](const SectionHolder& s, const MetricSetd& set, std::optional<double> v) {
+            const UnlockedIf unlocked(worth_releasing(set));
             return section_length(s.value, set, v);
           },
           py::arg("metric_set"), py::arg("system_velocity") = py::none(),
@@ -137,7 +145,9 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           "circ",
           [](const Posed& a, const Posed& via, const Posed& b, const py::object& pivot, double tolerance,
              std::optional<double> velocity, std::optional<double> acceleration) {
-            return Path::circ(a, via, b, vector3(pivot, "pivot"), tolerance).with_limits({velocity, acceleration});
+            const Eigen::Vector3d p = vector3(pivot, "pivot");
+            py::gil_scoped_release unlocked;
+            return Path::circ(a, via, b, p, tolerance).with_limits({velocity, acceleration});
           },
           py::arg("a"), py::arg("via"), py::arg("b"), py::arg_v("pivot", origin, "(0, 0, 0)"),
           py::arg("tolerance") = 1e-3, py::kw_only(), py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
@@ -149,7 +159,9 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           "spline",
           [](const std::vector<Posed>& poses, const py::object& pivot, double tolerance, std::optional<double> velocity,
              std::optional<double> acceleration) {
-            return Path::spline(poses, vector3(pivot, "pivot"), tolerance).with_limits({velocity, acceleration});
+            const Eigen::Vector3d p = vector3(pivot, "pivot");
+            py::gil_scoped_release unlocked;
+            return Path::spline(poses, p, tolerance).with_limits({velocity, acceleration});
           },
           py::arg("poses"), py::arg_v("pivot", origin, "(0, 0, 0)"), py::arg("tolerance") = 1e-3, py::kw_only(),
           py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
@@ -179,10 +191,14 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           "blended",
           [](const Path& p, double corner_tolerance, double tolerance) {
             std::vector<CornerStop> stops;
-            Path out = p.blended(corner_tolerance, &stops, tolerance);
+            std::optional<Path> out;
+            {
+              py::gil_scoped_release unlocked;
+              out = p.blended(corner_tolerance, &stops, tolerance);
+            }
             py::list corners;
             for (const CornerStop& c : stops) corners.append(py::make_tuple(c.section, c.reason));
-            return py::make_tuple(std::move(out), corners);
+            return py::make_tuple(std::move(*out), corners);
           },
           py::arg("corner_tolerance"), py::arg("tolerance") = 1e-3,
           "The path with every corner between two moves blended (what plan(..., corner_tolerance=d) plans): the "
@@ -203,7 +219,11 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
       .def(
           "section_lengths",
           [](const Path& p, const MetricSetd& set, std::optional<double> v) {
-            const std::vector<double> lengths = p.section_lengths(set, v);
+            std::vector<double> lengths;
+            {
+              py::gil_scoped_release unlocked;
+              lengths = p.section_lengths(set, v);
+            }
             return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
           },
           py::arg("metric_set"), py::arg("system_velocity") = py::none(), "L of every section (metres), as an (N,) array.")

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "path_state.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/error.hpp"
@@ -67,14 +68,19 @@ Times times_of(const py::object& times) {
 }
 
 // An (N, *shape_tail) array for N times, or for a number one sample shaped shape_tail (a float
-// when that is empty), as numpy does for a scalar; `fill` writes the numbers.
+// when that is empty), as numpy does for a scalar; `fill` writes the numbers (C++ only: for many
+// times it runs with the interpreter lock released).
 template <typename Fill>
 py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail, Fill fill) {
   std::vector<py::ssize_t> shape;
   if (!times.scalar) shape.push_back(static_cast<py::ssize_t>(times.t.size()));
   shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
   py::array_t<double> out(shape);
-  fill(out.mutable_data());
+  double* data = out.mutable_data();
+  {
+    const UnlockedIf unlocked(worth_releasing(times.t.size(), trajectory_sample_ns));
+    fill(data);
+  }
   if (shape.empty()) return py::float_(*out.data());
   return std::move(out);
 }
@@ -275,11 +281,16 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         require(std::isfinite(corner_tolerance) && corner_tolerance >= 0.0, "corner_tolerance", corner_tolerance,
                 "must be a finite distance >= 0 (m)");
         // A joint metric is per section: of the blended path when corners are blended.
-        const std::optional<Path> blended =
-            corner_tolerance > 0.0 ? std::optional<Path>(given_path.blended(corner_tolerance)) : std::nullopt;
+        std::optional<Path> blended;
+        if (corner_tolerance > 0.0) {
+          py::gil_scoped_release unlocked;
+          blended = given_path.blended(corner_tolerance);
+        }
         const Path& path = blended ? *blended : given_path;
         if (py::isinstance<Hexapod>(joint_metric)) {
-          return plan(path, set, limits, kind, joint_metric.cast<const Hexapod&>().joint_metric(path, limits));
+          const Hexapod& hexapod = joint_metric.cast<const Hexapod&>();
+          py::gil_scoped_release unlocked;
+          return plan(path, set, limits, kind, hexapod.joint_metric(path, limits));
         }
         if (!py::hasattr(joint_metric, "leg_section_lengths")) {
           throw std::invalid_argument(describe("joint_metric", std::string(py::repr(joint_metric)),
@@ -291,6 +302,7 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
         PlanOptions options;
         options.min_section_lengths.assign(a.data(), a.data() + a.size());
+        py::gil_scoped_release unlocked;
         return plan(path, set, limits, kind, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",

@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/pose.hpp"
@@ -128,9 +129,12 @@ velocity in rad/s, both in body coordinates.)doc")
           [](const Posed& self, const py::object& points_in) -> py::object {
             const Array a = as_array(points_in, "points", "an array of shape (3,) or (N, 3)");
             std::vector<Eigen::Vector3d> pts = points(a, "points", true);
-            for (std::size_t i = 0; i < pts.size(); ++i) {
-              require_finite(pts[i], "points[" + std::to_string(i) + "]");
-              pts[i] = self * pts[i];
+            {
+              const UnlockedIf unlocked(worth_releasing(pts.size(), point_transform_ns));
+              for (std::size_t i = 0; i < pts.size(); ++i) {
+                require_finite(pts[i], "points[" + std::to_string(i) + "]");
+                pts[i] = self * pts[i];
+              }
             }
             if (a.ndim() == 1) return to_array(pts.front());
             return to_array(pts);

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "path_state.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
@@ -32,12 +33,16 @@ py::array_t<double> sample(const Profile& profile, const py::object& times) {
   }
   py::array_t<double> out({static_cast<py::ssize_t>(n), py::ssize_t{4}});
   double* row = out.mutable_data();
-  for (std::size_t i = 0; i < n; ++i, row += 4) {
-    const ProfileState x = profile.state_at(t.data()[i]);
-    row[0] = x.s;
-    row[1] = x.v;
-    row[2] = x.a;
-    row[3] = x.j;
+  const double* at = t.data();
+  {
+    const UnlockedIf unlocked(worth_releasing(n, profile_state_ns));
+    for (std::size_t i = 0; i < n; ++i, row += 4) {
+      const ProfileState x = profile.state_at(at[i]);
+      row[0] = x.s;
+      row[1] = x.v;
+      row[2] = x.a;
+      row[3] = x.j;
+    }
   }
   return out;
 }

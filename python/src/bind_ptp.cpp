@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/serial/joint_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
@@ -20,7 +21,8 @@ namespace {
 
 
 // Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail); for a
-// number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar.
+// number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar. An
+// array of many times is sampled with the interpreter lock released (`write` is C++ only).
 template <typename Traj, typename Write>
 py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ssize_t> tail,
                    py::ssize_t columns, Write write) {
@@ -33,7 +35,10 @@ py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ss
   shape.insert(shape.end(), tail.begin(), tail.end());
   py::array_t<double> out(shape);
   double* data = out.mutable_data();
-  for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  {
+    const UnlockedIf unlocked(worth_releasing(t.size(), trajectory_sample_ns));
+    for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
+  }
   if (shape.empty()) return py::float_(*data);
   return std::move(out);
 }
@@ -242,7 +247,13 @@ overlaps.)doc")
         PtpOptions options;
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
         options.tolerance = tolerance;
-        py::object trajectory = py::cast(plan(path, set, limits, kind, robot.cast<const serial::SerialArm&>(), options));
+        const serial::SerialArm& arm = robot.cast<const serial::SerialArm&>();
+        std::optional<JointTrajectory> planned;
+        {
+          py::gil_scoped_release unlocked;
+          planned = plan(path, set, limits, kind, arm, options);
+        }
+        py::object trajectory = py::cast(std::move(*planned));
         trajectory.attr("_plan_arguments") =
             py::make_tuple(path, set, limits, profile, robot, joint_acceleration, tolerance);
         return trajectory;

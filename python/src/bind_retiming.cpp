@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "path_state.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/hexapod/hexapod_retiming.hpp"
@@ -142,12 +143,13 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
 
   m.def(
       "check_joint_limits",
-      [](const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start, int samples_between,
+      // The arm by value: its gravity as at the call, whatever another thread sets meanwhile.
+      [](const Trajectory& trajectory, serial::SerialArm arm, const Eigen::VectorXd& q_start, int samples_between,
          double difference_step) {
         return check_joint_limits(trajectory, arm, q_start, check_options(samples_between, difference_step));
       },
-      py::arg("trajectory"), py::arg("robot"), py::arg("q_start"), py::arg("samples_between") = 10,
-      py::arg("difference_step") = 1e-4,
+      py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("robot"), py::arg("q_start"),
+      py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
       "Follow the planned trajectory (poses of the robot's tip link) through the robot's IK, on the branch "
       "continuous from q_start, at every characteristic point of its time laws and `samples_between` "
       "points between them: joint positions, velocities (Jacobian), accelerations and torques (static and "
@@ -159,7 +161,7 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       [](const Trajectory& trajectory, const Hexapod& hexapod, int samples_between, double difference_step) {
         return check_joint_limits(trajectory, hexapod, check_options(samples_between, difference_step));
       },
-      py::arg("trajectory"), py::arg("robot"), py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
+      py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("robot"), py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
       "The same for a Hexapod, whose legs are its joints: q = leg lengths, qd = leg Jacobian times the body "
       "twist, qdd by central differences; velocity_factor against leg_speed, position_excess against the leg "
       "range. No dynamics model: torques stay empty and acceleration_factor 0.");
@@ -217,19 +219,25 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
 
   m.def(
       "retime",
-      [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& arm,
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& robot,
          const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
          int max_iterations, int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration,
          bool torque_limits) -> py::object {
         const ProfileKind kind = profile_kind(profile);
+        const serial::SerialArm arm = robot;  // its gravity as at the call, whatever another thread sets meanwhile
         if (method == "scaling") {
           // The scaling loop has no joint acceleration limit to scale against: refused, not ignored.
           if (joint_acceleration)
             throw std::invalid_argument(describe("joint_acceleration", *joint_acceleration,
                                                  "is not a limit of method=\"scaling\" (it scales the Cartesian limits "
                                                  "until the joint speed and effort limits hold); use method=\"optimal\""));
-          return py::cast(retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
-                                            max_iterations));
+          RetimeResult result;
+          {
+            py::gil_scoped_release unlocked;
+            result = retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
+                                       max_iterations);
+          }
+          return py::cast(std::move(result));
         }
         if (method != "optimal") throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
         limits.validate(kind);  // the S-curve needs a jerk limit, the trapezoid refuses one
@@ -239,7 +247,12 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         options.torque_limits = torque_limits;
         options.check_samples_between = samples_between;
         options.max_refinements = max_iterations;
-        return py::cast(retime_optimal(path, set, limits, arm, q_start, options));
+        OptimalRetimeResult result;
+        {
+          py::gil_scoped_release unlocked;
+          result = retime_optimal(path, set, limits, arm, q_start, options);
+        }
+        return py::cast(std::move(result));
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::arg("q_start"),
       py::arg("profile") = "scurve", py::arg("method") = "scaling", py::arg("samples_between") = 10,
@@ -273,6 +286,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
         options.check_samples_between = samples_between;
         options.max_refinements = max_iterations;
+        py::gil_scoped_release unlocked;
         return retime_optimal(path, set, limits, hexapod, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::kw_only(),

@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
@@ -25,10 +26,85 @@ using serial::InverseOptions;
 using serial::InverseResult;
 using serial::SerialArm;
 
-// A Pose or a (4, 4) matrix.
+// A Pose or a (4, 4) matrix. A Pose is read as it is, and so is a contiguous float64 array, C
+// or Fortran order (Pose.matrix() gives the latter), without a converted copy; anything else
+// goes through numpy's conversion.
 Posed pose_of(const py::handle& obj, const std::string& name) {
-  if (py::isinstance<Posed>(obj)) return obj.cast<Posed>();
+  if (py::isinstance<Posed>(obj)) return obj.cast<const Posed&>();
+  if (py::array_t<double>::check_(obj)) {
+    const auto a = py::reinterpret_borrow<py::array>(obj);
+    if (a.ndim() == 2 && a.shape(0) == 4 && a.shape(1) == 4) {
+      const auto* data = static_cast<const double*>(a.data());
+      if (a.flags() & py::array::c_style)
+        return Posed::from_matrix(Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(data));
+      if (a.flags() & py::array::f_style) return Posed::from_matrix(Eigen::Map<const Eigen::Matrix4d>(data));
+    }
+  }
   return Posed::from_matrix(matrix4(obj, name));
+}
+
+// The poses of inverse_many: an (N, 4, 4) array, or a sequence of Poses and (4, 4) arrays. Read
+// while the interpreter lock is held; `poses[i]` names a bad one.
+std::vector<Posed> poses_of(const py::handle& obj) {
+  const std::string expected = "an array of shape (N, 4, 4) or a sequence of Poses";
+  std::vector<Posed> out;
+  const auto named = [](std::size_t i) { return "poses[" + std::to_string(i) + "]"; };
+  // The pose checks (finite, rigid) say what is wrong with "matrix" or "rotation": prefixed
+  // with the index.
+  const auto checked = [&](std::size_t i, const auto& make) {
+    try {
+      out.push_back(make());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(named(i) + " " + e.what());
+    }
+  };
+  if (py::isinstance<py::array>(obj) || !py::isinstance<py::sequence>(obj) || py::isinstance<py::str>(obj)) {
+    const Array a = as_array(obj, "poses", expected);
+    if (a.ndim() != 3 || a.shape(1) != 4 || a.shape(2) != 4) wrong_shape("poses", expected, a);
+    out.reserve(static_cast<std::size_t>(a.shape(0)));
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+      checked(static_cast<std::size_t>(i), [&] {
+        return Posed::from_matrix(Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(a.data() + 16 * i));
+      });
+    return out;
+  }
+  const auto seq = py::reinterpret_borrow<py::sequence>(obj);
+  out.reserve(seq.size());
+  for (std::size_t i = 0; i < seq.size(); ++i) {
+    const py::object item = seq[i];
+    if (py::isinstance<Posed>(item)) {
+      out.push_back(item.cast<const Posed&>());
+      continue;
+    }
+    const Eigen::Matrix4d m = matrix4(item, named(i));
+    checked(i, [&] { return Posed::from_matrix(m); });
+  }
+  return out;
+}
+
+// Solutions as the rows of a (k, n) array ((0, n) when there are none).
+py::array_t<double> solution_rows(const std::vector<Eigen::VectorXd>& solutions, int n) {
+  py::array_t<double> out({static_cast<py::ssize_t>(solutions.size()), static_cast<py::ssize_t>(n)});
+  double* data = out.mutable_data();
+  for (const Eigen::VectorXd& q : solutions) {
+    Eigen::Map<Eigen::VectorXd>(data, n) = q;
+    data += n;
+  }
+  return out;
+}
+
+// Whether an IK call is long enough to hand the interpreter lock to other threads meanwhile
+// (interpreter_lock.hpp): the closed forms without 2π copies take a few µs; the offset-wrist
+// search, the numeric fallback and the copies take tens of µs to seconds.
+bool long_inverse(const SerialArm& arm, const InverseOptions& options) {
+  const serial::IkFamily f = arm.family();
+  return options.offer_equivalents || !(f == serial::IkFamily::spherical_wrist || f == serial::IkFamily::three_parallel);
+}
+
+InverseResult solve(const SerialArm& arm, const Posed& pose, const InverseOptions& options) {
+  if (!long_inverse(arm, options)) return arm.inverse_solutions(pose, options);
+  py::gil_scoped_release unlocked;
+  return arm.inverse_solutions(pose, options);
 }
 
 // A joint vector: shape (n,); its length is checked by the C++ call, which knows n.
@@ -220,20 +296,39 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
       .def("forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); }, py::arg("q"),
            "The tip pose in base coordinates for joint positions q (n,).")
       .def("inverse",
-           [](const SerialArm& a, const py::object& pose, bool equivalents) {
+           [](const SerialArm& a, const py::handle& pose, bool equivalents) {
              InverseOptions options;
              options.offer_equivalents = equivalents;
-             return to_list(a.inverse_solutions(pose_of(pose, "pose"), options).solutions);
+             return solution_rows(solve(a, pose_of(pose, "pose"), options).solutions, a.dof());
            },
            py::arg("pose"), py::arg("offer_equivalents") = false,
-           "The distinct joint vectors (list of (n,) arrays) inside the limits whose forward() is `pose` (a Pose or "
-           "(4, 4)) to 1e-10, one per solution, each angle the 2pi-equivalent nearest to 0 inside the limits; with "
-           "offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else ValueError); "
-           "empty when unreachable.")
+           "The distinct joint vectors inside the limits whose forward() is `pose` (a Pose or (4, 4)) to 1e-10, "
+           "as the rows of a (k, n) array, one per solution, each angle the 2pi-equivalent nearest to 0 inside "
+           "the limits; with offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else "
+           "ValueError); (0, n) when unreachable.")
+      .def(
+          "inverse_many",
+          [](const SerialArm& a, const py::handle& poses, bool equivalents) {
+            std::vector<Posed> targets = poses_of(poses);
+            InverseOptions options;
+            options.offer_equivalents = equivalents;
+            std::vector<std::vector<Eigen::VectorXd>> found(targets.size());
+            {
+              py::gil_scoped_release unlocked;
+              for (std::size_t i = 0; i < targets.size(); ++i) found[i] = a.inverse_solutions(targets[i], options).solutions;
+            }
+            py::list out(found.size());
+            for (std::size_t i = 0; i < found.size(); ++i) out[i] = solution_rows(found[i], a.dof());
+            return out;
+          },
+          py::arg("poses"), py::arg("offer_equivalents") = false,
+          "inverse() of every pose of an (N, 4, 4) array or a sequence of Poses: a list of N arrays, the i-th the "
+          "(k_i, n) array inverse(poses[i]) gives. The interpreter lock is released for the whole batch. "
+          "ValueError naming poses[i] for a pose that is not finite or not rigid.")
       .def("inverse_solutions",
-           [](const SerialArm& a, const py::object& pose, bool keep, bool equivalents, int attempts, double budget,
+           [](const SerialArm& a, const py::handle& pose, bool keep, bool equivalents, int attempts, double budget,
               unsigned seed) {
-             return a.inverse_solutions(pose_of(pose, "pose"), options_of(keep, equivalents, attempts, budget, seed));
+             return solve(a, pose_of(pose, "pose"), options_of(keep, equivalents, attempts, budget, seed));
            },
            py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
            py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u,
@@ -275,7 +370,12 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
                   py::arg("solutions"), py::arg("q_ref"), "The solution closest to q_ref (Euclidean, no wrapping).")
       .def("follow",
            [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start) {
-             const std::vector<Eigen::VectorXd> path = serial::follow(a, poses, joint_vector(q_start, "q_start"));
+             const Eigen::VectorXd start = joint_vector(q_start, "q_start");
+             std::vector<Eigen::VectorXd> path;
+             {
+               py::gil_scoped_release unlocked;
+               path = serial::follow(a, poses, start);
+             }
              py::array_t<double> out({static_cast<py::ssize_t>(path.size()), static_cast<py::ssize_t>(a.dof())});
              for (std::size_t k = 0; k < path.size(); ++k)
                Eigen::Map<Eigen::VectorXd>(out.mutable_data() + k * static_cast<std::size_t>(a.dof()), a.dof()) = path[k];
@@ -292,11 +392,16 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
             if (twists.shape(0) != qs.shape(0))
               throw py::value_error("body_twists: expected " + std::to_string(qs.shape(0)) + " rows like q, got " +
                                     std::to_string(twists.shape(0)));
+            using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+            const Rows q_rows = Eigen::Map<const Rows>(qs.data(), qs.shape(0), a.dof());
+            const Rows twist_rows = Eigen::Map<const Rows>(twists.data(), twists.shape(0), 6);
             Eigen::MatrixXd out(qs.shape(0), a.dof());
-            for (py::ssize_t k = 0; k < qs.shape(0); ++k) {
-              const Eigen::VectorXd qk = Eigen::Map<const Eigen::VectorXd>(qs.data() + k * a.dof(), a.dof());
-              const Twistd xi(Eigen::Map<const Eigen::Matrix<double, 6, 1>>(twists.data() + 6 * k));
-              out.row(k) = serial::joint_velocity(a, qk, xi).transpose();
+            {
+              py::gil_scoped_release unlocked;
+              for (Eigen::Index k = 0; k < q_rows.rows(); ++k) {
+                const Twistd xi(Eigen::Matrix<double, 6, 1>(twist_rows.row(k).transpose()));
+                out.row(k) = serial::joint_velocity(a, q_rows.row(k).transpose(), xi).transpose();
+              }
             }
             return to_rows(out);
           },
@@ -307,8 +412,13 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "follow_trajectory",
           [](const SerialArm& a, const Trajectory& trajectory, const py::object& times, const py::object& q_start,
              double difference_step) {
-            const FollowedJoints j = follow_joints(trajectory, a, joint_vector(q_start, "q_start"), times_of(times, "times"),
-                                                   difference_step);
+            const Eigen::VectorXd start = joint_vector(q_start, "q_start");
+            const std::vector<double> at = times_of(times, "times");
+            FollowedJoints j;
+            {
+              py::gil_scoped_release unlocked;
+              j = follow_joints(trajectory, a, start, at, difference_step);
+            }
             return py::make_tuple(to_rows(j.q), to_rows(j.qd), to_rows(j.qdd));
           },
           py::arg("trajectory"), py::arg("times"), py::arg("q_start"), py::arg("difference_step") = 1e-4,
@@ -318,7 +428,15 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
       .def(
           "check_joint_limits",
           [](const SerialArm& a, const py::object& trajectory, const py::object& times) {
-            return py::cast(check_joint_limits(trajectory.cast<const JointTrajectory&>(), a, times_of(times, "times")));
+            const JointTrajectory& move = trajectory.cast<const JointTrajectory&>();
+            const std::vector<double> at = times_of(times, "times");
+            const SerialArm arm = a;  // its gravity as now, whatever another thread sets meanwhile
+            JointLimitReport report;
+            {
+              py::gil_scoped_release unlocked;
+              report = check_joint_limits(move, arm, at);
+            }
+            return py::cast(std::move(report));  // py::object: JointLimitReport is bound after SerialArm
           },
           py::arg("trajectory"), py::arg("times"),
           "JointLimitReport of a PTP move (JointTrajectory) at `times` (s): the factors FVEL and FACC of its "

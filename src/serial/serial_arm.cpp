@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -133,8 +134,18 @@ Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::Vector
   if (!model_->impossible_inertia.empty())
     throw std::invalid_argument(model_->impossible_inertia + ": the torques of robot \"" + model_->robot_name +
                                 "\" need a rigid body's inertia on every link from base_link to tip_link");
-  KDL::ChainIdSolver_RNE solver(model_->chain, KDL::Vector(gravity_.x(), gravity_.y(), gravity_.z()));
-  const KDL::Wrenches no_external(model_->chain.getNrOfSegments(), KDL::Wrench::Zero());
+  // KDL's joints keep their last pose in mutable members (KDL::Joint::pose), so one KDL chain
+  // used by two threads at once gives wrong torques: each thread works on its own copy of the
+  // chain, made once per arm model and thread (the copy holds the model, so that its address
+  // cannot come back as another arm's).
+  thread_local std::shared_ptr<const Model> copied_from;
+  thread_local KDL::Chain chain;
+  if (copied_from != model_) {
+    chain = model_->chain;
+    copied_from = model_;
+  }
+  KDL::ChainIdSolver_RNE solver(chain, KDL::Vector(gravity_.x(), gravity_.y(), gravity_.z()));
+  const KDL::Wrenches no_external(chain.getNrOfSegments(), KDL::Wrench::Zero());
   KDL::JntArray tau(static_cast<unsigned>(dof()));
   if (solver.CartToJnt(to_jnt_array(q), to_jnt_array(qd), to_jnt_array(qdd), no_external, tau) < 0)
     throw std::runtime_error("torques: KDL ChainIdSolver_RNE failed");

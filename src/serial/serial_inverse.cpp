@@ -31,12 +31,14 @@ using detail::two_pi;
 
 // Joint values this close count as one solution; numeric restarts land on the same root with
 // differences of the order of their convergence tolerance.
-constexpr double duplicate_tolerance = 1e-7;
+constexpr double duplicate_tolerance = ik_duplicate_tolerance;
 // The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
 constexpr int lma_run_length = 25;
 constexpr int lma_runs = 20;
-// q into (−π, π].
+// q into (−π, π]: exact for any q (std::remainder), at once for one already there (what the
+// analytic families return; std::remainder would give it back unchanged, slower).
 double wrap(double q) {
+  if (q > -pi && q <= pi) return q;
   double r = std::remainder(q, two_pi);  // in [−π, π]
   if (r <= -pi) r += two_pi;
   return r;
@@ -76,8 +78,8 @@ bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept {
     const double w = wrap(q(i));
     const double lo = limits.lower(i);
     const double hi = limits.upper(i);
-    if (!std::isfinite(lo) || !std::isfinite(hi)) {
-      q(i) = w;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || (lo - limit_slack <= w && w <= hi + limit_slack)) {
+      q(i) = w;  // no limits, or w itself inside them: k = 0 below
       continue;
     }
     // The copies w + 2πk inside the limits are k_lo ≤ k ≤ k_hi; the one nearest 0 has the k
@@ -172,13 +174,20 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   result.family = model_->family;
 
   std::vector<Eigen::VectorXd> raw;
-  if (model_->family != IkFamily::general) {
+  IkSolutionSet closed_form;  // the closed forms write into a fixed set (no allocation per candidate)
+  if (model_->family == IkFamily::spherical_wrist || model_->family == IkFamily::three_parallel) {
+    analytic_inverse(model_->revolute, model_->family, pose, closed_form);
+    result.complete = true;
+  } else if (model_->family != IkFamily::general) {
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
   } else {
     // Numeric fallback: restarts drawn uniformly inside the limits within one turn, until the
     // attempts or the time budget run out.
-    KDL::ChainIkSolverPos_LMA solver(model_->chain, 1e-12, lma_run_length, 1e-15);
+    // A copy of the KDL chain: its joints keep their last pose in mutable members, so the arm's
+    // own chain must not be used by two threads at once.
+    const KDL::Chain chain = model_->chain;
+    KDL::ChainIkSolverPos_LMA solver(chain, 1e-12, lma_run_length, 1e-15);
     std::mt19937_64 generator(options.seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const KDL::Frame goal = to_frame(pose);
@@ -214,17 +223,30 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
 
   std::vector<Eigen::VectorXd> representatives;
   std::vector<bool> inside_limits;
-  for (Eigen::VectorXd q : raw) {
-    if (q.size() != n || !q.allFinite()) continue;
+  const std::size_t found_count = raw.size() + static_cast<std::size_t>(closed_form.size());
+  representatives.reserve(found_count);
+  inside_limits.reserve(found_count);
+  for (std::size_t k = 0; k < found_count; ++k) {
+    // The solution as the solver found it: an entry of the search's list or of the closed form's set.
+    const Eigen::Map<const Eigen::VectorXd> found =
+        k < raw.size() ? Eigen::Map<const Eigen::VectorXd>(raw[k].data(), raw[k].size())
+                       : Eigen::Map<const Eigen::VectorXd>(closed_form[static_cast<int>(k - raw.size())].data(), 6);
+    if (found.size() != n || !found.allFinite()) continue;
+    Eigen::VectorXd q = found;
     const bool inside = into_limits(q, limits);
     if (!inside && !options.keep_outside_limits) continue;
-    // Every solution is checked by forward kinematics (reproduces); one that misses by a little
-    // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
-    if (!reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
+    // An analytic solution left as it was already reproduces the pose: the families accept a
+    // candidate by doc/inverse-kinematics.md (eq. 25), which bounds every entry of R and t as
+    // forward()'s check does (eq. 26). Every other one (a numeric root, a solution moved by whole
+    // turns into the limits) is checked by forward kinematics; one that misses by a little gets
+    // Newton steps, one that misses by more is not a solution.
+    const bool analytic_as_found = result.complete && q == found;
+    if (!analytic_as_found && !reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
     // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
-    // the copies of different representatives are then different too.
-    if (is_duplicate(representatives, q)) continue;
-    representatives.push_back(q);
+    // the copies of different representatives are then different too. The analytic families
+    // return none (ik_duplicate_tolerance is this one), and whole turns keep them apart.
+    if (!result.complete && is_duplicate(representatives, q)) continue;
+    representatives.push_back(std::move(q));
     inside_limits.push_back(inside);
   }
   if (!options.offer_equivalents) {

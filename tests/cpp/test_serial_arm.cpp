@@ -3,11 +3,13 @@
 // inverse kinematics (analytic family or numeric fallback), solution choice, bad URDFs.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -383,6 +385,69 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndTheTwoPiCopiesOnRequest) 
     const InverseResult base = arm.inverse_solutions(pose);
     EXPECT_EQ(result.solutions.size(), base.solutions.size() * 64u);
     for (const Eigen::VectorXd& s : base.solutions) EXPECT_LE(s.cwiseAbs().maxCoeff(), pi + 1e-9) << s.transpose();
+  }
+}
+
+TEST(SerialArmDynamics, TorquesFromTwoThreadsAreThoseOfOne) {
+  // KDL's joints keep their last pose in mutable members: two threads sharing one KDL chain got
+  // each other's joint poses and wrong torques (seen as different re-timing reports from Python
+  // threads). Each thread works on its own copy of the chain now.
+  const SerialArm arm = ur5e();
+  Random random(615);
+  std::vector<std::array<Eigen::VectorXd, 3>> states;
+  std::vector<Eigen::VectorXd> expected;
+  for (int k = 0; k < 200; ++k) {
+    std::array<Eigen::VectorXd, 3> x{random_q(random, arm), random_q(random, arm), random_q(random, arm)};
+    expected.push_back(arm.torques(x[0], x[1], x[2]));
+    states.push_back(std::move(x));
+  }
+  std::array<int, 2> differing{};
+  const auto run = [&](int t) {
+    for (int pass = 0; pass < 50; ++pass)
+      for (std::size_t k = 0; k < states.size(); ++k)
+        if (arm.torques(states[k][0], states[k][1], states[k][2]) != expected[k]) ++differing[static_cast<std::size_t>(t)];
+  };
+  std::thread first(run, 0);
+  std::thread second(run, 1);
+  first.join();
+  second.join();
+  EXPECT_EQ(differing[0] + differing[1], 0);
+}
+
+TEST(SerialArmInverse, EverySolutionReproducesThePoseAndNoneRepeats) {
+  // inverse_solutions checks by forward kinematics only the solutions it moves by whole turns into
+  // the limits, and looks for duplicates only among the numeric search's roots: the analytic
+  // families' own acceptance implies the check (doc/inverse-kinematics.md (eq. 26)) and they
+  // return no duplicates. Limits of [0, 2π] on the UR5e move every negative joint value by a
+  // turn, the KR6-like arm's narrower limits drop some solutions and move others.
+  const SerialArm ur = ur5e();
+  JointLimits shifted = ur.joint_limits();
+  shifted.lower.setZero();
+  shifted.upper.setConstant(2 * pi);
+  const SerialArm kr6 = SerialArm::from_urdf_file(urdf_dir + "arm_kr6_like_dh.urdf", "base_link", "flange");
+  Random random(614);
+  for (const SerialArm& arm : {ur, ur.with_joint_limits(shifted), kr6}) {
+    const JointLimits limits = arm.joint_limits();
+    for (int k = 0; k < dispkin::testing::case_count(500); ++k) {
+      const Posed pose = arm.forward(random_q(random, ur));
+      for (const bool keep : {false, true}) {
+        InverseOptions options;
+        options.keep_outside_limits = keep;
+        const InverseResult result = arm.inverse_solutions(pose, options);
+        ASSERT_EQ(result.solutions.size(), result.within_limits.size());
+        for (std::size_t a = 0; a < result.solutions.size(); ++a) {
+          const Eigen::VectorXd& s = result.solutions[a];
+          EXPECT_TRUE(arm.forward(s).is_approx(pose, inverse_tolerance)) << arm.robot_name() << " " << s.transpose();
+          const bool inside = ((s - limits.lower).array() >= -1e-10).all() && ((limits.upper - s).array() >= -1e-10).all();
+          EXPECT_EQ(inside, static_cast<bool>(result.within_limits[a])) << s.transpose();
+          for (std::size_t b = 0; b < a; ++b) {
+            double apart = 0.0;
+            for (int i = 0; i < 6; ++i) apart = std::max(apart, std::abs(std::remainder(s(i) - result.solutions[b](i), 2 * pi)));
+            EXPECT_GT(apart, 1e-7) << "solutions " << b << " and " << a << " are one: " << s.transpose();
+          }
+        }
+      }
+    }
   }
 }
 

@@ -186,7 +186,7 @@ def test_impossible_inertias_load_for_kinematics_and_refuse_dynamics(ixx, iyy, i
     # arm loads, its kinematics work, and its torques name the link instead of being wrong.
     inertial = '<inertial><mass value="1"/>' + INERTIA.format(ixx=ixx, iyy=iyy, izz=izz) + "</inertial>"
     arm = dispkin.SerialArm.from_urdf(planar_urdf(inertial=inertial), "base", "l2")
-    assert arm.inverse(arm.forward([0.3, 0.4]))
+    assert len(arm.inverse(arm.forward([0.3, 0.4]))) > 0
     with pytest.raises(ValueError) as info:
         arm.static_torques([0.3, 0.4])
     assert str(info.value).startswith('link "l1" inertial inertia (ixx, ixy, ixz, iyy, iyz, izz) = ') and fragment in str(info.value)

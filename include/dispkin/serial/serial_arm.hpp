@@ -135,10 +135,12 @@ class SerialArm : public Kinematics {
   //! std::invalid_argument when they would be more than input_limits::max_ik_solutions.
   //! An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
-  //! Every solution (each 2π copy too) is checked by forward() to inverse_tolerance. Thread
-  //! safety: const and without shared mutable state (the KDL solvers are made per call, the
-  //! analytic IK caches its chain analysis per thread), so one arm may be used from several
-  //! threads at once.
+  //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
+  //! an analytic one as the family found it by the family's own acceptance test, which implies
+  //! it (doc/inverse-kinematics.md (eq. 26)), every other one checked by forward(). Thread
+  //! safety: const and without shared mutable state (the KDL solvers are made per call on a
+  //! copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain
+  //! analysis per thread), so one arm may be used from several threads at once.
   InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
 
   //! The geometric Jacobian J(q) (6 × dof, product of exponentials on chain()): rows (v, ω),
