@@ -8,8 +8,11 @@
 //! - general:         no analytic method applies (the caller uses the numeric fallback).
 //!
 //! Every solver is built from the Paden–Kahan subproblems in product-of-exponentials form
-//! (no DH conversion) and ends with a Newton polish on the full pose and a check by forward
-//! kinematics: a returned solution always reproduces the pose to ik_pose_tolerance.
+//! (no DH conversion). A candidate whose subproblems are all well inside their solvable range,
+//! on a chain whose axes fit its family to rounding, is exact to rounding and kept as it is
+//! (doc/inverse-kinematics.md (eq. 26)); every other one ends with a Newton polish on the full
+//! pose and a check by forward kinematics. A returned solution reproduces the pose to
+//! ik_pose_tolerance.
 //!
 //! Singular poses, where a joint is free, return a representative set (never an empty one):
 //! - spherical wrist, axes 4 and 6 aligned (q₅ = 0): q₄ = 0 and q₆ takes the whole turn;
