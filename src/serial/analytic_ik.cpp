@@ -115,7 +115,7 @@ void analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& 
     // q₆ directly: it is the fallback there (and the only case that allocates).
     if (out.count == 0 && near_singular && *g.why_not_offset == '\0') {
       for (const Eigen::VectorXd& q : detail::offset_wrist_search(chain, g, pose, OffsetWristOptions{}.samples))
-        out.push(q);
+        out.push(q, ik_pose_tolerance);  // measured inside the search, kept below the tolerance
     }
   } else {
     throw std::invalid_argument(describe("family", to_string(family),

@@ -67,7 +67,10 @@ void validate_chain(const RevoluteChain& chain) {
   }
 }
 
-ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
+namespace {
+
+// The family and the special lines of the axes with `tolerance` (analyse without the constants).
+ChainGeometry classify(const RevoluteChain& chain, double tolerance) {
   ChainGeometry g;
   const Line a1 = axis(chain, 0), a2 = axis(chain, 1), a3 = axis(chain, 2);
   const Line a4 = axis(chain, 3), a5 = axis(chain, 4), a6 = axis(chain, 5);
@@ -128,6 +131,39 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
     g.family = IkFamily::three_parallel;
   } else if (*g.why_not_offset == '\0') {
     g.family = IkFamily::offset_wrist;
+  }
+  return g;
+}
+
+// A unit vector normal to k (for subproblem 1 on a whole rotation).
+Eigen::Vector3d normal_to(const Eigen::Vector3d& k) {
+  const Eigen::Vector3d seed = std::abs(k.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return k.cross(seed).normalized();
+}
+
+// Lines that meet or are parallel to this (m, rad) do so to rounding: chains written from DH
+// tables or from URDF origins with exact angles are, those with rounded angles (1.5708 for π/2)
+// are not.
+constexpr double exact_fit_tolerance = 1e-14;
+
+}  // namespace
+
+ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
+  ChainGeometry g = classify(chain, tolerance);
+  const Motion m = Motion::of(chain.tip_at_zero);
+  g.tip_inverse = m.inverse();
+  g.tool = JointThen(chain, 5, m);
+  g.normal_4 = normal_to(chain.axes[3]);
+  g.normal_6 = normal_to(chain.axes[5]);
+  if (g.family == IkFamily::spherical_wrist || g.family == IkFamily::three_parallel) {
+    const ChainGeometry strict = classify(chain, exact_fit_tolerance);
+    g.exact_fit = strict.family == g.family && strict.layout == g.layout;
+    const Eigen::Vector3d& w4 = chain.axes[3];
+    const Eigen::Vector3d& w5 = chain.axes[4];
+    const Eigen::Vector3d& w6 = chain.axes[5];
+    g.wrist_flips = g.exact_fit && g.family == IkFamily::spherical_wrist &&
+                    std::abs(w4.dot(w5)) <= exact_fit_tolerance && std::abs(w5.dot(w6)) <= exact_fit_tolerance &&
+                    w4.cross(w6).norm() <= exact_fit_tolerance;
   }
   return g;
 }

@@ -22,6 +22,51 @@ namespace detail {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 
+//! A rigid motion x ↦ R x + t held as a matrix and a vector: the closed forms compose the
+//! joints' motions from the cosines and sines their subproblems give, with no trigonometric
+//! function (a quaternion AngleAxis or a Rodrigues matrix from an angle needs sin and cos).
+struct Motion {
+  Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+
+  static Motion of(const Posed& pose) noexcept { return {pose.rotation(), pose.translation()}; }
+  EIGEN_ALWAYS_INLINE Eigen::Vector3d operator*(const Eigen::Vector3d& x) const noexcept { return r * x + t; }
+  EIGEN_ALWAYS_INLINE Motion operator*(const Motion& o) const noexcept { return {r * o.r, r * o.t + t}; }
+  EIGEN_ALWAYS_INLINE Motion inverse() const noexcept { return {r.transpose(), -(r.transpose() * t)}; }
+};
+
+//! The motion of joint i turned by θ (cosine and sine): x ↦ R(ωᵢ, θ)(x − pᵢ) + pᵢ.
+EIGEN_ALWAYS_INLINE Motion joint_motion(const RevoluteChain& chain, int i, const CosSin& angle) noexcept {
+  const auto k = static_cast<std::size_t>(i);
+  Motion m;
+  m.r = rotation(chain.axes[k], angle);
+  m.t = chain.points[k] - m.r * chain.points[k];
+  return m;
+}
+
+//! e_i(θ) X for a fixed motion X as a function of (cos θ, sin θ). With
+//! R(ω, θ) = ωωᵀ + cos θ (I − ωωᵀ) + sin θ [ω]×, the motion x ↦ R (X x − p) + p splits into
+//! three fixed motions, so each evaluation is two scaled sums (no matrix product).
+struct JointThen {
+  Motion along, normal, cross;
+
+  JointThen() = default;
+  JointThen(const RevoluteChain& chain, int i, const Motion& x) noexcept {
+    const auto k = static_cast<std::size_t>(i);
+    const Eigen::Vector3d& w = chain.axes[k];
+    const Eigen::Vector3d y = x.t - chain.points[k];
+    along.r = w * (w.transpose() * x.r);
+    along.t = w * w.dot(y) + chain.points[k];
+    normal.r = x.r - along.r;
+    normal.t = y - w * w.dot(y);
+    for (int j = 0; j < 3; ++j) cross.r.col(j) = w.cross(x.r.col(j));
+    cross.t = w.cross(y);
+  }
+  EIGEN_ALWAYS_INLINE Motion at(const CosSin& a) const noexcept {
+    return {along.r + a.c * normal.r + a.s * cross.r, along.t + a.c * normal.t + a.s * cross.t};
+  }
+};
+
 //! How the first three joints place a point: axes 2 ∥ 3 (an arm plane; q₁ by subproblem 4)
 //! or axes 1, 2 meeting (a shoulder point; q₁, q₂ by subproblem 2).
 enum class PositionLayout { none, parallel_23, intersecting_12 };
@@ -38,6 +83,18 @@ struct ChainGeometry {
   bool three_parallel = false;                         //!< axes 2 ∥ 3 ∥ 4, axes 5 ∩ 6 (UR)
   Eigen::Vector3d point_56 = Eigen::Vector3d::Zero();
   IkFamily family = IkFamily::general;                 //!< the recognised family
+  // Per-chain constants of the closed forms, worked out once with the geometry.
+  Motion tip_inverse;                                  //!< M⁻¹
+  JointThen tool;                                      //!< e₆(q₆) M split into fixed parts
+  Eigen::Vector3d normal_4 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₄ (x₄ of eq. 12)
+  Eigen::Vector3d normal_6 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₆ (x₆ of eq. 11)
+  //! The family's axes meet and are parallel to rounding (exact_fit_tolerance), not merely to the
+  //! recognition tolerance: only then is a well-conditioned closed-form candidate exact to
+  //! rounding without a check (doc/inverse-kinematics.md §8, eq. 26).
+  bool exact_fit = false;
+  //! Spherical wrist with ω₅ ⊥ ω₄, ω₅ ⊥ ω₆ and ω₄ ∥ ω₆ at q = 0 (exact_fit too): the wrist's
+  //! second solution is the flip (q₄ + π, −q₅, q₆ + π) of its first (doc/inverse-kinematics.md (eq. 27)).
+  bool wrist_flips = false;
   // Why a family does not fit (static strings: analysing a chain must not allocate).
   const char* why_not_spherical = "";
   const char* why_not_three_parallel = "";
@@ -85,50 +142,6 @@ inline PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const
   return pose_error(chain_pose(chain, q.data()), target);
 }
 
-//! A rigid motion x ↦ R x + t held as a matrix and a vector: the closed forms compose the
-//! joints' motions from the cosines and sines their subproblems give, with no trigonometric
-//! function (a quaternion AngleAxis or a Rodrigues matrix from an angle needs sin and cos).
-struct Motion {
-  Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d t = Eigen::Vector3d::Zero();
-
-  static Motion of(const Posed& pose) noexcept { return {pose.rotation(), pose.translation()}; }
-  EIGEN_ALWAYS_INLINE Eigen::Vector3d operator*(const Eigen::Vector3d& x) const noexcept { return r * x + t; }
-  EIGEN_ALWAYS_INLINE Motion operator*(const Motion& o) const noexcept { return {r * o.r, r * o.t + t}; }
-  EIGEN_ALWAYS_INLINE Motion inverse() const noexcept { return {r.transpose(), -(r.transpose() * t)}; }
-};
-
-//! The motion of joint i turned by θ (cosine and sine): x ↦ R(ωᵢ, θ)(x − pᵢ) + pᵢ.
-EIGEN_ALWAYS_INLINE Motion joint_motion(const RevoluteChain& chain, int i, const CosSin& angle) noexcept {
-  const auto k = static_cast<std::size_t>(i);
-  Motion m;
-  m.r = rotation(chain.axes[k], angle);
-  m.t = chain.points[k] - m.r * chain.points[k];
-  return m;
-}
-
-//! e_i(θ) X for a fixed motion X as a function of (cos θ, sin θ). With
-//! R(ω, θ) = ωωᵀ + cos θ (I − ωωᵀ) + sin θ [ω]×, the motion x ↦ R (X x − p) + p splits into
-//! three fixed motions, so each evaluation is two scaled sums (no matrix product).
-struct JointThen {
-  Motion along, normal, cross;
-
-  JointThen(const RevoluteChain& chain, int i, const Motion& x) noexcept {
-    const auto k = static_cast<std::size_t>(i);
-    const Eigen::Vector3d& w = chain.axes[k];
-    const Eigen::Vector3d y = x.t - chain.points[k];
-    along.r = w * (w.transpose() * x.r);
-    along.t = w * w.dot(y) + chain.points[k];
-    normal.r = x.r - along.r;
-    normal.t = y - w * w.dot(y);
-    for (int j = 0; j < 3; ++j) cross.r.col(j) = w.cross(x.r.col(j));
-    cross.t = w.cross(y);
-  }
-  EIGEN_ALWAYS_INLINE Motion at(const CosSin& a) const noexcept {
-    return {along.r + a.c * normal.r + a.s * cross.r, along.t + a.c * normal.t + a.s * cross.t};
-  }
-};
-
 //! The rotation angle θ (rad) of targetᵀ r, from ‖r − target‖_F = 2√2 sin(θ/2) (one asin, no
 //! quaternion).
 inline double rotation_error(const Eigen::Matrix3d& r, const Eigen::Matrix3d& target) noexcept {
@@ -175,7 +188,7 @@ void offer(const RevoluteChain& chain, const Posed& target, Vector6d q, PoseErro
     while (i < 6 && std::abs(wrap_angle(q(i) - store[s](i))) <= ik_duplicate_tolerance) ++i;
     if (i == 6) return;  // every joint agrees
   }
-  store.push(q);
+  store.push(q, e.worst());
 }
 
 //! offer() measuring the pose error of q by forward kinematics.

@@ -49,7 +49,7 @@ struct SolutionList {
   std::vector<Vector6d> q;
   int size() const { return static_cast<int>(q.size()); }
   const Vector6d& operator[](int i) const { return q[static_cast<std::size_t>(i)]; }
-  void push(const Vector6d& x) { q.push_back(x); }
+  void push(const Vector6d& x, double /*measured_error*/ = 0.0) { q.push_back(x); }
 };
 
 // f_b(θ) on the four branches.

@@ -48,11 +48,18 @@ double wrap(double q) {
 bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorXd& q) {
   for (const Eigen::VectorXd& f : found) {
     bool same = true;
-    for (Eigen::Index i = 0; i < q.size() && same; ++i) same = std::abs(std::remainder(f(i) - q(i), two_pi)) <= duplicate_tolerance;
+    for (Eigen::Index i = 0; i < q.size() && same; ++i) same = std::abs(detail::wrap_angle(f(i) - q(i))) <= duplicate_tolerance;
     if (same) return true;
   }
   return false;
 }
+
+// An analytic solution whose measured pose error is at most this (a tenth of inverse_tolerance,
+// so far below it that the FK check's own rounding cannot matter) and whose joints into_limits
+// left as they were already reproduces the pose to inverse_tolerance: forward() would only
+// repeat the solver's check (is_approx compares entries, each at most the position error or
+// the rotation angle).
+constexpr double checked_by_solver = 0.1 * inverse_tolerance;
 
 // Newton's method on the full pose error (refine_pose), bringing a root found to 1e-6 or so
 // down to rounding (minimum-norm steps where J is not square, so that a redundant arm's root
@@ -173,11 +180,31 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   InverseResult result;
   result.family = model_->family;
 
+  std::vector<Eigen::VectorXd> representatives;
+  std::vector<bool> inside_limits;
   std::vector<Eigen::VectorXd> raw;
-  IkSolutionSet closed_form;  // the closed forms write into a fixed set (no allocation per candidate)
   if (model_->family == IkFamily::spherical_wrist || model_->family == IkFamily::three_parallel) {
-    analytic_inverse(model_->revolute, model_->family, pose, closed_form);
+    // The closed forms: no allocation but the result's, and no second check of what the solver
+    // has checked; their solutions are distinct modulo 2π (ik_duplicate_tolerance), and whole
+    // turns keep them so.
+    IkSolutionSet set;
+    analytic_inverse(model_->revolute, model_->family, pose, set);
     result.complete = true;
+    representatives.reserve(static_cast<std::size_t>(set.count));
+    bool polished = false;
+    for (int k = 0; k < set.count; ++k) {
+      Eigen::VectorXd q = set[k];
+      const bool inside = into_limits(q, limits);
+      if (!inside && !options.keep_outside_limits) continue;
+      const bool as_solved = q == set[k];
+      if (!(as_solved && set.error[static_cast<std::size_t>(k)] <= checked_by_solver) && !reproduces(*this, q, pose)) {
+        if (!polish(*this, pose, q)) continue;
+        polished = true;
+      }
+      if (polished && is_duplicate(representatives, q)) continue;
+      representatives.push_back(std::move(q));
+      inside_limits.push_back(inside);
+    }
   } else if (model_->family != IkFamily::general) {
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
@@ -221,32 +248,17 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     result.complete = false;
   }
 
-  std::vector<Eigen::VectorXd> representatives;
-  std::vector<bool> inside_limits;
-  const std::size_t found_count = raw.size() + static_cast<std::size_t>(closed_form.size());
-  representatives.reserve(found_count);
-  inside_limits.reserve(found_count);
-  for (std::size_t k = 0; k < found_count; ++k) {
-    // The solution as the solver found it: an entry of the search's list or of the closed form's set.
-    const Eigen::Map<const Eigen::VectorXd> found =
-        k < raw.size() ? Eigen::Map<const Eigen::VectorXd>(raw[k].data(), raw[k].size())
-                       : Eigen::Map<const Eigen::VectorXd>(closed_form[static_cast<int>(k - raw.size())].data(), 6);
-    if (found.size() != n || !found.allFinite()) continue;
-    Eigen::VectorXd q = found;
+  for (Eigen::VectorXd q : raw) {
+    if (q.size() != n || !q.allFinite()) continue;
     const bool inside = into_limits(q, limits);
     if (!inside && !options.keep_outside_limits) continue;
-    // An analytic solution left as it was already reproduces the pose: the families accept a
-    // candidate by doc/inverse-kinematics.md (eq. 25), which bounds every entry of R and t as
-    // forward()'s check does (eq. 26). Every other one (a numeric root, a solution moved by whole
-    // turns into the limits) is checked by forward kinematics; one that misses by a little gets
-    // Newton steps, one that misses by more is not a solution.
-    const bool analytic_as_found = result.complete && q == found;
-    if (!analytic_as_found && !reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
+    // Every solution is checked by forward kinematics (reproduces); one that misses by a little
+    // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
+    if (!reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
     // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
-    // the copies of different representatives are then different too. The analytic families
-    // return none (ik_duplicate_tolerance is this one), and whole turns keep them apart.
-    if (!result.complete && is_duplicate(representatives, q)) continue;
-    representatives.push_back(std::move(q));
+    // the copies of different representatives are then different too.
+    if (is_duplicate(representatives, q)) continue;
+    representatives.push_back(q);
     inside_limits.push_back(inside);
   }
   if (!options.offer_equivalents) {

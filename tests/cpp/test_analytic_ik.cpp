@@ -531,3 +531,58 @@ TEST(AnalyticIk, FixedSizeOverloadMatches) {
 
 }  // namespace
 }  // namespace dispkin
+
+namespace dispkin {
+namespace {
+
+// The closed forms' solution sets against tests/data/ik_solution_sets.txt, written by
+// benchmarks/ik_solution_sets.cpp before they were restructured for speed: the same count, and
+// each recorded solution among the new ones and each new one among the recorded (modulo 2π), to
+// 1e-12 rad or, where the pose fixes q less well (next to a singularity), to what it fixes:
+// 8 u L / σ_min(J) as in recovery_bound.
+TEST(AnalyticIk, SolutionSetsAsRecorded) {
+  std::ifstream file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/ik_solution_sets.txt");
+  ASSERT_TRUE(file.good()) << "tests/data/ik_solution_sets.txt (benchmarks/ik_solution_sets.cpp)";
+  std::map<std::string, RevoluteChain> chains;
+  for (auto& named : testing::named_test_chains()) chains[named.name] = named.chain;
+  std::string line;
+  int checked = 0;
+  while (std::getline(file, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    std::string name, token;
+    in >> name;
+    ASSERT_TRUE(chains.count(name)) << line;
+    const auto next = [&] {
+      in >> token;
+      return std::strtod(token.c_str(), nullptr);  // hexadecimal floating point
+    };
+    double v[7];
+    for (double& x : v) x = next();
+    const Posed pose = Posed::unchecked(Eigen::Quaterniond(v[0], v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6]));
+    int count = 0;
+    in >> count;
+    std::vector<Eigen::VectorXd> recorded(static_cast<std::size_t>(count), Eigen::VectorXd(6));
+    for (Eigen::VectorXd& q : recorded)
+      for (int i = 0; i < 6; ++i) q(i) = next();
+    ASSERT_TRUE(in) << line;
+    const RevoluteChain& chain = chains[name];
+    const auto solutions = analytic_inverse(chain, recognise(chain), pose);
+    ASSERT_EQ(static_cast<int>(solutions.size()), count) << line;
+    const auto fixed_to = [&](const Eigen::VectorXd& q) {
+      const double pose_precision = 8.0 * std::numeric_limits<double>::epsilon() * testing::link_length_sum(chain);
+      const double sigma_min =
+          Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(testing::space_jacobian(chain, q)).singularValues()(5);
+      return std::max(1e-12, pose_precision / sigma_min);
+    };
+    for (const Eigen::VectorXd& q : recorded)
+      EXPECT_LE(nearest(solutions, q), fixed_to(q)) << name << " recorded " << q.transpose();
+    for (const Eigen::VectorXd& q : solutions)
+      EXPECT_LE(nearest(recorded, q), fixed_to(q)) << name << " new " << q.transpose();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1000);  // 200 poses for each of the five closed-form robots
+}
+
+}  // namespace
+}  // namespace dispkin

@@ -8,8 +8,11 @@
 //! - general:         no analytic method applies (the caller uses the numeric fallback).
 //!
 //! Every solver is built from the Paden–Kahan subproblems in product-of-exponentials form
-//! (no DH conversion) and ends with a Newton polish on the full pose and a check by forward
-//! kinematics: a returned solution always reproduces the pose to ik_pose_tolerance.
+//! (no DH conversion). A candidate whose subproblems are all well inside their solvable range,
+//! on a chain whose axes fit its family to rounding, is exact to rounding and kept as it is
+//! (doc/inverse-kinematics.md (eq. 26)); every other one ends with a Newton polish on the full
+//! pose and a check by forward kinematics. A returned solution reproduces the pose to
+//! ik_pose_tolerance.
 //!
 //! Singular poses, where a joint is free, return a representative set (never an empty one):
 //! - spherical wrist, axes 4 and 6 aligned (q₅ = 0): q₄ = 0 and q₆ takes the whole turn;
@@ -45,13 +48,21 @@ constexpr double ik_duplicate_tolerance = 1e-7;
 //! Up to eight solutions without heap allocation (the closed-form families have at most 8).
 struct IkSolutionSet {
   std::array<Eigen::Matrix<double, 6, 1>, 8> q;  //!< q[0 .. count−1], each joint in (−π, π]
+  //! The pose error of q[i] as the solver measured it (the larger of position, m, and rotation,
+  //! rad; ≤ ik_pose_tolerance); 0 for a candidate exact to rounding, which is not measured
+  //! (doc/inverse-kinematics.md (eq. 26)).
+  std::array<double, 8> error{};
   int count = 0;                                  //!< number of solutions held
 
   int size() const noexcept { return count; }
   const Eigen::Matrix<double, 6, 1>& operator[](int i) const noexcept { return q[static_cast<std::size_t>(i)]; }
-  //! Appends q (ignored when the set is full: a 6R closed form never has a ninth).
-  void push(const Eigen::Matrix<double, 6, 1>& solution) noexcept {
-    if (count < 8) q[static_cast<std::size_t>(count++)] = solution;
+  //! Appends q with its measured error (ignored when the set is full: a 6R closed form never has
+  //! a ninth).
+  void push(const Eigen::Matrix<double, 6, 1>& solution, double measured_error = 0.0) noexcept {
+    if (count < 8) {
+      error[static_cast<std::size_t>(count)] = measured_error;
+      q[static_cast<std::size_t>(count++)] = solution;
+    }
   }
 };
 

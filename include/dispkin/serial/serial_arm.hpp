@@ -136,8 +136,8 @@ class SerialArm : public Kinematics {
   //! An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
-  //! an analytic one as the family found it by the family's own acceptance test, which implies
-  //! it (doc/inverse-kinematics.md (eq. 26)), every other one checked by forward(). Thread
+  //! a closed-form one as the solver measured it (eq. 25, which implies it: doc/inverse-kinematics.md
+  //! eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
   //! safety: const and without shared mutable state (the KDL solvers are made per call on a
   //! copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain
   //! analysis per thread), so one arm may be used from several threads at once.
