@@ -220,6 +220,7 @@ TEST(MixedOverlap, BadInputIsRefused) {
   const std::string out_of_reach =
       message_of([&] { FollowedTrajectory::from_start(plan(Path::lin(at_q, far), tool_set(), limits_at(0.5)), ur, q); });
   EXPECT_NE(out_of_reach.find("trajectory = "), std::string::npos) << out_of_reach;
+  EXPECT_NE(out_of_reach.find("no inverse-kinematics solution"), std::string::npos) << out_of_reach;
   // A joint limit on the way: the same LIN on an arm whose joint 1 may barely move.
   JointLimits tight = ur.joint_limits();
   tight.lower(0) = q(0) - 1e-3;  // joint 1 turns when the tip moves sideways
@@ -234,6 +235,7 @@ TEST(MixedOverlap, BadInputIsRefused) {
   const Trajectory to_singular = plan(Path::lin(kr.forward(bent), kr.forward(straight)), tool_set(), limits_at(0.5));
   const std::string singular = message_of([&] { FollowedTrajectory::from_start(to_singular, kr, bent); });
   EXPECT_NE(singular.find("trajectory = "), std::string::npos) << singular;
+  EXPECT_NE(singular.find("singular"), std::string::npos) << singular;
 
   // The overlap: its range, the joints where the moves meet, the arm.
   EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(ptp, followed, -0.1); }).find("overlap = -0.1"), std::string::npos);
