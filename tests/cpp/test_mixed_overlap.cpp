@@ -213,6 +213,7 @@ TEST(MixedOverlap, BadInputIsRefused) {
   EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, Eigen::VectorXd::Zero(5)); }).find("q_start = 5"),
             std::string::npos);
   EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 0.0); }).find("spacing = 0"), std::string::npos);
+  EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 1e-9); }).find("spacing = 1e-09"), std::string::npos);
   EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, std::nan("")); }).find("spacing = nan"),
             std::string::npos);
   // Out of reach on the way: a LIN 3 m long.
