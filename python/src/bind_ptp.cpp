@@ -11,7 +11,9 @@
 #include "conversions.hpp"
 #include "interpreter_lock.hpp"
 #include "dispkin/error.hpp"
+#include "dispkin/serial/followed_trajectory.hpp"
 #include "dispkin/serial/joint_overlap.hpp"
+#include "dispkin/serial/mixed_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
@@ -41,6 +43,55 @@ py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ss
   }
   if (shape.empty()) return py::float_(*data);
   return std::move(out);
+}
+
+// The sampling methods of a joint motion (JointTrajectorySample per time): tool poses, body
+// twists, joint positions, velocities, accelerations.
+template <typename Traj>
+void def_joint_sampling(py::class_<Traj>& cls) {
+  cls.def(
+         "sample",
+         [](const Traj& t, const py::object& times) {
+           return sampled(t, times, {4, 4}, 16, [](const JointTrajectorySample& s, double* out) {
+             Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+           });
+         },
+         py::arg("times"), "Tool poses at `times` (the arm's forward kinematics of the joints) as (N, 4, 4) matrices.")
+      .def(
+          "body_twist",
+          [](const Traj& t, const py::object& times) {
+            return sampled(t, times, {6}, 6, [](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+            });
+          },
+          py::arg("times"), "Body twists (v, omega) of the tool at `times`, (N, 6), m/s and rad/s.")
+      .def(
+          "joint_positions",
+          [](const Traj& t, const py::object& times) {
+            const int n = static_cast<int>(t.sample(0.0).q.size());
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.q;
+            });
+          },
+          py::arg("times"), "Joint positions at `times`, (N, dof), rad.")
+      .def(
+          "joint_velocities",
+          [](const Traj& t, const py::object& times) {
+            const int n = static_cast<int>(t.sample(0.0).q.size());
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qd;
+            });
+          },
+          py::arg("times"), "Joint velocities at `times`, (N, dof), rad/s.")
+      .def(
+          "joint_accelerations",
+          [](const Traj& t, const py::object& times) {
+            const int n = static_cast<int>(t.sample(0.0).q.size());
+            return sampled(t, times, {n}, n, [n](const JointTrajectorySample& s, double* out) {
+              Eigen::Map<Eigen::VectorXd>{out, n} = s.qdd;
+            });
+          },
+          py::arg("times"), "Joint accelerations at `times`, (N, dof), rad/s^2.");
 }
 
 }  // namespace
@@ -234,6 +285,70 @@ overlaps.)doc")
       .def("__repr__", [](const OverlappedJointTrajectory& o) {
         return "OverlappedJointTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
       });
+
+  py::class_<FollowedTrajectory> followed(m, "FollowedTrajectory", R"doc(
+A Cartesian trajectory (a LIN, CIRC, ... plan) as the joint motion of a serial arm whose tip
+follows it on one inverse-kinematics branch: the Mamezou article's "unifying to one type of
+control trajectory" done in joint space, where a PTP move is native. The joints are computed at
+construction on nodes along the path (DISP arc length at most `spacing` apart, refined until
+every interval's middle agrees with the branch's IK solution to 1e-10 rad) and interpolated by
+cubic Hermite polynomials; the trajectory's own time law gives s(t). The sampled pose is the
+arm's forward kinematics of the joints.)doc");
+  followed
+      .def_static("from_start", &FollowedTrajectory::from_start, py::arg("trajectory"), py::arg("robot"),
+                  py::arg("q_start"), py::arg("spacing") = FollowedTrajectory::default_spacing,
+                  "The branch that starts at q_start (whose forward kinematics must be the trajectory's start "
+                  "pose to 1e-9). ValueError naming the argument for a wrong q_start or spacing, an arm that is "
+                  "not 6R, or a trajectory the arm cannot follow (out of reach, singular, a joint limit).")
+      .def_static("to_end", &FollowedTrajectory::to_end, py::arg("trajectory"), py::arg("robot"), py::arg("q_end"),
+                  py::arg("spacing") = FollowedTrajectory::default_spacing,
+                  "The branch that ends at q_end (followed backwards from the trajectory's end pose, which "
+                  "forward kinematics of q_end must be): for a Cartesian move a PTP move from q_end follows.")
+      .def_property_readonly("duration", &FollowedTrajectory::duration, "Seconds.")
+      .def_property_readonly("length", &FollowedTrajectory::length, "The Cartesian trajectory's DISP arc length, metres.")
+      .def_property_readonly("dof", &FollowedTrajectory::dof, "Number of joints.")
+      .def_property_readonly("start", &FollowedTrajectory::start, "The joints at t = 0 (rad).")
+      .def_property_readonly("end", &FollowedTrajectory::end, "The joints at the end (rad).")
+      .def_property_readonly("trajectory", &FollowedTrajectory::trajectory, "The Cartesian trajectory followed.")
+      .def_property_readonly("node_count", &FollowedTrajectory::node_count, "Number of grid nodes.")
+      .def_property_readonly("midpoint_error", &FollowedTrajectory::midpoint_error,
+                             "The largest joint error found at an interval's middle (rad, at most 1e-10).");
+  def_joint_sampling(followed);
+  followed.def("__repr__", [](const FollowedTrajectory& f) {
+    return "FollowedTrajectory(duration=" + float_repr(f.duration()) + ", nodes=" + std::to_string(f.node_count()) + ")";
+  });
+
+  py::class_<OverlappedMixedTrajectory> mixed(m, "OverlappedMixedTrajectory", R"doc(
+The Mamezou article's overlapped velocity method for a PTP move and a Cartesian move, in either
+order, after unifying both to joint space: the Cartesian move as a FollowedTrajectory (from the
+PTP move's end, or to its start), then, as for two PTP moves, `after` starts `overlap` seconds
+before `before` ends and meanwhile the joint displacements add,
+theta(t) = theta_b(t) + theta_f(t') - theta_2. Outside the overlap each move runs alone; the tool
+pose is the arm's forward kinematics. No speed guarantee of its own: check the peak point speed
+before using large overlaps.)doc");
+  mixed
+      .def(py::init([](const JointTrajectory& before, const FollowedTrajectory& after, double overlap) {
+             return OverlappedMixedTrajectory(before, after, overlap);
+           }),
+           py::arg("before"), py::arg("after"), py::arg("overlap"),
+           "A PTP move, then a Cartesian move followed from its end (FollowedTrajectory.from_start with "
+           "before.end); 0 <= overlap <= the shorter duration (seconds).")
+      .def(py::init([](const FollowedTrajectory& before, const JointTrajectory& after, double overlap) {
+             return OverlappedMixedTrajectory(before, after, overlap);
+           }),
+           py::arg("before"), py::arg("after"), py::arg("overlap"),
+           "A Cartesian move followed to the start of the PTP move after it (FollowedTrajectory.to_end with "
+           "after.start); 0 <= overlap <= the shorter duration (seconds).")
+      .def_property_readonly("duration", &OverlappedMixedTrajectory::duration, "Seconds.")
+      .def_property_readonly("overlap", &OverlappedMixedTrajectory::overlap, "Seconds during which both moves run.")
+      .def_property_readonly("overlap_start", &OverlappedMixedTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def_property_readonly("ptp_first", &OverlappedMixedTrajectory::ptp_first,
+                             "True for a PTP move then a Cartesian one, False for the reverse.");
+  def_joint_sampling(mixed);
+  mixed.def("__repr__", [](const OverlappedMixedTrajectory& o) {
+    return "OverlappedMixedTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) +
+           ", ptp_first=" + (o.ptp_first() ? "True" : "False") + ")";
+  });
 
   m.def(
       "plan",

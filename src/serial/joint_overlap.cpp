@@ -7,23 +7,15 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "same_chain.hpp"
 
 namespace dispkin {
-
-namespace {
-
-bool same_chain(const serial::RevoluteChain& a, const serial::RevoluteChain& b) {
-  return a.axes == b.axes && a.points == b.points && a.tip_at_zero.translation() == b.tip_at_zero.translation() &&
-         a.tip_at_zero.quaternion().coeffs() == b.tip_at_zero.quaternion().coeffs();
-}
-
-}  // namespace
 
 OverlappedJointTrajectory::OverlappedJointTrajectory(JointTrajectory before, JointTrajectory after, double overlap)
     : before_(std::move(before)), after_(std::move(after)), overlap_(overlap) {
   require(before_.dof() == after_.dof(), "after", static_cast<long>(after_.dof()),
           "joints: must move as many joints as `before` (" + std::to_string(before_.dof()) + ")");
-  require(same_chain(before_.chain(), after_.chain()), "after", static_cast<long>(after_.dof()),
+  require(serial::detail::same_chain(before_.chain(), after_.chain()), "after", static_cast<long>(after_.dof()),
           "joints: must be planned on the same arm as `before`");
   const double shorter = std::min(before_.duration(), after_.duration());
   require(std::isfinite(overlap) && overlap >= 0.0 && overlap <= shorter, "overlap", overlap,

@@ -27,6 +27,7 @@ std::atomic<long> eigen_assert_failures{0};
 #include "dispkin/shapes.hpp"
 #ifdef DISPKIN_HAS_SERIAL
 #include "dispkin/serial/joint_overlap.hpp"
+#include "dispkin/serial/mixed_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
 #include "ptp_moves.hpp"
@@ -298,6 +299,37 @@ TEST(Realtime, OverlappedJointSamplingDoesNotAllocate) {
     for (int i = 0; i < 20000; ++i) checksum += o.sample(o.duration() * (1.2 * i / 20000 - 0.1)).qd.norm();
   });
   EXPECT_EQ(allocated, 0) << "OverlappedJointTrajectory::sample allocated";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
+  EXPECT_TRUE(checksum > 0.0);
+}
+
+// A PTP move and a LIN overlapped, both orders (FollowedTrajectory::sample: the time law, a
+// Hermite interval of the grid built at construction, FK; OverlappedMixedTrajectory::sample).
+TEST(Realtime, MixedOverlapSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  Eigen::VectorXd q_a(6), via(6);
+  q_a << 0.1, -1.2, 1.3, -1.0, -1.2, 0.2;
+  via << 0.6, -1.0, 1.1, -1.4, -1.1, 0.5;
+  const serial::SerialArm arm = testing::ur5e_arm();
+  const Limits limits{0.5, 2.0, 20.0};
+  const Posed at_via = arm.forward(via);
+  const Posed away = at_via * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())),
+                                    Eigen::Vector3d(0.06, -0.04, 0.05));
+  const JointTrajectory to_via = plan(JointPath(q_a, via), set, limits, ProfileKind::scurve, arm);
+  const JointTrajectory from_via = plan(JointPath(via, q_a), set, limits, ProfileKind::scurve, arm);
+  const FollowedTrajectory lin_out = FollowedTrajectory::from_start(plan(Path::lin(at_via, away), set, limits), arm, via);
+  const FollowedTrajectory lin_in = FollowedTrajectory::to_end(plan(Path::lin(away, at_via), set, limits), arm, via);
+  const OverlappedMixedTrajectory ptp_lin(to_via, lin_out, 0.5 * std::min(to_via.duration(), lin_out.duration()));
+  const OverlappedMixedTrajectory lin_ptp(lin_in, from_via, 0.5 * std::min(lin_in.duration(), from_via.duration()));
+  double checksum = 0.0;
+  const long allocated = allocations_during([&] {
+    for (const OverlappedMixedTrajectory* o : {&ptp_lin, &lin_ptp}) {
+      for (int i = 0; i < 20000; ++i) checksum += o->sample(o->duration() * (1.2 * i / 20000 - 0.1)).qd.norm();
+    }
+    for (int i = 0; i < 5000; ++i) checksum += lin_out.sample(lin_out.duration() * (1.2 * i / 5000 - 0.1)).qdd.norm();
+  });
+  EXPECT_EQ(allocated, 0) << "OverlappedMixedTrajectory::sample allocated";
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum > 0.0);
 }
