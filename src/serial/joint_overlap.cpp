@@ -7,6 +7,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "overlapped_joint_sample.hpp"
 #include "same_chain.hpp"
 
 namespace dispkin {
@@ -27,27 +28,10 @@ OverlappedJointTrajectory::OverlappedJointTrajectory(JointTrajectory before, Joi
 }
 
 JointTrajectorySample OverlappedJointTrajectory::sample(double t) const noexcept {
-  const double begin = overlap_start();
-  if (!(t > begin)) return before_.sample(t);  // also t ≤ 0 and NaN: the start
-  if (t >= before_.duration()) {
-    // After the overlap only the next move runs; its s continues from the previous length.
-    // At and past the end exactly the next move's end (t − begin may round below its duration).
-    JointTrajectorySample out = after_.sample(t >= duration() ? after_.duration() : t - begin);
-    out.s += before_.length();
-    return out;
-  }
-  const JointTrajectorySample b = before_.sample(t), f = after_.sample(t - begin);
-  JointTrajectorySample out;
-  // θ = θ_b + θ_f − θ₂ with θ₂ = θ_f(0); the rates add (eq. 16). Fixed-capacity vectors: no heap.
-  out.q = b.q + f.q - via_;
-  out.qd = b.qd + f.qd;
-  out.qdd = b.qdd + f.qdd;
-  out.s = b.s + f.s;
-  out.s_dot = b.s_dot + f.s_dot;
-  out.s_ddot = b.s_ddot + f.s_ddot;
-  out.u = f.u;
-  serial::chain_pose_and_twist(after_.chain(), out.q.data(), out.qd.data(), out.pose, out.body_twist);
-  return out;
+  // eq. 16
+  return serial::detail::overlapped_joint_sample(
+      t, overlap_, before_.duration(), before_.length(), after_.duration(), duration(), via_, after_.chain(),
+      [this](double u) { return before_.sample(u); }, [this](double u) { return after_.sample(u); });
 }
 
 }  // namespace dispkin

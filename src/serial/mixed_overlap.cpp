@@ -9,6 +9,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "overlapped_joint_sample.hpp"
 #include "same_chain.hpp"
 
 namespace dispkin {
@@ -43,26 +44,10 @@ void OverlappedMixedTrajectory::check(double overlap) const {
 }
 
 JointTrajectorySample OverlappedMixedTrajectory::sample(double t) const noexcept {
-  const double begin = overlap_start();
-  if (!(t > begin)) return before_at(t);  // also t ≤ 0 and NaN: the start
-  if (t >= before_duration()) {
-    // Only the next move runs; its s continues from the first move's length.
-    JointTrajectorySample out = after_at(t >= duration() ? after_duration() : t - begin);
-    out.s += before_length();
-    return out;
-  }
-  const JointTrajectorySample b = before_at(t), f = after_at(t - begin);
-  JointTrajectorySample out;
-  // θ = θ_b + θ_f − θ₂, θ₂ = θ_f(0) = θ_b(T_b); the rates add (eq. 21). Inline vectors: no heap.
-  out.q = b.q + f.q - via_;
-  out.qd = b.qd + f.qd;
-  out.qdd = b.qdd + f.qdd;
-  out.s = b.s + f.s;
-  out.s_dot = b.s_dot + f.s_dot;
-  out.s_ddot = b.s_ddot + f.s_ddot;
-  out.u = f.u;
-  serial::chain_pose_and_twist(ptp_.chain(), out.q.data(), out.qd.data(), out.pose, out.body_twist);
-  return out;
+  // eq. 21
+  return serial::detail::overlapped_joint_sample(
+      t, overlap_, before_duration(), before_length(), after_duration(), duration(), via_, ptp_.chain(),
+      [this](double u) { return before_at(u); }, [this](double u) { return after_at(u); });
 }
 
 }  // namespace dispkin
