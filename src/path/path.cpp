@@ -326,24 +326,13 @@ Eigen::VectorXd JointPath::sample(double u) const {
 detail::SectionBounds detail::section_bounds_from_middle(const Section& section, GroupFactors& factors) {
   const auto* lin = std::get_if<LinSection>(&section);
   if (!lin) return section_bounds(section, factors);
-  // Every object's speed changes at most at the rate of its acceleration bound, so within half a
-  // section of the middle it exceeds its middle speed by at most half that bound (as
-  // CurveSection::bounds; doc/planning.md eq. 19).
+  // The LIN's exact speed at its middle plus half the rate bound (doc/planning.md eq. 19).
   factors.use_pivot(lin->pivot);
-  const MetricSetd& set = factors.set();
   Twistd screw;
   const MotionBounds motion = lin_motion_bounds(*lin, screw);
   const Posed middle = lin->pose(0.5);
   const Twistd twist_middle = lin->twist(0.5);
-  const Eigen::Vector3d pivot_middle = middle * lin->pivot;
-  double length = 0.0, acceleration = 0.0;
-  for (std::size_t i = 0; i < set.groups().size(); ++i) {
-    const auto& g = set.groups()[i];
-    const double rate = group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
-    length = std::max(length, factors.weight(i) * (group_max_speed(g, middle, twist_middle) + 0.5 * rate));
-    acceleration = std::max(acceleration, rate);
-  }
-  return {length, acceleration, motion.omega, motion.omega_dot};
+  return bounds_from_middle(factors, middle, twist_middle, middle * lin->pivot, motion);
 }
 
 }  // namespace dispkin

@@ -211,7 +211,6 @@ inline double CurveSection::length(const MetricSetd& set, std::optional<double> 
 }
 
 inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
-  const MetricSetd& set = factors.set();
   // The polynomials at the middle, once: the motion bounds, the middle pose and twist and the
   // pivot's middle position all come from them.
   const double m = 0.5 * (v0 + v1);
@@ -220,18 +219,8 @@ inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& fa
   Posed middle;
   Twistd twist_middle;
   pose_and_twist(c.value, c.first, phi.value, phi.first, middle, twist_middle);
-  const Eigen::Vector3d& pivot_middle = c.value;
-
-  double length = 0.0, acceleration = 0.0;
-  for (std::size_t i = 0; i < set.groups().size(); ++i) {
-    const auto& g = set.groups()[i];
-    const double rate = detail::group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
-    const double speed = detail::group_max_speed(g, middle, twist_middle);
-    length = std::max(length, factors.weight(i) * (speed + 0.5 * rate));
-    acceleration = std::max(acceleration, rate);
-  }
   // |ω| = |J_r(φ) φ′| ≤ |φ′| (the right Jacobian's singular values are at most 1).
-  return {length, acceleration, motion.omega, motion.omega_dot};
+  return detail::bounds_from_middle(factors, middle, twist_middle, c.value, motion);
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {

@@ -166,5 +166,22 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, double r_re
   return rate;
 }
 
+//! A section's bounds from its middle (doc/planning.md eq. 19): every object's speed changes at
+//! most at the rate of its acceleration bound, so within half a section of the middle it exceeds
+//! its middle speed by at most half that bound. Each group's exact speed at the middle pose and
+//! twist plus half its rate, weighted; the largest rate; the motion's |ω| and |ω̇|.
+inline SectionBounds bounds_from_middle(const GroupFactors& factors, const Posed& middle, const Twistd& twist_middle,
+                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& motion) {
+  const MetricSetd& set = factors.set();
+  double length = 0.0, acceleration = 0.0;
+  for (std::size_t i = 0; i < set.groups().size(); ++i) {
+    const auto& g = set.groups()[i];
+    const double rate = group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
+    length = std::max(length, factors.weight(i) * (group_max_speed(g, middle, twist_middle) + 0.5 * rate));
+    acceleration = std::max(acceleration, rate);
+  }
+  return {length, acceleration, motion.omega, motion.omega_dot};
+}
+
 }  // namespace detail
 }  // namespace dispkin

@@ -219,20 +219,11 @@ struct SlerpBlendSection {
   //! length() and acceleration_bound() together; `factors` of the same set, with
   //! use_pivot(pivot) called.
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
-    const MetricSetd& set = factors.set();
     const detail::MotionBounds motion = motion_bounds();
     Posed middle;
     Twistd twist_middle;
     at(0.5, middle, twist_middle);
-    const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
-    double length = 0.0, acceleration = 0.0;
-    for (std::size_t i = 0; i < set.groups().size(); ++i) {
-      const auto& g = set.groups()[i];
-      const double rate = detail::group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
-      length = std::max(length, factors.weight(i) * (detail::group_max_speed(g, middle, twist_middle) + 0.5 * rate));
-      acceleration = std::max(acceleration, rate);
-    }
-    return {length, acceleration, motion.omega, motion.omega_dot};
+    return detail::bounds_from_middle(factors, middle, twist_middle, position.value(0.5 * (v0 + v1)), motion);
   }
 };
 
