@@ -28,6 +28,7 @@ void plan_lin_icosahedron(benchmark::State& state) {
   const auto set = icosahedron_tool();
   const auto path = dispkin::Path::lin(kStart, kEnd);
   for (auto _ : state) benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}));
+  state.counters["pieces"] = static_cast<double>(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}).path().section_count());
 }
 BENCHMARK(plan_lin_icosahedron);
 

@@ -9,6 +9,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
+#include "lin_speed_range.hpp"
 
 namespace dispkin {
 namespace {
@@ -117,67 +118,80 @@ struct PlannedSections {
   }
 };
 
-// The relative variation of the fastest point's speed along a section, bounded: its speed per
-// unit τ changes at most at the rate of its acceleration (the weighted acceleration bound A·w),
-// so over the section it stays within A·w of the largest, L (doc/planning.md eq. 19); the
-// tool's angular speed likewise within |ω̇| of |ω|.
-double speed_variation(const detail::SectionBounds& b, double max_weight, double rotation_scale) {
-  double variation = b.length > 0.0 ? b.acceleration * max_weight / b.length : 0.0;
-  if (rotation_scale > 0.0 && b.omega * rotation_scale > b.length) variation = b.omega > 0.0 ? b.omega_dot / b.omega : 0.0;
-  return variation;
-}
-
-// Appends `section` to `out`, cut into pieces until the fastest point's speed varies by at most
-// 0.4 % within each (doc/planning.md §9, eq. 20). A piece where that speed is lower than at the
-// section's fastest instant has a larger relative variation, so each piece is checked again and
-// cut further where needed (at most 4096 pieces per section).
+// Appends `section` to `out`; a decoupled LIN cut into pieces until the fastest object's speed
+// varies by at most 0.4 % within each (doc/planning.md §9). The range of that speed over a part
+// is exact (lin_speed_range.hpp, eqs. 34–38), so a LIN is cut only where its speed does vary, as
+// finely as it varies: a part whose range is too wide is cut into as many equal parts as its
+// relative width asks for at 0.4 % each, and those are checked again (at most 4096 pieces per
+// section; a piece's length is its exact peak, so a coarser piece is only slower, never unsafe).
 void append_cut(const Section& section, std::size_t source, detail::GroupFactors& factors, double rotation_scale,
                 double minimum, double speed_cap, double acceleration, PlannedSections& out) {
   // 0.4 %: the cruise keeps ≥ 99.5 %, and neighbouring pieces stay within the junction rule's
   // 1 % (eq. 21) without lengthening.
   constexpr double cruise_ratio_loss = 0.004;
-  constexpr double max_pieces = 4096.0;
+  constexpr std::size_t max_pieces = 4096;
+  constexpr double max_split = 64.0;
   // Only decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are
   // cut where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE,
-  // blends), and their acceleration bound, dominated by the turning of the velocity rather than
-  // by a change of the speed, would cut them far finer than the speed varies.
+  // blends).
   const detail::SectionBounds whole = detail::section_bounds(section, factors);
   const auto* lin = std::get_if<LinSection>(&section);
-  auto pieces_needed = [&](const detail::SectionBounds& b) {
-    const double variation = speed_variation(b, factors.max_weight(), rotation_scale);
-    return variation > cruise_ratio_loss ? std::ceil(variation / cruise_ratio_loss) : 1.0;
-  };
   // A minimum length at least the section's own runs the whole section at one speed: its
   // fastest object is not what binds. Nor where the curvature rule (eq. 11) holds the speed
   // below the limit (v_lim = L √(a / A) is the same for every piece): there is no cruise at
-  // the limit to keep.
+  // the limit to keep. Nor where the rotational limit (eq. 23) makes the length.
   const bool curvature_binds = whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
-  const bool decoupled_lin = lin && lin->interpolation == Interpolation::decoupled;
-  const double first_cut =
-      !decoupled_lin || minimum >= whole.length || curvature_binds ? 1.0 : std::min(max_pieces, pieces_needed(whole));
-  if (first_cut <= 1.0) {
+  const double floor = std::max(minimum, whole.omega * rotation_scale);  // per unit τ of the section
+  if (!lin || lin->interpolation != Interpolation::decoupled || floor >= whole.length || curvature_binds) {
     out.push_back(section, {source, 0.0, 1.0}, whole);
     return;
   }
-  // Pieces [t0, t1] of the section's τ, each cut again (once) where it still varies too much.
-  // Room for the first cut at once (growing geometrically beyond it), so a LIN's pieces take one
-  // block per array.
-  const std::size_t needed = out.size() + static_cast<std::size_t>(first_cut);
-  if (needed > out.sections.capacity()) out.reserve(std::max(needed, 2 * out.sections.capacity()));
-  double budget = max_pieces;
-  auto emit = [&](double t0, double t1) {
-    const Section piece = section_part(section, t0, t1);
-    out.push_back(piece, {source, t0, t1}, detail::section_bounds_from_middle(piece, factors));
+  const detail::DecoupledSpeeds speeds(*lin, factors);
+  // The relative width of a part's speed range, with the floor every piece is lengthened to.
+  const auto variation = [&](const detail::SpeedRange& r) {
+    const double high = std::max(r.high, floor);
+    return high > 0.0 ? (high - std::max(r.low, floor)) / high : 0.0;
   };
-  for (double i = 0; i < first_cut; ++i) {
-    const double t0 = i / first_cut, t1 = i + 1.0 >= first_cut ? 1.0 : (i + 1.0) / first_cut;
-    emit(t0, t1);
-    const double again = std::min(pieces_needed(out.bounds.back()), std::max(1.0, budget / (first_cut - i)));
-    budget -= again;
-    if (again <= 1.0) continue;
-    out.pop_back();  // cut again
-    for (double k = 0; k < again; ++k) emit(t0 + (t1 - t0) * k / again, k + 1.0 >= again ? t1 : t0 + (t1 - t0) * (k + 1.0) / again);
+  const detail::SpeedRange all = speeds.range(0.0, 1.0);
+  if (variation(all) <= cruise_ratio_loss) {
+    out.push_back(section, {source, 0.0, 1.0}, whole);
+    return;
   }
+  const MetricSetd& set = factors.set();
+  const double travel = ((lin->end * lin->pivot) - (lin->start * lin->pivot)).norm();
+  const Eigen::Vector3d pivot_start = lin->start * lin->pivot, pivot_travel = lin->end * lin->pivot - pivot_start;
+  std::size_t count = 1;  // pieces emitted or promised
+  const std::size_t expected = static_cast<std::size_t>(std::min(max_split, std::ceil(variation(all) / cruise_ratio_loss)));
+  if (out.size() + expected > out.sections.capacity()) out.reserve(std::max(out.size() + 2 * expected, 2 * out.sections.capacity()));
+  Posed piece_start = lin->start;
+  // A piece [t0, t1]: the same motion between its ends (the ends shared with the neighbours, the
+  // section's own at τ = 0 and 1), its exact peak as length, and the acceleration bound of the
+  // part (the pivot's and the rotation's rates scale with the part's share h).
+  const auto emit = [&](double t0, double t1, const detail::SpeedRange& r) {
+    const double h = t1 - t0;
+    const Posed piece_end = t1 >= 1.0 ? lin->end : speeds.pose(t1);
+    const detail::MotionBounds motion{travel * h, 0.0, whole.omega * h, 0.0};
+    const Eigen::Vector3d pivot_middle = pivot_start + (0.5 * (t0 + t1)) * pivot_travel;
+    double rate = 0.0;
+    for (std::size_t i = 0; i < set.groups().size(); ++i)
+      rate = std::max(rate, detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
+    out.push_back(LinSection{piece_start, piece_end, Interpolation::decoupled, lin->pivot}, {source, t0, t1},
+                  {h * r.high, rate, motion.omega, 0.0});
+    piece_start = piece_end;
+  };
+  // Depth first, in order of τ: a part is emitted when its range is narrow enough (or the piece
+  // budget is spent), else cut into equal parts.
+  const auto cut = [&](const auto& self, double t0, double t1, const detail::SpeedRange& r) -> void {
+    const double v = variation(r);
+    const double parts = std::min(max_split, std::ceil(v / cruise_ratio_loss));
+    if (v <= cruise_ratio_loss || count + static_cast<std::size_t>(parts) - 1 > max_pieces) return emit(t0, t1, r);
+    count += static_cast<std::size_t>(parts) - 1;
+    for (double i = 0; i < parts; ++i) {
+      const double a = t0 + (t1 - t0) * i / parts, b = i + 1.0 >= parts ? t1 : t0 + (t1 - t0) * (i + 1.0) / parts;
+      self(self, a, b, speeds.range(a, b));
+    }
+  };
+  cut(cut, 0.0, 1.0, all);
 }
 
 // The velocity-limit staircase over planned sections [first, last) (doc/planning.md §4): the path
