@@ -116,7 +116,7 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
     out.reach[l] = u;
   }
   out.angle[1] = out.q1[1].angle();
-  out.angle[0] = lateral == 0.0 ? (out.angle[1] > 0.0 ? out.angle[1] - pi : out.angle[1] + pi) : out.q1[0].angle();
+  out.angle[0] = lateral == 0.0 ? out.angle[1] - std::copysign(pi, out.angle[1]) : out.q1[0].angle();
   return out;
 }
 

@@ -19,8 +19,8 @@ constexpr double exact_position = 4e-15;
 // The wrist basis (ω₄, ω₅, ω₄ × ω₅) is orthonormal to rounding only if the axes are.
 constexpr double exact_fit_tolerance = 1e-14;
 
-// θ + π in (−π, π] for θ in [−π, π] (the wrist flip, eq. 27).
-double half_turn(double angle) noexcept { return angle > 0.0 ? angle - pi : angle + pi; }
+// θ ± π, in [−π, π] for θ in [−π, π] (the wrist flip, eq. 27; wrapped to (−π, π] when kept).
+double half_turn(double angle) noexcept { return angle - std::copysign(pi, angle); }
 
 // R_z(−q₁) v: a vector of arm coordinates into link 1's frame.
 EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn1(const CosSin& q1, const Eigen::Vector3d& v) noexcept {
