@@ -12,10 +12,6 @@
 namespace dispkin {
 namespace serial {
 namespace detail {
-void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
-                             IkSolutionSet& out);
-bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
-                            IkSolutionSet& out);
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
                                                  const Posed& pose, int samples);
 }  // namespace detail

@@ -145,6 +145,14 @@ bool elbow_independent_of_q1(const ChainGeometry& geometry) noexcept;
 Harmonic elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
                         const Eigen::Vector3d& y) noexcept;
 
+//! The closed forms (ik_closed_form.cpp): every solution of the pose into `out` (appended). They
+//! take the arm-frame fast path (ik_arm_frame.hpp) where the geometry has it and the pose allows.
+//! three_parallel_inverse says whether the pose is near the wrist singularity.
+void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                             IkSolutionSet& out);
+bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                            IkSolutionSet& out);
+
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
 inline PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept {
   return pose_error(chain_pose(chain, q.data()), target);
