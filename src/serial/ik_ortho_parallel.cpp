@@ -85,7 +85,7 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
       const double c2 = dot(reach, to_target), s2 = cross(reach, to_target);
       const double inverse2 = 1.0 / std::sqrt(c2 * c2 + s2 * s2);
       const CosSin q2{c2 * inverse2, s2 * inverse2};
-      // The positioning residual of eq. 26: e₁e₂e₃ c against W.
+      // The positioning residual of eq. 26 in the plane (eq. 34): e₁e₂e₃ c against W.
       const PlaneVector placed = elbow.p2 + turn(q2, reach);
       const double rx = q1.c * placed.eta - q1.s * b - w.x();
       const double ry = q1.s * placed.eta + q1.c * b - w.y();
