@@ -3,6 +3,7 @@
 #include "dispkin/serial/analytic_ik.hpp"
 
 #include <array>
+#include <cstring>
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
@@ -11,10 +12,6 @@
 namespace dispkin {
 namespace serial {
 namespace detail {
-void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
-                             IkSolutionSet& out);
-bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
-                            IkSolutionSet& out);
 std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
                                                  const Posed& pose, int samples);
 }  // namespace detail
@@ -26,39 +23,56 @@ namespace {
 // exact solutions because every candidate is polished on the true chain.
 constexpr double family_tolerance = 1e-9;
 
-// The chain last analysed on this thread (its axes and points, bit for bit) and its geometry.
-// The real-time path solves pose after pose of one chain, and checking and analysing it again
-// cost as much as a tenth of a closed-form call. A chain with a NaN never matches (NaN ≠ NaN),
-// so it is always checked, and refused.
+// The chain last analysed on this thread (its axes, points and tip, bit for bit) and its
+// geometry. The real-time path solves pose after pose of one chain, and checking and analysing it
+// again cost as much as a tenth of a closed-form call. The geometry holds constants of the tip
+// (M⁻¹ and those of the arm frame), so the tip is part of the key. Only a validated chain is
+// stored, and it has no NaN, so bitwise equality with it is equality.
+struct ChainKey {
+  std::array<double, 18> axes{}, points{};
+  std::array<double, 7> tip{};
+};
+
 struct AnalysedChain {
-  std::array<double, 36> key{};
+  ChainKey key;
   bool valid = false;
   detail::ChainGeometry geometry;
 };
 
-bool same_axes(const RevoluteChain& chain, const std::array<double, 36>& key) {
-  for (std::size_t i = 0; i < 6; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (!(chain.axes[i](j) == key[6 * i + static_cast<std::size_t>(j)] &&
-            chain.points[i](j) == key[6 * i + 3 + static_cast<std::size_t>(j)]))
-        return false;
-  return true;
+std::array<double, 7> tip_of(const RevoluteChain& chain) {
+  const Eigen::Quaterniond& r = chain.tip_at_zero.quaternion();
+  const Eigen::Vector3d& t = chain.tip_at_zero.translation();
+  return {{r.w(), r.x(), r.y(), r.z(), t.x(), t.y(), t.z()}};
+}
+
+// The vectors of axes and points hold their doubles contiguously, three per joint.
+static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "Vector3d is three packed doubles");
+
+ChainKey key_of(const RevoluteChain& chain) {
+  ChainKey key;
+  std::memcpy(key.axes.data(), chain.axes.data(), sizeof key.axes);
+  std::memcpy(key.points.data(), chain.points.data(), sizeof key.points);
+  key.tip = tip_of(chain);
+  return key;
+}
+
+bool same_chain(const RevoluteChain& chain, const ChainKey& key) {
+  if (chain.axes.size() != 6 || chain.points.size() != 6) return false;
+  const std::array<double, 7> tip = tip_of(chain);
+  return std::memcmp(chain.axes.data(), key.axes.data(), sizeof key.axes) == 0 &&
+         std::memcmp(chain.points.data(), key.points.data(), sizeof key.points) == 0 &&
+         std::memcmp(tip.data(), key.tip.data(), sizeof tip) == 0;
 }
 
 // validate_chain + analyse with family_tolerance, from the thread's cache when the chain is the
 // one analysed last.
 const detail::ChainGeometry& checked_geometry(const RevoluteChain& chain) {
   thread_local AnalysedChain last;
-  if (last.valid && chain.axes.size() == 6 && chain.points.size() == 6 && same_axes(chain, last.key))
-    return last.geometry;
+  if (last.valid && same_chain(chain, last.key)) return last.geometry;
   last.valid = false;
   detail::validate_chain(chain);
   last.geometry = detail::analyse(chain, family_tolerance);
-  for (std::size_t i = 0; i < 6; ++i)
-    for (int j = 0; j < 3; ++j) {
-      last.key[6 * i + static_cast<std::size_t>(j)] = chain.axes[i](j);
-      last.key[6 * i + 3 + static_cast<std::size_t>(j)] = chain.points[i](j);
-    }
+  last.key = key_of(chain);
   last.valid = true;
   return last.geometry;
 }

@@ -16,12 +16,6 @@ namespace detail {
 
 namespace {
 
-// A candidate all of whose subproblems are this far inside their solvable range (margin, §2)
-// is exact to rounding and is kept without measuring its pose error (doc/inverse-kinematics.md
-// (eq. 26)); nearer a tangency or a singularity rounding is amplified, and it is measured and
-// polished as before.
-constexpr double well_inside = 1e-4;
-
 // The positioning residual ‖e₁e₂e₃ c − G c‖ (m) below which a branch counts as exact: the
 // polish threshold of offer().
 constexpr double exact_position = 4e-15;
@@ -69,6 +63,7 @@ void spherical_wrist_measured(const RevoluteChain& chain, const ChainGeometry& g
 
 void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                              IkSolutionSet& out) {
+  if (geometry.ortho_parallel && ortho_parallel_inverse(geometry.ortho, pose, out)) return;
   const Motion target = Motion::of(pose);
   const Motion g = target * geometry.tip_inverse;
   const Eigen::Vector3d& c = geometry.wrist_centre;
@@ -134,6 +129,7 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
 
 bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                             IkSolutionSet& out) {
+  if (geometry.three_parallel_plane && three_parallel_plane_inverse(geometry.plane, pose, out)) return false;
   bool near_singular = false;
   bool measured = false;  // a measured candidate was offered
   const Motion target = Motion::of(pose);

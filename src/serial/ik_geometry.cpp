@@ -164,6 +164,10 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
     g.wrist_flips = g.exact_fit && g.family == IkFamily::spherical_wrist &&
                     std::abs(w4.dot(w5)) <= exact_fit_tolerance && std::abs(w5.dot(w6)) <= exact_fit_tolerance &&
                     w4.cross(w6).norm() <= exact_fit_tolerance;
+    if (g.wrist_flips && g.layout == PositionLayout::parallel_23)
+      g.ortho_parallel = make_ortho_parallel(chain, g.wrist_centre, g.ortho);
+    if (g.exact_fit && g.family == IkFamily::three_parallel)
+      g.three_parallel_plane = make_three_parallel_plane(chain, g.point_56, g.plane);
   }
   return g;
 }

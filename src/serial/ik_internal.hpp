@@ -13,6 +13,7 @@
 #include "dispkin/serial/analytic_ik.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
+#include "ik_arm_frame.hpp"
 #include "ik_newton.hpp"
 #include "ik_subproblems.hpp"
 
@@ -95,6 +96,13 @@ struct ChainGeometry {
   //! Spherical wrist with ω₅ ⊥ ω₄, ω₅ ⊥ ω₆ and ω₄ ∥ ω₆ at q = 0 (exact_fit too): the wrist's
   //! second solution is the flip (q₄ + π, −q₅, q₆ + π) of its first (doc/inverse-kinematics.md (eq. 27)).
   bool wrist_flips = false;
+  //! A flipping spherical wrist whose axis 1 is also ⊥ axis 2 (an ortho-parallel basis): solved in
+  //! the arm frame (doc/inverse-kinematics.md §10) unless a pose is near a tangency or singularity.
+  bool ortho_parallel = false;
+  OrthoParallel ortho;
+  //! Three parallel axes, fitting exactly, with axis 1 ⊥ axis 2: solved in the arm frame likewise.
+  bool three_parallel_plane = false;
+  ThreeParallelPlane plane;
   // Why a family does not fit (static strings: analysing a chain must not allocate).
   const char* why_not_spherical = "";
   const char* why_not_three_parallel = "";
@@ -136,6 +144,14 @@ bool elbow_independent_of_q1(const ChainGeometry& geometry) noexcept;
 //! That elbow equation (only where elbow_independent_of_q1).
 Harmonic elbow_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
                         const Eigen::Vector3d& y) noexcept;
+
+//! The closed forms (ik_closed_form.cpp): every solution of the pose into `out` (appended). They
+//! take the arm-frame fast path (ik_arm_frame.hpp) where the geometry has it and the pose allows.
+//! three_parallel_inverse says whether the pose is near the wrist singularity.
+void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                             IkSolutionSet& out);
+bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
+                            IkSolutionSet& out);
 
 //! Position error (m) and rotation error (rad) of forward(chain, q) against `target`.
 inline PoseError pose_error(const RevoluteChain& chain, const Vector6d& q, const Posed& target) noexcept {

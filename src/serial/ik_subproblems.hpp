@@ -25,14 +25,18 @@ struct CosSin {
   //! The angle atan2(s, c) in [−π, π], by reduction to atan on [−1, 1]: glibc's atan2 saves
   //! and restores the floating-point environment on every call, and the closed forms take ~30
   //! of these per pose; this costs about two thirds of it, within 3e-16 rad of atan2.
+  //! The quadrant is chosen by table look-ups rather than branches: the closed forms take the
+  //! angles of random poses, whose quadrants a branch predictor cannot guess.
   double angle() const noexcept {
     constexpr double half_pi = 0.5 * pi;
-    if (std::abs(s) <= std::abs(c)) {
-      if (c == 0.0) return std::atan2(s, c);  // (0, 0): atan2's convention
-      const double a = std::atan(s / c);
-      return c > 0.0 ? a : a + std::copysign(2.0 * half_pi, s);
-    }
-    return std::copysign(half_pi, s) - std::atan(c / s);
+    if (c == 0.0 && s == 0.0) return std::atan2(s, c);  // (0, 0): atan2's convention
+    const std::size_t steep = std::abs(s) > std::abs(c) ? 1 : 0;
+    const double numerator[2] = {s, c};
+    const double denominator[2] = {c, s};
+    const double a = std::atan(numerator[steep] / denominator[steep]);
+    const double flat[2] = {a + std::copysign(2.0 * half_pi, s), a};  // c < 0, c > 0
+    const double value[2] = {flat[c > 0.0 ? 1 : 0], std::copysign(half_pi, s) - a};
+    return value[steep];
   }
   CosSin inverse() const noexcept { return {c, -s}; }
   bool operator==(const CosSin& o) const noexcept { return c == o.c && s == o.s; }

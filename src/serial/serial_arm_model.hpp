@@ -63,7 +63,7 @@ constexpr double limit_slack = 1e-10;
 // q brought into the limits by ±2π where possible (each joint to its equivalent value nearest 0
 // inside them; joints without limits, and those that do not fit, into (−π, π]): the form in
 // which inverse_solutions returns a solution. Whether every joint fits.
-bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept;
+bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexcept;
 
 // The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.
 RevoluteChain revolute_chain_of(const KDL::Chain& chain);

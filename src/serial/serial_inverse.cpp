@@ -45,7 +45,8 @@ double wrap(double q) {
 }
 
 // The same solution up to 2π in any joint.
-bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::VectorXd& q) {
+template <typename Vector>
+bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::MatrixBase<Vector>& q) {
   for (const Eigen::VectorXd& f : found) {
     bool same = true;
     for (Eigen::Index i = 0; i < q.size() && same; ++i) same = std::abs(detail::wrap_angle(f(i) - q(i))) <= duplicate_tolerance;
@@ -79,7 +80,7 @@ bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pos
 
 }  // namespace
 
-bool into_limits(Eigen::VectorXd& q, const JointLimits& limits) noexcept {
+bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexcept {
   bool inside = true;
   for (Eigen::Index i = 0; i < q.size(); ++i) {
     const double w = wrap(q(i));
@@ -187,17 +188,36 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     // The closed forms: no allocation but the result's, and no second check of what the solver
     // has checked; their solutions are distinct modulo 2π (ik_duplicate_tolerance), and whole
     // turns keep them so.
+    // The limits are applied to the fixed-size vectors; only a kept solution is copied to the
+    // heap (its one allocation).
     IkSolutionSet set;
     analytic_inverse(model_->revolute, model_->family, pose, set);
     result.complete = true;
     representatives.reserve(static_cast<std::size_t>(set.count));
+    inside_limits.reserve(static_cast<std::size_t>(set.count));
+    // Limits that hold all of (−π, π] (with the slack) leave the solver's joints as they are
+    // (IkSolutionSet holds them in (−π, π]).
+    bool whole_turns = true;
+    for (int i = 0; i < n && whole_turns; ++i)
+      whole_turns = !(limits.lower(i) - limit_slack > -pi) && !(limits.upper(i) + limit_slack < pi);
     bool polished = false;
     for (int k = 0; k < set.count; ++k) {
-      Eigen::VectorXd q = set[k];
-      const bool inside = into_limits(q, limits);
+      const Eigen::Matrix<double, 6, 1>& solved = set[k];
+      Eigen::Matrix<double, 6, 1> fixed = solved;
+      bool inside = true, as_solved = true;
+      if (!whole_turns) {
+        inside = into_limits(fixed, limits);
+        as_solved = fixed == solved;
+      }
       if (!inside && !options.keep_outside_limits) continue;
-      const bool as_solved = q == set[k];
-      if (!(as_solved && set.error[static_cast<std::size_t>(k)] <= checked_by_solver) && !reproduces(*this, q, pose)) {
+      if (as_solved && set.error[static_cast<std::size_t>(k)] <= checked_by_solver) {
+        if (polished && is_duplicate(representatives, fixed)) continue;
+        representatives.emplace_back(fixed);
+        inside_limits.push_back(inside);
+        continue;
+      }
+      Eigen::VectorXd q = fixed;
+      if (!reproduces(*this, q, pose)) {
         if (!polish(*this, pose, q)) continue;
         polished = true;
       }
