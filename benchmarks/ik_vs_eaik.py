@@ -39,11 +39,11 @@ import math
 import pathlib
 import platform
 import statistics
-import time
 
 import numpy as np
 
 import dispkin
+from cpu_rounds import alternating_rounds, per_call, whole_batch
 
 DATA = pathlib.Path(__file__).resolve().parents[1] / "tests" / "data" / "urdf"
 
@@ -66,32 +66,6 @@ def distinct_count(solutions, tolerance=1e-6) -> int:
         if all(np.abs(np.remainder(q - other + math.pi, 2 * math.pi) - math.pi).max() > tolerance for other in kept):
             kept.append(q)
     return len(kept)
-
-
-def per_call(function, items):
-    """A block: function(item) for every item; the thread CPU time per item (seconds)."""
-    start = time.thread_time_ns()
-    for item in items:
-        function(item)
-    return (time.thread_time_ns() - start) * 1e-9 / len(items)
-
-
-def whole_batch(function, items):
-    """A block: one call function(items); the thread CPU time per item (seconds)."""
-    start = time.thread_time_ns()
-    function(items)
-    return (time.thread_time_ns() - start) * 1e-9 / len(items)
-
-
-def alternating_rounds(blocks, rounds):
-    """{label: [seconds per item, one per round]}: every round runs each block once, starting
-    from a different one each round."""
-    times = {label: [] for label in blocks}
-    labels = list(blocks)
-    for r in range(rounds):
-        for label in labels[r % len(labels):] + labels[: r % len(labels)]:
-            times[label].append(blocks[label]())
-    return times
 
 
 def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, rounds: int, seed: int) -> None:

@@ -5,9 +5,12 @@ timed through Python: each figure includes one Python -> C++ call (dispkin: pybi
 nanobind/pybind11 plus the InputParameter set-up, which is part of using Ruckig from Python).
 The C++-only figures of dispkin are in RESULTS.md (bench_profile.cpp).
 
-    .venv/bin/python benchmarks/profile_vs_ruckig.py [--count 10000] [--repeat 5]
+    .venv/bin/python benchmarks/profile_vs_ruckig.py [--count 10000] [--rounds 11]
 
-Prints time per profile (best of --repeat passes over all cases) and the duration agreement:
+Timing: thread CPU time of a pass over all cases, dispkin's and Ruckig's passes alternating
+within each round (benchmarks/cpu_rounds.py); per contender the median over the rounds of the
+time per profile, and the median over the rounds of the ratio Ruckig / dispkin in the same round.
+Prints those and the duration agreement:
 the largest relative difference, and how many cases differ by more than 1e-9 together with
 Ruckig's own end-position error in those cases (its p_precision is 1e-8 absolute).
 """
@@ -15,12 +18,13 @@ Ruckig's own end-position error in those cases (its p_precision is 1e-8 absolute
 import argparse
 import math
 import platform
-import time
+import statistics
 
 import numpy as np
 import ruckig
 
 import dispkin
+from cpu_rounds import alternating_rounds, median_ratio, per_call
 
 
 def cases(count, seed=20261122):
@@ -54,20 +58,10 @@ def ruckig_planner():
     return plan
 
 
-def best_time(fn, all_cases, repeat):
-    best = math.inf
-    for _ in range(repeat):
-        start = time.perf_counter()
-        for c in all_cases:
-            fn(*c)
-        best = min(best, time.perf_counter() - start)
-    return best / len(all_cases)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--count", type=int, default=10000)
-    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=11)
     args = parser.parse_args()
     all_cases = cases(args.count)
     plan = ruckig_planner()
@@ -88,12 +82,15 @@ def main():
         ),
     }
     print(f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
-          f"ruckig {getattr(ruckig, '__version__', '?')}, dispkin {dispkin.__version__}, {args.count} rest-to-rest cases")
+          f"ruckig {getattr(ruckig, '__version__', '?')}, dispkin {dispkin.__version__}, {args.count} rest-to-rest cases, "
+          f"thread CPU time, medians of {args.rounds} alternating rounds")
     print("| kind | dispkin µs/profile | Ruckig µs/profile | ratio | max rel. duration diff | cases > 1e-9 (Ruckig end-position error there) |")
     print("|---|---:|---:|---:|---:|---|")
     for kind, (ours, theirs, our_duration, their_plan) in runs.items():
-        t_ours = best_time(ours, all_cases, args.repeat)
-        t_theirs = best_time(theirs, all_cases, args.repeat)
+        times = alternating_rounds({"dispkin": lambda: per_call(ours, all_cases),
+                                    "ruckig": lambda: per_call(theirs, all_cases)}, args.rounds)
+        t_ours, t_theirs = statistics.median(times["dispkin"]), statistics.median(times["ruckig"])
+        ratio = median_ratio(times["ruckig"], times["dispkin"])
         worst, off = 0.0, []
         for c in all_cases:
             d = our_duration(*c)
@@ -103,7 +100,7 @@ def main():
             if rel > 1e-9:
                 off.append((rel, abs(trajectory.at_time(trajectory.duration)[0][0] - c[0]) / c[0]))
         detail = "; ".join(f"{r:.1e} ({p:.1e} rel.)" for r, p in off[:5]) or "none"
-        print(f"| {kind} | {t_ours * 1e6:.2f} | {t_theirs * 1e6:.2f} | {t_theirs / t_ours:.1f}× | {worst:.1e} | {len(off)}: {detail} |")
+        print(f"| {kind} | {t_ours * 1e6:.2f} | {t_theirs * 1e6:.2f} | {ratio:.2f}× | {worst:.1e} | {len(off)}: {detail} |")
 
 
 if __name__ == "__main__":
