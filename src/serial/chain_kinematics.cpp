@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "chain_pass.hpp"
 #include "dispkin/error.hpp"
 
 namespace dispkin {
@@ -23,18 +24,12 @@ Posed chain_pose(const RevoluteChain& chain, const double* q) noexcept {
 void chain_pose_and_twist(const RevoluteChain& chain, const double* q, const double* qd, Posed& pose,
                           Twistd& body_twist, Eigen::Vector3d* axis_points) noexcept {
   // Spatial velocity field x ↦ v_s + ω_s × x: joint i adds q̇ᵢ ωᵢ′ × (x − pᵢ′) = q̇ᵢ (pᵢ′ × ωᵢ′ + ωᵢ′ × x).
-  Posed t;
   Eigen::Vector3d v_s = Eigen::Vector3d::Zero(), w_s = Eigen::Vector3d::Zero();
-  const int n = chain.dof();
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Eigen::Vector3d w = t.quaternion() * chain.axes[k];
-    const Eigen::Vector3d p = t * chain.points[k];
-    if (axis_points) axis_points[k] = p;
+  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed&) {
+    if (axis_points) axis_points[i] = p;
     v_s += qd[i] * p.cross(w);
     w_s += qd[i] * w;
-    t = t * rotation_about_line(chain.axes[k], chain.points[k], q[i]);
-  }
+  });
   pose = t * chain.tip_at_zero;
   // Body twist: ω_b = Rᵀ ω_s, v_b = Rᵀ (velocity of the tool origin o) = Rᵀ (v_s + ω_s × o).
   const Eigen::Quaterniond r_inv = pose.quaternion().conjugate();
@@ -44,14 +39,11 @@ void chain_pose_and_twist(const RevoluteChain& chain, const double* q, const dou
 Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
   // The same pass as chain_pose_and_twist, keeping ωᵢ′ (bottom rows) and pᵢ′ (top rows, until the
   // tool origin o is known and they become ωᵢ′ × (o − pᵢ′)).
-  Posed t;
   const int n = chain.dof();
-  for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    jacobian.block<3, 1>(3, i) = t.quaternion() * chain.axes[k];
-    jacobian.block<3, 1>(0, i) = t * chain.points[k];
-    t = t * rotation_about_line(chain.axes[k], chain.points[k], q[i]);
-  }
+  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed&) {
+    jacobian.block<3, 1>(3, i) = w;
+    jacobian.block<3, 1>(0, i) = p;
+  });
   const Posed pose = t * chain.tip_at_zero;
   const Eigen::Vector3d& o = pose.translation();
   for (int i = 0; i < n; ++i) {
@@ -70,6 +62,21 @@ Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJaco
     jacobian.block<3, 1>(3, i) = r_t * jacobian.block<3, 1>(3, i).eval();
   }
   return pose;
+}
+
+Twistd chain_velocity_product(const Eigen::Ref<const Eigen::Matrix<double, 6, Eigen::Dynamic>>& body_jacobian,
+                              const double* qd) noexcept {
+  // [V, ξ] = (ω_V × v_ξ + v_V × ω_ξ, ω_V × ω_ξ) with V = (v_V, ω_V) the twist of the joints before i.
+  Eigen::Vector3d v = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
+  Eigen::Vector3d product_v = Eigen::Vector3d::Zero(), product_w = Eigen::Vector3d::Zero();
+  for (Eigen::Index i = 0; i < body_jacobian.cols(); ++i) {
+    const Eigen::Vector3d column_v = body_jacobian.block<3, 1>(0, i), column_w = body_jacobian.block<3, 1>(3, i);
+    product_v += qd[i] * (w.cross(column_v) + v.cross(column_w));
+    product_w += qd[i] * w.cross(column_w);
+    v += qd[i] * column_v;
+    w += qd[i] * column_w;
+  }
+  return Twistd(product_v, product_w);
 }
 
 Posed forward(const RevoluteChain& chain, const Eigen::VectorXd& q) {

@@ -27,17 +27,38 @@ Eigen::VectorXd branch_solution(const serial::SerialArm& arm, const Posed& pose,
   return std::move(*q);
 }
 
-Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
-                               double t, double s) {
+namespace {
+
+using BodyJacobian = Eigen::Matrix<double, 6, 6>;
+
+// J_b(q) and its LU; throws naming the place near a singularity.
+Eigen::FullPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
+                                                   BodyJacobian& j, double t, double s) {
   if (arm.dof() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()), "must be 6 to invert the Jacobian"));
-  Eigen::Matrix<double, 6, 6> j;
   serial::chain_body_jacobian(arm.chain(), q.data(), j);
-  const Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(j);
+  Eigen::FullPivLU<BodyJacobian> lu(j);
   if (lu.rcond() < 1e-10) {
     throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " + std::to_string(lu.rcond()) + ")");
   }
-  const Eigen::Matrix<double, 6, 1> qd = lu.solve(body.vector());
+  return lu;
+}
+
+}  // namespace
+
+Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                               double t, double s) {
+  BodyJacobian j;
+  const Eigen::Matrix<double, 6, 1> qd = factorised_jacobian(arm, q, j, t, s).solve(body.vector());
   return qd;
+}
+
+void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
+                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+  BodyJacobian j;
+  const Eigen::FullPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, j, t, s);
+  qd = lu.solve(body.vector());
+  const Twistd product = serial::chain_velocity_product(j, qd.data());
+  qdd = lu.solve(body_rate.vector() - product.vector());
 }
 
 }  // namespace detail
