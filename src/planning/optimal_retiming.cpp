@@ -69,9 +69,12 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
     runs.push_back({grid.size(), count});
     for (std::size_t i = 0; i <= count; ++i) {
       const double sigma = i == count ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(count);
-      // Inside a run, Newton starts from the previous point moved on by its q′ (first order).
+      // Inside a run, Newton starts from the previous point moved on by its q′ and q″ (second order).
       const detail::GridPoint* previous = i ? &grid.back() : nullptr;
-      if (previous) guess = previous->q + (sigma - previous->sigma) * previous->q1;
+      if (previous) {
+        const double step = sigma - previous->sigma;
+        guess = previous->q + step * previous->q1 + (0.5 * step * step) * previous->q2;
+      }
       grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr));
       q_ref = grid.back().q;
     }

@@ -37,16 +37,19 @@ void newton_euler(const RevoluteChain& chain, const std::vector<ChainBody>& bodi
     alpha += qdd[i] * axis + qd[i] * w.cross(axis);
     // The body at q (eq. 24): centre c, inertia I about c; its centre moves at v + ω × c.
     const ChainBody& body = bodies[k];
+    // I x = R I⁰ Rᵀ x, turned by the motion's quaternion: cheaper than forming R I⁰ Rᵀ.
+    const Eigen::Quaterniond& r = motion.quaternion();
+    const auto inertia_times = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+      return r * (body.inertia * (r.conjugate() * x));
+    };
     const Eigen::Vector3d c = motion * body.centre_of_mass;
-    const Eigen::Matrix3d r = motion.rotation();
-    const Eigen::Matrix3d inertia = r * body.inertia * r.transpose();
     const Eigen::Vector3d v_c = v + w.cross(c);
     const Eigen::Vector3d a_c = a + alpha.cross(c) + w.cross(v_c);
     JointState& j = joints[k];
     j.axis = axis;
     j.point = point;
     j.force = body.mass * a_c;
-    j.moment = inertia * alpha + w.cross(inertia * w) + c.cross(j.force);
+    j.moment = inertia_times(alpha) + w.cross(inertia_times(w)) + c.cross(j.force);
     if (holding) {
       j.holding_force = body.mass * -gravity;
       j.holding_moment = c.cross(j.holding_force);

@@ -109,9 +109,13 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     JointSample sample;
     sample.time = t;
     sample.s = here.s;
-    // Newton from the previous instant's q moved on by its q̇ (first order): one step fewer.
+    // Newton from the previous instant's q moved on by its q̇ and q̈ (second order): one step
+    // from there reaches the tolerance.
     const JointSample* previous = k ? &report.samples.back() : nullptr;
-    if (previous) guess = q_prev + (t - previous->time) * previous->qd;
+    if (previous) {
+      const double dt = t - previous->time;
+      guess = q_prev + dt * previous->qd + (0.5 * dt * dt) * previous->qdd;
+    }
     sample.q = branch_solution(arm, here.pose, q_prev, t, here.s, previous ? &guess : nullptr);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
