@@ -21,13 +21,16 @@ struct JointState {
   Eigen::Vector3d force, moment, holding_force, holding_moment;
 };
 
-void newton_euler(const RevoluteChain& chain, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity,
-                  const double* q, const double* qd, const double* qdd, double* tau, double* holding, JointState* joints) {
+// Pass: calls its argument visit(i, ωᵢ′, pᵢ′, T₍≤ᵢ₎) for every joint, base to tip (chain_pass, or a
+// recorded pass at the same q).
+template <typename Pass>
+void newton_euler(int joint_count, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity, Pass&& pass,
+                  const double* qd, const double* qdd, double* tau, double* holding, JointState* joints) {
   // Base to tip (eq. 23): the spatial twist V = (v, ω) and its rate A = (a, α), starting from
   // A₀ = (−g, 0) so that gravity acts as an upward acceleration of the base.
   Eigen::Vector3d v = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
   Eigen::Vector3d a = -gravity, alpha = Eigen::Vector3d::Zero();
-  chain_pass(chain, q, [&](int i, const Eigen::Vector3d& axis, const Eigen::Vector3d& point, const Posed& motion) {
+  pass([&](int i, const Eigen::Vector3d& axis, const Eigen::Vector3d& point, const Posed& motion) {
     const auto k = static_cast<std::size_t>(i);
     const Eigen::Vector3d axis_v = point.cross(axis);  // the joint's twist ξᵢ′ = (pᵢ′ × ωᵢ′, ωᵢ′)
     v += qd[i] * axis_v;
@@ -59,7 +62,7 @@ void newton_euler(const RevoluteChain& chain, const std::vector<ChainBody>& bodi
   // that moment about the axis, taken about a point of the axis.
   Eigen::Vector3d f = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
   Eigen::Vector3d f_hold = Eigen::Vector3d::Zero(), n_hold = Eigen::Vector3d::Zero();
-  for (int i = chain.dof() - 1; i >= 0; --i) {
+  for (int i = joint_count - 1; i >= 0; --i) {
     const JointState& j = joints[static_cast<std::size_t>(i)];
     f += j.force;
     n += j.moment;
@@ -87,14 +90,27 @@ std::vector<ChainBody> chain_bodies(const std::vector<BodyInertia>& inertias, co
 void chain_torques(const RevoluteChain& chain, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity,
                    const double* q, const double* qd, const double* qdd, double* tau, double* holding) {
   constexpr std::size_t small = 16;
-  const auto n = static_cast<std::size_t>(chain.dof());
-  if (n <= small) {
+  const int n = chain.dof();
+  const auto pass = [&](auto&& visit) { chain_pass(chain, q, visit); };
+  if (static_cast<std::size_t>(n) <= small) {
     std::array<JointState, small> joints;
-    newton_euler(chain, bodies, gravity, q, qd, qdd, tau, holding, joints.data());
+    newton_euler(n, bodies, gravity, pass, qd, qdd, tau, holding, joints.data());
   } else {
-    std::vector<JointState> joints(n);
-    newton_euler(chain, bodies, gravity, q, qd, qdd, tau, holding, joints.data());
+    std::vector<JointState> joints(static_cast<std::size_t>(n));
+    newton_euler(n, bodies, gravity, pass, qd, qdd, tau, holding, joints.data());
   }
+}
+
+void chain_torques(const ChainPassRecord& record, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity,
+                   const double* qd, const double* qdd, double* tau, double* holding) noexcept {
+  const auto pass = [&](auto&& visit) {
+    for (int i = 0; i < record.joints; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      visit(i, record.axes[k], record.points[k], record.motions[k]);
+    }
+  };
+  std::array<JointState, max_recorded_joints> joints;
+  newton_euler(record.joints, bodies, gravity, pass, qd, qdd, tau, holding, joints.data());
 }
 
 }  // namespace detail

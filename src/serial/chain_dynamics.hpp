@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "chain_pass.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
@@ -32,6 +33,16 @@ std::vector<ChainBody> chain_bodies(const std::vector<BodyInertia>& inertias, co
 //! joint; `gravity` in base coordinates, m/s²). Allocation-free up to 16 joints.
 void chain_torques(const RevoluteChain& chain, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity,
                    const double* q, const double* qd, const double* qdd, double* tau, double* holding);
+
+//! The same at the q of `record` (a pass recorded by the body Jacobian at that q), without a
+//! second pass over the chain: the results are chain_torques' at that q bit for bit.
+void chain_torques(const ChainPassRecord& record, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity,
+                   const double* qd, const double* qdd, double* tau, double* holding) noexcept;
+
+//! SerialArm::torques(q, qd, qdd, tau, holding) at the q of `record` (recorded by the body
+//! Jacobian at q). Throws as SerialArm::torques.
+void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
+                      const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding);
 
 }  // namespace detail
 }  // namespace serial

@@ -36,14 +36,25 @@ void chain_pose_and_twist(const RevoluteChain& chain, const double* q, const dou
   body_twist = Twistd(r_inv * (v_s + w_s.cross(pose.translation())), r_inv * w_s);
 }
 
-Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
+namespace {
+
+// chain_jacobian, also filling `record` when it is not null.
+Posed jacobian_pass(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian,
+                    detail::ChainPassRecord* record) noexcept {
   // The same pass as chain_pose_and_twist, keeping ωᵢ′ (bottom rows) and pᵢ′ (top rows, until the
   // tool origin o is known and they become ωᵢ′ × (o − pᵢ′)).
   const int n = chain.dof();
-  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed&) {
+  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed& motion) {
     jacobian.block<3, 1>(3, i) = w;
     jacobian.block<3, 1>(0, i) = p;
+    if (record) {
+      const auto k = static_cast<std::size_t>(i);
+      record->axes[k] = w;
+      record->points[k] = p;
+      record->motions[k] = motion;
+    }
   });
+  if (record) record->joints = n;
   const Posed pose = t * chain.tip_at_zero;
   const Eigen::Vector3d& o = pose.translation();
   for (int i = 0; i < n; ++i) {
@@ -53,16 +64,37 @@ Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianR
   return pose;
 }
 
-Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
-  const Posed pose = chain_jacobian(chain, q, jacobian);
+// J_b = diag(Rᵀ, Rᵀ) J in place.
+void to_body(const Posed& pose, ChainJacobianRef jacobian, int n) noexcept {
   const Eigen::Matrix3d r_t = pose.rotation().transpose();
-  const int n = chain.dof();
   for (int i = 0; i < n; ++i) {
     jacobian.block<3, 1>(0, i) = r_t * jacobian.block<3, 1>(0, i).eval();
     jacobian.block<3, 1>(3, i) = r_t * jacobian.block<3, 1>(3, i).eval();
   }
+}
+
+}  // namespace
+
+Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
+  return jacobian_pass(chain, q, jacobian, nullptr);
+}
+
+Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept {
+  const Posed pose = jacobian_pass(chain, q, jacobian, nullptr);
+  to_body(pose, jacobian, chain.dof());
   return pose;
 }
+
+namespace detail {
+
+Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian,
+                          ChainPassRecord& record) noexcept {
+  const Posed pose = jacobian_pass(chain, q, jacobian, &record);
+  to_body(pose, jacobian, chain.dof());
+  return pose;
+}
+
+}  // namespace detail
 
 Twistd chain_velocity_product(const Eigen::Ref<const Eigen::Matrix<double, 6, Eigen::Dynamic>>& body_jacobian,
                               const double* qd) noexcept {

@@ -4,6 +4,7 @@
 // both see the same axes and motions to the last bit.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 #include <Eigen/Core>
@@ -31,6 +32,20 @@ inline Posed chain_pass(const RevoluteChain& chain, const double* q, Visit&& vis
   }
   return t;
 }
+
+//! A pass kept for later kernels at the same q (chain.dof() ≤ max_recorded_joints): what
+//! chain_pass visits, joint by joint, so that the torques after a Jacobian (chain_dynamics.hpp)
+//! need no second pass.
+constexpr int max_recorded_joints = 16;
+struct ChainPassRecord {
+  int joints = 0;
+  std::array<Eigen::Vector3d, max_recorded_joints> axes, points;
+  std::array<Posed, max_recorded_joints> motions;
+};
+
+//! chain_body_jacobian (chain_kinematics.hpp) that also fills `record`.
+Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, Eigen::Ref<Eigen::Matrix<double, 6, Eigen::Dynamic>> jacobian,
+                          ChainPassRecord& record) noexcept;
 
 }  // namespace detail
 }  // namespace serial

@@ -12,6 +12,8 @@
 #include <Eigen/LU>
 
 #include "branch_following.hpp"
+#include "chain_dynamics.hpp"
+#include "chain_pass.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
 
@@ -82,12 +84,17 @@ bool clears_singularity(const BodyJacobian& j, const Eigen::PartialPivLU<BodyJac
   return rcond >= singular_rcond;
 }
 
-// J_b(q) and its LU (partial pivoting: J_b is square and, where it is used, well conditioned);
-// throws naming the place near a singularity.
+// J_b(q) and its LU (partial pivoting: J_b is square and, where it is used, well conditioned),
+// recording the pass if `record` is not null; throws naming the place near a singularity.
 Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
-                                                      BodyJacobian& j, double t, double s) {
+                                                      BodyJacobian& j, double t, double s,
+                                                      serial::detail::ChainPassRecord* record = nullptr) {
   if (arm.dof() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()), "must be 6 to invert the Jacobian"));
-  serial::chain_body_jacobian(arm.chain(), q.data(), j);
+  if (record) {
+    serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
+  } else {
+    serial::chain_body_jacobian(arm.chain(), q.data(), j);
+  }
   Eigen::PartialPivLU<BodyJacobian> lu(j);
   double rcond = 0.0;
   if (!clears_singularity(j, lu, rcond)) {
@@ -105,13 +112,30 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
   return qd;
 }
 
-void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
-                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+namespace {
+
+void rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
+           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, serial::detail::ChainPassRecord* record) {
   BodyJacobian j;
-  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, j, t, s);
+  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, j, t, s, record);
   qd = lu.solve(body.vector());
   const Twistd product = serial::chain_velocity_product(j, qd.data());
   qdd = lu.solve(body_rate.vector() - product.vector());
+}
+
+}  // namespace
+
+void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
+                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+  rates(arm, q, body, body_rate, t, s, qd, qdd, nullptr);
+}
+
+void joint_rates_and_torques(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                             const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
+                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque) {
+  serial::detail::ChainPassRecord record;
+  rates(arm, q, body, body_rate, t, s, qd, qdd, &record);
+  serial::detail::recorded_torques(arm, record, qd, qdd, torque, static_torque);
 }
 
 }  // namespace detail

@@ -33,4 +33,10 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
 void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
                  double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd);
 
+//! joint_rates followed by the torques τ(q, q̇, q̈) and g(q) (SerialArm::torques) on the pass that
+//! gave J_b: one pass over the chain for all of them.
+void joint_rates_and_torques(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                             const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
+                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque);
+
 }  // namespace dispkin::detail

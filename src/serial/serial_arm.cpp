@@ -178,6 +178,16 @@ Eigen::VectorXd SerialArm::static_torques(const Eigen::VectorXd& q) const {
 
 namespace detail {
 
+void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
+                      const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding) {
+  arm.require_joint_vector(qd, "qd");
+  arm.require_joint_vector(qdd, "qdd");
+  arm.require_dynamics();
+  tau.resize(arm.dof());
+  holding.resize(arm.dof());
+  chain_torques(record, arm.model_->bodies, arm.gravity(), qd.data(), qdd.data(), tau.data(), holding.data());
+}
+
 Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                const Eigen::VectorXd& qdd) {
   // KDL's joints keep their last pose in mutable members (KDL::Joint::pose): a copy of the chain

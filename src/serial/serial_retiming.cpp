@@ -119,8 +119,11 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     sample.q = branch_solution(arm, here.pose, q_prev, t, here.s, previous ? &guess : nullptr);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
-      // q̇ and q̈ from one factorisation of J_b (eq. 27).
-      joint_rates(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s, sample.qd, sample.qdd);
+      // q̇ and q̈ from one factorisation of J_b (eq. 27), τ and g(q) on the pass that gave J_b.
+      Eigen::VectorXd torque;
+      detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s, sample.qd,
+                                      sample.qdd, torque, sample.static_torque);
+      sample.dynamic_torque = torque - sample.static_torque;
     } else {
       sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
       // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
@@ -137,11 +140,11 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
       } else {
         sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
       }
+      // τ and g(q) in one pass (eq. 3).
+      Eigen::VectorXd torque;
+      arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
+      sample.dynamic_torque = torque - sample.static_torque;
     }
-    // τ and g(q) in one pass (eq. 3).
-    Eigen::VectorXd torque;
-    arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
-    sample.dynamic_torque = torque - sample.static_torque;
 
     add_sample(report, std::move(sample), arm, limits, here.s);
     q_prev = report.samples.back().q;

@@ -72,6 +72,21 @@ TEST(Retiming, JointAccelerationsAreTheDerivativeOfTheJointVelocities) {
   }
 }
 
+// The check's torques are the arm's at its q, q̇, q̈ bit for bit (at most instants they come from
+// the pass that gave the body Jacobian, doc/retiming.md §8).
+TEST(Retiming, CheckedTorquesAreTheArmsTorques) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  const JointLimitReport r = check_joint_limits(plan(m.path, tool(), Limits{0.5, 4.0, std::nullopt}, ProfileKind::trapezoid),
+                                                arm, m.q_start);
+  ASSERT_GT(r.samples.size(), 20u);
+  for (const JointSample& sample : r.samples) {
+    EXPECT_EQ(sample.static_torque, arm.static_torques(sample.q)) << "t = " << sample.time;
+    const Eigen::VectorXd dynamic = arm.torques(sample.q, sample.qd, sample.qdd) - arm.static_torques(sample.q);
+    EXPECT_EQ(sample.dynamic_torque, dynamic) << "t = " << sample.time;
+  }
+}
+
 // A move that starts where the UR5e's wrist is singular (q₅ = 0: axes 4 and 6 aligned) is an
 // error naming the place, not joint speeds from a near-singular solve.
 TEST(Retiming, SingularJacobianIsAnErrorNamingThePlace) {
