@@ -19,7 +19,6 @@
 
 namespace dispkin {
 using detail::branch_solution;
-using detail::joint_rates;
 using detail::joint_velocity;
 using detail::where;
 
