@@ -2,12 +2,16 @@
 
 The move is example 05's UR5e LIN (350 mm, 30° turn, requested at 3 m/s and 400 m/s² for a tool
 ball). dispkin's optimal re-timing includes everything it does per call: planning the DISP
-trajectory, the IK of the joint path at the grid points (three per point: q, and q″ by central
-differences), the torque coefficients (three recursive Newton–Euler calls per point), the
+trajectory, the IK of the joint path at the grid points (one per point: q, with q′ and q″ in
+closed form), the torque coefficients (two recursive Newton–Euler passes per point), the
 reachability passes, and its dense check of the result (check_samples_between). toppra gets the
 joint path ready made (a cubic spline through 100 samples of the same q(s)) and computes its
 parameterisation on the same 100-interval grid; its time includes building the spline, the
 constraints and the solver.
+
+Times are CPU time of the calling thread (time.thread_time: dispkin releases the interpreter lock
+but computes on this thread), in alternating rounds (dispkin and toppra one after the other, round
+by round), medians per row; the last column is toppra's median over the row's.
 
 Usage:  .venv/bin/python benchmarks/retime_vs_toppra.py [repeats]
 """
@@ -73,13 +77,12 @@ def check():
     return dispkin.check_joint_limits(dispkin.plan(path, tool, fast, profile="trapezoid"), arm, q_start).velocity_factor
 
 
-def median_time(f, repeats):
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        value = f()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), value
+def cpu_time(f):
+    """CPU time of one call on this thread (s) and its value: the machine is shared, so wall time
+    would count other processes' turns."""
+    t0 = time.thread_time()
+    value = f()
+    return time.thread_time() - t0, value
 
 
 def main():
@@ -88,16 +91,34 @@ def main():
         ("check_joint_limits (samples_between=10)", check),
         ("retime scaling (velocity + torque)", scaling),
     ]
+    groups = []
     for with_torque, label in ((False, "velocity + acceleration"), (True, "velocity + torque")):
-        rows += [
+        groups.append([
             (f"dispkin optimal, {label}, dense check 3", lambda w=with_torque: ours(w, 3)),
             (f"dispkin optimal, {label}, check 0 (ends and middles only)", lambda w=with_torque: ours(w, 0)),
             (f"toppra, {label}", lambda w=with_torque: toppra_run(w)),
-        ]
-    print(f"{'what':62s} {'median':>10s} {'duration':>10s}")
-    for name, f in rows:
-        seconds, value = median_time(f, repeats)
-        print(f"{name:62s} {seconds * 1e3:8.2f} ms {value:10.5f}")
+        ])
+    rows += [row for group in groups for row in group]
+    # Alternating rounds: every row once per round, so that a slow spell of the machine falls on
+    # all of them alike; the median over the rounds per row.
+    times = {name: [] for name, _ in rows}
+    values = {}
+    for _ in range(repeats):
+        for name, f in rows:
+            seconds, values[name] = cpu_time(f)
+            times[name].append(seconds)
+    median = {name: statistics.median(times[name]) for name, _ in rows}
+    print(f"CPU time (time.thread_time), median of {repeats} alternating rounds")
+    print(f"{'what':70s} {'median':>10s} {'duration':>10s} {'toppra/this':>12s}")
+    for group in groups:
+        toppra_name = group[-1][0]
+        for name, _ in group:
+            ratio = median[toppra_name] / median[name]
+            print(f"{name:70s} {median[name] * 1e3:7.2f} ms {values[name]:10.5f} {ratio:11.2f}x")
+        ours_duration, toppra_duration = values[group[0][0]], values[toppra_name]
+        print(f"{'  duration vs toppra':70s} {100.0 * (ours_duration / toppra_duration - 1.0):+9.3f} %")
+    for name, _ in rows[:2]:
+        print(f"{name:70s} {median[name] * 1e3:7.2f} ms {values[name]:10.5f}")
 
 
 if __name__ == "__main__":

@@ -352,7 +352,7 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
              return to_vector_array(a.torques(joint_vector(q, "q"), joint_vector(qd, "qd"), joint_vector(qdd, "qdd")));
            },
            py::arg("q"), py::arg("qd"), py::arg("qdd"),
-           "(n,) joint torques M(q) qdd + C(q, qd) qd + g(q) (N m), recursive Newton-Euler (KDL).")
+           "(n,) joint torques M(q) qdd + C(q, qd) qd + g(q) (N m), recursive Newton-Euler.")
       .def("static_torques", [](const SerialArm& a, const py::object& q) { return to_vector_array(a.static_torques(joint_vector(q, "q"))); },
            py::arg("q"), "(n,) gravity torques g(q) = torques(q, 0, 0) (N m).")
       .def("configuration",

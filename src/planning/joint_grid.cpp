@@ -10,18 +10,29 @@
 namespace dispkin::detail {
 
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo,
-                     double hi, const Eigen::VectorXd& q_ref) {
-  auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* guess, Eigen::VectorXd& q,
+                     double hi, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess) {
+  auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* start, Eigen::VectorXd& q,
                         Eigen::VectorXd& q1) {
     Posed pose;
     Twistd per_sigma;
     path.state(at, pose, per_sigma);
-    model.joints(pose, per_sigma, reference, guess, at, q, q1);
+    model.joints(pose, per_sigma, reference, start, at, q, q1);
   };
   GridPoint p;
   p.sigma = sigma;
-  joint_path(sigma, q_ref, nullptr, p.q, p.q1);
   const double before = std::max(lo, sigma - h), after = std::min(hi, sigma + h);
+  // The pose's second derivative is continuous inside a section: there q″ comes with q′ (eq. 28).
+  if (sigma - h >= lo && sigma + h <= hi && path.section_at(sigma - h) == path.section_at(sigma + h)) {
+    Posed pose;
+    Twistd per_sigma;
+    path.state(sigma, pose, per_sigma);
+    if (model.joints_with_rate(pose, per_sigma, path.twist_rate(sigma), q_ref, guess, sigma, p.q, p.q1, p.q2)) {
+      model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+      return p;
+    }
+  } else {
+    joint_path(sigma, q_ref, guess, p.q, p.q1);
+  }
   // Predicted to first order, so that Newton needs a single step.
   const Eigen::VectorXd guess_before = p.q - (sigma - before) * p.q1, guess_after = p.q + (after - sigma) * p.q1;
   Eigen::VectorXd q_before, q1_before, q_after, q1_after;

@@ -22,11 +22,13 @@ struct GridPoint {
   Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity (empty: no dynamics)
 };
 
-//! The joint path at σ: q and q′ from the machine (on the branch of q_ref), q″ by central
-//! differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's ends are rests,
-//! where the path may turn a corner), and the torque coefficients (doc/retiming.md (eq. 12)).
+//! The joint path at σ: q and q′ from the machine (on the branch of q_ref, Newton from `guess` if
+//! not null), q″ in closed form (JointModel::joints_with_rate, doc/retiming.md (eq. 28)) where
+//! [σ − h, σ + h] lies inside [lo, hi] and one section, else (or where the machine has no closed
+//! form) by central differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's
+//! ends are rests, where the path may turn a corner), and the torque coefficients (eq. 12).
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
-                     const Eigen::VectorXd& q_ref);
+                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr);
 
 //! The joint limits at one grid point as half-planes in (u, x) = (σ̈, σ̇²), each limit multiplied by
 //! `scale` (doc/retiming.md (eq. 13)).

@@ -60,7 +60,7 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
                                           std::vector<detail::Run>& runs) {
   const std::vector<double>& rests = smooth.rests();
   std::vector<detail::GridPoint> grid;
-  Eigen::VectorXd q_ref = q_start;
+  Eigen::VectorXd q_ref = q_start, guess;
   for (std::size_t r = 0; r + 1 < rests.size(); ++r) {
     const double lo = rests[r], hi = rests[r + 1];
     if (!(hi > lo)) continue;
@@ -69,7 +69,13 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
     runs.push_back({grid.size(), count});
     for (std::size_t i = 0; i <= count; ++i) {
       const double sigma = i == count ? hi : lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(count);
-      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref));
+      // Inside a run, Newton starts from the previous point moved on by its q′ and q″ (second order).
+      const detail::GridPoint* previous = i ? &grid.back() : nullptr;
+      if (previous) {
+        const double step = sigma - previous->sigma;
+        guess = previous->q + step * previous->q1 + (0.5 * step * step) * previous->q2;
+      }
+      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr));
       q_ref = grid.back().q;
     }
   }
@@ -221,6 +227,13 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
 }
 
 }  // namespace
+
+bool JointModel::joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd&, const Eigen::VectorXd& q_ref,
+                                  const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1,
+                                  Eigen::VectorXd&) const {
+  joints(pose, per_sigma, q_ref, guess, s, q, q1);
+  return false;
+}
 
 std::optional<Trajectory> JointModel::scaled_scurve(const Path&, const MetricSetd&, const Limits&, const Eigen::VectorXd&,
                                                  double) const {

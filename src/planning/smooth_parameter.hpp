@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dispkin/planning/trajectory.hpp"
+#include "dispkin/planning/trajectory_acceleration.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin::detail {
@@ -48,6 +49,14 @@ class SmoothParameter {
     const double tau = ell_[k] > 0.0 ? std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0) : 0.0;
     planned_.path().section_state_at(k, tau, pose, per_sigma);
     per_sigma = per_sigma * (ell_[k] > 0.0 ? 1.0 / ell_[k] : 0.0);
+  }
+
+  //! The derivative per unit σ of that body twist (per σ²), inside section_at(σ).
+  Twistd twist_rate(double sigma) const noexcept {
+    const std::size_t k = section_at(sigma);
+    if (!(ell_[k] > 0.0)) return Twistd(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    const double tau = std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0);
+    return section_twist_rate(planned_.path().sections()[k], tau) * (1.0 / (ell_[k] * ell_[k]));
   }
 
   //! The DISP limits in σ over [σ0, σ1]: the lowest of the sections it touches.

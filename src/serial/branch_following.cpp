@@ -57,7 +57,12 @@ std::optional<Eigen::VectorXd> tracked(const SerialArm& arm, const Posed& pose, 
   settings.minimum_norm_when_singular = false;  // a free combination of joints: not one branch
   Eigen::VectorXd q = start;
   if (!(refine_pose(arm.chain(), pose, q.data(), settings).worst() <= tracking_tolerance)) return std::nullopt;
-  if (!in_rule_form(q, q_ref, arm.joint_limits(), rule)) return std::nullopt;
+  // The nearest-turn rule needs no limits: spare the copy of them on every tracked pose.
+  if (rule.turns == Turns::nearest) {
+    in_rule_form(q, q_ref, JointLimits{}, rule);
+  } else if (!in_rule_form(q, q_ref, arm.joint_limits(), rule)) {
+    return std::nullopt;
+  }
   if (!((q - q_ref).lpNorm<Eigen::Infinity>() <= tracking_reach)) return std::nullopt;
   return q;
 }

@@ -3,6 +3,8 @@
 // (joint_following.hpp).
 #include "joint_following.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,8 @@
 #include <Eigen/LU>
 
 #include "branch_following.hpp"
+#include "chain_dynamics.hpp"
+#include "chain_pass.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
 
@@ -27,17 +31,111 @@ Eigen::VectorXd branch_solution(const serial::SerialArm& arm, const Posed& pose,
   return std::move(*q);
 }
 
+namespace {
+
+using BodyJacobian = Eigen::Matrix<double, 6, 6>;
+
+// Below this reciprocal condition number (1-norm, Eigen's estimate) the arm counts as singular.
+constexpr double singular_rcond = 1e-10;
+
+// The largest column sum of |m|: the 1-norm.
+double norm_1(const BodyJacobian& m) { return m.cwiseAbs().colwise().sum().maxCoeff(); }
+
+// ‖L⁻¹‖₁ and ‖U⁻¹‖₁ of the factors packed in `lu` (L unit lower, U upper), column by column by
+// substitution (plain loops: Eigen's triangular solve with a matrix right-hand side takes its
+// blocked path, slower than the estimate it is meant to spare).
+void inverse_factor_norms(const BodyJacobian& lu, double& l_norm, double& u_norm) {
+  constexpr int n = 6;
+  l_norm = u_norm = 0.0;
+  for (int k = 0; k < n; ++k) {
+    double x[n] = {};
+    x[k] = 1.0;
+    double sum = 1.0;
+    for (int i = k + 1; i < n; ++i) {
+      double r = 0.0;
+      for (int c = k; c < i; ++c) r -= lu(i, c) * x[c];
+      x[i] = r;
+      sum += std::abs(r);
+    }
+    l_norm = std::max(l_norm, sum);
+    x[k] = 1.0 / lu(k, k);
+    sum = std::abs(x[k]);
+    for (int i = k - 1; i >= 0; --i) {
+      double r = 0.0;
+      for (int c = i + 1; c <= k; ++c) r -= lu(i, c) * x[c];
+      x[i] = r / lu(i, i);
+      sum += std::abs(x[i]);
+    }
+    u_norm = std::max(u_norm, sum);
+  }
+}
+
+// Whether J clears singular_rcond, Eigen's rcond estimate computed only near the threshold. With
+// J = P⁻¹ L U, ‖J⁻¹‖₁ ≤ ‖U⁻¹‖₁ ‖L⁻¹‖₁, and the estimate of ‖J⁻¹‖₁ is the norm of J⁻¹ applied
+// to a unit vector, never above the true one: where the bound 1 / (‖J‖₁ ‖U⁻¹‖₁ ‖L⁻¹‖₁) clears
+// the threshold (twice over, for rounding), so does the estimate, and the decision is the
+// estimate's either way. The two triangular inverses cost less than the estimate's iterations.
+bool clears_singularity(const BodyJacobian& j, const Eigen::PartialPivLU<BodyJacobian>& lu, double& rcond) {
+  double l_norm, u_norm;
+  inverse_factor_norms(lu.matrixLU(), l_norm, u_norm);
+  const double bound = 1.0 / (norm_1(j) * l_norm * u_norm);
+  if (bound >= 2.0 * singular_rcond) return true;  // false also for a NaN bound (a zero pivot)
+  rcond = lu.rcond();
+  return rcond >= singular_rcond;
+}
+
+// J_b(q) and its LU (partial pivoting: J_b is square and, where it is used, well conditioned),
+// recording the pass if `record` is not null; throws naming the place near a singularity.
+Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
+                                                      BodyJacobian& j, double t, double s,
+                                                      serial::detail::ChainPassRecord* record = nullptr) {
+  if (arm.dof() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()), "must be 6 to invert the Jacobian"));
+  if (record) {
+    serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
+  } else {
+    serial::chain_body_jacobian(arm.chain(), q.data(), j);
+  }
+  Eigen::PartialPivLU<BodyJacobian> lu(j);
+  double rcond = 0.0;
+  if (!clears_singularity(j, lu, rcond)) {
+    throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " + std::to_string(rcond) + ")");
+  }
+  return lu;
+}
+
+}  // namespace
+
 Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                                double t, double s) {
-  if (arm.dof() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()), "must be 6 to invert the Jacobian"));
-  Eigen::Matrix<double, 6, 6> j;
-  serial::chain_body_jacobian(arm.chain(), q.data(), j);
-  const Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(j);
-  if (lu.rcond() < 1e-10) {
-    throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " + std::to_string(lu.rcond()) + ")");
-  }
-  const Eigen::Matrix<double, 6, 1> qd = lu.solve(body.vector());
+  BodyJacobian j;
+  const Eigen::Matrix<double, 6, 1> qd = factorised_jacobian(arm, q, j, t, s).solve(body.vector());
   return qd;
+}
+
+namespace {
+
+void rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
+           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, serial::detail::ChainPassRecord* record) {
+  BodyJacobian j;
+  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, j, t, s, record);
+  qd = lu.solve(body.vector());
+  const Twistd product = serial::chain_velocity_product(j, qd.data());
+  qdd = lu.solve(body_rate.vector() - product.vector());
+}
+
+}  // namespace
+
+void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
+                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+  rates(arm, q, body, body_rate, t, s, qd, qdd, nullptr);
+}
+
+void joint_rates_and_torques(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+                             const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
+                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque) {
+  serial::detail::ChainPassRecord record;
+  rates(arm, q, body, body_rate, t, s, qd, qdd, &record);
+  serial::detail::recorded_torques(arm, record, qd, qdd, torque, static_torque);
 }
 
 }  // namespace detail

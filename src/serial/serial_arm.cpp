@@ -17,6 +17,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "chain_dynamics.hpp"
 #include "serial_arm_model.hpp"
 
 namespace dispkin {
@@ -49,6 +50,17 @@ RevoluteChain revolute_chain_of(const KDL::Chain& chain) {
   }
   out.tip_at_zero = to_pose(t);
   return out;
+}
+
+std::vector<Posed> link_frames_at_zero(const KDL::Chain& chain) {
+  std::vector<Posed> frames;
+  KDL::Frame t = KDL::Frame::Identity();
+  for (unsigned s = 0; s < chain.getNrOfSegments(); ++s) {
+    const KDL::Segment& seg = chain.getSegment(s);
+    t = t * seg.pose(0.0);
+    if (seg.getJoint().getType() != KDL::Joint::Fixed) frames.push_back(to_pose(t));
+  }
+  return frames;
 }
 
 SerialArm::SerialArm(std::shared_ptr<const Model> model) : model_(std::move(model)) {}
@@ -127,29 +139,35 @@ void SerialArm::set_gravity(const Eigen::Vector3d& gravity) {
   gravity_ = gravity;
 }
 
+void SerialArm::require_dynamics() const {
+  if (!model_->impossible_inertia.empty())
+    throw std::invalid_argument(model_->impossible_inertia + ": the torques of robot \"" + model_->robot_name +
+                                "\" need a rigid body's inertia on every link from base_link to tip_link");
+}
+
+// Recursive Newton–Euler on the product-of-exponentials chain (chain_dynamics.hpp): the pass of
+// forward() and jacobian(), no per-call solver or KDL chain (it matches KDL's ChainIdSolver_RNE to
+// rounding: test_serial_arm.cpp).
 Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const {
   require_joint_vector(q, "q");
   require_joint_vector(qd, "qd");
   require_joint_vector(qdd, "qdd");
-  if (!model_->impossible_inertia.empty())
-    throw std::invalid_argument(model_->impossible_inertia + ": the torques of robot \"" + model_->robot_name +
-                                "\" need a rigid body's inertia on every link from base_link to tip_link");
-  // KDL's joints keep their last pose in mutable members (KDL::Joint::pose), so one KDL chain
-  // used by two threads at once gives wrong torques: each thread works on its own copy of the
-  // chain, made once per arm model and thread (the copy holds the model, so that its address
-  // cannot come back as another arm's).
-  thread_local std::shared_ptr<const Model> copied_from;
-  thread_local KDL::Chain chain;
-  if (copied_from != model_) {
-    chain = model_->chain;
-    copied_from = model_;
-  }
-  KDL::ChainIdSolver_RNE solver(chain, KDL::Vector(gravity_.x(), gravity_.y(), gravity_.z()));
-  const KDL::Wrenches no_external(chain.getNrOfSegments(), KDL::Wrench::Zero());
-  KDL::JntArray tau(static_cast<unsigned>(dof()));
-  if (solver.CartToJnt(to_jnt_array(q), to_jnt_array(qd), to_jnt_array(qdd), no_external, tau) < 0)
-    throw std::runtime_error("torques: KDL ChainIdSolver_RNE failed");
-  return tau.data;
+  require_dynamics();
+  Eigen::VectorXd tau(dof());
+  detail::chain_torques(model_->revolute, model_->bodies, gravity_, q.data(), qd.data(), qdd.data(), tau.data(), nullptr);
+  return tau;
+}
+
+void SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd,
+                        Eigen::VectorXd& tau, Eigen::VectorXd& holding) const {
+  require_joint_vector(q, "q");
+  require_joint_vector(qd, "qd");
+  require_joint_vector(qdd, "qdd");
+  require_dynamics();
+  tau.resize(dof());
+  holding.resize(dof());
+  detail::chain_torques(model_->revolute, model_->bodies, gravity_, q.data(), qd.data(), qdd.data(), tau.data(),
+                        holding.data());
 }
 
 Eigen::VectorXd SerialArm::static_torques(const Eigen::VectorXd& q) const {
@@ -157,6 +175,34 @@ Eigen::VectorXd SerialArm::static_torques(const Eigen::VectorXd& q) const {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dof());
   return torques(q, zero, zero);
 }
+
+namespace detail {
+
+void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
+                      const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding) {
+  arm.require_joint_vector(qd, "qd");
+  arm.require_joint_vector(qdd, "qdd");
+  arm.require_dynamics();
+  tau.resize(arm.dof());
+  holding.resize(arm.dof());
+  chain_torques(record, arm.model_->bodies, arm.gravity(), qd.data(), qdd.data(), tau.data(), holding.data());
+}
+
+Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                               const Eigen::VectorXd& qdd) {
+  // KDL's joints keep their last pose in mutable members (KDL::Joint::pose): a copy of the chain
+  // per call keeps this thread-safe (it is a reference for tests, not on any hot path).
+  KDL::Chain chain = arm.model_->chain;
+  const Eigen::Vector3d& g = arm.gravity();
+  KDL::ChainIdSolver_RNE solver(chain, KDL::Vector(g.x(), g.y(), g.z()));
+  const KDL::Wrenches no_external(chain.getNrOfSegments(), KDL::Wrench::Zero());
+  KDL::JntArray tau(static_cast<unsigned>(arm.dof()));
+  if (solver.CartToJnt(to_jnt_array(q), to_jnt_array(qd), to_jnt_array(qdd), no_external, tau) < 0)
+    throw std::runtime_error("torques: KDL ChainIdSolver_RNE failed");
+  return tau.data;
+}
+
+}  // namespace detail
 
 Configuration SerialArm::configuration(const Eigen::VectorXd& q) const {
   require(dof() == 6, "dof", dof(), "configuration flags are defined for 6R arms");

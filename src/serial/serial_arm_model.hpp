@@ -14,6 +14,7 @@
 #include "dispkin/serial/analytic_ik.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
 #include "dispkin/serial/serial_arm.hpp"
+#include "chain_dynamics.hpp"
 
 namespace dispkin {
 namespace serial {
@@ -30,6 +31,8 @@ struct SerialArm::Model {
   // Empty, or why a link of the chain has no rigid body's inertia (named): the dynamics refuse
   // such a model, kinematics do not need the inertias.
   std::string impossible_inertia;
+  // The same bodies placed at q = 0 in base coordinates, for the torques (chain_dynamics.hpp).
+  std::vector<detail::ChainBody> bodies;
   RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
   IkFamily family = IkFamily::general;
   // Configuration flags, base coordinates at q = 0: the point of axis 4 nearest to axis 5
@@ -67,6 +70,9 @@ bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexc
 
 // The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.
 RevoluteChain revolute_chain_of(const KDL::Chain& chain);
+
+// The frame of each movable joint's segment tip (its child link) at q = 0, base coordinates.
+std::vector<Posed> link_frames_at_zero(const KDL::Chain& chain);
 
 }  // namespace serial
 }  // namespace dispkin

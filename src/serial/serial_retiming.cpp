@@ -14,6 +14,7 @@
 #include <Eigen/LU>
 
 #include "dispkin/error.hpp"
+#include "dispkin/planning/trajectory_acceleration.hpp"
 #include "joint_following.hpp"
 
 namespace dispkin {
@@ -64,6 +65,29 @@ void add_sample(JointLimitReport& report, JointSample sample, const serial::Seri
   report.samples.push_back(std::move(sample));
 }
 
+// The phase of `law` running at t: its piece and the phase within it.
+std::pair<std::size_t, int> phase_at(const TimeLaw& law, double t) noexcept {
+  const std::size_t piece = law.piece_at(t, law.size());
+  const TimeLaw::Piece& p = law.pieces()[piece];
+  int phase = 0;
+  while (phase + 1 < p.profile.phase_count() && p.profile.phase_start_time(phase + 1) <= t - p.start_time) ++phase;
+  return {piece, phase};
+}
+
+// Whether the tool's acceleration is continuous on [t0, t1]: one phase of one law (the
+// acceleration of a trapezoid steps between phases) and one section of the path (the pose's
+// second derivative steps at a junction). Only there is q̈ taken in closed form (doc/retiming.md
+// (eq. 27)); across a step the central difference of (eq. 2) stays, as the check has always
+// measured it.
+bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1) noexcept {
+  const TimeLaw& law = trajectory.time_law();
+  if (phase_at(law, t0) != phase_at(law, t1)) return false;
+  std::size_t piece = law.size();
+  const double s0 = law.state_at(t0, piece).s, s1 = law.state_at(t1, piece).s;
+  const SampledPath& path = trajectory.path();
+  return path.section_at(s0, path.section_count()) == path.section_at(s1, path.section_count());
+}
+
 }  // namespace
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
@@ -74,33 +98,52 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
   require_finite(q_start, "q_start");
   const JointLimits limits = arm.joint_limits();
   JointLimitReport report;
+  report.samples.reserve(times.size());
   const double duration = trajectory.duration();
   const double h = options.difference_step;
-  Eigen::VectorXd q_prev = q_start;
-  for (const double t : times) {
+  Eigen::VectorXd q_prev = q_start, guess;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const double t = times[k];
     const TrajectorySample here = trajectory.sample(t);
     JointSample sample;
     sample.time = t;
     sample.s = here.s;
-    sample.q = branch_solution(arm, here.pose, q_prev, t, here.s);
-    sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
-    // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
-    const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
-    if (t_after > t_before) {
-      const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
-      // Predicted to first order, so that Newton needs a single step.
-      const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
-      const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
-      const Eigen::VectorXd q_before = branch_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
-      const Eigen::VectorXd q_after = branch_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
-      sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
-                    joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
-                   (t_after - t_before);
-    } else {
-      sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
+    // Newton from the previous instant's q moved on by its q̇ and q̈ (second order): one step
+    // from there reaches the tolerance.
+    const JointSample* previous = k ? &report.samples.back() : nullptr;
+    if (previous) {
+      const double dt = t - previous->time;
+      guess = q_prev + dt * previous->qd + (0.5 * dt * dt) * previous->qdd;
     }
-    sample.static_torque = arm.static_torques(sample.q);
-    sample.dynamic_torque = arm.torques(sample.q, sample.qd, sample.qdd) - sample.static_torque;
+    sample.q = branch_solution(arm, here.pose, q_prev, t, here.s, previous ? &guess : nullptr);
+    const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
+    if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
+      // q̇ and q̈ from one factorisation of J_b (eq. 27), τ and g(q) on the pass that gave J_b.
+      Eigen::VectorXd torque;
+      detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s, sample.qd,
+                                      sample.qdd, torque, sample.static_torque);
+      sample.dynamic_torque = torque - sample.static_torque;
+    } else {
+      sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
+      // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
+      if (t_after > t_before) {
+        const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
+        // Predicted to first order, so that Newton needs a single step.
+        const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
+        const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
+        const Eigen::VectorXd q_before = branch_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
+        const Eigen::VectorXd q_after = branch_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
+        sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
+                      joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
+                     (t_after - t_before);
+      } else {
+        sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
+      }
+      // τ and g(q) in one pass (eq. 3).
+      Eigen::VectorXd torque;
+      arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
+      sample.dynamic_torque = torque - sample.static_torque;
+    }
 
     add_sample(report, std::move(sample), arm, limits, here.s);
     q_prev = report.samples.back().q;
@@ -123,8 +166,9 @@ JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const ser
     sample.q = here.q;
     sample.qd = here.qd;
     sample.qdd = here.qdd;
-    sample.static_torque = arm.static_torques(sample.q);
-    sample.dynamic_torque = arm.torques(sample.q, sample.qd, sample.qdd) - sample.static_torque;
+    Eigen::VectorXd torque;
+    arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
+    sample.dynamic_torque = torque - sample.static_torque;
     add_sample(report, std::move(sample), arm, limits, here.s);
   }
   return report;
@@ -212,13 +256,23 @@ class SerialModel final : public JointModel {
     q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
     q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
   }
+  bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate, const Eigen::VectorXd& q_ref,
+                        const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1,
+                        Eigen::VectorXd& q2) const override {
+    constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
+    q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
+    // q′ and q″ from one factorisation of J_b (doc/retiming.md (eq. 28)).
+    detail::joint_rates(arm_, q, per_sigma, per_sigma_rate, no_time, s, q1, q2);
+    return true;
+  }
   void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
                            Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const override {
-    // g = τ(q, 0, 0), M q′ = τ(q, 0, q′) − g, M q″ + C(q, q′) q′ = τ(q, q′, q″) − g (doc/retiming.md).
+    // g = τ(q, 0, 0), M q′ = τ(q, 0, q′) − g, M q″ + C(q, q′) q′ = τ(q, q′, q″) − g (doc/retiming.md
+    // (eq. 12)); g comes with the last of them, from the same pass.
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
-    gravity = arm_.static_torques(q);
+    arm_.torques(q, q1, q2, torque_x, gravity);
     torque_u = arm_.torques(q, zero, q1) - gravity;
-    torque_x = arm_.torques(q, q1, q2) - gravity;
+    torque_x -= gravity;
   }
   JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const override {
     JointCheckOptions options;

@@ -363,6 +363,7 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
     }
     model->inertias.push_back(to_body_inertia(body));
   }
+  model->bodies = detail::chain_bodies(model->inertias, link_frames_at_zero(model->chain));
 
   model->revolute = revolute_chain_of(model->chain);
   model->family = recognise(model->revolute);

@@ -2,6 +2,10 @@
 // through a preset working track") on a UR5e (doc/retiming.md §1–3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include <dispkin/hexapod/hexapod_retiming.hpp>
 #include <dispkin/serial/serial_retiming.hpp>
 #include <dispkin/shapes.hpp>
@@ -37,6 +41,63 @@ TEST(Retiming, JointVelocitiesAreTheDerivativeOfTheJointPath) {
     const Eigen::VectorXd numeric = (b.q - a.q) / (b.time - a.time);
     ASSERT_LE((numeric - r.samples[k].qd).norm(), 2e-2 * (1 + numeric.norm())) << "t = " << r.samples[k].time;
   }
+}
+
+// Its joint accelerations (in closed form away from the steps of the time law, doc/retiming.md
+// (eq. 27), by differences at them) are the derivatives of its joint velocities.
+TEST(Retiming, JointAccelerationsAreTheDerivativeOfTheJointVelocities) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  for (const ProfileKind profile : {ProfileKind::scurve, ProfileKind::trapezoid}) {
+    const Limits limits{0.2, 1.0, profile == ProfileKind::scurve ? std::optional<double>(10.0) : std::nullopt};
+    const Trajectory traj = plan(m.path, tool(), limits, profile);
+    JointCheckOptions options;
+    options.samples_between = 40;
+    const JointLimitReport r = check_joint_limits(traj, arm, m.q_start, options);
+    const std::vector<double> marks = traj.characteristic_times();
+    int compared = 0;
+    for (std::size_t k = 1; k + 1 < r.samples.size(); ++k) {
+      const JointSample &a = r.samples[k - 1], &b = r.samples[k + 1];
+      // Only where no step of the acceleration lies between the neighbours: a phase boundary
+      // of the time law or a section junction (a rotating LIN is cut into sections).
+      const auto step = std::lower_bound(marks.begin(), marks.end(), a.time);
+      if (step != marks.end() && *step <= b.time) continue;
+      const SampledPath& sections = traj.path();
+      if (sections.section_at(a.s, sections.section_count()) != sections.section_at(b.s, sections.section_count())) continue;
+      const Eigen::VectorXd numeric = (b.qd - a.qd) / (b.time - a.time);
+      ASSERT_LE((numeric - r.samples[k].qdd).norm(), 2e-2 * (1 + numeric.norm())) << "t = " << r.samples[k].time;
+      ++compared;
+    }
+    EXPECT_GT(compared, 100);
+  }
+}
+
+// The check's torques are the arm's at its q, q̇, q̈ bit for bit (at most instants they come from
+// the pass that gave the body Jacobian, doc/retiming.md §8).
+TEST(Retiming, CheckedTorquesAreTheArmsTorques) {
+  const serial::SerialArm arm = ur5e();
+  const Move m = lin_move(arm);
+  const JointLimitReport r = check_joint_limits(plan(m.path, tool(), Limits{0.5, 4.0, std::nullopt}, ProfileKind::trapezoid),
+                                                arm, m.q_start);
+  ASSERT_GT(r.samples.size(), 20u);
+  for (const JointSample& sample : r.samples) {
+    EXPECT_EQ(sample.static_torque, arm.static_torques(sample.q)) << "t = " << sample.time;
+    const Eigen::VectorXd dynamic = arm.torques(sample.q, sample.qd, sample.qdd) - arm.static_torques(sample.q);
+    EXPECT_EQ(sample.dynamic_torque, dynamic) << "t = " << sample.time;
+  }
+}
+
+// A move that starts where the UR5e's wrist is singular (q₅ = 0: axes 4 and 6 aligned) is an
+// error naming the place, not joint speeds from a near-singular solve.
+TEST(Retiming, SingularJacobianIsAnErrorNamingThePlace) {
+  const serial::SerialArm arm = ur5e();
+  Eigen::VectorXd q(6);
+  q << 0.3, -1.2, 1.5, -1.9, 0.0, 0.2;
+  const Posed a = arm.forward(q);
+  const Path path = Path::lin(a, Posed(a.quaternion(), a.translation() + V(0.05, 0.02, 0.0)));
+  const std::string message = runtime_message_of([&] { check_joint_limits(plan(path, tool(), Limits{0.2, 1.0, 10.0}), arm, q); });
+  EXPECT_NE(message.find("singular"), std::string::npos) << message;
+  EXPECT_NE(message.find("t = 0"), std::string::npos) << message;
 }
 
 // Dense re-check of a re-timed trajectory: 400 samples between characteristic points.

@@ -14,6 +14,7 @@
 
 #include <Eigen/Geometry>
 
+#include <dispkin/serial/chain_kinematics.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 
 #include "random_cases.hpp"
@@ -272,6 +273,95 @@ TEST(SerialArmDynamics, Ur5eStaticTorquesAreTheZeroVelocityTorques) {
   }
 }
 
+// Every arm of tests/data/urdf with a dynamics model, with random states.
+std::vector<SerialArm> arms_with_dynamics() {
+  return {planar("link2"), planar("payload"), ur5e(),
+          SerialArm::from_urdf_file(urdf_dir + "arm_kr6_like_dh.urdf", "base_link", "flange")};
+}
+
+Eigen::VectorXd random_vector(Random& random, int n, double scale) {
+  Eigen::VectorXd x(n);
+  for (int i = 0; i < n; ++i) x(i) = random.uniform(-scale, scale);
+  return x;
+}
+
+TEST(SerialArmDynamics, TorquesAreKdlsRecursiveNewtonEuler) {
+  // The torques run recursive Newton–Euler on the product-of-exponentials chain; KDL's
+  // ChainIdSolver_RNE on the KDL chain (fixed segments and all) is the reference.
+  Random random(620);
+  for (SerialArm arm : arms_with_dynamics()) {
+    for (const Eigen::Vector3d& gravity : {Eigen::Vector3d(0, 0, -9.81), Eigen::Vector3d(1.5, -2.0, -9.0)}) {
+      arm.set_gravity(gravity);
+      for (int k = 0; k < 200; ++k) {
+        const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, arm.dof(), 3.0),
+                              qdd = random_vector(random, arm.dof(), 20.0);
+        const Eigen::VectorXd kdl = detail::torques_by_kdl(arm, q, qd, qdd);
+        EXPECT_LE((arm.torques(q, qd, qdd) - kdl).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + kdl.cwiseAbs().maxCoeff()))
+            << arm.robot_name() << " q " << q.transpose();
+        const Eigen::VectorXd zero = Eigen::VectorXd::Zero(arm.dof());
+        const Eigen::VectorXd kdl_static = detail::torques_by_kdl(arm, q, zero, zero);
+        EXPECT_LE((arm.static_torques(q) - kdl_static).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + kdl_static.cwiseAbs().maxCoeff()))
+            << arm.robot_name();
+      }
+    }
+  }
+}
+
+TEST(SerialArmDynamics, OnePassGivesTheTorqueAndTheStaticTorqueBitForBit) {
+  Random random(621);
+  for (const SerialArm& arm : arms_with_dynamics()) {
+    for (int k = 0; k < 50; ++k) {
+      const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, arm.dof(), 3.0),
+                            qdd = random_vector(random, arm.dof(), 20.0);
+      Eigen::VectorXd tau, holding;
+      arm.torques(q, qd, qdd, tau, holding);
+      EXPECT_EQ(tau, arm.torques(q, qd, qdd));
+      EXPECT_EQ(holding, arm.static_torques(q));
+    }
+  }
+}
+
+TEST(SerialArmDynamics, JointPowerIsTheRateOfKineticPlusPotentialEnergy) {
+  // Along q(t) = q + t q̇ + t²/2 q̈ the joints' power q̇ᵀτ is d/dt of the kinetic energy
+  // ½ q̇ᵀ M(q) q̇ plus the potential's rate q̇ᵀ g(q); M's columns are τ(q, 0, eₖ) − g(q). The
+  // Coriolis and centripetal terms do no work, so this checks them against M.
+  Random random(622);
+  for (const SerialArm& arm : arms_with_dynamics()) {
+    const int n = arm.dof();
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+    auto kinetic_energy = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+      const Eigen::VectorXd g = arm.static_torques(q);
+      Eigen::MatrixXd m(n, n);
+      for (int k = 0; k < n; ++k) m.col(k) = arm.torques(q, zero, Eigen::VectorXd::Unit(n, k)) - g;
+      return 0.5 * qd.dot(m * qd);
+    };
+    for (int k = 0; k < 50; ++k) {
+      const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, n, 2.0), qdd = random_vector(random, n, 10.0);
+      const double h = 1e-5;
+      auto energy_at = [&](double t) { return kinetic_energy(q + t * qd + 0.5 * t * t * qdd, qd + t * qdd); };
+      const double kinetic_rate = (energy_at(h) - energy_at(-h)) / (2.0 * h);
+      const double power = qd.dot(arm.torques(q, qd, qdd));
+      const double potential_rate = qd.dot(arm.static_torques(q));
+      EXPECT_NEAR(power, kinetic_rate + potential_rate, 1e-6 * (1.0 + std::abs(power))) << arm.robot_name();
+    }
+  }
+}
+
+TEST(SerialArmKinematics, VelocityProductIsTheRateOfTheBodyJacobian) {
+  // J̇_b(q, q̇) q̇ against a central difference of J_b along q̇.
+  Random random(623);
+  for (const SerialArm& arm : {ur5e(), planar("payload")}) {
+    for (int k = 0; k < 50; ++k) {
+      const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, arm.dof(), 2.0);
+      const double h = 1e-5;
+      const Eigen::Matrix<double, 6, 1> expected =
+          (arm.body_jacobian(q + h * qd) - arm.body_jacobian(q - h * qd)) / (2.0 * h) * qd;
+      const Eigen::Matrix<double, 6, Eigen::Dynamic> jb = arm.body_jacobian(q);
+      EXPECT_LE((chain_velocity_product(jb, qd.data()).vector() - expected).cwiseAbs().maxCoeff(), 1e-7) << arm.robot_name();
+    }
+  }
+}
+
 TEST(SerialArmInverse, PlanarNumericFallbackFindsTheOneSolution) {
   // A full pose fixes q₁ + q₂ (the tool's angle) and then the position fixes q₁: one solution,
   // and the continuous elbow has no 2π copies.
@@ -391,7 +481,7 @@ TEST(SerialArmInverse, Ur5eSolutionsReproduceThePoseAndTheTwoPiCopiesOnRequest) 
 TEST(SerialArmDynamics, TorquesFromTwoThreadsAreThoseOfOne) {
   // KDL's joints keep their last pose in mutable members: two threads sharing one KDL chain got
   // each other's joint poses and wrong torques (seen as different re-timing reports from Python
-  // threads). Each thread works on its own copy of the chain now.
+  // threads). The torques keep no state now (chain_dynamics.cpp); this keeps it so.
   const SerialArm arm = ur5e();
   Random random(615);
   std::vector<std::array<Eigen::VectorXd, 3>> states;

@@ -143,6 +143,12 @@ class JointModel {
   //! no solution or the machine is singular.
   virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
                       double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
+  //! joints() and q″ = d²q/dσ² for the derivative `per_sigma_rate` of the body twist per unit of
+  //! path, in closed form (doc/retiming.md (eq. 28)): true. The default calls joints() and returns
+  //! false, leaving q″ alone: the re-timing then takes it by central differences of q′.
+  virtual bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate,
+                                const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q,
+                                Eigen::VectorXd& q1, Eigen::VectorXd& q2) const;
   //! The torque along the path is τ = torque_u σ̈ + torque_x σ̇² + gravity, from q, q′ and q″
   //! (doc/retiming.md); all three are left empty without a dynamics model.
   virtual void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,

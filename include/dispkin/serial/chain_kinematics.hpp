@@ -45,5 +45,12 @@ Posed chain_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianR
 //! J_b(q) = diag(Rᵀ, Rᵀ) J(q), the body Jacobian: the same twist in tool coordinates. Returns T(q).
 Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, ChainJacobianRef jacobian) noexcept;
 
+//! J̇_b(q, q̇) q̇: the part of the tool's body acceleration ξ̇_b = J_b q̈ + J̇_b q̇ that the joint
+//! velocities alone give, from the body Jacobian J_b(q) (chain_body_jacobian) and q̇. Column i of
+//! J_b moves with the joints before it, dJ_b,i/dt = [Σ_{j<i} J_b,j q̇_j, J_b,i] (a Lie bracket of
+//! twists), so no second pass over the chain is needed (doc/retiming.md (eq. 26)).
+Twistd chain_velocity_product(const Eigen::Ref<const Eigen::Matrix<double, 6, Eigen::Dynamic>>& body_jacobian,
+                              const double* qd) noexcept;
+
 }  // namespace serial
 }  // namespace dispkin

@@ -1,6 +1,7 @@
-//! The serial-arm plugin: a chain of revolute joints read from a URDF (urdfdom), held as an
-//! Orocos KDL chain for the dynamics and in product-of-exponentials form (chain()) for forward
-//! kinematics and the Jacobian (chain_kinematics.hpp), and solved for all inverse-kinematics
+//! The serial-arm plugin: a chain of revolute joints read from a URDF (urdfdom) into an Orocos
+//! KDL chain, held in product-of-exponentials form (chain()) for forward kinematics, the
+//! Jacobian (chain_kinematics.hpp) and the torques (recursive Newton–Euler on the same pass),
+//! and solved for all inverse-kinematics
 //! solutions by the analytic families of analytic_ik.hpp (or by a numeric search when no
 //! family fits).
 //!
@@ -91,6 +92,18 @@ struct InverseResult {
 //! translation (m), as Pose::is_approx.
 constexpr double inverse_tolerance = 1e-10;
 
+class SerialArm;
+
+namespace detail {
+struct ChainPassRecord;
+void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
+                      const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding);
+//! KDL's ChainIdSolver_RNE on the arm's KDL chain: the reference SerialArm::torques is tested
+//! against (not on any hot path: it copies the chain per call).
+Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                               const Eigen::VectorXd& qdd);
+}  // namespace detail
+
 //! A serial arm of revolute joints between a base link and a tip link of a URDF.
 //!
 //! Immutable after loading except for gravity; copies share the chain.
@@ -150,11 +163,16 @@ class SerialArm : public Kinematics {
   //! The body Jacobian: the same twist in tip coordinates, the (v, ω) of dispkin::Twist.
   Eigen::MatrixXd body_jacobian(const Eigen::VectorXd& q) const;
 
-  //! Joint torques τ = M(q) q̈ + C(q, q̇) q̇ + g(q) (N·m) by KDL's recursive Newton–Euler
-  //! (ChainIdSolver_RNE), no external wrenches. Throws std::invalid_argument naming the link
-  //! when a link of the chain has an inertia no rigid body has (not positive semidefinite, or
-  //! breaking the triangle inequality): such a URDF loads for kinematics only.
+  //! Joint torques τ = M(q) q̈ + C(q, q̇) q̇ + g(q) (N·m) by recursive Newton–Euler on chain()
+  //! (the pass of forward() and jacobian(); it agrees with KDL's ChainIdSolver_RNE to rounding),
+  //! no external wrenches. Throws std::invalid_argument naming the link when a link of the chain
+  //! has an inertia no rigid body has (not positive semidefinite, or breaking the triangle
+  //! inequality): such a URDF loads for kinematics only.
   Eigen::VectorXd torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const;
+  //! τ(q, q̇, q̈) into `tau` and the static part g(q) (static_torques(q), bit for bit) into
+  //! `holding`, in one pass: what a joint-limit check needs at each instant. Throws as torques().
+  void torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd, Eigen::VectorXd& tau,
+               Eigen::VectorXd& holding) const;
   //! The static part g(q) = torques(q, 0, 0): what holding the arm still costs.
   Eigen::VectorXd static_torques(const Eigen::VectorXd& q) const;
 
@@ -178,6 +196,11 @@ class SerialArm : public Kinematics {
   struct Model;
   explicit SerialArm(std::shared_ptr<const Model> model);
   void require_joint_vector(const Eigen::VectorXd& q, const char* name) const;
+  void require_dynamics() const;
+  friend void detail::recorded_torques(const SerialArm&, const detail::ChainPassRecord&, const Eigen::VectorXd&,
+                                       const Eigen::VectorXd&, Eigen::VectorXd&, Eigen::VectorXd&);
+  friend Eigen::VectorXd detail::torques_by_kdl(const SerialArm&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                                const Eigen::VectorXd&);
 
   std::shared_ptr<const Model> model_;
   Eigen::Vector3d gravity_{0.0, 0.0, -9.81};
