@@ -27,6 +27,7 @@ import toppra.algorithm
 import toppra.constraint
 
 import dispkin
+from cpu_rounds import alternating_rounds
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 arm = dispkin.SerialArm.from_urdf(str(ROOT / "tests/data/urdf/arm_ur5e_dh.urdf"), "base_link", "tool0")
@@ -77,12 +78,13 @@ def check():
     return dispkin.check_joint_limits(dispkin.plan(path, tool, fast, profile="trapezoid"), arm, q_start).velocity_factor
 
 
-def cpu_time(f):
-    """CPU time of one call on this thread (s) and its value: the machine is shared, so wall time
-    would count other processes' turns."""
-    t0 = time.thread_time()
-    value = f()
-    return time.thread_time() - t0, value
+def timed(f, values, name):
+    """A block: one call of f on this thread, its value kept in values[name]; its CPU time (s)."""
+    def block():
+        start = time.thread_time()
+        values[name] = f()
+        return time.thread_time() - start
+    return block
 
 
 def main():
@@ -99,14 +101,11 @@ def main():
             (f"toppra, {label}", lambda w=with_torque: toppra_run(w)),
         ])
     rows += [row for group in groups for row in group]
-    # Alternating rounds: every row once per round, so that a slow spell of the machine falls on
-    # all of them alike; the median over the rounds per row.
-    times = {name: [] for name, _ in rows}
+    # Alternating rounds (cpu_rounds.py): every row once per round, starting from another row
+    # each round, so that a slow spell of the machine falls on all of them alike; the median over
+    # the rounds per row.
     values = {}
-    for _ in range(repeats):
-        for name, f in rows:
-            seconds, values[name] = cpu_time(f)
-            times[name].append(seconds)
+    times = alternating_rounds({name: timed(f, values, name) for name, f in rows}, repeats)
     median = {name: statistics.median(times[name]) for name, _ in rows}
     print(f"CPU time (time.thread_time), median of {repeats} alternating rounds")
     print(f"{'what':70s} {'median':>10s} {'duration':>10s} {'toppra/this':>12s}")
