@@ -26,9 +26,14 @@ constexpr double tracking_reach = 0.3;
 
 // q (a solution) in the form `rule` gives its candidates, nearest to q_ref. False when that form
 // is not a candidate (outside the limits while they are required).
+// q moved by whole turns, joint by joint, to the copy nearest q_ref (the nearest-turn rule's form).
+void nearest_turns(Eigen::VectorXd& q, const Eigen::VectorXd& q_ref) {
+  for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += two_pi * std::round((q_ref(i) - q(i)) / two_pi);
+}
+
 bool in_rule_form(Eigen::VectorXd& q, const Eigen::VectorXd& q_ref, const JointLimits& limits, const BranchRule& rule) {
   if (rule.turns == Turns::nearest) {
-    for (Eigen::Index i = 0; i < q.size(); ++i) q(i) += two_pi * std::round((q_ref(i) - q(i)) / two_pi);
+    nearest_turns(q, q_ref);
     return true;
   }
   const bool inside = into_limits(q, limits);
@@ -57,9 +62,9 @@ std::optional<Eigen::VectorXd> tracked(const SerialArm& arm, const Posed& pose, 
   settings.minimum_norm_when_singular = false;  // a free combination of joints: not one branch
   Eigen::VectorXd q = start;
   if (!(refine_pose(arm.chain(), pose, q.data(), settings).worst() <= tracking_tolerance)) return std::nullopt;
-  // The nearest-turn rule needs no limits: spare the copy of them on every tracked pose.
+  // The nearest-turn rule needs no limits: spare the copy arm.joint_limits() makes on every tracked pose.
   if (rule.turns == Turns::nearest) {
-    in_rule_form(q, q_ref, JointLimits{}, rule);
+    nearest_turns(q, q_ref);
   } else if (!in_rule_form(q, q_ref, arm.joint_limits(), rule)) {
     return std::nullopt;
   }
