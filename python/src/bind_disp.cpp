@@ -29,7 +29,7 @@ Twistd checked_twist(const py::object& twist) {
 
 double distance(const MetricSetd& set, const Posed& a, const Posed& b, const std::string& norm,
                 OptionalSpeed system_velocity) {
-  const UnlockedIf unlocked(worth_releasing(set));
+  const UnlockedIf unlocked(worth_releasing(set), set);
   if (norm == "euclidean") return disp_distance<EuclideanNorm, double>(set, a, b, system_velocity);
   if (norm == "max") return disp_distance<MaxNorm, double>(set, a, b, system_velocity);
   if (norm == "l1") return disp_distance<L1Norm, double>(set, a, b, system_velocity);
@@ -69,7 +69,7 @@ void bind_disp(py::module_& m) {
          const py::object& pivot, OptionalSpeed system_velocity) {
         const Interpolation kind = interpolation_from_string(interpolation);
         const Eigen::Vector3d p = vector3(pivot, "pivot");
-        const UnlockedIf unlocked(worth_releasing(set));
+        const UnlockedIf unlocked(worth_releasing(set), set);
         return section_length<double>(set, a, b, kind, p, system_velocity);
       },
       py::arg("metric_set"), py::arg("pose_a"), py::arg("pose_b"), py::arg("interpolation") = "decoupled",
@@ -99,7 +99,7 @@ void bind_disp(py::module_& m) {
       "max_point_speed",
       [](const MetricSetd& set, const Posed& pose, const py::object& twist, OptionalSpeed system_velocity) {
         const Twistd xi = checked_twist(twist);
-        const UnlockedIf unlocked(worth_releasing(set));
+        const UnlockedIf unlocked(worth_releasing(set), set);
         return max_point_speed<double>(set, pose, xi, system_velocity);
       },
       py::arg("metric_set"), py::arg("pose"), py::arg("twist"), py::arg("system_velocity") = py::none(),

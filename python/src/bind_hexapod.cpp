@@ -264,7 +264,7 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
            [](const Hexapod& h, const Path& path, double system_velocity, double tolerance) {
              std::vector<double> lengths;
              {
-               py::gil_scoped_release unlocked;
+               const UnlockedIf unlocked(true, path);
                lengths = h.leg_section_lengths(path, system_velocity, tolerance);
              }
              return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
@@ -277,7 +277,7 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
              py::array_t<double> out({static_cast<py::ssize_t>(path.size()), py::ssize_t{6}});
              double* data = out.mutable_data();
              {
-               py::gil_scoped_release unlocked;
+               const UnlockedIf unlocked(true, path);
                for (std::size_t k = 0; k < path.size(); ++k) Eigen::Map<Legs>(data + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
              }
              return out;
@@ -285,7 +285,13 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
            py::arg("path"), py::arg("tolerance") = 1e-3,
            "(N, 6) upper bounds r_i of max over tau of |d(leg i)/d(tau)| per section (m per unit of the section "
            "parameter), rigorous, within `tolerance` of the section's largest leg-speed demand.")
-      .def("add_leg_speed_group", &Hexapod::add_leg_speed_group, py::arg("metric_set"), py::arg("group"),
+      .def(
+          "add_leg_speed_group",
+          [](const Hexapod& h, MetricSetd& set, int group) {
+            require_not_read(&set, "Hexapod.add_leg_speed_group");
+            h.add_leg_speed_group(set, group);
+          },
+          py::arg("metric_set"), py::arg("group"),
            "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
       .def(py::pickle([](const Hexapod& h) { return py::make_tuple(h.to_json()); },
                       [](const py::tuple& state) {

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "interpreter_lock.hpp"
 #include "value_protocol.hpp"
 #include "dispkin/convex_hull.hpp"
 #include "dispkin/error.hpp"
@@ -132,6 +133,7 @@ Lengths in metres.)doc")
       .def(
           "add_relative",
           [](MetricSetd& self, const py::object& pts, int group) {
+            require_not_read(&self, "MetricSet.add_relative");
             self.add_points(points(pts, "points", true), Frame::relative, group);
           },
           py::arg("points"), py::arg("group") = 0,
@@ -140,6 +142,7 @@ Lengths in metres.)doc")
       .def(
           "add_absolute",
           [](MetricSetd& self, const py::object& pts, int group) {
+            require_not_read(&self, "MetricSet.add_absolute");
             self.add_points(points(pts, "points", true), Frame::absolute, group);
           },
           py::arg("points"), py::arg("group") = 0,
@@ -148,12 +151,19 @@ Lengths in metres.)doc")
       .def(
           "add_sphere",
           [](MetricSetd& self, const py::object& center, double radius, bool absolute, int group) {
+            require_not_read(&self, "MetricSet.add_sphere");
             self.add_sphere(vector3(center, "center"), radius, absolute ? Frame::absolute : Frame::relative, group);
           },
           py::arg("center"), py::arg("radius"), py::arg("absolute") = false, py::arg("group") = 0,
           "Add a ball (handled exactly): centre (3,) in body coordinates, or world coordinates if "
           "`absolute`; radius >= 0 in metres.")
-      .def("set_group_speed", &MetricSetd::set_group_speed, py::arg("group"), py::arg("speed"),
+      .def(
+          "set_group_speed",
+          [](MetricSetd& self, int group, double speed) {
+            require_not_read(&self, "MetricSet.set_group_speed");
+            self.set_group_speed(group, speed);
+          },
+          py::arg("group"), py::arg("speed"),
            "Give group `group` its own speed limit in m/s (> 0); the group is created if needed. Its "
            "lengths are then weighted by system_velocity / speed.")
       .def_property_readonly(
@@ -186,7 +196,12 @@ Lengths in metres.)doc")
            "Raise ValueError explaining why the set is not well-formed; do nothing if it is.")
       .def_property_readonly("point_count", &MetricSetd::point_count, "Number of points, all groups and frames.")
       .def_property_readonly("sphere_count", &MetricSetd::sphere_count, "Number of spheres, all groups and frames.")
-      .def("reduce_to_hull", &reduced_to_hull_vertices, py::call_guard<py::gil_scoped_release>(),
+      .def(
+          "reduce_to_hull",
+          [](const MetricSetd& self) {
+            const UnlockedIf unlocked(true, self);
+            return reduced_to_hull_vertices(self);
+          },
            "A new set with every group's relative and absolute points replaced by the vertices of "
            "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
            "length is the same.")

@@ -36,6 +36,7 @@ const char* section_kind(const SectionHolder& s) {
 Path& then_blended(Path& path, const Path& next, std::optional<double> blend, std::optional<double> before,
                    std::optional<double> after, double tolerance, const std::string& orientation_blend,
                    std::optional<double> weight) {
+  require_not_read(&path, "Path.then");
   const OrientationBlend orientation = orientation_blend_from_string(orientation_blend);
   if (weight && (blend || before || after))
     throw std::invalid_argument(describe("weight", *weight, "give either weight or blend or before/after, not both"));
@@ -67,7 +68,7 @@ py::object sample_path(const Path& path, const py::object& u) {
   const double* u_data = a.data();
   const py::ssize_t n = a.shape(0);
   {
-    const UnlockedIf unlocked(worth_releasing(static_cast<std::size_t>(n), trajectory_sample_ns));
+    const UnlockedIf unlocked(worth_releasing(static_cast<std::size_t>(n), trajectory_sample_ns), path);
     for (py::ssize_t i = 0; i < n; ++i) {
       const double ui = u_data[i];
       require_finite(ui, "u");
@@ -100,7 +101,7 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
       .def(
           "length",
           [](const SectionHolder& s, const MetricSetd& set, std::optional<double> v) {
-            const UnlockedIf unlocked(worth_releasing(set));
+            const UnlockedIf unlocked(worth_releasing(set), set);
             return section_length(s.value, set, v);
           },
           py::arg("metric_set"), py::arg("system_velocity") = py::none(),
@@ -193,7 +194,7 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
             std::vector<CornerStop> stops;
             std::optional<Path> out;
             {
-              py::gil_scoped_release unlocked;
+              const UnlockedIf unlocked(true, p);
               out = p.blended(corner_tolerance, &stops, tolerance);
             }
             py::list corners;
@@ -221,7 +222,7 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
           [](const Path& p, const MetricSetd& set, std::optional<double> v) {
             std::vector<double> lengths;
             {
-              py::gil_scoped_release unlocked;
+              const UnlockedIf unlocked(true, p, set);
               lengths = p.section_lengths(set, v);
             }
             return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());

@@ -275,7 +275,7 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         PlanOptions blending;
         blending.corner_tolerance = corner_tolerance;
         if (joint_metric.is_none()) {
-          py::gil_scoped_release unlocked;
+          const UnlockedIf unlocked(true, given_path, set);
           return plan(given_path, set, limits, kind, blending);
         }
         require(std::isfinite(corner_tolerance) && corner_tolerance >= 0.0, "corner_tolerance", corner_tolerance,
@@ -283,13 +283,13 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         // A joint metric is per section: of the blended path when corners are blended.
         std::optional<Path> blended;
         if (corner_tolerance > 0.0) {
-          py::gil_scoped_release unlocked;
+          const UnlockedIf unlocked(true, given_path);
           blended = given_path.blended(corner_tolerance);
         }
         const Path& path = blended ? *blended : given_path;
         if (py::isinstance<Hexapod>(joint_metric)) {
           const Hexapod& hexapod = joint_metric.cast<const Hexapod&>();
-          py::gil_scoped_release unlocked;
+          const UnlockedIf unlocked(true, path, set);
           return plan(path, set, limits, kind, hexapod.joint_metric(path, limits));
         }
         if (!py::hasattr(joint_metric, "leg_section_lengths")) {
@@ -302,7 +302,7 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
         PlanOptions options;
         options.min_section_lengths.assign(a.data(), a.data() + a.size());
-        py::gil_scoped_release unlocked;
+        const UnlockedIf unlocked(true, path, set);
         return plan(path, set, limits, kind, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",

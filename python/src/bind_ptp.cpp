@@ -365,7 +365,7 @@ before using large overlaps.)doc");
         const serial::SerialArm& arm = robot.cast<const serial::SerialArm&>();
         std::optional<JointTrajectory> planned;
         {
-          py::gil_scoped_release unlocked;
+          const UnlockedIf unlocked(true, set);
           planned = plan(path, set, limits, kind, arm, options);
         }
         py::object trajectory = py::cast(std::move(*planned));

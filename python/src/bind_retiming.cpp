@@ -233,7 +233,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                                                  "until the joint speed and effort limits hold); use method=\"optimal\""));
           RetimeResult result;
           {
-            py::gil_scoped_release unlocked;
+            const UnlockedIf unlocked(true, path, set);
             result = retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
                                        max_iterations);
           }
@@ -249,7 +249,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         options.max_refinements = max_iterations;
         OptimalRetimeResult result;
         {
-          py::gil_scoped_release unlocked;
+          const UnlockedIf unlocked(true, path, set);
           result = retime_optimal(path, set, limits, arm, q_start, options);
         }
         return py::cast(std::move(result));
@@ -286,7 +286,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
         options.check_samples_between = samples_between;
         options.max_refinements = max_iterations;
-        py::gil_scoped_release unlocked;
+        const UnlockedIf unlocked(true, path, set);
         return retime_optimal(path, set, limits, hexapod, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::kw_only(),

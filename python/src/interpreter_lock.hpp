@@ -8,13 +8,22 @@
 // would crawl beside a busy thread.
 //
 // What a released call reads must not change meanwhile: its C++ arguments are the objects
-// Python holds (a MetricSet, a Path, a Trajectory), not copies, so another thread must not
-// modify one (MetricSet.add_*, set_group_speed, Path.then) while a call that uses it runs.
-// A SerialArm is copied where its gravity matters (it can be set from Python).
+// Python holds, not copies. Of those, a MetricSet (add_*, set_group_speed) and a Path (then)
+// can be changed from Python, so a released call marks the ones it reads, and their changing
+// methods refuse with RuntimeError while one is marked (require_not_read): another thread
+// changing a set that a plan is reading gets an error instead of the planner reading freed
+// memory. Marks are set and cleared with the lock held, so the registry needs no lock of its
+// own. A SerialArm is copied where its gravity matters (it can be set from Python); every other
+// bound type is immutable once built.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <dispkin/metric_set.hpp>
 #include <pybind11/pybind11.h>
@@ -22,14 +31,52 @@
 namespace dispkin {
 namespace python {
 
-//! Releases the interpreter lock for its lifetime if `release`.
+namespace detail {
+
+//! The objects read by calls running with the lock released, once per reading call.
+inline std::vector<const void*>& objects_being_read() {
+  static std::vector<const void*> objects;
+  return objects;
+}
+
+}  // namespace detail
+
+//! RuntimeError when a call running with the lock released (in another thread) reads `object`:
+//! called, with the lock held, by the methods that change a MetricSet or a Path.
+inline void require_not_read(const void* object, const char* method) {
+  const auto& read = detail::objects_being_read();
+  if (std::find(read.begin(), read.end(), object) != read.end()) {
+    throw std::runtime_error(std::string(method) +
+                             ": the object is being read by a call running in another thread (a plan, a "
+                             "length, a re-timing); change it once that call has returned, or change a copy "
+                             "(copy.deepcopy)");
+  }
+}
+
+//! Releases the interpreter lock for its lifetime if `release`, the objects given being marked
+//! as read meanwhile (see require_not_read). Built and destroyed with the lock held.
 class UnlockedIf {
  public:
-  explicit UnlockedIf(bool release) {
-    if (release) unlocked_.emplace();
+  template <typename... Read>
+  explicit UnlockedIf(bool release, const Read&... read) {
+    static_assert(sizeof...(Read) <= 4, "UnlockedIf marks at most four objects");
+    if (!release) return;
+    ((marked_[count_++] = &read), ...);
+    auto& objects = detail::objects_being_read();
+    objects.insert(objects.end(), marked_.begin(), marked_.begin() + count_);
+    unlocked_.emplace();
   }
+  ~UnlockedIf() {
+    unlocked_.reset();  // the lock first: the registry is touched with it held only
+    auto& objects = detail::objects_being_read();
+    for (std::size_t i = 0; i < count_; ++i) objects.erase(std::find(objects.begin(), objects.end(), marked_[i]));
+  }
+  UnlockedIf(const UnlockedIf&) = delete;
+  UnlockedIf& operator=(const UnlockedIf&) = delete;
 
  private:
+  std::array<const void*, 4> marked_{};
+  std::size_t count_ = 0;
   std::optional<pybind11::gil_scoped_release> unlocked_;
 };
 

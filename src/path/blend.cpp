@@ -247,6 +247,8 @@ Path& Path::then_weighted(const Path& next, double weight, OrientationBlend orie
 }
 
 Path& Path::then(const Path& next, double before, double after, double tolerance, OrientationBlend orientation) {
+  // A closed path blended into itself: apply_blend cuts this path before it reads `next`.
+  if (&next == this) return then(Path(next), before, after, tolerance, orientation);
   require(std::isfinite(before) && before > 0.0, "before", before, "must be a positive distance (m)");
   require(std::isfinite(after) && after > 0.0, "after", after, "must be a positive distance (m)");
   require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");

@@ -147,9 +147,7 @@ Path Path::from_sections(const std::vector<Section>& sections, double first_move
     require(section_limits.size() == sections.size(), "section_limits size", static_cast<unsigned long>(section_limits.size()),
             "must be the section count " + std::to_string(sections.size()));
     for (std::size_t k = 0; k < section_limits.size(); ++k) {
-      if (section_limits[k].velocity) require_positive(*section_limits[k].velocity, "section_limits[" + std::to_string(k) + "].velocity");
-      if (section_limits[k].acceleration)
-        require_positive(*section_limits[k].acceleration, "section_limits[" + std::to_string(k) + "].acceleration");
+      section_limits[k].validate("section_limits[" + std::to_string(k) + "]");
     }
     path.limits_ = section_limits;
   }
@@ -177,6 +175,8 @@ void Path::require_joins(const Path& next) const {
 }
 
 Path& Path::then(const Path& next) {
+  // A closed path appended to itself: the loop below would read what it appends (forever).
+  if (&next == this) return then(Path(next));
   require_joins(next);
   const std::size_t offset = sections_.size();
   for (std::size_t i = 0; i < next.sections_.size(); ++i) append(next.sections_[i], next.limits_[i]);
@@ -200,9 +200,14 @@ MoveLimits MoveLimits::tighter(const MoveLimits& a, const MoveLimits& b) noexcep
   return {least(a.velocity, b.velocity), least(a.acceleration, b.acceleration)};
 }
 
+void MoveLimits::validate(const std::string& argument) const {
+  const std::string prefix = argument.empty() ? "" : argument + ".";
+  if (velocity) require_limit(*velocity, prefix + "velocity");
+  if (acceleration) require_limit(*acceleration, prefix + "acceleration");
+}
+
 Path& Path::with_limits(const MoveLimits& limits) {
-  if (limits.velocity) require_positive(*limits.velocity, "velocity");
-  if (limits.acceleration) require_positive(*limits.acceleration, "acceleration");
+  limits.validate("");
   std::fill(limits_.begin(), limits_.end(), limits);
   return *this;
 }

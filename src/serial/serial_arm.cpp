@@ -135,7 +135,11 @@ Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, c
 }
 
 void SerialArm::set_gravity(const Eigen::Vector3d& gravity) {
+  // Within the numeric range of lengths and masses (1e12), products of the three stay far from
+  // overflow in the torques; 1e308 m/s² gave infinite terms and NaN torques.
   require_finite(gravity, "gravity");
+  require(gravity.cwiseAbs().maxCoeff() <= numeric_range::max_limit, "gravity", gravity,
+          "must have coordinates within ±1e12 m/s² (dispkin's numeric range)");
   gravity_ = gravity;
 }
 

@@ -27,6 +27,7 @@
 #include "dispkin/error.hpp"
 #include "dispkin/input_limits.hpp"
 #include "serial_arm_model.hpp"
+#include "urdf_format_text.hpp"
 #include "urdf_joint_graph.hpp"
 #include "urdf_numbers.hpp"
 #include "xml_bounds.hpp"
@@ -53,55 +54,15 @@ class CapturingOutput : public console_bridge::OutputHandler {
 
 std::mutex parse_mutex;
 
-// urdfdom (Debian 3.0) hands the text of an attribute value it cannot parse to console_bridge
-// as a printf format: a '%' there ("%n", "%s") makes urdf::parseURDF write or read memory it
-// does not own (a crash in vfprintf). A '%' has no place in a robot description
-// outside comments, so it is refused before urdfdom sees the text, spelled out or as a numeric
-// character reference (&#37;, &#x25;), which the XML parser turns into one.
-void require_no_percent_sign(const std::string& xml) {
-  int line = 1;
-  std::size_t line_start = 0;
-  auto refuse = [&](std::size_t at, const std::string& what) {
-    throw std::invalid_argument(describe("URDF", "line " + std::to_string(line) + ", column " + std::to_string(at - line_start + 1),
-                                         "contains " + what +
-                                             " outside a comment; urdfdom would pass it to printf as a format (remove it)"));
-  };
-  for (std::size_t i = 0; i < xml.size(); ++i) {
-    const char c = xml[i];
-    if (c == '\n') {
-      ++line;
-      line_start = i + 1;
-    } else if (c == '<' && xml.compare(i, 4, "<!--") == 0) {
-      const std::size_t end = xml.find("-->", i + 4);
-      const std::size_t stop = end == std::string::npos ? xml.size() : end + 3;
-      for (; i + 1 < stop; ++i) {
-        if (xml[i] == '\n') {
-          ++line;
-          line_start = i + 1;
-        }
-      }
-    } else if (c == '%') {
-      refuse(i, "'%'");
-    } else if (c == '&' && xml.compare(i, 2, "&#") == 0) {
-      const bool hex = i + 2 < xml.size() && (xml[i + 2] == 'x' || xml[i + 2] == 'X');
-      const std::size_t digits = i + (hex ? 3 : 2);
-      const std::size_t end = xml.find(';', digits);
-      if (end == std::string::npos || end == digits || end - digits > 16) continue;
-      const std::string number = xml.substr(digits, end - digits);
-      char* rest = nullptr;
-      const unsigned long value = std::strtoul(number.c_str(), &rest, hex ? 16 : 10);
-      if (*rest != '\0') continue;
-      if (value == 37) refuse(i, "a character reference to '%'");
-    }
-  }
-}
-
 // Everything refused before urdfdom reads the text: its size, nesting and attribute counts
-// (xml_bounds.cpp), then, read by TinyXML as urdfdom will, a joint graph that is not a tree
-// (urdf_joint_graph.cpp) and any number that is not one (urdf_numbers.cpp).
+// (xml_bounds.cpp), then, read by TinyXML as urdfdom will, a '%' urdfdom could use as a printf
+// format (urdf_format_text.cpp), a joint graph that is not a tree (urdf_joint_graph.cpp) and
+// any number that is not one (urdf_numbers.cpp).
 void require_sound_urdf(const std::string& padded) {
   TiXmlDocument document;
   document.Parse(padded.c_str());
+  // Before the parse error test: what TinyXML read up to an error is checked too.
+  require_no_printf_directive(document);
   // Malformed XML and missing names are urdfdom's to report, with its own messages.
   if (document.Error()) return;
   const TiXmlElement* robot = document.FirstChildElement("robot");
@@ -112,7 +73,6 @@ void require_sound_urdf(const std::string& padded) {
 
 urdf::ModelInterfaceSharedPtr parse(const std::string& xml, std::string& messages) {
   require_bounded_xml(xml);
-  require_no_percent_sign(xml);
   // TinyXML 2.6.2 (urdfdom's XML parser, and ours in require_sound_urdf) steps over a UTF-8
   // lead byte by the length it announces, so a text ending inside such a sequence ("…\xe6") was
   // read up to 3 bytes past its terminating NUL (an ASan heap-buffer-overflow).

@@ -476,7 +476,21 @@ std::vector<Row> rows() {
   row("SerialArm::from_urdf_string", "empty text", [] { SerialArm::from_urdf_string("", "base", "link2"); }, IA, "URDF: not a valid robot description");
   row("SerialArm::from_urdf_string", "'%' in an attribute (urdfdom printf format)",
       [] { SerialArm::from_urdf_string("<robot name=\"r\"><link name=\"a%n\"/></robot>", "a", "b"); }, IA,
-      "URDF = \"line 1, column 30\": contains '%' outside a comment");
+      "URDF line 1, column 23, <link> attribute \"name\" = \"a%n\": contains '%'");
+  // The same '%' as TinyXML decodes character references: zero-padded, wrapping at 2³² (its
+  // multiplier is 32 bits), and the low byte of the code point in a document declared Latin-1.
+  for (const char* spelling : {"&#37;", "&#x25;", "&#000000000000000000000000037;", "&#x0000000000000000000025;",
+                               "&#x100000025;", "&#x1000000000000025;"}) {
+    row("SerialArm::from_urdf_string", std::string("'%' as the character reference ") + spelling,
+        [spelling] { SerialArm::from_urdf_string(std::string("<robot name=\"r\"><link name=\"a") + spelling + "n\"/></robot>", "a", "b"); },
+        IA, "<link> attribute \"name\" = \"a%n\": contains '%'");
+  }
+  row("SerialArm::from_urdf_string", "'%' as the low byte of &#293; in a Latin-1 document",
+      [] { SerialArm::from_urdf_string("<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><robot name=\"r\"><link name=\"a&#293;n\"/></robot>", "a", "b"); },
+      IA, "<link> attribute \"name\" = \"a%n\": contains '%'");
+  row("SerialArm::from_urdf_string", "'%' in element text (CDATA)",
+      [] { SerialArm::from_urdf_string("<robot name=\"r\"><link name=\"a\"><![CDATA[%n%n]]></link></robot>", "a", "b"); },
+      IA, "text = \"%n%n\": contains '%'");
   row("SerialArm::from_urdf_string", "empty base link", [] { SerialArm::from_urdf_string("<robot/>", "", "link2"); }, IA, "base_link = \"\": must name a link");
   // Hostile URDFs: depth, attribute count, numbers, inertias, the joint graph.
   const auto planar_text = [] {

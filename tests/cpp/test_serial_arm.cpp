@@ -818,16 +818,23 @@ TEST(SerialArmErrors, PercentSignOutsideCommentsIsRefused) {
     return before + xml;
   };
   EXPECT_EQ(message_of([&] { SerialArm::from_urdf_string(with("n%n 0 0"), "base_link", "tool0"); }),
-            "URDF = \"line 4, column 19\": contains '%' outside a comment; urdfdom would pass it to printf as a format "
-            "(remove it)");
+            "URDF line 4, column 13, <origin> attribute \"xyz\" = \"n%n 0 0\": contains '%' (character references "
+            "decoded); urdfdom would pass it to printf as a format (remove it)");
   EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with("%s%s%s 0 0"), "base_link", "tool0"); }).find("'%'"),
             std::string::npos);
-  for (const char* reference : {"&#37;n 0 0", "&#x25;n 0 0", "&#X0025;s 0 0", "&#037;n 0 0"}) {
+  // The attribute as TinyXML decodes it, whatever the spelling of the reference: leading zeros
+  // without end, a hexadecimal multiplier that wraps at 2³².
+  for (const char* reference : {"&#37;n 0 0", "&#x25;n 0 0", "&#037;n 0 0", "&#00000000000000000000000000037;n 0 0",
+                                "&#x100000025;n 0 0", "&#xFFFFFFFF00000025;n 0 0"}) {
     EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with(reference), "base_link", "tool0"); })
-                  .find("a character reference to '%'"),
+                  .find("<origin> attribute \"xyz\" = \"%n 0 0\": contains '%'"),
               std::string::npos)
         << reference;
   }
+  // "&#X…;" is no reference to TinyXML (only a lower-case x marks hexadecimal): a parse error.
+  EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with("&#X0025;s 0 0"), "base_link", "tool0"); })
+                .find("not a valid robot description"),
+            std::string::npos);
   // In a comment (before the robot, or spanning lines) a '%' is fine; the arm loads.
   const SerialArm ok = SerialArm::from_urdf_string(with("0 0 0.5", "<!-- 100% \n scale: 50% -->\n"), "base_link", "tool0");
   EXPECT_EQ(ok.dof(), 1);

@@ -694,6 +694,25 @@ row("retime", "scaling method with joint_acceleration (was ignored)", lambda: di
 row("Path.circ", "via 1e-9 m off the line beyond the end (was a 9.4·10⁷ m arc)", lambda: dispkin.Path.circ(A, dispkin.Pose.from_xyzuvw([0.2, 1e-9, 0, 0, 0, 0]), B), V,
     "via = (0.2, 1e-09, 0): is almost collinear with the start and end points and outside the segment between them")
 
+section("URDF text, per-move limits and gravity")
+PERCENT_LINK = '<robot name="r"><link name="l{}n"/></robot>'
+for spelling, bad in [("&#0000000000000000000000037;", "'%' as a zero-padded decimal character reference"),
+                      ("&#x100000025;", "'%' as a hexadecimal reference TinyXML wraps at 2^32"),
+                      ("&#4294967333;", "'%' as a decimal reference wrapping at 2^32 (Latin-1 document)")]:
+    text = PERCENT_LINK.format(spelling)
+    if "4294967333" in spelling:
+        text = '<?xml version="1.0" encoding="ISO-8859-1"?>' + text
+    row("SerialArm.from_urdf", bad, lambda text=text: dispkin.SerialArm.from_urdf(text, "l%n", "b"), V,
+        '<link> attribute "name" = "l%n": contains \'%\' (character references decoded)')
+row("Path.lin", "move velocity 1e-17 (below the numeric range)", lambda: dispkin.Path.lin(A, B, velocity=1e-17), V,
+    "velocity = 1e-17: must be in [1e-12, 1e12]")
+row("Path.lin", "move acceleration 1e13", lambda: dispkin.Path.lin(A, B, acceleration=1e13), V,
+    "acceleration = 1e+13: must be in [1e-12, 1e12]")
+row("Path.circ", "move velocity 5e-324", lambda: dispkin.Path.circ(A, dispkin.Pose.from_xyzuvw([0.1, 0.05, 0, 0, 0, 0]), B, velocity=5e-324), V,
+    "velocity = 4.94065645841e-324: must be in [1e-12, 1e12]")
+row("SerialArm.gravity", "gravity 1e308 (NaN torques)", lambda: setattr(arm(), "gravity", [0, 0, 1e308]), V,
+    "gravity = (0, 0, 1e+308): must have coordinates within ±1e12 m/s²")
+
 ROWS = R
 
 

@@ -97,3 +97,15 @@ def test_ptp_is_a_joint_line():
 def test_bad_input(build, message):
     with pytest.raises(ValueError, match=message):
         build()
+
+
+@pytest.mark.parametrize("blend", [None, 0.01])
+def test_a_closed_path_appended_to_itself_is_its_copy(blend):
+    a, b = dispkin.Pose(), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0.2])
+    loop = dispkin.Path.lin(a, b).then(dispkin.Path.lin(b, a), blend=0.01)
+    twice = dispkin.Path.lin(a, b).then(dispkin.Path.lin(b, a), blend=0.01)
+    twice.then(dispkin.Path.lin(a, b).then(dispkin.Path.lin(b, a), blend=0.01), blend=blend)
+    loop.then(loop, blend=blend)
+    assert len(loop) == len(twice) and loop.move_starts == twice.move_starts
+    u = np.linspace(0, 1, 101)
+    assert np.array_equal(loop.sample(u), twice.sample(u))

@@ -8,6 +8,7 @@ releases runs.
 """
 
 import pathlib
+import subprocess
 import sys
 import threading
 import time
@@ -212,3 +213,80 @@ def test_a_short_call_keeps_the_lock():
     # The check itself: a call that never releases the lock lets no other thread run.
     arm = ur5e()
     assert not other_thread_ran_during(lambda: arm.forward(Q0), attempts=2)
+
+
+# --- objects a released call reads -----------------------------------------------------------
+# A MetricSet and a Path can be changed from Python (add_*, set_group_speed, then). A call that
+# reads one with the lock released marks it, and changing it meanwhile raises RuntimeError; the
+# mark goes when the call returns, also by an exception. Run in a child process: before the
+# marks, another thread adding groups crashed the interpreter.
+
+RACE = """
+import sys, threading
+import numpy as np
+import dispkin
+sys.setswitchinterval(1e-5)
+a = dispkin.Pose()
+b = dispkin.Pose.from_xyzuvw([0.3, 0.1, 0.0, 0.4, 0.2, 0.1])
+path = dispkin.Path.lin(a, b)
+for k in range(1, 41):
+    c = dispkin.Pose.from_xyzuvw([0.3 + 0.01 * (k % 2), 0.1 + 0.01 * k, 0.0, 0.4, 0.2, 0.1 + 0.01 * k])
+    path.then(dispkin.Path.lin(b, c), blend=0.003)
+    b = c
+metric = dispkin.MetricSet()
+metric.add_relative(dispkin.shapes.icosphere(0.1, 2))
+limits = dispkin.Limits(0.5, 2.0, 20.0)
+done = threading.Event()
+durations, refused, added = [], [], [0]
+
+def planner():
+    for _ in range(8):
+        t = dispkin.plan(path, metric, limits, corner_tolerance=1e-4)
+        durations.append(t.duration)
+        assert np.isfinite(t.sample(np.linspace(0, t.duration, 50))[1]).all()
+    done.set()
+
+def changer():
+    group = 1
+    while not done.is_set():
+        try:
+            CHANGE
+            added[0] += 1
+        except RuntimeError as error:
+            refused.append(str(error))
+        group += 1
+
+threads = [threading.Thread(target=planner), threading.Thread(target=changer)]
+for t in threads: t.start()
+for t in threads: t.join()
+assert len(durations) == 8 and all(np.isfinite(durations)), durations
+print(len(refused), added[0], refused[0] if refused else "")
+"""
+
+CHANGES = {
+    "MetricSet.add_relative": "metric.add_relative([0.0, 0.0, 0.01 * (group % 7)], group=group)",
+    "MetricSet.add_sphere": "metric.add_sphere([0.0, 0.0, 0.1], 0.01, group=group)",
+    "MetricSet.set_group_speed": "metric.set_group_speed(group, 1.0)",
+    "Path.then": "path.then(dispkin.Path.lin(path.sample(1.0), path.sample(1.0) * dispkin.Pose.from_xyzuvw([1e-3, 0, 0, 0, 0, 0])))",
+}
+
+
+@pytest.mark.parametrize("method", sorted(CHANGES))
+def test_changing_an_object_a_plan_reads_is_refused_never_a_crash(method):
+    code = RACE.replace("CHANGE", CHANGES[method])
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, f"exit {done.returncode} (negative: a signal): {done.stderr[-3000:]}"
+    refused, _, first = done.stdout.strip().split(" ", 2)
+    assert int(refused) > 0, "the other thread never met a running plan"
+    assert first.startswith(method + ": the object is being read by a call running in another thread"), first
+
+
+def test_the_mark_goes_when_a_released_call_fails():
+    empty = dispkin.MetricSet()
+    line = dispkin.Path.lin(dispkin.Pose(), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0]))
+    with pytest.raises(ValueError, match="is not well-formed"):
+        dispkin.plan(line, empty, dispkin.Limits(0.5, 2.0, 20.0))
+    empty.add_relative([[0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1]])  # no longer marked
+    line.then(dispkin.Path.lin(line.sample(1.0), dispkin.Pose.from_xyzuvw([0.2, 0, 0, 0, 0, 0])))
+    assert len(line) == 2
+

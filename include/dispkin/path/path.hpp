@@ -230,6 +230,10 @@ struct MoveLimits {
 
   //! The tighter of two limits, field by field (a blend between two moves keeps both).
   static MoveLimits tighter(const MoveLimits& a, const MoveLimits& b) noexcept;
+  //! std::invalid_argument naming `argument`.velocity or .acceleration unless each given limit
+  //! is inside dispkin's numeric range [1e-12, 1e12], as the plan's Limits are: a smaller one
+  //! would make the move last longer than any duration the time laws represent.
+  void validate(const std::string& argument) const;
   bool operator==(const MoveLimits& other) const noexcept {
     return velocity == other.velocity && acceleration == other.acceleration;
   }

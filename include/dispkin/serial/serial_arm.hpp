@@ -176,7 +176,8 @@ class SerialArm : public Kinematics {
   //! The static part g(q) = torques(q, 0, 0): what holding the arm still costs.
   Eigen::VectorXd static_torques(const Eigen::VectorXd& q) const;
 
-  //! Gravitational acceleration in base coordinates (m/s²), default (0, 0, −9.81).
+  //! Gravitational acceleration in base coordinates (m/s²), default (0, 0, −9.81); set_gravity
+  //! takes finite coordinates within ±1e12 m/s².
   const Eigen::Vector3d& gravity() const noexcept { return gravity_; }
   void set_gravity(const Eigen::Vector3d& gravity);
 
