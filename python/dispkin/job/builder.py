@@ -19,6 +19,7 @@ import json
 import math
 import pathlib
 import re
+import stat
 from typing import Any, Callable, Dict, List, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
@@ -84,6 +85,8 @@ class _Builder:
         self.source = source
         self.data = source.data
         self.directory = source.path.resolve().parent
+        #: The files the job reads besides itself (URDF, hexapod file, limits files).
+        self.inputs: List[pathlib.Path] = []
 
     def fail(self, key_path: KeyPath, message: str) -> JobError:
         """The error `message` at key_path of the job file (to raise)."""
@@ -99,11 +102,23 @@ class _Builder:
             raise self.fail(key_path, str(error)) from error
 
     def file(self, key_path: KeyPath) -> pathlib.Path:
-        """The existing file named at key_path, relative to the job file's directory."""
+        """The existing regular file named at key_path, relative to the job file's directory
+        (a directory, a FIFO or a device is refused for what it is: reading a FIFO would wait
+        for a writer). Every such file is an input of the job (Job.inputs)."""
         path = pathlib.Path(value_at(self.data, key_path))
         path = path if path.is_absolute() else self.directory / path
-        if not path.is_file():
-            raise self.fail(key_path, f"file {str(path)!r} does not exist")
+        try:
+            mode = path.stat().st_mode
+        except OSError as error:
+            reason = "does not exist" if isinstance(error, FileNotFoundError) else f"cannot be read: {error.strerror or error}"
+            raise self.fail(key_path, f"file {str(path)!r} {reason}") from None
+        except ValueError as error:  # a NUL character: no file has such a name
+            raise self.fail(key_path, f"{str(path)!r}: not a file name: {error}") from None
+        if stat.S_ISDIR(mode):
+            raise self.fail(key_path, f"{str(path)!r}: is a directory, not a file")
+        if not stat.S_ISREG(mode):
+            raise self.fail(key_path, f"{str(path)!r}: is not a regular file (a FIFO, a device or a socket)")
+        self.inputs.append(path)
         return path
 
     # Poses ---------------------------------------------------------------------------------

@@ -12,19 +12,14 @@ import math
 from typing import Any, Dict, List, Optional
 
 import numpy as np
-import yaml
 
 from .. import limits_files
 from .._core import Limits, MetricSet
 from .model import KeyPath, Retime
 
 
-def _kind(path: Any) -> Optional[str]:
+def _kind(data: Any) -> Optional[str]:
     """"moveit", "pilz" or None (neither), from the file's top-level keys."""
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, yaml.YAMLError):
-        return "moveit"  # read_moveit_joint_limits reports why it cannot be read
     if not isinstance(data, dict):
         return None
     if "joint_limits" in data:
@@ -46,7 +41,12 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
     seen = set()
     for at in keys:
         path = builder.file(at)
-        kind = _kind(path)
+        try:
+            # Read once, under the resource limits of job files; both readers take the document.
+            document = limits_files.load_limits_file(path)
+        except limits_files.LimitsFileError as error:
+            raise builder.fail(at, str(error)) from error
+        kind = _kind(document.data)
         if kind is None:
             raise builder.fail(at, f"{str(path)!r} is neither a MoveIt joint_limits.yaml (a `joint_limits:` mapping) "
                                "nor a Pilz cartesian_limits.yaml (`cartesian_limits:` with max_trans_vel, ...)")
@@ -57,12 +57,13 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
             if kind == "moveit":
                 if job.get("arm") is None:
                     raise builder.fail(at, "a MoveIt joint_limits.yaml limits the joints of a serial arm: it needs machine.serial_arm")
-                job["arm"], job["joint_acceleration"] = limits_files.apply_moveit_joint_limits(job["arm"], path)
+                moveit = limits_files.read_moveit_joint_limits(document)
+                job["arm"], job["joint_acceleration"] = limits_files.apply_moveit_joint_limits(job["arm"], moveit)
                 job["joint_limits_from"] = f"MoveIt {path.name}"
             else:
                 # Its max_rot_vel becomes the rotational limit (limits.angular_velocity).
-                pilz = limits_files.read_pilz_cartesian_limits(path)
-        except limits_files.LimitsFileError as error:
+                pilz = limits_files.read_pilz_cartesian_limits(document)
+        except ValueError as error:  # LimitsFileError, or the arm refusing a limit of the file
             raise builder.fail(at, str(error)) from error
         job["limits_files"].append(path)
     return pilz
