@@ -45,6 +45,16 @@ _NOT_PARAMETERS_OF = {
     "spherical_shell": ("size", "subdivisions", "circumscribed"),
 }
 
+#: The longest file name (bytes) of Linux's file systems (NAME_MAX).
+MAX_FILE_NAME_BYTES = 255
+
+
+def echo(value: Any) -> str:
+    """A value of the job for a message: its repr, at most 200 characters of it."""
+    text = repr(value)
+    return text if len(text) <= 200 else f"{text[:200]}… ({len(text)} characters)"
+
+
 #: Samples of a Cartesian run's geometry along which the arm's joints are followed to its end.
 _FOLLOW_SAMPLES = 201
 
@@ -479,10 +489,26 @@ class _Builder:
         files = {"csv": f"{name}.csv", "json": f"{name}.json", "summary": f"{name}.summary.txt"}
         for key in files:
             if key in out:
-                if pathlib.PurePath(out[key]).name != out[key]:
-                    raise self.fail(("output", key), f"{out[key]!r}: a file name, not a path (the directory is `-o OUTDIR`)")
+                self.output_name(("output", key), out[key])
                 files[key] = out[key]
+            elif len(files[key].encode("utf-8")) > MAX_FILE_NAME_BYTES:
+                at: KeyPath = ("name",) if "name" in self.data else ()
+                raise self.fail(at, f"{echo(name)}: the output file name {echo(files[key])} made from it is longer than "
+                                f"{MAX_FILE_NAME_BYTES} bytes, the longest file name: give a shorter name, or output.{key}")
+        keys = list(files)
+        for i, key in enumerate(keys):
+            for earlier in keys[:i]:
+                if files[key] == files[earlier]:
+                    raise self.fail(("output", key), f"{files[key]!r}: the same file as output.{earlier}: each output needs a name of its own")
         job["outputs"] = files
+
+    def output_name(self, at: KeyPath, value: str) -> None:
+        """An output file name: one name (the directory is `-o OUTDIR`), not . or .., at most
+        MAX_FILE_NAME_BYTES bytes."""
+        if value in ("", ".", "..") or "\0" in value or pathlib.PurePath(value).name != value:
+            raise self.fail(at, f"{echo(value)}: a file name, not a path (the directory is `-o OUTDIR`)")
+        if len(value.encode("utf-8")) > MAX_FILE_NAME_BYTES:
+            raise self.fail(at, f"{echo(value)}: longer than {MAX_FILE_NAME_BYTES} bytes, the longest file name")
 
 
 def load_job(path: Union[str, pathlib.Path]) -> Job:
@@ -505,4 +531,4 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
-               profile=profile, parts=parts, source=source, **job)
+               profile=profile, parts=parts, source=source, inputs=builder.inputs, **job)
