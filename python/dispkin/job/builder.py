@@ -45,6 +45,13 @@ _NOT_PARAMETERS_OF = {
     "spherical_shell": ("size", "subdivisions", "circumscribed"),
 }
 
+#: The smallest blend_weight: the blend's ends lie at this share of each move from the corner,
+#: and within 1e-6 of a section's end they snap to it (a rotation-vector blend then has nothing
+#: to blend; a nested-SLERP blend rounds to no length, or to 10⁵ sections of 1e-20 m).
+MIN_BLEND_WEIGHT = 1e-5
+#: The smallest blend (m of geometric size), as Path.blended builds no smaller one.
+MIN_BLEND = 1e-9
+
 #: The longest file name (bytes) of Linux's file systems (NAME_MAX).
 MAX_FILE_NAME_BYTES = 255
 
@@ -110,6 +117,29 @@ class _Builder:
             raise
         except (ValueError, RuntimeError) as error:
             raise self.fail(key_path, str(error)) from error
+
+    def call_section(self, at: KeyPath, written: Dict[str, Any], function: Any, *args: Any, **kwargs: Any) -> Any:
+        """function(*args, **kwargs) on the values of the mapping at `at` (`written`: as the job
+        gives them); a ValueError / RuntimeError ``name = value: reason`` naming one of its keys
+        is re-raised at that key with the value as written, any other at `at`. (Keys whose
+        units the job converts, degrees, are checked before: the reason would give radians.)"""
+        try:
+            return function(*args, **kwargs)
+        except JobError:
+            raise
+        except (ValueError, RuntimeError) as error:
+            named = re.match(r"(\w+)(?:\[\d+\])? = .*?: (.*)$", str(error), re.S)
+            if named and named.group(1) in written:
+                key = named.group(1)
+                raise self.fail(at + (key,), f"{written[key]!r}: {named.group(2)}") from error
+            raise self.fail(at, str(error)) from error
+
+    def degrees_in_range(self, at: KeyPath, value: float, low: float, high: float, unit: str, *, high_open: bool = False) -> None:
+        """A value the job gives in degrees (`unit`: deg, deg/s, deg/s²) within [low, high] (or
+        [low, high) with high_open), refused with the value as written and the range in the
+        job's unit."""
+        if not (low <= value < high if high_open else low <= value <= high):
+            raise self.fail(at, f"{value!r}: must be in [{low:.6g}, {high:.6g}{')' if high_open else ']'} {unit}")
 
     def file(self, key_path: KeyPath) -> pathlib.Path:
         """The existing regular file named at key_path, relative to the job file's directory
@@ -183,8 +213,10 @@ class _Builder:
         else:
             s = dict(h["symmetric"])
             for angle in ("base_gap", "platform_gap"):  # degrees in the file, radians in the API
+                # Hexapod.symmetric takes a gap in [0, 2π/3): a pair's joints stay apart from the next pair's.
+                self.degrees_in_range(at + ("symmetric", angle), s[angle], 0.0, 120.0, "deg", high_open=True)
                 s[angle] = math.radians(s[angle])
-            job["hexapod"] = self.call(at + ("symmetric",), Hexapod.symmetric, **s)
+            job["hexapod"] = self.call_section(at + ("symmetric",), h["symmetric"], Hexapod.symmetric, **s)
         job["joint_metric"] = bool(h.get("joint_metric", False))
 
     def serial_arm(self, job: Dict[str, Any], a: Dict[str, Any]) -> None:
@@ -336,6 +368,11 @@ class _Builder:
         if "blend" in move and "blend_weight" in move:
             raise self.fail(at + ("blend_weight",), f"{move['blend_weight']}: give the blend by its size (`blend`, m) "
                                                     "or as a share of both moves (`blend_weight`), not both")
+        if "blend_weight" in move and move["blend_weight"] < MIN_BLEND_WEIGHT:
+            raise self.fail(at + ("blend_weight",), f"{move['blend_weight']!r}: must be at least {MIN_BLEND_WEIGHT:g}: a smaller share "
+                            "puts the blend's ends within 1e-06 of the corner, where they meet it, and leaves no blend")
+        if "blend" in move and move["blend"] < MIN_BLEND:
+            raise self.fail(at + ("blend",), f"{move['blend']!r}: must be at least {MIN_BLEND:g} m, the smallest blend dispkin builds")
         if "orientation_blend" in move and "blend" not in move and "blend_weight" not in move:
             raise self.fail(at + ("orientation_blend",), f"{move['orientation_blend']}: there is no blend to shape; "
                                                          "give `blend` (m) or `blend_weight`")

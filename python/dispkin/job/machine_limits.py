@@ -69,23 +69,31 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
     return pilz
 
 
+#: The limits the job gives in degrees (radians in the library), and their units.
+_ANGULAR_UNITS = {"angular_velocity": "deg/s", "angular_acceleration": "deg/s²"}
+
+
 def job_limits(builder: Any, pilz: Optional[limits_files.PilzCartesianLimits]) -> Limits:
     """The path limits: the `limits` section's, or a Pilz file's velocity and acceleration (then
     the section gives only jerk and profile)."""
     lim = builder.data["limits"]
+    low, high = limits_files.LIMIT_RANGE
+    for key, unit in _ANGULAR_UNITS.items():
+        if key in lim:  # refused in the job's unit, not in the library's radians
+            builder.degrees_in_range(("limits", key), lim[key], math.degrees(low), math.degrees(high), unit)
     # Angular limits are given in degrees (per second, per second squared), like the poses.
-    angular = {key: math.radians(lim[key]) for key in ("angular_velocity", "angular_acceleration") if key in lim}
+    angular = {key: math.radians(lim[key]) for key in _ANGULAR_UNITS if key in lim}
     if pilz is not None:
         for key in ("velocity", "acceleration", "angular_velocity"):
             if key in lim:
                 raise builder.fail(("limits", key), f"{lim[key]!r}: given by the Pilz limits file too; give it in one place")
-        from_file = builder.call(("limits",), pilz.limits, lim.get("jerk"))
-        return builder.call(("limits",), Limits, from_file.velocity, from_file.acceleration, from_file.jerk,
-                            angular_velocity=from_file.angular_velocity, **angular)
+        from_file = builder.call_section(("limits",), lim, pilz.limits, lim.get("jerk"))
+        return builder.call_section(("limits",), lim, Limits, from_file.velocity, from_file.acceleration, from_file.jerk,
+                                    angular_velocity=from_file.angular_velocity, **angular)
     for key in ("velocity", "acceleration"):
         if key not in lim:
             raise builder.fail(("limits",), f"missing required key `{key}` (or a Pilz cartesian_limits.yaml in limits_file)")
-    return builder.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular)
+    return builder.call_section(("limits",), lim, Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular)
 
 
 def read_retime(builder: Any, job: Dict[str, Any]) -> None:
