@@ -84,7 +84,7 @@ def test_a_joint_the_arm_does_not_have_is_an_error(tmp_path):
     file.write_text("joint_limits:\n  elbow:\n    has_velocity_limits: true\n    max_velocity: 1.0\n")
     with pytest.raises(LimitsFileError, match=r"joint_limits\.elbow: not a joint of the arm"):
         apply_moveit_joint_limits(ur5e(), file)
-    with pytest.raises(LimitsFileError, match="missing.yaml: cannot read the limits file: No such file or directory"):
+    with pytest.raises(LimitsFileError, match="missing.yaml: the limits file cannot be read: No such file or directory"):
         read_moveit_joint_limits(tmp_path / "missing.yaml")
 
 

@@ -64,7 +64,8 @@ class Source:
         try:
             data = limits.read_bounded(path, what, self._fail)
         except OSError as error:
-            raise self._fail(f"{path}: cannot read the {what}: {error.strerror or error}", None) from error
+            reason = f"cannot read the {what}" if self._what == "job" else f"the {what} cannot be read"
+            raise self._fail(f"{path}: {reason}: {error.strerror or error}", None) from error
         return limits.decode_utf8(path, data, what, self._fail)
 
     def _parse(self, text: str) -> Any:
