@@ -86,7 +86,10 @@ class Source:
             if node is None:
                 raise fail(f"{path}: the {self._what}{' file' if self._what == 'job' else ''} is empty", None)
             self._walk(node, ())
-            return loader.construct_document(node)
+            try:
+                return loader.construct_document(node)
+            except (ValueError, TypeError, OverflowError) as error:  # `!!float abc`: the tag's constructor fails
+                raise self._untyped(loader, node, error) from error
         except yaml.MarkedYAMLError as error:
             mark = error.problem_mark or error.context_mark
             where = f"{path}:{mark.line + 1}:{mark.column + 1}" if mark else str(path)
@@ -95,6 +98,26 @@ class Source:
             raise fail(f"{path}: not valid YAML: {error}", None) from error
         finally:
             loader.dispose()
+
+    def _untyped(self, loader: Any, root: Any, error: Exception) -> Exception:
+        """The error of a scalar its tag cannot make (``!!float abc``, ``!!int 1x``), at the
+        first such scalar's line and column (each scalar constructed again, alone, to find it)."""
+        pending = [root]
+        while pending:  # depth first, in the order of the file (nesting is bounded by now)
+            node = pending.pop()
+            if isinstance(node, yaml.ScalarNode):
+                loader.recursive_objects.clear()  # what the failed construction left behind
+                try:
+                    loader.construct_object(node)
+                except (ValueError, TypeError, OverflowError) as failed:
+                    mark = node.start_mark
+                    value = node.value if len(node.value) <= 200 else node.value[:200] + "…"
+                    return self._fail(f"{self.path}:{mark.line + 1}:{mark.column + 1}: not valid YAML: {value!r} is no "
+                                      f"{node.tag.rsplit(':', 1)[-1]} ({failed})", mark.line + 1)
+            else:
+                children = [n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode) else list(node.value)
+                pending.extend(reversed(children))
+        return self._fail(f"{self.path}: not valid YAML: {error}", None)
 
     def _walk(self, node: Any, key_path: Tuple[str, ...]) -> None:
         self.marks.setdefault(key_path, (node.start_mark.line + 1, node.start_mark.column + 1))
