@@ -614,3 +614,11 @@ def test_an_effort_limit_the_static_torque_breaks_is_reported_not_raised(tmp_pat
     moveit.write_text("joint_limits:\n  shoulder_lift_joint:\n    has_effort_limits: true\n    max_effort: 5.0\n")
     status, err = cli_in_child(["plan", str(lin_job_with(tmp_path, f"limits_file: {moveit}")), "-o", str(tmp_path / "out")])
     assert status == 3 and "effort of shoulder_lift_joint: " in err
+
+
+def test_a_job_value_its_tag_cannot_make_is_refused_at_its_place(tmp_path):
+    job = tmp_path / "tagged.yaml"
+    job.write_text((DATA.parent.parent / "examples" / "jobs" / "blended_tool_move.yaml").read_text()
+                   .replace("velocity: 0.25", "velocity: !!float quick", 1))
+    status, err = cli_in_child(["check", str(job)])
+    assert status == 1 and re.search(rf"{re.escape(str(job))}:\d+:\d+: not valid YAML: 'quick' is no float", err), err

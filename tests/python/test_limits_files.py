@@ -216,3 +216,28 @@ def test_a_directory_fifo_or_device_is_named_for_what_it_is(tmp_path):
         read_pilz_cartesian_limits(fifo)
     with pytest.raises(LimitsFileError, match=r"/dev/null: is not a regular file"):
         read_moveit_joint_limits("/dev/null")
+
+
+SEEDS = pathlib.Path(__file__).resolve().parents[1] / "fuzz" / "corpus" / "fuzz_limits_files"
+
+
+@pytest.mark.parametrize("seed", sorted(SEEDS.iterdir()), ids=lambda p: p.name)
+def test_the_fuzzing_seeds_read_or_are_refused(seed):
+    # valid_* seeds read as one kind of limits file; bad_* seeds are refused by both readers.
+    outcomes = []
+    for reader in (read_moveit_joint_limits, read_pilz_cartesian_limits):
+        try:
+            reader(seed)
+            outcomes.append("read")
+        except LimitsFileError as error:
+            assert str(error).startswith(str(seed)) and len(str(error)) < 2000
+            outcomes.append("refused")
+    assert outcomes.count("read") == (1 if seed.name.startswith("valid_") else 0), outcomes
+
+
+@pytest.mark.parametrize("tagged, shown", [("!!float fast", "'fast' is no float"), ("!!int 1x", "'1x' is no int")])
+def test_a_value_its_tag_cannot_make_is_refused_at_its_place(tmp_path, tagged, shown):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_text(f"joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: {tagged}\n")
+    with pytest.raises(LimitsFileError, match=re.escape(f"{file}:4:19: not valid YAML: {shown}")):
+        read_moveit_joint_limits(file)
