@@ -136,8 +136,11 @@ fuzz: deps python
 # (deep nesting, aliases, huge numbers, bytes that are not UTF-8). Any finding fails. With
 # atheris' start-up (it instruments PyYAML, jsonschema, numpy) the three take under 3 minutes.
 FUZZ_CI_SECONDS ?= 35
+# Limits files (fuzz_limits_files: MoveIt / Pilz, alone and named by a job) for FUZZ_CI_LIMITS_SECONDS.
+FUZZ_CI_LIMITS_SECONDS ?= 20
 fuzz-ci: deps
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_jobs py_fuzz_urdf py_fuzz_hexapod_json
+	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_LIMITS_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_limits_files
 
 # The sweeps at 10⁷ cases per family (doc/guarantees-and-measurements.md): their own Release build directory, only the
 # tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.

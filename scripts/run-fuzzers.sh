@@ -10,14 +10,16 @@
 # with the installed dispkin package (`make python`); atheris comes from requirements-fuzz.txt,
 # installed here on first use. Its seeds are examples/jobs and tests/data/jobs. py_fuzz_urdf and
 # py_fuzz_hexapod_json (tests/fuzz/fuzz_loaders.py) fuzz the C++ loaders the same way, through
-# the package, without clang: `make fuzz-ci` runs the three for a short time.
+# the package, without clang: `make fuzz-ci` runs the three for a short time. fuzz_limits_files
+# (tests/fuzz/fuzz_limits_files.py, atheris) fuzzes MoveIt and Pilz limits files, alone and named
+# by a job; its seeds are tests/fuzz/corpus/fuzz_limits_files.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 
 build=${FUZZ_BUILD:-build/fuzz}
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs fuzz_limits_files)
 # The dictionary of a target (tests/fuzz/dict/<target>.dict: deep nesting, aliases, huge numbers,
 # bytes that are not UTF-8), when it has one; py_<loader> shares the C++ target's.
 dict_of() { local d="tests/fuzz/dict/${1#py_}.dict"; [ -f "$d" ] && echo "-dict=$d"; }
@@ -29,7 +31,7 @@ failed=0
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/artifacts/$t" "$build/logs"
   log="$build/logs/$t.log"
-  if [ "$t" = fuzz_jobs ] || [ "${t#py_}" != "$t" ]; then
+  if [ "$t" = fuzz_jobs ] || [ "$t" = fuzz_limits_files ] || [ "${t#py_}" != "$t" ]; then
     if ! "$venv/bin/python" -c "import atheris" 2>/dev/null; then
       "$venv/bin/python" -m pip install -q -r requirements-fuzz.txt || { echo "$t: cannot install atheris"; failed=1; continue; }
     fi
@@ -46,6 +48,10 @@ for t in "${targets[@]}"; do
     # -timeout=60: instrumented, PyYAML reads the 1000-level seed in seconds, not milliseconds.
     FUZZ_JOBS_SCRATCH="$build/jobs_scratch" "$venv/bin/python" tests/fuzz/fuzz_jobs.py "${stop[@]}" -timeout=60 $(dict_of "$t") \
       -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" "$build/corpus/$t" >"$log" 2>&1
+  elif [ "$t" = fuzz_limits_files ]; then
+    # MoveIt / Pilz limits files (tests/fuzz/fuzz_limits_files.py), read alone and through a job.
+    FUZZ_LIMITS_SCRATCH="$build/limits_scratch" "$venv/bin/python" tests/fuzz/fuzz_limits_files.py "${stop[@]}" -timeout=60 \
+      $(dict_of "$t") -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" "$build/corpus/$t" "tests/fuzz/corpus/$t" >"$log" 2>&1
   else
     "$build/tests/fuzz/$t" "${stop[@]}" $(dict_of "$t") -print_final_stats=1 -artifact_prefix="$build/artifacts/$t/" \
       "$build/corpus/$t" "tests/fuzz/corpus/$t" >"$log" 2>&1

@@ -92,10 +92,11 @@ def build_parser() -> argparse.ArgumentParser:
         "time_from_start; hexapod legs or serial-arm joints are the joints), plus poses as XYZUVW (m, degrees), the "
         "path velocity and the fastest point's speed per sample; and a summary (duration, peak point speed "
         "per group, which limit binds), also printed. File names and the sample period come from the job's "
-        "`output` section. Exit status: 0 done; 1 invalid job or planning failed; 2 bad arguments; 3 the "
-        "trajectory breaks a machine limit (hexapod leg range or speed, joint position, velocity, acceleration or "
-        "effort: each one is printed on stderr with the joint, the time and by how much) - the files are written "
-        "all the same; --allow-violations exits 0.",
+        "`output` section; they are checked before planning (never the job file or a file it reads). Exit status: "
+        "0 done, every limit held; 1 invalid job, an output that cannot be written, or planning failed; 2 bad "
+        "arguments; 3 the trajectory breaks a machine limit at a sample or between samples (hexapod leg range or "
+        "speed, joint position, velocity, acceleration or effort: each one is printed on stderr with the joint, the "
+        "time and by how much) - the files are written all the same; --allow-violations exits 0.",
     )
     plan_.add_argument("job", metavar="JOB.yaml", help="the job file")
     plan_.add_argument("-o", "--outdir", metavar="OUTDIR", default=".",

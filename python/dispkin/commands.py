@@ -6,9 +6,10 @@ the trajectory breaks a machine limit. The demo (:mod:`dispkin.demo`) plans its 
 """
 
 import json
+import os
 import pathlib
 import sys
-from typing import List, Optional, TextIO
+from typing import Dict, List, Optional, TextIO, Tuple
 
 import numpy as np
 
@@ -87,6 +88,7 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     if plot:
         require_matplotlib()  # before the work, not after it
     job = jobs.load_job(job_file)
+    check_outputs(job, outdir, plot)  # before the work too: planning may take minutes
     progress.stage("planning")
     trajectory = jobs.plan_job(job)
     samples = jobs.sample_job(job, trajectory, progress=lambda stage, done, total: progress.step(f"sampling ({stage})", done, total))
@@ -94,7 +96,11 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     summary = jobs.summarize(job, trajectory, samples)
     progress.stage("writing")
     directory = pathlib.Path(outdir)
-    directory.mkdir(parents=True, exist_ok=True)
+    check_outputs(job, outdir, plot)  # again: planning took time, and the files may have changed
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise jobs.JobError(f"-o OUTDIR = {outdir!r}: cannot be made: {error.strerror or error}") from error
     written = [directory / job.outputs["csv"], directory / job.outputs["json"], directory / job.outputs["summary"]]
     jobs.write_csv(samples, written[0])
     written[1].write_text(json.dumps(jobs.trajectory_json(job, samples, summary), indent=1) + "\n", encoding="utf-8")
@@ -114,6 +120,62 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     for v in broken:
         print("  " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe(), file=errors)
     return 0 if allow_violations else EXIT_LIMITS_BROKEN
+
+
+def output_files(job, directory: pathlib.Path, plot: bool) -> Dict[str, pathlib.Path]:
+    """The files `dispkin plan` writes, by the key that names them (output.csv, .json, .summary;
+    with --plot the PNG, named after the CSV)."""
+    files = {key: directory / name for key, name in job.outputs.items()}
+    if plot:
+        files["png"] = directory / f"{pathlib.Path(job.outputs['csv']).stem}.png"
+    return files
+
+
+def check_outputs(job, outdir: str, plot: bool) -> None:
+    """Raise a JobError unless `dispkin plan` can write its files into OUTDIR: OUTDIR is a
+    directory or can be made one, each output is a new or regular file, the PNG of --plot is
+    none of the others, and no output is the job file or a file it reads (URDF, hexapod file,
+    limits files), however named: compared by resolved path and by inode (symlinks, hard links)."""
+    from .jobs import JobError
+
+    directory = pathlib.Path(outdir)
+    existing = next((p for p in (directory, *directory.parents) if os.path.lexists(p)), None)
+    if existing is not None and not existing.is_dir():
+        where = "is not a directory" if existing == directory else f"cannot be made: {str(existing)!r} is not a directory"
+        raise JobError(f"-o OUTDIR = {outdir!r}: {where}")
+    inputs = [("the job file", job.file)] + [("a file the job reads", p) for p in job.inputs]
+    files = output_files(job, directory, plot)
+    for key, path in files.items():
+        problem = _output_problem(path, inputs)
+        if key == "png" and problem is None:
+            problem = next((f"is also output.{other}" for other, p in files.items() if other != "png" and p == path), None)
+        if problem is not None:
+            raise _output_error(job, key, path, problem)
+
+
+def _output_problem(path: pathlib.Path, inputs: List[Tuple[str, pathlib.Path]]) -> Optional[str]:
+    """Why `dispkin plan` must not write `path` (None: it may)."""
+    for what, source in inputs:
+        if path.resolve() == source.resolve() or (path.exists() and source.exists() and os.path.samefile(path, source)):
+            return f"is {what} ({source}): an input is never overwritten"
+    if path.is_dir():
+        return "is a directory"
+    if path.exists() and not path.is_file():
+        return "is not a regular file (a FIFO, a device or a socket)"
+    return None
+
+
+def _output_error(job, key: str, path: pathlib.Path, problem: str):
+    """The JobError of an output file `dispkin plan` must not write, at the job's key that
+    names it (the PNG: the --plot option)."""
+    from .jobs import JobError
+
+    if key == "png":
+        return JobError(f"--plot: {str(path)!r} {problem}")
+    message = f"{job.outputs[key]!r}: {str(path)!r} {problem}"
+    if job.source is not None:
+        return job.source.error(("output", key), message)
+    return JobError(f"{job.file}: output.{key}: {message}")
 
 
 def require_matplotlib() -> None:

@@ -18,55 +18,99 @@ r = max_trans_vel / max_rot_vel makes a pure rotation at max_rot_vel move the sp
 max_trans_vel (its fastest point moves at least at |ω| r); it under-uses both limits on
 combined moves, so use it with ``limits(angular=False)``.
 
-Every mistake raises :class:`LimitsFileError` (a ValueError) naming the file and the key.
+Every mistake raises :class:`LimitsFileError` (a ValueError) naming the file, the line and
+column, and the key. The files are read under the resource limits of job files (size,
+nesting, aliases, scalar length, UTF-8; doc/resource-limits.md).
 """
 
 import dataclasses
 import math
 import pathlib
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
-import yaml
 
 from ._core import Limits, MetricSet
+from .job.reader import Source
+
+#: dispkin's numeric range of speed, acceleration and jerk limits (include/dispkin/error.hpp).
+LIMIT_RANGE = (1e-12, 1e12)
 
 _PathLike = Union[str, pathlib.Path]
 
+#: Largest magnitude of a number in a limits file: every integer within it is a double, as for
+#: job files (doc/resource-limits.md).
+MAX_INTEGER = 2**53
+
 
 class LimitsFileError(ValueError):
-    """A limits file that cannot be read or has a bad entry; the message names the file and key."""
+    """A limits file that cannot be read or has a bad entry; the message names the file, the
+    line and column and the key."""
 
 
-def _load(path: _PathLike) -> Tuple[pathlib.Path, Any]:
-    file = pathlib.Path(path)
-    try:
-        text = file.read_text()
-    except OSError as error:
-        raise LimitsFileError(f"{file}: cannot be read: {error.strerror or error}") from None
-    try:
-        return file, yaml.safe_load(text)
-    except yaml.YAMLError as error:
-        raise LimitsFileError(f"{file}: not valid YAML: {error}") from None
+def _error(message: str, line: Optional[int] = None) -> LimitsFileError:
+    return LimitsFileError(message)
 
 
-def _number(file: pathlib.Path, key: str, value: Any, *, positive: bool = False, allow_negative: bool = True) -> float:
+class LimitsDocument:
+    """A limits file read under the resource limits of job files (size, nesting, aliases,
+    scalar length; :mod:`dispkin.job.limits`): its data and where each key is."""
+
+    def __init__(self, path: _PathLike):
+        #: The file.
+        self.file = pathlib.Path(path)
+        self._source = Source(self.file, "limits file", _error)
+        #: The data as YAML gives it (YAML 1.2 numbers: 1e-3 is a float).
+        self.data: Any = self._source.data
+
+    def place(self, keys: Sequence[Any]) -> str:
+        """``FILE:LINE:COLUMN`` of the deepest part of `keys` in the file (``FILE`` if none)."""
+        mark = self._source.mark(keys)
+        return f"{self.file}:{mark[0]}:{mark[1]}" if mark else str(self.file)
+
+    def fail(self, keys: Sequence[Any], text: str) -> LimitsFileError:
+        """The error ``FILE:LINE:COLUMN: key.path<text>`` at the deepest part of `keys` in the
+        file; `text` is `` = value: reason`` or ``: reason``."""
+        return LimitsFileError(f"{self.place(keys)}: {'.'.join(str(k) for k in keys)}{text}")
+
+
+def load_limits_file(path: Union[_PathLike, LimitsDocument]) -> LimitsDocument:
+    """The limits file at `path` read under the resource limits of job files (a
+    LimitsDocument is returned as it is)."""
+    return path if isinstance(path, LimitsDocument) else LimitsDocument(path)
+
+
+def _number(doc: LimitsDocument, keys: Sequence[Any], value: Any, *, positive: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise LimitsFileError(f"{file}: {key} = {value!r}: must be a number")
+        raise doc.fail(keys, f" = {echo(value)}: must be a number")
+    if isinstance(value, int) and abs(value) > MAX_INTEGER:
+        raise doc.fail(keys, f" = an integer of {value.bit_length()} bits: must be within ±2^53 ({MAX_INTEGER})")
     number = float(value)
     if not math.isfinite(number):
-        raise LimitsFileError(f"{file}: {key} = {number}: must be finite")
+        raise doc.fail(keys, f" = {number}: must be finite")
     if positive and not number > 0:
-        raise LimitsFileError(f"{file}: {key} = {number:g}: must be > 0")
-    if not allow_negative and number < 0:
-        raise LimitsFileError(f"{file}: {key} = {number:g}: must not be negative")
+        raise doc.fail(keys, f" = {number:g}: must be > 0")
     return number
 
 
-def _flag(file: pathlib.Path, key: str, value: Any) -> bool:
+def _in_limit_range(doc: LimitsDocument, keys: Sequence[Any], value: float) -> None:
+    """A speed, acceleration, jerk or effort limit: within dispkin's numeric range in magnitude
+    (as the path limits of a job are; 1e300 rad/s is no limit the library can compute with)."""
+    if not LIMIT_RANGE[0] <= abs(value) <= LIMIT_RANGE[1]:
+        raise doc.fail(keys, f" = {value:g}: must be in [{LIMIT_RANGE[0]:g}, {LIMIT_RANGE[1]:g}] in magnitude "
+                       "(dispkin's numeric range of limits)")
+
+
+def _flag(doc: LimitsDocument, keys: Sequence[Any], value: Any) -> bool:
     if not isinstance(value, bool):
-        raise LimitsFileError(f"{file}: {key} = {value!r}: must be true or false")
+        raise doc.fail(keys, f" = {echo(value)}: must be true or false")
     return value
+
+
+def echo(value: Any) -> str:
+    """A value of the file for a message: its repr, at most 200 characters of it."""
+    text = repr(value)
+    return text if len(text) <= 200 else f"{text[:200]}… ({len(text)} characters)"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -91,6 +135,8 @@ class MoveItJointLimits:
     default_velocity_scaling_factor: float = 1.0
     default_acceleration_scaling_factor: float = 1.0
     source: str = ""
+    #: "FILE:LINE:COLUMN" of each joint's entry, for messages about it.
+    places: Dict[str, str] = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
 
 _LIMIT_KEYS = {  # has_*_limits flag -> the values it enables
@@ -102,38 +148,45 @@ _LIMIT_KEYS = {  # has_*_limits flag -> the values it enables
 }
 
 
-def read_moveit_joint_limits(path: _PathLike) -> MoveItJointLimits:
+def read_moveit_joint_limits(path: Union[_PathLike, LimitsDocument]) -> MoveItJointLimits:
     """Reads MoveIt's joint_limits.yaml (the ``joint_limits:`` mapping of joint name to
     ``has_*_limits`` flags and values, plus the optional default scaling factors)."""
-    file, data = _load(path)
+    doc = load_limits_file(path)
+    data = doc.data
     if not isinstance(data, dict) or not isinstance(data.get("joint_limits"), dict):
-        raise LimitsFileError(f"{file}: joint_limits: missing; expected a mapping of joint names to their limits")
+        raise doc.fail(("joint_limits",), ": missing; expected a mapping of joint names to their limits")
     factors = {}
     for name in ("default_velocity_scaling_factor", "default_acceleration_scaling_factor"):
-        factor = _number(file, name, data.get(name, 1.0), positive=True)
+        factor = _number(doc, (name,), data.get(name, 1.0), positive=True)
         if factor > 1.0:
-            raise LimitsFileError(f"{file}: {name} = {factor:g}: must be in (0, 1]")
+            raise doc.fail((name,), f" = {factor:g}: must be in (0, 1]")
         factors[name] = factor
     joints = {}
     for joint, entry in data["joint_limits"].items():
-        where = f"joint_limits.{joint}"
+        where = ("joint_limits", joint)
         if not isinstance(entry, dict):
-            raise LimitsFileError(f"{file}: {where} = {entry!r}: expected a mapping of has_*_limits flags and values")
-        values: Dict[str, Optional[float]] = {}
-        for flag, keys in _LIMIT_KEYS.items():
-            if not _flag(file, f"{where}.{flag}", entry.get(flag, False)):
-                continue
-            for key in keys:
-                if key not in entry:
-                    raise LimitsFileError(f"{file}: {where}.{key}: missing although {flag} is true")
-                positive = key.startswith("max_") and key != "max_position"
-                values[key] = _number(file, f"{where}.{key}", entry[key], positive=positive)
-        if values.get("min_position") is not None and not values["min_position"] < values["max_position"]:
-            raise LimitsFileError(
-                f"{file}: {where}.(min_position, max_position) = ({values['min_position']:g}, "
-                f"{values['max_position']:g}): must have min_position < max_position")
-        joints[str(joint)] = JointLimitEntry(**values)
-    return MoveItJointLimits(joints, source=str(file), **factors)
+            raise doc.fail(where, f" = {echo(entry)}: expected a mapping of has_*_limits flags and values")
+        joints[str(joint)] = _joint_entry(doc, where, entry)
+    places = {name: doc.place(("joint_limits", name)) for name in joints}
+    return MoveItJointLimits(joints, source=str(doc.file), places=places, **factors)
+
+
+def _joint_entry(doc: LimitsDocument, where: Tuple[Any, ...], entry: Dict[Any, Any]) -> JointLimitEntry:
+    """One joint's limits: the values its has_*_limits flags enable."""
+    values: Dict[str, Optional[float]] = {}
+    for flag, keys in _LIMIT_KEYS.items():
+        if not _flag(doc, where + (flag,), entry.get(flag, False)):
+            continue
+        for key in keys:
+            if key not in entry:
+                raise doc.fail(where + (key,), f": missing although {flag} is true")
+            values[key] = _number(doc, where + (key,), entry[key], positive=key not in ("min_position", "max_position"))
+            if key not in ("min_position", "max_position"):
+                _in_limit_range(doc, where + (key,), values[key])
+    if values.get("min_position") is not None and not values["min_position"] < values["max_position"]:
+        raise doc.fail(where + ("min_position",), f" = {values['min_position']:g}: must have min_position < max_position "
+                       f"(max_position = {values['max_position']:g})")
+    return JointLimitEntry(**values)
 
 
 def apply_moveit_joint_limits(arm: Any, limits: Union[MoveItJointLimits, _PathLike]) -> Tuple[Any, Optional[np.ndarray]]:
@@ -147,7 +200,7 @@ def apply_moveit_joint_limits(arm: Any, limits: Union[MoveItJointLimits, _PathLi
     names = list(arm.joint_names)
     unknown = sorted(set(limits.joints) - set(names))
     if unknown:
-        raise LimitsFileError(f"{limits.source}: joint_limits.{unknown[0]}: not a joint of the arm "
+        raise LimitsFileError(f"{limits.places.get(unknown[0], limits.source)}: joint_limits.{unknown[0]}: not a joint of the arm "
                               f"(its joints: {', '.join(names)})")
     current = arm.joint_limits
     lower, upper = np.array(current.lower, dtype=float), np.array(current.upper, dtype=float)
@@ -198,22 +251,24 @@ class PilzCartesianLimits:
         metric_set.add_sphere(center, self.rotation_sphere_radius)
 
 
-def read_pilz_cartesian_limits(path: _PathLike) -> PilzCartesianLimits:
+def read_pilz_cartesian_limits(path: Union[_PathLike, LimitsDocument]) -> PilzCartesianLimits:
     """Reads cartesian_limits.yaml: the four values under ``cartesian_limits:`` (or at the top
-    level, as in older files). max_trans_dec must be negative (a deceleration), the others > 0."""
-    file, data = _load(path)
+    level, as in older files). max_trans_dec must be negative (a deceleration), the others > 0,
+    and each within dispkin's numeric range of limits, [1e-12, 1e12] in magnitude."""
+    doc = load_limits_file(path)
+    data = doc.data
+    prefix: Tuple[str, ...] = ()
     if isinstance(data, dict) and isinstance(data.get("cartesian_limits"), dict):
-        data, prefix = data["cartesian_limits"], "cartesian_limits."
-    else:
-        prefix = ""
+        data, prefix = data["cartesian_limits"], ("cartesian_limits",)
     if not isinstance(data, dict):
-        raise LimitsFileError(f"{file}: cartesian_limits: missing; expected max_trans_vel, max_trans_acc, "
-                              f"max_trans_dec and max_rot_vel")
+        raise doc.fail(("cartesian_limits",), ": missing; expected max_trans_vel, max_trans_acc, max_trans_dec and max_rot_vel")
     values = {}
     for key in ("max_trans_vel", "max_trans_acc", "max_trans_dec", "max_rot_vel"):
         if key not in data:
-            raise LimitsFileError(f"{file}: {prefix}{key}: missing")
-        values[key] = _number(file, prefix + key, data[key], positive=key != "max_trans_dec")
+            raise doc.fail(prefix + (key,), ": missing")
+        values[key] = _number(doc, prefix + (key,), data[key], positive=key != "max_trans_dec")
+        if values[key] != 0:  # a deceleration of 0 is refused below, for what it is
+            _in_limit_range(doc, prefix + (key,), values[key])
     if not values["max_trans_dec"] < 0:
-        raise LimitsFileError(f"{file}: {prefix}max_trans_dec = {values['max_trans_dec']:g}: must be < 0 (a deceleration)")
+        raise doc.fail(prefix + ("max_trans_dec",), f" = {values['max_trans_dec']:g}: must be < 0 (a deceleration)")
     return PilzCartesianLimits(**values)

@@ -574,7 +574,7 @@ def missing_job():
 
 
 row("jobs.load_job", "missing file", lambda: jobs.load_job(missing_job()), V, "missing.yaml: cannot read the job file: No such file or directory")
-row("jobs.load_job", "not UTF-8", lambda: jobs.load_job(job_file("latin1.yaml", b"name: d\xe9mo\n")), V, "latin1.yaml: not a UTF-8 text file")
+row("jobs.load_job", "not UTF-8", lambda: jobs.load_job(job_file("latin1.yaml", b"name: d\xe9mo\n")), V, "latin1.yaml:1:8: the job file is not UTF-8 text: byte 0xe9")
 row("jobs.load_job", "empty file", lambda: jobs.load_job(job_file("empty.yaml", "")), V, "empty.yaml: the job file is empty")
 row("jobs.load_job", "malformed YAML (unclosed bracket)", lambda: jobs.load_job(job_file("malformed.yaml", data=[("jerk: 5.0}", "jerk: 5.0")])),
     V, "malformed.yaml:9:1: not valid YAML: expected ',' or '}', but got '<stream end>'")
@@ -712,6 +712,104 @@ row("Path.circ", "move velocity 5e-324", lambda: dispkin.Path.circ(A, dispkin.Po
     "velocity = 4.94065645841e-324: must be in [1e-12, 1e12]")
 row("SerialArm.gravity", "gravity 1e308 (NaN torques)", lambda: setattr(arm(), "gravity", [0, 0, 1e308]), V,
     "gravity = (0, 0, 1e+308): must have coordinates within ±1e12 m/s²")
+
+section("Command line, second round")
+UR_JOB = """name: ur
+machine:
+  serial_arm: {{urdf: {urdf}, base_link: base_link, tip_link: tool0, q_start: [0.0, -1.9, 1.9, -1.57, -1.57, 0.0]}}
+metric_set:
+  points:
+    - relative: [[0, 0, 0.15]]
+    - {{shape: sphere, radius: 0.04, center: [0, 0, 0]}}
+moves:
+  - lin: {{by: {{xyzuvw: [0.2, 0.1, -0.1, 0, 0, 30]}}}}
+limits: {{velocity: 0.25, acceleration: 1.0, jerk: 10.0}}
+"""
+
+
+def ur_job(name, *lines):
+    """The UR5e LIN move of examples/jobs/ur5e_lin_move.yaml in the job directory, `lines` appended."""
+    return pathlib.Path(job_file(name, UR_JOB.format(urdf=URDF / "arm_ur5e_dh.urdf") + "".join(line + "\n" for line in lines))).name
+
+
+def named_limits_file(name, text):
+    path = JOB_DIR / name
+    path.write_bytes(text) if isinstance(text, bytes) else path.write_text(text)
+    return str(path)
+
+
+def effort_limit(joint, value):
+    return f"joint_limits:\n  {joint}:\n    has_effort_limits: true\n    max_effort: {value}\n"
+
+
+def special(name, make):
+    """A FIFO or directory `name` in the job directory (made once)."""
+    path = JOB_DIR / name
+    if not path.exists():
+        make(path)
+    return path.name
+
+
+# Eight anchors, each repeating the one before nine times: 9^8 = 4.3e7 values from nine lines.
+BOMB_LIMITS = "a: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
+    f"{c}: &{c} [" + ", ".join([f"*{p}"] * 9) + "]\n" for p, c in zip("abcdefg", "bcdefgh")) + "joint_limits: {elbow_joint: *h}\n"
+
+# Between the samples (every 0.01 s) shoulder_pan_joint needs 3.927 N·m, at them at most 3.842.
+row("cli.main", "plan: an effort limit broken only between samples (was exit 0)",
+    lambda: run_cli("plan", ur_job("effort_between.yaml", f"limits_file: {named_limits_file('pan_3.9.yaml', effort_limit('shoulder_pan_joint', 3.9))}"), "-o", "out"),
+    ExitStatus, "exit status 3: dispkin plan: effort_between.yaml: the trajectory breaks 1 machine limit(s) (use --allow-violations to accept it):\n"
+    "  effort of shoulder_pan_joint: ")
+row("cli.main", "plan: a static torque beyond its effort limit (was a RuntimeError traceback)",
+    lambda: run_cli("plan", ur_job("effort_static.yaml", f"limits_file: {named_limits_file('lift_5.yaml', effort_limit('shoulder_lift_joint', 5.0))}"), "-o", "out"),
+    ExitStatus, "exit status 3: dispkin plan: effort_static.yaml: the trajectory breaks 1 machine limit(s) (use --allow-violations to accept it):\n"
+    "  effort of shoulder_lift_joint: ")
+row("cli.main", "plan: output.csv '..' (was an IsADirectoryError traceback)", lambda: run_cli("plan", ur_job("dotdot.yaml", "output: {csv: '..'}"), "-o", "out"),
+    ExitStatus, "exit status 1: dispkin plan: dotdot.yaml:11:10: output.csv: '..': a file name, not a path (the directory is `-o OUTDIR`)")
+row("cli.main", "plan: a 300-character job name (was an OSError traceback)",
+    lambda: run_cli("plan", pathlib.Path(job_file("long_name.yaml", data=[("metric_set:", "name: " + "n" * 300 + "\nmetric_set:")])).name, "-o", "out"),
+    ExitStatus, "exit status 1: dispkin plan: long_name.yaml:1:1: name: 'nnnnn")
+row("cli.main", "plan -o naming an existing file (was a FileExistsError traceback)",
+    lambda: run_cli("plan", pathlib.Path(job_file("to_file.yaml")).name, "-o", pathlib.Path(job_file("a_file.txt", "not a directory\n")).name),
+    ExitStatus, "exit status 1: dispkin plan: -o OUTDIR = 'a_file.txt': is not a directory")
+row("cli.main", "plan: output.csv is the job file itself (was overwritten)",
+    lambda: run_cli("plan", pathlib.Path(job_file("itself.yaml", GOOD_JOB + "output: {csv: itself.yaml}\n")).name, "-o", "."),
+    ExitStatus, "exit status 1: dispkin plan: itself.yaml:9:10: output.csv: 'itself.yaml': 'itself.yaml' is the job file (itself.yaml): an input is never overwritten")
+row("cli.main", "plan: output.summary is the job's limits file (was overwritten)",
+    lambda: run_cli("plan", ur_job("over_limits.yaml", f"limits_file: {named_limits_file('pan_4.yaml', effort_limit('shoulder_pan_joint', 4.0))}",
+                                   "output: {summary: pan_4.yaml}"), "-o", "."),
+    ExitStatus, "output.summary: 'pan_4.yaml': 'pan_4.yaml' is a file the job reads (")
+row("cli.main", "check: limits_file a FIFO (was 'does not exist')",
+    lambda: run_cli("check", ur_job("fifo_limits.yaml", f"limits_file: {special('limits.fifo', os.mkfifo)}")),
+    ExitStatus, "fifo_limits.yaml:11:1: limits_file: ")
+row("cli.main", "check: limits_file a directory (was 'does not exist')",
+    lambda: run_cli("check", ur_job("dir_limits.yaml", f"limits_file: {special('limits.dir', os.mkdir)}")),
+    ExitStatus, "limits.dir': is a directory, not a file")
+row("cli.main", "check: the job file is a FIFO (would wait for a writer)", lambda: run_cli("check", special("job.fifo", os.mkfifo)),
+    ExitStatus, "exit status 1: dispkin check: job.fifo: is not a regular file (a FIFO, a device or a socket), not a job file")
+row("read_moveit_joint_limits", "alias bomb of 9 lines (was 1 GB and a 226 MB message)",
+    lambda: limits_files.read_moveit_joint_limits(named_limits_file("bomb_limits.yaml", BOMB_LIMITS)), limits_files.LimitsFileError,
+    "(limits file): the limits file expands to more than 500000 values")
+row("read_moveit_joint_limits", "nesting 1000 deep (was a RecursionError)",
+    lambda: limits_files.read_moveit_joint_limits(named_limits_file("deep_limits.yaml", "joint_limits: " + "[" * 1000 + "]" * 1000 + "\n")),
+    limits_files.LimitsFileError, "deep_limits.yaml:1:46: (limits file): mappings and lists nest deeper than 32 levels")
+row("read_moveit_joint_limits", "a 401-digit integer (was an OverflowError)",
+    lambda: limits_files.read_moveit_joint_limits(named_limits_file("bigint_limits.yaml", effort_limit("elbow_joint", "1" + "0" * 400))),
+    limits_files.LimitsFileError, "bigint_limits.yaml:4:5: joint_limits.elbow_joint.max_effort = an integer of 1329 bits: must be within ±2^53")
+row("read_moveit_joint_limits", "a Latin-1 byte (was a UnicodeDecodeError)",
+    lambda: limits_files.read_moveit_joint_limits(named_limits_file("latin1_limits.yaml", b"joint_limits:\n  elbow_joint: # d\xe9mo\n")),
+    limits_files.LimitsFileError, "latin1_limits.yaml:2:19: the limits file is not UTF-8 text: byte 0xe9")
+row("read_pilz_cartesian_limits", "max_rot_vel 1e300 (was accepted)",
+    lambda: limits_files.read_pilz_cartesian_limits(named_limits_file("pilz_big.yaml", "max_trans_vel: 1\nmax_trans_acc: 2\nmax_trans_dec: -5\nmax_rot_vel: 1e300\n")),
+    limits_files.LimitsFileError, "pilz_big.yaml:4:1: max_rot_vel = 1e+300: must be in [1e-12, 1e+12] in magnitude")
+row("jobs.load_job", "nested-SLERP blend_weight 1e-300 (was 'planning failed: segments[0].length = 0')",
+    lambda: jobs.load_job(job_file("tiny_weight.yaml", data=[("  - lin: {to: {xyzuvw: [0.05, 0.02, 0, 10, 0, 30]}}",
+                                                              "  - lin: {to: {xyzuvw: [0.05, 0, 0, 0, 0, 0]}}\n"
+                                                              "  - lin: {to: {xyzuvw: [0.05, 0.05, 0, 0, 0, 30]}}\n"
+                                                              "    blend_weight: 1e-300\n    orientation_blend: nested_slerp")])),
+    V, "tiny_weight.yaml:9:5: moves[1].blend_weight: 1e-300: must be at least 1e-05")
+row("jobs.load_job", "angular_velocity 1e300 deg/s (was shown in rad/s at `limits`)",
+    lambda: jobs.load_job(job_file("angular.yaml", data=[("jerk: 5.0}", "jerk: 5.0, angular_velocity: 1e300}")])),
+    V, "angular.yaml:8:55: limits.angular_velocity: 1e+300: must be in [5.72958e-11, 5.72958e+13] deg/s")
 
 ROWS = R
 

@@ -1,6 +1,8 @@
 """MoveIt joint_limits.yaml and Pilz cartesian_limits.yaml."""
 
+import os
 import pathlib
+import re
 
 import numpy as np
 import pytest
@@ -82,7 +84,7 @@ def test_a_joint_the_arm_does_not_have_is_an_error(tmp_path):
     file.write_text("joint_limits:\n  elbow:\n    has_velocity_limits: true\n    max_velocity: 1.0\n")
     with pytest.raises(LimitsFileError, match=r"joint_limits\.elbow: not a joint of the arm"):
         apply_moveit_joint_limits(ur5e(), file)
-    with pytest.raises(LimitsFileError, match="cannot be read"):
+    with pytest.raises(LimitsFileError, match="missing.yaml: the limits file cannot be read: No such file or directory"):
         read_moveit_joint_limits(tmp_path / "missing.yaml")
 
 
@@ -136,3 +138,106 @@ def test_bad_pilz_files_name_the_key(tmp_path, text, message):
     with pytest.raises(LimitsFileError) as error:
         read_pilz_cartesian_limits(file)
     assert message in str(error.value)
+
+
+# --- read under the resource limits of job files --------------------------------------------
+
+
+def test_errors_name_the_line_and_column_of_the_key(tmp_path):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_text("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: -1\n")
+    with pytest.raises(LimitsFileError) as error:
+        read_moveit_joint_limits(file)
+    assert str(error.value) == f"{file}:4:5: joint_limits.elbow_joint.max_velocity = -1: must be > 0"
+    pilz = tmp_path / "cartesian_limits.yaml"
+    pilz.write_text("cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: -5\n  max_rot_vel: 1e300\n")
+    with pytest.raises(LimitsFileError) as error:
+        read_pilz_cartesian_limits(pilz)
+    assert str(error.value).startswith(f"{pilz}:5:3: cartesian_limits.max_rot_vel = 1e+300: must be in [1e-12, 1e+12]")
+
+
+def test_numbers_are_yaml_1_2_as_in_job_files(tmp_path):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_text("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 2e0\n")
+    assert read_moveit_joint_limits(file).joints["elbow_joint"].max_velocity == 2.0
+
+
+@pytest.mark.parametrize("text, message", [
+    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 400 + "\n",
+     ":4:5: joint_limits.elbow_joint.max_velocity = an integer of 1329 bits: must be within ±2^53"),
+    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 4400 + "\n",
+     ":4:19: (limits file): a value of 4401 characters, more than 4096"),
+    ("joint_limits: " + "[" * 1000 + "]" * 1000 + "\n", ":1:46: (limits file): mappings and lists nest deeper than 32 levels"),
+    ("joint_limits:\n  elbow_joint:\n    has_effort_limits: true\n    max_effort: 1e300\n",
+     ":4:5: joint_limits.elbow_joint.max_effort = 1e+300: must be in [1e-12, 1e+12] in magnitude"),
+    ("joint_limits:\n  elbow_joint: &e {has_velocity_limits: true, max_velocity: *e}\n",
+     ":2:61: (limits file): the alias *e is inside its own anchor: a limits file is a tree, not a cycle"),
+])
+def test_hostile_moveit_files_are_refused_at_their_place(tmp_path, text, message):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_text(text)
+    with pytest.raises(LimitsFileError) as error:
+        read_moveit_joint_limits(file)
+    assert str(error.value).startswith(str(file)) and message in str(error.value), str(error.value)
+    assert len(str(error.value)) < 1000
+
+
+@pytest.mark.parametrize("data, where", [
+    (b"joint_limits:\n  elbow_joint: # d\xe9mo\n    has_velocity_limits: true\n", ":2:19: the limits file is not UTF-8 text: byte 0xe9"),
+    ("joint_limits: {}\n".encode("utf-16"), ":1:1: the limits file is not UTF-8 text: byte 0xff"),
+])
+def test_bytes_that_are_not_utf8_are_refused_at_their_line_and_column(tmp_path, data, where):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_bytes(data)
+    with pytest.raises(LimitsFileError, match=re.escape(str(file) + where)):
+        read_moveit_joint_limits(file)
+
+
+def test_a_utf8_byte_order_mark_is_read(tmp_path):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_bytes(b"\xef\xbb\xbfjoint_limits:\n  elbow_joint: {has_velocity_limits: true, max_velocity: 1.5}\n")
+    assert read_moveit_joint_limits(file).joints["elbow_joint"].max_velocity == 1.5
+
+
+def test_a_file_beyond_the_size_limit_is_refused_unread(tmp_path):
+    file = tmp_path / "joint_limits.yaml"
+    with open(file, "wb") as f:  # 2 GB, sparse: nothing of it is read
+        f.truncate(2 * 2**30)
+    with pytest.raises(LimitsFileError, match=r"the limits file is larger than 33554432 bytes"):
+        read_moveit_joint_limits(file)
+
+
+def test_a_directory_fifo_or_device_is_named_for_what_it_is(tmp_path):
+    with pytest.raises(LimitsFileError, match=r": is a directory, not a limits file"):
+        read_moveit_joint_limits(tmp_path)
+    fifo = tmp_path / "fifo.yaml"
+    os.mkfifo(fifo)  # opened without a writer: reading it would wait forever
+    with pytest.raises(LimitsFileError, match=r"fifo\.yaml: is not a regular file \(a FIFO, a device or a socket\)"):
+        read_pilz_cartesian_limits(fifo)
+    with pytest.raises(LimitsFileError, match=r"/dev/null: is not a regular file"):
+        read_moveit_joint_limits("/dev/null")
+
+
+SEEDS = pathlib.Path(__file__).resolve().parents[1] / "fuzz" / "corpus" / "fuzz_limits_files"
+
+
+@pytest.mark.parametrize("seed", sorted(SEEDS.iterdir()), ids=lambda p: p.name)
+def test_the_fuzzing_seeds_read_or_are_refused(seed):
+    # valid_* seeds read as one kind of limits file; bad_* seeds are refused by both readers.
+    outcomes = []
+    for reader in (read_moveit_joint_limits, read_pilz_cartesian_limits):
+        try:
+            reader(seed)
+            outcomes.append("read")
+        except LimitsFileError as error:
+            assert str(error).startswith(str(seed)) and len(str(error)) < 2000
+            outcomes.append("refused")
+    assert outcomes.count("read") == (1 if seed.name.startswith("valid_") else 0), outcomes
+
+
+@pytest.mark.parametrize("tagged, shown", [("!!float fast", "'fast' is no float"), ("!!int 1x", "'1x' is no int")])
+def test_a_value_its_tag_cannot_make_is_refused_at_its_place(tmp_path, tagged, shown):
+    file = tmp_path / "joint_limits.yaml"
+    file.write_text(f"joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: {tagged}\n")
+    with pytest.raises(LimitsFileError, match=re.escape(f"{file}:4:19: not valid YAML: {shown}")):
+        read_moveit_joint_limits(file)

@@ -19,6 +19,7 @@ import json
 import math
 import pathlib
 import re
+import stat
 from typing import Any, Callable, Dict, List, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
@@ -43,6 +44,23 @@ _NOT_PARAMETERS_OF = {
     "sphere": ("size", "subdivisions", "count", "circumscribed"),
     "spherical_shell": ("size", "subdivisions", "circumscribed"),
 }
+
+#: The smallest blend_weight: the blend's ends lie at this share of each move from the corner,
+#: and within 1e-6 of a section's end they snap to it (a rotation-vector blend then has nothing
+#: to blend; a nested-SLERP blend rounds to no length, or to 10⁵ sections of 1e-20 m).
+MIN_BLEND_WEIGHT = 1e-5
+#: The smallest blend (m of geometric size), as Path.blended builds no smaller one.
+MIN_BLEND = 1e-9
+
+#: The longest file name (bytes) of Linux's file systems (NAME_MAX).
+MAX_FILE_NAME_BYTES = 255
+
+
+def echo(value: Any) -> str:
+    """A value of the job for a message: its repr, at most 200 characters of it."""
+    text = repr(value)
+    return text if len(text) <= 200 else f"{text[:200]}… ({len(text)} characters)"
+
 
 #: Samples of a Cartesian run's geometry along which the arm's joints are followed to its end.
 _FOLLOW_SAMPLES = 201
@@ -84,6 +102,8 @@ class _Builder:
         self.source = source
         self.data = source.data
         self.directory = source.path.resolve().parent
+        #: The files the job reads besides itself (URDF, hexapod file, limits files).
+        self.inputs: List[pathlib.Path] = []
 
     def fail(self, key_path: KeyPath, message: str) -> JobError:
         """The error `message` at key_path of the job file (to raise)."""
@@ -98,12 +118,47 @@ class _Builder:
         except (ValueError, RuntimeError) as error:
             raise self.fail(key_path, str(error)) from error
 
+    def call_section(self, at: KeyPath, written: Dict[str, Any], function: Any, *args: Any, **kwargs: Any) -> Any:
+        """function(*args, **kwargs) on the values of the mapping at `at` (`written`: as the job
+        gives them); a ValueError / RuntimeError ``name = value: reason`` naming one of its keys
+        is re-raised at that key with the value as written, any other at `at`. (Keys whose
+        units the job converts, degrees, are checked before: the reason would give radians.)"""
+        try:
+            return function(*args, **kwargs)
+        except JobError:
+            raise
+        except (ValueError, RuntimeError) as error:
+            named = re.match(r"(\w+)(?:\[\d+\])? = .*?: (.*)$", str(error), re.S)
+            if named and named.group(1) in written:
+                key = named.group(1)
+                raise self.fail(at + (key,), f"{written[key]!r}: {named.group(2)}") from error
+            raise self.fail(at, str(error)) from error
+
+    def degrees_in_range(self, at: KeyPath, value: float, low: float, high: float, unit: str, *, high_open: bool = False) -> None:
+        """A value the job gives in degrees (`unit`: deg, deg/s, deg/s²) within [low, high] (or
+        [low, high) with high_open), refused with the value as written and the range in the
+        job's unit."""
+        if not (low <= value < high if high_open else low <= value <= high):
+            raise self.fail(at, f"{value!r}: must be in [{low:.6g}, {high:.6g}{')' if high_open else ']'} {unit}")
+
     def file(self, key_path: KeyPath) -> pathlib.Path:
-        """The existing file named at key_path, relative to the job file's directory."""
+        """The existing regular file named at key_path, relative to the job file's directory
+        (a directory, a FIFO or a device is refused for what it is: reading a FIFO would wait
+        for a writer). Every such file is an input of the job (Job.inputs)."""
         path = pathlib.Path(value_at(self.data, key_path))
         path = path if path.is_absolute() else self.directory / path
-        if not path.is_file():
-            raise self.fail(key_path, f"file {str(path)!r} does not exist")
+        try:
+            mode = path.stat().st_mode
+        except OSError as error:
+            reason = "does not exist" if isinstance(error, FileNotFoundError) else f"cannot be read: {error.strerror or error}"
+            raise self.fail(key_path, f"file {str(path)!r} {reason}") from None
+        except ValueError as error:  # a NUL character: no file has such a name
+            raise self.fail(key_path, f"{str(path)!r}: not a file name: {error}") from None
+        if stat.S_ISDIR(mode):
+            raise self.fail(key_path, f"{str(path)!r}: is a directory, not a file")
+        if not stat.S_ISREG(mode):
+            raise self.fail(key_path, f"{str(path)!r}: is not a regular file (a FIFO, a device or a socket)")
+        self.inputs.append(path)
         return path
 
     # Poses ---------------------------------------------------------------------------------
@@ -158,8 +213,10 @@ class _Builder:
         else:
             s = dict(h["symmetric"])
             for angle in ("base_gap", "platform_gap"):  # degrees in the file, radians in the API
+                # Hexapod.symmetric takes a gap in [0, 2π/3): a pair's joints stay apart from the next pair's.
+                self.degrees_in_range(at + ("symmetric", angle), s[angle], 0.0, 120.0, "deg", high_open=True)
                 s[angle] = math.radians(s[angle])
-            job["hexapod"] = self.call(at + ("symmetric",), Hexapod.symmetric, **s)
+            job["hexapod"] = self.call_section(at + ("symmetric",), h["symmetric"], Hexapod.symmetric, **s)
         job["joint_metric"] = bool(h.get("joint_metric", False))
 
     def serial_arm(self, job: Dict[str, Any], a: Dict[str, Any]) -> None:
@@ -311,6 +368,11 @@ class _Builder:
         if "blend" in move and "blend_weight" in move:
             raise self.fail(at + ("blend_weight",), f"{move['blend_weight']}: give the blend by its size (`blend`, m) "
                                                     "or as a share of both moves (`blend_weight`), not both")
+        if "blend_weight" in move and move["blend_weight"] < MIN_BLEND_WEIGHT:
+            raise self.fail(at + ("blend_weight",), f"{move['blend_weight']!r}: must be at least {MIN_BLEND_WEIGHT:g}: a smaller share "
+                            "puts the blend's ends within 1e-06 of the corner, where they meet it, and leaves no blend")
+        if "blend" in move and move["blend"] < MIN_BLEND:
+            raise self.fail(at + ("blend",), f"{move['blend']!r}: must be at least {MIN_BLEND:g} m, the smallest blend dispkin builds")
         if "orientation_blend" in move and "blend" not in move and "blend_weight" not in move:
             raise self.fail(at + ("orientation_blend",), f"{move['orientation_blend']}: there is no blend to shape; "
                                                          "give `blend` (m) or `blend_weight`")
@@ -464,10 +526,26 @@ class _Builder:
         files = {"csv": f"{name}.csv", "json": f"{name}.json", "summary": f"{name}.summary.txt"}
         for key in files:
             if key in out:
-                if pathlib.PurePath(out[key]).name != out[key]:
-                    raise self.fail(("output", key), f"{out[key]!r}: a file name, not a path (the directory is `-o OUTDIR`)")
+                self.output_name(("output", key), out[key])
                 files[key] = out[key]
+            elif len(files[key].encode("utf-8")) > MAX_FILE_NAME_BYTES:
+                at: KeyPath = ("name",) if "name" in self.data else ()
+                raise self.fail(at, f"{echo(name)}: the output file name {echo(files[key])} made from it is longer than "
+                                f"{MAX_FILE_NAME_BYTES} bytes, the longest file name: give a shorter name, or output.{key}")
+        keys = list(files)
+        for i, key in enumerate(keys):
+            for earlier in keys[:i]:
+                if files[key] == files[earlier]:
+                    raise self.fail(("output", key), f"{files[key]!r}: the same file as output.{earlier}: each output needs a name of its own")
         job["outputs"] = files
+
+    def output_name(self, at: KeyPath, value: str) -> None:
+        """An output file name: one name (the directory is `-o OUTDIR`), not . or .., at most
+        MAX_FILE_NAME_BYTES bytes."""
+        if value in ("", ".", "..") or "\0" in value or pathlib.PurePath(value).name != value:
+            raise self.fail(at, f"{echo(value)}: a file name, not a path (the directory is `-o OUTDIR`)")
+        if len(value.encode("utf-8")) > MAX_FILE_NAME_BYTES:
+            raise self.fail(at, f"{echo(value)}: longer than {MAX_FILE_NAME_BYTES} bytes, the longest file name")
 
 
 def load_job(path: Union[str, pathlib.Path]) -> Job:
@@ -490,4 +568,4 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
-               profile=profile, parts=parts, source=source, **job)
+               profile=profile, parts=parts, source=source, inputs=builder.inputs, **job)

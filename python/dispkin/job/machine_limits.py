@@ -12,19 +12,14 @@ import math
 from typing import Any, Dict, List, Optional
 
 import numpy as np
-import yaml
 
 from .. import limits_files
 from .._core import Limits, MetricSet
 from .model import KeyPath, Retime
 
 
-def _kind(path: Any) -> Optional[str]:
+def _kind(data: Any) -> Optional[str]:
     """"moveit", "pilz" or None (neither), from the file's top-level keys."""
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, yaml.YAMLError):
-        return "moveit"  # read_moveit_joint_limits reports why it cannot be read
     if not isinstance(data, dict):
         return None
     if "joint_limits" in data:
@@ -46,7 +41,12 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
     seen = set()
     for at in keys:
         path = builder.file(at)
-        kind = _kind(path)
+        try:
+            # Read once, under the resource limits of job files; both readers take the document.
+            document = limits_files.load_limits_file(path)
+        except limits_files.LimitsFileError as error:
+            raise builder.fail(at, str(error)) from error
+        kind = _kind(document.data)
         if kind is None:
             raise builder.fail(at, f"{str(path)!r} is neither a MoveIt joint_limits.yaml (a `joint_limits:` mapping) "
                                "nor a Pilz cartesian_limits.yaml (`cartesian_limits:` with max_trans_vel, ...)")
@@ -57,34 +57,43 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
             if kind == "moveit":
                 if job.get("arm") is None:
                     raise builder.fail(at, "a MoveIt joint_limits.yaml limits the joints of a serial arm: it needs machine.serial_arm")
-                job["arm"], job["joint_acceleration"] = limits_files.apply_moveit_joint_limits(job["arm"], path)
+                moveit = limits_files.read_moveit_joint_limits(document)
+                job["arm"], job["joint_acceleration"] = limits_files.apply_moveit_joint_limits(job["arm"], moveit)
                 job["joint_limits_from"] = f"MoveIt {path.name}"
             else:
                 # Its max_rot_vel becomes the rotational limit (limits.angular_velocity).
-                pilz = limits_files.read_pilz_cartesian_limits(path)
-        except limits_files.LimitsFileError as error:
+                pilz = limits_files.read_pilz_cartesian_limits(document)
+        except ValueError as error:  # LimitsFileError, or the arm refusing a limit of the file
             raise builder.fail(at, str(error)) from error
         job["limits_files"].append(path)
     return pilz
+
+
+#: The limits the job gives in degrees (radians in the library), and their units.
+_ANGULAR_UNITS = {"angular_velocity": "deg/s", "angular_acceleration": "deg/s²"}
 
 
 def job_limits(builder: Any, pilz: Optional[limits_files.PilzCartesianLimits]) -> Limits:
     """The path limits: the `limits` section's, or a Pilz file's velocity and acceleration (then
     the section gives only jerk and profile)."""
     lim = builder.data["limits"]
+    low, high = limits_files.LIMIT_RANGE
+    for key, unit in _ANGULAR_UNITS.items():
+        if key in lim:  # refused in the job's unit, not in the library's radians
+            builder.degrees_in_range(("limits", key), lim[key], math.degrees(low), math.degrees(high), unit)
     # Angular limits are given in degrees (per second, per second squared), like the poses.
-    angular = {key: math.radians(lim[key]) for key in ("angular_velocity", "angular_acceleration") if key in lim}
+    angular = {key: math.radians(lim[key]) for key in _ANGULAR_UNITS if key in lim}
     if pilz is not None:
         for key in ("velocity", "acceleration", "angular_velocity"):
             if key in lim:
                 raise builder.fail(("limits", key), f"{lim[key]!r}: given by the Pilz limits file too; give it in one place")
-        from_file = builder.call(("limits",), pilz.limits, lim.get("jerk"))
-        return builder.call(("limits",), Limits, from_file.velocity, from_file.acceleration, from_file.jerk,
-                            angular_velocity=from_file.angular_velocity, **angular)
+        from_file = builder.call_section(("limits",), lim, pilz.limits, lim.get("jerk"))
+        return builder.call_section(("limits",), lim, Limits, from_file.velocity, from_file.acceleration, from_file.jerk,
+                                    angular_velocity=from_file.angular_velocity, **angular)
     for key in ("velocity", "acceleration"):
         if key not in lim:
             raise builder.fail(("limits",), f"missing required key `{key}` (or a Pilz cartesian_limits.yaml in limits_file)")
-    return builder.call(("limits",), Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular)
+    return builder.call_section(("limits",), lim, Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular)
 
 
 def read_retime(builder: Any, job: Dict[str, Any]) -> None:

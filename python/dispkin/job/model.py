@@ -138,6 +138,8 @@ class Job:
     joint_limits_from: str = "URDF"
     #: The job file as read (dispkin.job.reader.Source): where a key is, for later messages.
     source: Optional[Any] = None
+    #: The files the job reads besides itself: URDF, hexapod file, limits files (never written).
+    inputs: List[pathlib.Path] = dataclasses.field(default_factory=list)
 
     @property
     def has_ptp(self) -> bool:

@@ -95,15 +95,64 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     hexapod as joint metric when the job asks for rule (b), re-timed to the joint limits when
     it has a `retime` section. A job with PTP moves is planned part by part (a JobTrajectory):
     each Cartesian run as one path, each PTP move on the arm (within its joint velocity limits)."""
+    if not job.has_ptp:
+        return _planned(job, job.parts[0] if job.parts else None, lambda: _plan_run(job, job.path, job.q_start))
+    planned = []
+    for part in job.parts:
+        if part.kind == "ptp":
+            planned.append((part, _planned(job, part, lambda: plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm))))
+        else:
+            planned.append((part, _planned(job, part, lambda: _plan_run(job, part.path, part.q_start))))
+    return JobTrajectory(planned)
+
+
+def _planned(job: Job, part: Optional[Part], planner: Any) -> Any:
+    """planner(), its ValueError / RuntimeError re-raised as a JobError at the job's key it
+    comes from (see _failed_at)."""
     try:
-        if not job.has_ptp:
-            return _plan_run(job, job.path, job.q_start)
-        planned = []
-        for part in job.parts:
-            if part.kind == "ptp":
-                planned.append((part, plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)))
-            else:
-                planned.append((part, _plan_run(job, part.path, part.q_start)))
-        return JobTrajectory(planned)
+        return planner()
     except (ValueError, RuntimeError) as error:
-        raise JobError(f"{job.file}: planning failed: {error}") from error
+        at, value = _failed_at(job, part)
+        message = (f"{value!r}: the blend has no length to plan (planning failed: {error}); give a larger one"
+                   if value is not None else f"planning failed: {error}")
+        if job.source is None or not at:
+            raise JobError(f"{job.file}: planning failed: {error}") from error
+        raise job.source.error(at, message) from error
+
+
+def _failed_at(job: Job, part: Optional[Part]) -> Tuple[Tuple[Any, ...], Any]:
+    """(the key path, the value there if it is a blend) of what made planning `part` fail: the
+    blend of a section without length (too small for its sub-points to part from the corner),
+    else the `retime` section when the part is re-timed, else the part's first move."""
+    if part is None:
+        return (), None
+    if part.kind == "path":
+        blend = _empty_blend(job, part)
+        if blend is not None:
+            return blend
+        if job.retime is not None:
+            return ("retime",), None
+    return ("moves", part.moves[0]), None
+
+
+def _empty_blend(job: Job, part: Part) -> Optional[Tuple[Tuple[Any, ...], Any]]:
+    """(moves[i].blend_weight or .blend, its value) of the first blend section of the part
+    without a positive length; None if every section has one."""
+    try:
+        lengths = np.asarray(part.path.section_lengths(job.metric_set, job.limits.velocity))
+    except (ValueError, RuntimeError):  # then not for want of a length
+        return None
+    empty = np.flatnonzero(~(np.isfinite(lengths) & (lengths > 0.0)))
+    if not empty.size:
+        return None
+    starts = list(part.path.move_starts)
+    # A blend's sections end the range of the move before the one that asks for it.
+    k = int(np.searchsorted(starts, int(empty[0]), side="right")) - 1
+    if k + 1 >= len(part.moves):
+        return None
+    move = job.moves[part.moves[k + 1]]
+    if move.blend_weight is not None:
+        return ("moves", part.moves[k + 1], "blend_weight"), move.blend_weight
+    if move.blend is not None:
+        return ("moves", part.moves[k + 1], "blend"), move.blend
+    return None

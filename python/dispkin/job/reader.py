@@ -43,53 +43,81 @@ _Loader.add_implicit_resolver(
 
 
 class Source:
-    """A job file's text, its data, and where each key path is (1-based line, column)."""
+    """A job file's text, its data, and where each key path is (1-based line, column).
 
-    def __init__(self, path: pathlib.Path):
-        #: The job file.
+    Limits files are read by it too, under the same resource limits: `what` names the kind of
+    file in messages ("job", "limits file") and `fail` makes the error to raise (a JobError for
+    job files)."""
+
+    def __init__(self, path: pathlib.Path, what: str = "job", fail: limits.ErrorFactory = limits.job_error):
+        #: The file.
         self.path = path
+        self._what, self._fail = what, fail
         text = self._read_text(path)
         #: (line, column) of each key path in the file, keys and indices as strings.
         self.marks: Dict[Tuple[str, ...], Tuple[int, int]] = {}
-        #: The job's data as YAML gives it (validated later, see dispkin.job.schema).
+        #: The file's data as YAML gives it (validated later, see dispkin.job.schema).
         self.data: Any = self._parse(text)
 
-    @staticmethod
-    def _read_text(path: pathlib.Path) -> str:
+    def _read_text(self, path: pathlib.Path) -> str:
+        what = f"{self._what} file" if self._what == "job" else self._what
         try:
-            return limits.read_bounded(path).decode("utf-8")
+            data = limits.read_bounded(path, what, self._fail)
         except OSError as error:
-            raise JobError(f"{path}: cannot read the job file: {error.strerror or error}") from error
-        except UnicodeDecodeError as error:
-            raise JobError(f"{path}: not a UTF-8 text file: {error}") from error
+            reason = f"cannot read the {what}" if self._what == "job" else f"the {what} cannot be read"
+            raise self._fail(f"{path}: {reason}: {error.strerror or error}", None) from error
+        return limits.decode_utf8(path, data, what, self._fail)
 
     def _parse(self, text: str) -> Any:
         """The data of the YAML text, recording each key path's place on the way."""
-        path = self.path
+        path, fail = self.path, self._fail
         try:
             # The reader checks for non-printable characters when it is made: inside the try.
             loader = _Loader(text)
         except yaml.reader.ReaderError as error:  # a control character: where, from its position
             before = text[: error.position]
             line, column = before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
-            raise JobError(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
-                           (), line) from error
+            raise fail(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
+                       line) from error
         try:
             # The limits first, from the parser's events: nothing is built beyond them.
-            limits.check_events(path, yaml.parse(text, Loader=_Loader))
+            limits.check_events(path, yaml.parse(text, Loader=_Loader), self._what, fail)
             node = loader.get_single_node()
             if node is None:
-                raise JobError(f"{path}: the job file is empty")
+                raise fail(f"{path}: the {self._what}{' file' if self._what == 'job' else ''} is empty", None)
             self._walk(node, ())
-            return loader.construct_document(node)
+            try:
+                return loader.construct_document(node)
+            except (ValueError, TypeError, OverflowError) as error:  # `!!float abc`: the tag's constructor fails
+                raise self._untyped(loader, node, error) from error
         except yaml.MarkedYAMLError as error:
             mark = error.problem_mark or error.context_mark
             where = f"{path}:{mark.line + 1}:{mark.column + 1}" if mark else str(path)
-            raise JobError(f"{where}: not valid YAML: {error.problem or error}", (), mark.line + 1 if mark else None) from error
+            raise fail(f"{where}: not valid YAML: {error.problem or error}", mark.line + 1 if mark else None) from error
         except yaml.YAMLError as error:
-            raise JobError(f"{path}: not valid YAML: {error}") from error
+            raise fail(f"{path}: not valid YAML: {error}", None) from error
         finally:
             loader.dispose()
+
+    def _untyped(self, loader: Any, root: Any, error: Exception) -> Exception:
+        """The error of a scalar its tag cannot make (``!!float abc``, ``!!int 1x``), at the
+        first such scalar's line and column (each scalar constructed again, alone, to find it)."""
+        pending = [root]
+        while pending:  # depth first, in the order of the file (nesting is bounded by now)
+            node = pending.pop()
+            if isinstance(node, yaml.ScalarNode):
+                loader.recursive_objects.clear()  # what the failed construction left behind
+                try:
+                    loader.construct_object(node)
+                except (ValueError, TypeError, OverflowError) as failed:
+                    mark = node.start_mark
+                    value = node.value if len(node.value) <= 200 else node.value[:200] + "…"
+                    return self._fail(f"{self.path}:{mark.line + 1}:{mark.column + 1}: not valid YAML: {value!r} is no "
+                                      f"{node.tag.rsplit(':', 1)[-1]} ({failed})", mark.line + 1)
+            else:
+                children = [n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode) else list(node.value)
+                pending.extend(reversed(children))
+        return self._fail(f"{self.path}: not valid YAML: {error}", None)
 
     def _walk(self, node: Any, key_path: Tuple[str, ...]) -> None:
         self.marks.setdefault(key_path, (node.start_mark.line + 1, node.start_mark.column + 1))
@@ -100,13 +128,18 @@ class Source:
                 if key in seen:  # PyYAML would silently keep the last one
                     line, column = key_node.start_mark.line + 1, key_node.start_mark.column + 1
                     where = format_key_path(self._typed(key_path + (key,)))
-                    raise JobError(f"{self.path}:{line}:{column}: {where}: duplicate key", key_path + (key,), line)
+                    raise self._duplicate(f"{self.path}:{line}:{column}: {where}: duplicate key", key_path + (key,), line)
                 seen.add(key)
                 self.marks[key_path + (key,)] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
                 self._walk(value_node, key_path + (key,))
         elif isinstance(node, yaml.SequenceNode):
             for i, item in enumerate(node.value):
                 self._walk(item, key_path + (str(i),))
+
+    def _duplicate(self, message: str, key_path: Tuple[str, ...], line: int) -> Exception:
+        if self._fail is limits.job_error:
+            return JobError(message, key_path, line)
+        return self._fail(message, line)
 
     @staticmethod
     def _typed(key_path: Sequence[str]) -> KeyPath:

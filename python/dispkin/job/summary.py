@@ -6,7 +6,7 @@ and efforts from the URDF or a MoveIt file), the limits the trajectory breaks (s
 """
 
 import math
-from typing import Any, Dict, List, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -15,7 +15,8 @@ from .._core import Trajectory
 from .model import Job
 from .planning import JobTrajectory
 from .sampling import JobSamples
-from .violations import TOLERANCE, Violation, between_samples, check_samples, hexapod_excursions
+from .violations import (TOLERANCE, JointStates, Violation, between_samples, check_between_samples, check_samples,
+                         hexapod_excursions, worst_per_joint)
 
 #: A limit counts as binding when the trajectory reaches this fraction of it.
 BINDING_FRACTION = 0.99
@@ -57,16 +58,22 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
     }
     violations = check_samples(job, samples)
     if job.hexapod is not None:
-        summary["legs"], ratios["leg speed"], check = _leg_report(job, trajectory)
-        violations = between_samples(violations, hexapod_excursions(job, check))
+        summary["legs"], ratios["leg speed"], dense = _leg_report(job, trajectory)
+        violations = between_samples(violations, dense)
     if job.arm is not None:
         summary["joints"], dense = _joint_report(job, trajectory)
         violations = between_samples(violations, dense)
         source = summary["joints"]["limits_from"] = job.joint_limits_from
         ratios[f"joint velocity ({source})"] = summary["joints"]["velocity_factor"]
-        ratios[f"joint effort ({source})"] = summary["joints"]["acceleration_factor"]
+        if summary["joints"]["acceleration_factor"] is not None:
+            ratios[f"joint effort ({source})"] = summary["joints"]["acceleration_factor"]
     summary["violations"] = [broken.as_dict() for broken in violations]
+    # One verdict, from the samples and the dense checks alike: the summary's lines, its JSON
+    # and the exit status of `dispkin plan` all read it, so they cannot disagree.
     summary["within_machine_limits"] = not violations
+    for machine in ("legs", "joints"):
+        if machine in summary:
+            summary[machine]["within_limits"] = not violations
     name, ratio = max(ratios.items(), key=lambda item: item[1])
     summary["highest_ratio"] = {"limit": name, "ratio": ratio}
     summary["binding"] = _binding(ratios, violations)
@@ -85,72 +92,90 @@ def _binding(ratios: Dict[str, float], violations: List[Violation]) -> str:
     return "acceleration / jerk of the path (no speed limit is reached: the moves are too short to cruise)"
 
 
-def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float, Any]:
+def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float, List[Violation]]:
     """(the hexapod's leg lengths and speeds against its limits, the fastest leg's ratio to its
-    speed limit, the TrajectoryCheck), from a check at the sample period or 1 ms, whichever is finer."""
+    speed limit, what the dense checks between samples find broken): leg lengths and speeds from
+    a check at the sample period or 1 ms, whichever is finer; every limit, leg accelerations
+    included, at the check points of check_joint_limits."""
     check = job.hexapod.check_trajectory(trajectory, min(job.sample_period, 1e-3))
     leg_ratio = float(np.max(check.max_speed / job.hexapod.leg_speed))
     legs = {"min_length": check.min_length.tolist(), "max_length": check.max_length.tolist(),
-            "max_speed": check.max_speed.tolist(), "leg_speed": job.hexapod.leg_speed.tolist(),
-            "within_limits": bool(check.ok)}
-    return legs, leg_ratio, check
+            "max_speed": check.max_speed.tolist(), "leg_speed": job.hexapod.leg_speed.tolist()}
+    report = _core.check_joint_limits(trajectory, job.hexapod)
+    dense = hexapod_excursions(job, check) + check_between_samples(job, _states(report, 0.0))
+    return legs, leg_ratio, dense
 
 
-def _velocity_violation(job: Job, report: Any, start_time: float) -> List[Violation]:
-    """The joint velocity limit a dense check (a JointLimitReport) finds broken, if any."""
-    j = int(report.velocity_joint)
-    if j < 0 or not report.velocity_factor > 1.0 + TOLERANCE:
-        return []
-    limit = float(job.arm.joint_limits.velocity[j])
-    t = start_time + float(report.velocity_time)
-    return [Violation("velocity", job.joint_names[j], float(report.velocity_factor) * limit, limit, t, None, t, t, "rad/s")]
+def _states(report: Any, start_time: float) -> JointStates:
+    """The joint states at a JointLimitReport's check points, its times shifted by start_time;
+    the effort is the whole torque, static and dynamic."""
+    s = report.samples
+    return JointStates(np.asarray(s["time"]) + start_time, np.asarray(s["q"]), np.asarray(s["qd"]),
+                       np.asarray(s["qdd"]), np.asarray(s["static_torque"]) + np.asarray(s["dynamic_torque"]))
+
+
+def _without_effort_limits(arm: Any) -> Any:
+    """The arm with no effort limits, for the dense check: check_joint_limits refuses a path
+    where a static torque reaches its effort limit, where the summary reports that limit as
+    broken instead. The efforts are checked against the arm's own limits afterwards."""
+    return arm.with_joint_limits(effort=np.full(arm.dof, np.inf))
+
+
+def _effort_factor(job: Job, report: Any) -> Optional[float]:
+    """FACC = max |tau_dyn,i| / (tau-max_i - |tau_sta,i|) over a report's check points against
+    the arm's effort limits (0 without any); None where a static torque alone reaches its limit
+    (the factor is not defined there: no speed keeps that joint within its limit)."""
+    effort = np.asarray(job.arm.joint_limits.effort, dtype=float)
+    s = report.samples
+    holding, dynamic = np.abs(np.asarray(s["static_torque"])), np.abs(np.asarray(s["dynamic_torque"]))
+    limited = np.isfinite(effort) if effort.size == job.arm.dof else np.zeros(job.arm.dof, dtype=bool)
+    if not np.any(limited) or holding.shape[0] == 0:
+        return 0.0
+    spare = effort[limited] - holding[:, limited]
+    if np.any(spare <= 0.0):
+        return None
+    return float(np.max(dynamic[:, limited] / spare))
+
+
+def _max_factor(a: Optional[float], b: Optional[float]) -> Optional[float]:
+    return None if a is None or b is None else max(a, b)
 
 
 def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Tuple[Dict[str, Any], List[Violation]]:
-    """(the arm's joint-limit factors over the job, the velocity limit the dense check finds
+    """(the arm's joint-limit factors over the job, what the dense check between samples finds
     broken): check_joint_limits, or part by part."""
     if isinstance(trajectory, JobTrajectory):
         return _joint_report_of_parts(job, trajectory)
-    report = _core.check_joint_limits(trajectory, job.arm, job.q_start)
+    report = _core.check_joint_limits(trajectory, _without_effort_limits(job.arm), job.q_start)
     return ({"velocity_factor": float(report.velocity_factor),
-             "acceleration_factor": float(report.acceleration_factor),
-             "position_excess": float(report.position_excess),
-             "within_limits": bool(report.within_limits)}, _velocity_violation(job, report, 0.0))
+             "acceleration_factor": _effort_factor(job, report),
+             "position_excess": float(report.position_excess)},
+            check_between_samples(job, _states(report, 0.0)))
 
 
-def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Dict[str, Any]:
+def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Tuple[Dict[str, Any], List[Violation]]:
     """The joint-limit factors of the KUKA re-timing patent over a job with PTP moves:
     check_joint_limits on each Cartesian run (from the joints at its start); for a PTP move
     FVEL = max |q-dot_i| / q-dot-max_i and FACC = max |tau_dyn,i| / (tau-max_i - |tau_sta,i|) at
     1 ms samples of its joint line (SerialArm.check_joint_limits; the line stays inside the
-    position limits: both ends do, and the range is a box). See doc/retiming.md."""
-    arm = job.arm
-    velocity_factor = acceleration_factor = position_excess = 0.0
+    position limits: both ends do, and the range is a box). See doc/retiming.md. The same
+    check points are the dense check between samples."""
+    arm = _without_effort_limits(job.arm)
+    velocity_factor = position_excess = 0.0
+    acceleration_factor: Optional[float] = 0.0
     dense: List[Violation] = []
     for (part, traj), start_time in zip(trajectory.parts, trajectory.start_times):
         if part.kind == "path":
             report = _core.check_joint_limits(traj, arm, part.q_start)
             position_excess = max(position_excess, float(report.position_excess))
-            dense += _velocity_violation(job, report, float(start_time))
         else:
             t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
             report = arm.check_joint_limits(traj, t)
+        dense += check_between_samples(job, _states(report, float(start_time)))
         velocity_factor = max(velocity_factor, float(report.velocity_factor))
-        acceleration_factor = max(acceleration_factor, float(report.acceleration_factor))
+        acceleration_factor = _max_factor(acceleration_factor, _effort_factor(job, report))
     return ({"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
-             "position_excess": position_excess,
-             "within_limits": bool(velocity_factor <= 1.0 and acceleration_factor <= 1.0 and position_excess == 0.0)},
-            _worst_per_joint(dense))
-
-
-def _worst_per_joint(violations: List[Violation]) -> List[Violation]:
-    """The worst violation of each (kind, joint)."""
-    worst: Dict[Tuple[str, str], Violation] = {}
-    for v in violations:
-        key = (v.kind, v.joint)
-        if key not in worst or v.excess > worst[key].excess:
-            worst[key] = v
-    return list(worst.values())
+             "position_excess": position_excess}, worst_per_joint(dense))
 
 
 def _angular_text(lim: Dict[str, Any]) -> str:
@@ -192,7 +217,9 @@ def summary_text(summary: Dict[str, Any]) -> str:
                      f"within limits: {legs['within_limits']}")
     if "joints" in s:
         j = s["joints"]
-        lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {j['acceleration_factor']:.4f} "
+        effort = (f"{j['acceleration_factor']:.4f}" if j["acceleration_factor"] is not None
+                  else "undefined (a static torque alone reaches its effort limit)")
+        lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {effort} "
                      f"(<= 1 is within the {j.get('limits_from', 'URDF')} limits); within limits: {j['within_limits']}")
     for v in s.get("violations", []):
         lines.append("  LIMIT BROKEN: " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe())

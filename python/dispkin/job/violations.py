@@ -5,15 +5,19 @@ The written samples are checked joint by joint against the machine's limits: pos
 the range (a hexapod's leg_min .. leg_max, an arm's URDF or MoveIt position limits), velocities
 against the velocity limits (leg_speed, the URDF's or MoveIt's), accelerations against the joint
 accelerations of a MoveIt file or of `retime`, and a serial arm's efforts against its effort
-limits. A dense check between the samples (a hexapod's legs every millisecond, an arm's joint
-velocities at the re-timing's check points) adds what falls between two samples.
+limits. A dense check between the samples adds what falls between two samples: the same four
+kinds of limits at the re-timing's check points (every characteristic point of the time laws
+and ten points between two of them, :func:`dispkin.check_joint_limits`; a PTP move every
+millisecond), and a hexapod's leg lengths and speeds every millisecond.
 
-``dispkin plan`` fails (exit status 3) when this finds anything, unless ``--allow-violations``.
+The summary's verdicts ("within limits") and the exit status of ``dispkin plan`` are both read
+from the one list of violations this gives: ``dispkin plan`` fails (exit status 3) when it is
+not empty, unless ``--allow-violations``.
 """
 
 import dataclasses
 import math
-from typing import Any, Dict, List, Optional
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
@@ -109,7 +113,20 @@ def _violation(kind: str, joint: str, values: np.ndarray, beyond: np.ndarray, ex
     return Violation(kind, joint, float(values[worst]), bound, float(time[worst]), worst, float(span[0]), float(span[-1]), unit)
 
 
-def check_samples(job: Job, samples: JobSamples) -> List[Violation]:
+@dataclasses.dataclass
+class JointStates:
+    """The machine's joints at the instants of a dense check, row k at time[k]: the arrays of
+    :class:`~dispkin.job.sampling.JobSamples` that :func:`check_samples` reads (effort (N, 0)
+    without a dynamics model)."""
+
+    time: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+    accelerations: np.ndarray
+    effort: np.ndarray
+
+
+def check_samples(job: Job, samples: Union[JobSamples, JointStates]) -> List[Violation]:
     """Every (limit, joint) the written samples break, one Violation each (its worst sample)."""
     lim = _limits_of(job)
     if lim is None:
@@ -138,10 +155,27 @@ def check_samples(job: Job, samples: JobSamples) -> List[Violation]:
     return found
 
 
+def check_between_samples(job: Job, states: JointStates) -> List[Violation]:
+    """Every (limit, joint) the joint states of a dense check break, its worst instant marked as
+    between samples (sample None)."""
+    return [dataclasses.replace(v, sample=None) for v in check_samples(job, states)]
+
+
+def worst_per_joint(violations: List[Violation]) -> List[Violation]:
+    """The worst violation of each (kind, joint), in the order they first appear."""
+    worst: Dict[Any, Violation] = {}
+    for v in violations:
+        key = (v.kind, v.joint)
+        if key not in worst or v.excess > worst[key].excess:
+            worst[key] = v
+    return list(worst.values())
+
+
 def between_samples(found: List[Violation], dense: List[Violation]) -> List[Violation]:
-    """`found` and the violations of a dense check whose (kind, joint) no sample showed."""
+    """`found` and the worst violation of each (kind, joint) of the dense checks that no
+    sample showed."""
     seen = {(v.kind, v.joint) for v in found}
-    return found + [v for v in dense if (v.kind, v.joint) not in seen]
+    return found + worst_per_joint([v for v in dense if (v.kind, v.joint) not in seen])
 
 
 def hexapod_excursions(job: Job, check: Any) -> List[Violation]:
