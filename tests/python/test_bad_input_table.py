@@ -710,6 +710,11 @@ row("Path.lin", "move acceleration 1e13", lambda: dispkin.Path.lin(A, B, acceler
     "acceleration = 1e+13: must be in [1e-12, 1e12]")
 row("Path.circ", "move velocity 5e-324", lambda: dispkin.Path.circ(A, dispkin.Pose.from_xyzuvw([0.1, 0.05, 0, 0, 0, 0]), B, velocity=5e-324), V,
     "velocity = 4.94065645841e-324: must be in [1e-12, 1e12]")
+row("jobs.load_job", "a move's velocity 1e-17 before more moves (the trajectory ended after the first)",
+    lambda: jobs.load_job(job_file("tiny_move_velocity.yaml", data=[("  - lin: {to: {xyzuvw: [0.05, 0.02, 0, 10, 0, 30]}}\n",
+                                                                    "  - lin: {to: {xyzuvw: [0.05, 0.02, 0, 10, 0, 30]}}\n    velocity: 1.0e-17\n"
+                                                                    "  - lin: {to: {xyzuvw: [0.1, 0.02, 0, 10, 0, 30]}}\n")])), V,
+    "tiny_move_velocity.yaml:8:5: moves[0].velocity: 1e-17: must be in [1e-12, 1e12]")
 row("SerialArm.gravity", "gravity 1e308 (NaN torques)", lambda: setattr(arm(), "gravity", [0, 0, 1e308]), V,
     "gravity = (0, 0, 1e+308): must have coordinates within ±1e12 m/s²")
 

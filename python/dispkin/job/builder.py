@@ -118,11 +118,13 @@ class _Builder:
         except (ValueError, RuntimeError) as error:
             raise self.fail(key_path, str(error)) from error
 
-    def call_section(self, at: KeyPath, written: Dict[str, Any], function: Any, *args: Any, **kwargs: Any) -> Any:
+    def call_section(self, at: KeyPath, written: Dict[str, Any], function: Any, *args: Any,
+                     elsewhere: Optional[KeyPath] = None, **kwargs: Any) -> Any:
         """function(*args, **kwargs) on the values of the mapping at `at` (`written`: as the job
         gives them); a ValueError / RuntimeError ``name = value: reason`` naming one of its keys
-        is re-raised at that key with the value as written, any other at `at`. (Keys whose
-        units the job converts, degrees, are checked before: the reason would give radians.)"""
+        is re-raised at that key with the value as written, any other at `elsewhere` (default
+        `at`). (Keys whose units the job converts, degrees, are checked before: the reason would
+        give radians.)"""
         try:
             return function(*args, **kwargs)
         except JobError:
@@ -132,7 +134,7 @@ class _Builder:
             if named and named.group(1) in written:
                 key = named.group(1)
                 raise self.fail(at + (key,), f"{written[key]!r}: {named.group(2)}") from error
-            raise self.fail(at, str(error)) from error
+            raise self.fail(at if elsewhere is None else elsewhere, str(error)) from error
 
     def degrees_in_range(self, at: KeyPath, value: float, low: float, high: float, unit: str, *, high_open: bool = False) -> None:
         """A value the job gives in degrees (`unit`: deg, deg/s, deg/s²) within [low, high] (or
@@ -401,7 +403,8 @@ class _Builder:
         own = {key: move[key] for key in ("velocity", "acceleration") if key in move}
         if own:
             constructor = functools.partial(constructor, **own)
-        path = self.call(at + (kind,), constructor, *arguments)
+        # The move's own limits are reported at their keys (`moves[i].velocity`), the rest at the move.
+        path = self.call_section(at, own, constructor, *arguments, elsewhere=at + (kind,))
         moves.built.append(Move(kind, path, blend, move.get("blend_weight"), move.get("orientation_blend", "rotation_vector")))
         moves.run.append(_RunMove(at[1], path, constructor, arguments))
         moves.current = end
