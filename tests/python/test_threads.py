@@ -229,7 +229,7 @@ sys.setswitchinterval(1e-5)
 a = dispkin.Pose()
 b = dispkin.Pose.from_xyzuvw([0.3, 0.1, 0.0, 0.4, 0.2, 0.1])
 path = dispkin.Path.lin(a, b)
-for k in range(1, 41):
+for k in range(1, 21):
     c = dispkin.Pose.from_xyzuvw([0.3 + 0.01 * (k % 2), 0.1 + 0.01 * k, 0.0, 0.4, 0.2, 0.1 + 0.01 * k])
     path.then(dispkin.Path.lin(b, c), blend=0.003)
     b = c
@@ -240,7 +240,7 @@ done = threading.Event()
 durations, refused, added = [], [], [0]
 
 def planner():
-    for _ in range(8):
+    for _ in range(5):
         t = dispkin.plan(path, metric, limits, corner_tolerance=1e-4)
         durations.append(t.duration)
         assert np.isfinite(t.sample(np.linspace(0, t.duration, 50))[1]).all()
@@ -259,7 +259,7 @@ def changer():
 threads = [threading.Thread(target=planner), threading.Thread(target=changer)]
 for t in threads: t.start()
 for t in threads: t.join()
-assert len(durations) == 8 and all(np.isfinite(durations)), durations
+assert len(durations) == 5 and all(np.isfinite(durations)), durations
 print(len(refused), added[0], refused[0] if refused else "")
 """
 
