@@ -1,0 +1,374 @@
+// Profile::from_state: the time-optimal jerk-limited law from a moving, accelerating state
+// (doc/profiles.md §7, equation numbers (16)–(27) below refer to it).
+//
+// The law is built as a short list of constant-jerk pieces: a brake into the limits when the
+// start lies beyond them (§7.2), then one of two one-parameter families (§7.3, §7.4) whose
+// distance grows monotonically with the parameter; the parameter is the root of
+// "distance = S", found by a safeguarded root search (Brent's method on a bracket).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "dispkin/error.hpp"
+#include "dispkin/profile.hpp"
+
+namespace dispkin {
+
+namespace {
+
+struct Limits {
+  double v_max, a_max, j_max;
+};
+
+// --- kernels -----------------------------------------------------------------------------------
+
+// (16) The velocity change while the acceleration a returns to zero at full jerk: a|a|/(2j).
+// v + natural_change(a) is the velocity every law from (v, a) passes through first or must
+// overshoot; it is constant along a ramp that moves the acceleration towards zero.
+double natural_change(double a, double j_max) { return a * (std::abs(a) / (2.0 * j_max)); }
+
+// (12) One constant-jerk piece: s, v, a after `d` seconds of jerk `j`.
+struct Motion {
+  double s, v, a;
+};
+Motion advance(const Motion& x, double d, double j) {
+  return {x.s + d * (x.v + d * (0.5 * x.a + j * d / 6.0)), x.v + d * (x.a + 0.5 * j * d), x.a + j * d};
+}
+
+// (17) The time-optimal change of velocity by dv from acceleration a to acceleration 0: a ramp
+// to ±p, a hold at ±p (only at p = a_max), a ramp to 0. Its direction is up when
+// dv ≥ natural_change(a); mirrored (a → σa, dv → σdv) it is an increase with
+//   p² = a²/2 + j dv   (no hold),   else  p = a_max,  hold = dv/p − p/j + a²/(2 j p).
+struct Pulse {
+  double sign;  //!< +1: the acceleration first rises (up), −1: first falls (down)
+  double peak;  //!< p ≥ 0, the acceleration reached is sign · p
+  double hold;  //!< time at sign · p
+};
+Pulse pulse(double a, double dv, const Limits& lim) {
+  const double sign = dv >= natural_change(a, lim.j_max) ? 1.0 : -1.0;
+  const double am = sign * a, dm = sign * dv;
+  // p² is a difference when a < 0: below its rounding error (a few ε a²) it is 0, else a
+  // rounding-level velocity step would add two vanishing ramps.
+  const double square = 0.5 * am * am + lim.j_max * dm;
+  double peak = square > 4.0 * std::numeric_limits<double>::epsilon() * am * am ? std::sqrt(square) : 0.0;
+  peak = std::max(peak, std::max(am, 0.0));  // p ≥ a in exact arithmetic: rounding only
+  double hold = 0.0;
+  if (peak > lim.a_max) {
+    peak = lim.a_max;
+    hold = std::max(0.0, dm / peak - peak / lim.j_max + am * (am / (2.0 * lim.j_max * peak)));
+  }
+  return {sign, peak, hold};
+}
+
+// --- the law as pieces -------------------------------------------------------------------------
+
+// Constant-jerk pieces from (0, v_start, a_start), with the state at their end. Consecutive
+// ramps of the same jerk (and holds at the same acceleration) are one piece: a brake into the
+// limits followed by a ramp of the same sign stays within Profile::max_phases (doc §7.5).
+struct Piece {
+  double duration, jerk, a_start, a_end;
+};
+class Draft {
+ public:
+  Draft(double v_start, double a_start, const Limits& lim) : x_{0.0, v_start, a_start}, lim_(lim) {}
+
+  const Motion& end() const { return x_; }
+  int count() const { return count_; }
+  const Piece& piece(int i) const { return pieces_[static_cast<std::size_t>(i)]; }
+  int cruise_index() const { return cruise_; }
+
+  //! Jerk ±j_max from the current acceleration to `a` (exactly `a` at the end).
+  void ramp(double a) {
+    const double j = a >= x_.a ? lim_.j_max : -lim_.j_max;
+    push(std::abs(a - x_.a) / lim_.j_max, j, a);
+  }
+  //! Jerk 0 for `duration` at the current acceleration.
+  void hold(double duration) { push(duration, 0.0, x_.a); }
+  //! A cruise at the current velocity (acceleration 0), where the forward and backward
+  //! integrations of the phases meet.
+  void cruise(double duration) {
+    if (duration > 0.0) cruise_ = count_;
+    hold(duration);
+  }
+  //! (17) from the current acceleration to 0.
+  void add(const Pulse& p) {
+    ramp(p.sign * p.peak);
+    hold(p.hold);
+    ramp(0.0);
+  }
+
+ private:
+  void push(double duration, double jerk, double a_end) {
+    if (!(duration > 0.0)) return;
+    const double a_start = x_.a;
+    x_ = advance(x_, duration, jerk);
+    x_.a = a_end;
+    if (count_ > 0 && pieces_[static_cast<std::size_t>(count_ - 1)].jerk == jerk && cruise_ != count_ - 1) {
+      Piece& last = pieces_[static_cast<std::size_t>(count_ - 1)];
+      last.duration += duration;
+      last.a_end = a_end;
+      return;
+    }
+    if (count_ == static_cast<int>(pieces_.size())) {
+      throw std::logic_error("Profile::from_state: more phases than the law can have (doc/profiles.md §7.5)");
+    }
+    pieces_[static_cast<std::size_t>(count_++)] = {duration, jerk, a_start, a_end};
+  }
+
+  std::array<Piece, Profile::max_phases> pieces_{};
+  int count_ = 0;
+  int cruise_ = -1;
+  Motion x_;
+  Limits lim_;
+};
+
+// --- §7.2 the brake into the limits ------------------------------------------------------------
+
+// (18)–(19): back within |a| ≤ a_max at full jerk, and, where v + natural_change(a) > v_max,
+// braking at −j (then −a_max) until it equals v_max: along a ramp at −j from (v, a) to a_b,
+//   v + natural_change = v + a²/(2j) − a_b²/j  ⇒  a_b = −√(a²/2 + j (v − v_max)),
+// and along the hold at −a_max it falls at the rate a_max. Returns whether the velocity was braked
+// (v_n = v_max after it).
+bool brake_into_limits(Draft& law, const Limits& lim) {
+  if (law.end().a < -lim.a_max) law.ramp(-lim.a_max);
+  const Motion& x = law.end();
+  if (x.v + natural_change(x.a, lim.j_max) > lim.v_max) {
+    const double a_b = -std::sqrt(0.5 * x.a * x.a + lim.j_max * (x.v - lim.v_max));
+    if (a_b >= -lim.a_max) {
+      law.ramp(a_b);
+    } else {
+      law.ramp(-lim.a_max);
+      const double natural = law.end().v + natural_change(-lim.a_max, lim.j_max);
+      law.hold(std::max(0.0, (natural - lim.v_max) / lim.a_max));
+    }
+    return true;
+  }
+  if (x.a > lim.a_max) law.ramp(lim.a_max);
+  return false;
+}
+
+// --- §7.3 and §7.4: the two families -----------------------------------------------------------
+
+// The start of the families: the state after the brake, and the velocities (16) that bound them.
+struct Start {
+  Draft law;        //!< the brake into the limits (possibly empty)
+  double natural;   //!< v_n = v + natural_change(a) ≤ v_max
+  double lowest;    //!< v_lo = max(v_n, v_end), the lowest peak of the family (20)
+  double v_end;
+};
+
+// (20) Accelerate to a peak v_p = v_lo + w² ≥ v_lo with acceleration 0 there, cruise, decelerate
+// to v_end: two pulses (17). The velocity steps are carried as c + w² (c exact), not as
+// differences of velocities: a small step keeps its digits.
+Draft peak_law(const Start& start, double w, double cruise, const Limits& lim) {
+  Draft law = start.law;
+  const Motion& x = law.end();
+  const bool natural_above = start.natural >= start.v_end;
+  const double c_up = natural_above ? natural_change(x.a, lim.j_max) : start.v_end - x.v;
+  const double c_down = natural_above ? start.natural - start.v_end : 0.0;
+  law.add(pulse(x.a, c_up + w * w, lim));
+  law.cruise(cruise);
+  law.add(pulse(0.0, -(c_down + w * w), lim));
+  return law;
+}
+
+// (22) Relax the acceleration from a towards zero, to a₁ (between a and 0), then the direct
+// pulse (17) to v_end. Exists where the direct pulse and peak_law at w = 0 differ: a < 0 with
+// v_end < v_n (ease the braking, brake again), a > 0 with v_end > v_n (ease the acceleration,
+// accelerate again).
+Draft relaxed_law(const Start& start, double a1, const Limits& lim) {
+  Draft law = start.law;
+  law.ramp(a1);
+  law.add(pulse(a1, start.v_end - law.end().v, lim));
+  return law;
+}
+
+// --- safeguarded root search -------------------------------------------------------------------
+
+// The root of an increasing f on [lo, hi] with f(lo) < 0 < f(hi): Brent's method (inverse
+// quadratic interpolation and secant steps, bisection whenever they do not shrink the bracket
+// fast enough), to a bracket of a few ulps.
+template <class F>
+double increasing_root(F f, double lo, double hi, double f_lo, double f_hi) {
+  double a = lo, b = hi, fa = f_lo, fb = f_hi;
+  double c = a, fc = fa, d = b - a, e = d;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    if ((fb > 0.0) == (fc > 0.0)) {
+      c = a;
+      fc = fa;
+      d = e = b - a;
+    }
+    if (std::abs(fc) < std::abs(fb)) {
+      a = b;
+      b = c;
+      c = a;
+      fa = fb;
+      fb = fc;
+      fc = fa;
+    }
+    const double tol = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + std::numeric_limits<double>::denorm_min();
+    const double m = 0.5 * (c - b);
+    if (std::abs(m) <= tol || fb == 0.0) break;
+    if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+      const double s = fb / fa;
+      double p, q;
+      if (a == c) {
+        p = 2.0 * m * s;
+        q = 1.0 - s;
+      } else {
+        const double qa = fa / fc, r = fb / fc;
+        p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+        q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0.0) q = -q; else p = -p;
+      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = e = m;
+      }
+    } else {
+      d = e = m;
+    }
+    a = b;
+    fa = fb;
+    b += std::abs(d) > tol ? d : (m > 0.0 ? tol : -tol);
+    fb = f(b);
+  }
+  return b;
+}
+
+// --- input checks ------------------------------------------------------------------------------
+
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(12);
+  out << x;
+  return out.str();
+}
+
+void check_input(double distance, const Limits& lim, double v_start, double a_start, double v_end) {
+  require(std::isfinite(distance) && distance >= 0.0, "distance", distance, "must be finite and not negative");
+  require_positive(lim.v_max, "v_max");
+  require_positive(lim.a_max, "a_max");
+  require_positive(lim.j_max, "j_max");
+  require(std::isfinite(v_start) && v_start >= 0.0, "v_start", v_start, "must be finite and not negative");
+  require_finite(a_start, "a_start");
+  if (!(std::isfinite(v_end) && v_end >= 0.0 && v_end <= lim.v_max)) {
+    throw std::invalid_argument(
+        describe("v_end", v_end, "must be finite and within [0, v_max = " + number(lim.v_max) + "]"));
+  }
+  // (16) with a < 0: the acceleration returns to zero at full jerk at v + natural_change(a);
+  // below zero the law would run backwards whatever it does.
+  const double lowest = v_start + natural_change(std::min(a_start, 0.0), lim.j_max);
+  if (lowest < 0.0) {
+    throw std::invalid_argument(describe(
+        "a_start", a_start,
+        "brakes too hard for v_start = " + number(v_start) + " under j_max = " + number(lim.j_max) +
+            ": the velocity falls to " + number(lowest) +
+            " < 0 before the acceleration can return to zero (the law would run backwards)"));
+  }
+}
+
+[[noreturn]] void throw_too_short(double distance, double needed, double v_start, double a_start, double v_end,
+                                  const Limits& lim) {
+  throw std::invalid_argument(describe(
+      "distance", distance,
+      "too short to go from v_start = " + number(v_start) + ", a_start = " + number(a_start) + " to v_end = " +
+          number(v_end) + " under v_max = " + number(lim.v_max) + ", a_max = " + number(lim.a_max) +
+          ", j_max = " + number(lim.j_max) + ": it needs at least " + number(needed) + ", " +
+          number(needed - distance) +
+          " more (a shorter law would have to dip below the velocities it starts from and ends at, "
+          "which is not supported, or does not exist)"));
+}
+
+// --- §7.5 choosing the law ---------------------------------------------------------------------
+
+// The law of §7 over `distance` (the brake's distance included): peak_law with the largest feasible peak if
+// it fits, else relaxed_law, else too short (throws).
+Draft solve(const Start& start, double distance, const Limits& lim, double v_start, double a_start,
+            double v_end) {
+  const double w_max = std::sqrt(std::max(0.0, lim.v_max - start.lowest));
+  // (21) v_p = v_max with a cruise over the rest.
+  const Draft top = peak_law(start, w_max, 0.0, lim);
+  if (top.end().s <= distance) {
+    return peak_law(start, w_max, (distance - top.end().s) / lim.v_max, lim);
+  }
+  const Draft low = peak_law(start, 0.0, 0.0, lim);
+  if (low.end().s <= distance) {
+    // (20) D(w) increasing from D(0) ≤ S to D(w_max) > S.
+    auto excess = [&](double w) { return peak_law(start, w, 0.0, lim).end().s - distance; };
+    const double w = increasing_root(excess, 0.0, w_max, low.end().s - distance, top.end().s - distance);
+    return peak_law(start, w, 0.0, lim);
+  }
+  // (22) a₁ between a and 0: D increasing in a₁ up to D(0) of peak_law (> S).
+  const double a = start.law.end().a;
+  const double v_n = start.natural;
+  const bool relaxes = (a < 0.0 && v_end < v_n) || (a > 0.0 && v_end > v_n);
+  if (relaxes) {
+    const double a_lo = std::min(a, 0.0), a_hi = std::max(a, 0.0);
+    const Draft shortest = relaxed_law(start, a_lo, lim);
+    if (shortest.end().s <= distance) {
+      auto excess = [&](double a1) { return relaxed_law(start, a1, lim).end().s - distance; };
+      const double a1 = increasing_root(excess, a_lo, a_hi, shortest.end().s - distance, low.end().s - distance);
+      return relaxed_law(start, a1, lim);
+    }
+    throw_too_short(distance, shortest.end().s, v_start, a_start, v_end, lim);
+  }
+  throw_too_short(distance, low.end().s, v_start, a_start, v_end, lim);
+}
+
+}  // namespace
+
+Profile Profile::from_state(double distance, double v_max, double a_max, double j_max, double v_start,
+                            double a_start, double v_end) {
+  const Limits lim{v_max, a_max, j_max};
+  check_input(distance, lim, v_start, a_start, v_end);
+
+  Start start{Draft(v_start, a_start, lim), 0.0, 0.0, v_end};
+  const bool braked_to_limit = brake_into_limits(start.law, lim);
+  const Motion& braked = start.law.end();
+  // After a brake v_n = v_max in exact arithmetic: taken as such (not a rounding-level peak above
+  // it that would add vanishing phases).
+  start.natural = braked_to_limit ? v_max : std::min(braked.v + natural_change(braked.a, j_max), v_max);
+  start.lowest = std::max(start.natural, v_end);
+  // The brake alone may overrun S: then every family is too short.
+  const Draft law = solve(start, distance, lim, v_start, a_start, v_end);
+
+  Profile p;
+  p.kind_ = ProfileKind::scurve;
+  p.distance_ = distance;
+  p.start_ = {0.0, v_start, a_start, 0.0};
+  p.end_ = {distance, v_end, 0.0, 0.0};
+  int split = law.count() / 2;
+  for (int i = 0; i < law.count(); ++i) {
+    const Piece& piece = law.piece(i);
+    if (i == law.cruise_index()) split = p.count_;
+    p.add_phase(piece.duration, piece.jerk, piece.a_start, piece.a_end);
+  }
+  p.integrate(v_start, v_end, split);
+  // The highest velocity: at the ends of the phases, or inside one where a crosses zero.
+  double peak = std::max(v_start, v_end);
+  for (int i = 0; i < p.count_; ++i) {
+    const ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
+    peak = std::max({peak, phase.start.v, phase.end.v});
+    if (phase.start.a > 0.0 && phase.end.a < 0.0) {
+      peak = std::max(peak, phase.start.v + phase.start.a * (phase.start.a / (-2.0 * phase.jerk)));
+    }
+  }
+  p.peak_velocity_ = peak;
+  if (!std::isfinite(p.duration())) {
+    throw std::invalid_argument(describe("v_max", v_max,
+                                         "with a_max = " + number(a_max) + ", j_max = " + number(j_max) +
+                                             " over distance = " + number(distance) +
+                                             ": the law's duration overflows the double range (limits outside "
+                                             "dispkin's numeric range [1e-12, 1e12])"));
+  }
+  return p;
+}
+
+}  // namespace dispkin
