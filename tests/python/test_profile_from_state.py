@@ -156,7 +156,7 @@ def plan_stratum(rng, stratum):
             if stratum not in ("near-zero distance", "relaxed"):
                 continue
         shortest = needed(str(_too_short(v_max, a_max, j_max, v0, a0, v1)))
-        scale = log_uniform(rng, 1e-9, 1e-3) if stratum == "near-zero distance" else rng.uniform(0, 0.3)
+        scale = log_uniform(rng, 1e-9, 1e-3) if stratum == "near-zero distance" else 1e-9 + rng.uniform(0, 0.3)
         S = shortest * (1 + scale)
         return (S, v_max, a_max, j_max, v0, a0, v1), dispkin.Profile.from_state(S, v_max, a_max, j_max, v0, a0, v1)
 
@@ -238,7 +238,7 @@ def test_beyond_the_limits_never_slower_than_ruckig():
             law = dispkin.Profile.from_state(log_uniform(rng, 1e-6, 10), v_max, a_max, j_max, v0, a0, v1)
             S = law.distance
         except ValueError as e:
-            S = needed(str(e)) * (1 + rng.uniform(0, 1))
+            S = needed(str(e)) * (1 + 1e-9 + rng.uniform(0, 1))
             law = dispkin.Profile.from_state(S, v_max, a_max, j_max, v0, a0, v1)
         x = law.sample(np.linspace(0.0, law.duration, 1001))
         assert x[:, 1].min() >= -1e-9 * max(v0, v_max), "runs backwards"
@@ -268,7 +268,7 @@ def test_invariants(case):
     try:
         law = dispkin.Profile.from_state(extra, v_max, a_max, j_max, v0, a0, v1)
     except ValueError as e:
-        law = dispkin.Profile.from_state(needed(str(e)) + extra, v_max, a_max, j_max, v0, a0, v1)
+        law = dispkin.Profile.from_state(needed(str(e)) * (1 + 1e-9) + extra, v_max, a_max, j_max, v0, a0, v1)
     S, T = law.distance, law.duration
     t = np.concatenate([np.linspace(0.0, T, 2001), [p for p in np.cumsum([ph[0] for ph in law.phases])]])
     t.sort()
