@@ -290,7 +290,7 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   return p;
 }
 
-// doc/profiles.md §7.6: above v_max the law brakes at −a_max to v_max first. The direct
+// doc/profiles.md §7.8: above v_max the law brakes at −a_max to v_max first. The direct
 // deceleration v_start → v_end is then the shortest law, and any distance beyond it is cruised
 // at v_max (the brake ends there, and the deceleration to v_end starts there).
 Profile Profile::trapezoid_from_state(double distance, double v_max, double a_max, double v_start, double v_end) {

@@ -1,10 +1,11 @@
 // Profile::from_state: the time-optimal jerk-limited law from a moving, accelerating state
-// (doc/profiles.md §7, equation numbers (16)–(27) below refer to it).
+// (doc/profiles.md §7, equation numbers (16)–(24) below refer to it).
 //
 // The law is built as a short list of constant-jerk pieces: a brake into the limits when the
-// start lies beyond them (§7.2), then one of two one-parameter families (§7.3, §7.4) whose
-// distance grows monotonically with the parameter; the parameter is the root of
-// "distance = S", found by a safeguarded root search (Brent's method on a bracket).
+// start lies beyond them (§7.2), then one of three one-parameter families — peak laws (§7.3),
+// relaxed laws (§7.4), dips through a trough (§7.5) — chosen by where S lies among their
+// distances; the parameter is the root of "distance = S", found by a safeguarded root search
+// (Brent's method on a bracket).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -68,7 +69,7 @@ Pulse pulse(double a, double dv, const Limits& lim) {
 
 // Constant-jerk pieces from (0, v_start, a_start), with the state at their end. Consecutive
 // ramps of the same jerk (and holds at the same acceleration) are one piece: a brake into the
-// limits followed by a ramp of the same sign stays within Profile::max_phases (doc §7.5).
+// limits followed by a ramp of the same sign stays within Profile::max_phases (doc §7.6).
 struct Piece {
   double duration, jerk, a_start, a_end;
 };
@@ -114,7 +115,7 @@ class Draft {
       return;
     }
     if (count_ == static_cast<int>(pieces_.size())) {
-      throw std::logic_error("Profile::from_state: more phases than the law can have (doc/profiles.md §7.5)");
+      throw std::logic_error("Profile::from_state: more phases than the law can have (doc/profiles.md §7.6)");
     }
     pieces_[static_cast<std::size_t>(count_++)] = {duration, jerk, a_start, a_end};
   }
@@ -151,7 +152,7 @@ bool brake_into_limits(Draft& law, const Limits& lim) {
   return false;
 }
 
-// --- §7.3 and §7.4: the two families -----------------------------------------------------------
+// --- §7.3–7.5: the three families -----------------------------------------------------------
 
 // The start of the families: the state after the brake, and the velocities (16) that bound them.
 struct Start {
@@ -184,6 +185,20 @@ Draft relaxed_law(const Start& start, double a1, const Limits& lim) {
   Draft law = start.law;
   law.ramp(a1);
   law.add(pulse(a1, start.v_end - law.end().v, lim));
+  return law;
+}
+
+// (24) Dip through a trough: a pulse down to (v_t, 0), v_t = v_hi − u² ≤ v_hi = min(v_n, v_end),
+// then a pulse up to v_end — the velocity falls below the velocities the law starts from and ends
+// at, and recovers. At u = 0 it is the shortest law of (20)–(22).
+Draft trough_law(const Start& start, double u, const Limits& lim) {
+  Draft law = start.law;
+  const Motion& x = law.end();
+  const bool natural_below = start.natural <= start.v_end;
+  const double c_down = natural_below ? natural_change(x.a, lim.j_max) : start.v_end - x.v;
+  const double c_up = natural_below ? start.v_end - start.natural : 0.0;
+  law.add(pulse(x.a, c_down - u * u, lim));
+  law.add(pulse(0.0, c_up + u * u, lim));
   return law;
 }
 
@@ -282,14 +297,26 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
           number(v_end) + " under v_max = " + number(lim.v_max) + ", a_max = " + number(lim.a_max) +
           ", j_max = " + number(lim.j_max) + ": it needs at least " + number(needed) + ", " +
           number(needed - distance) +
-          " more (a shorter law would have to dip below the velocities it starts from and ends at, "
-          "which is not supported, or does not exist)"));
+          " more (even stopping on the way: no law reaches v_end in a shorter distance)"));
 }
 
-// --- §7.5 choosing the law ---------------------------------------------------------------------
+// (24) Below the shortest law without a dip (`shortest`, > S): the trough law with the highest
+// trough v_t whose distance is S. Its distance rises from `shortest` for a shallow dip and falls
+// for a deeper one, down to the stop-and-go law at v_t = 0; S is crossed once on the way down.
+Draft dip(const Start& start, const Draft& shortest, double distance, const Limits& lim, double v_start,
+          double a_start, double v_end) {
+  const double u_max = std::sqrt(std::max(0.0, std::min(start.natural, v_end)));
+  const Draft deepest = trough_law(start, u_max, lim);
+  if (deepest.end().s > distance) throw_too_short(distance, deepest.end().s, v_start, a_start, v_end, lim);
+  auto shortfall = [&](double u) { return distance - trough_law(start, u, lim).end().s; };
+  const double u = increasing_root(shortfall, 0.0, u_max, distance - shortest.end().s, distance - deepest.end().s);
+  return trough_law(start, u, lim);
+}
 
-// The law of §7 over `distance` (the brake's distance included): peak_law with the largest feasible peak if
-// it fits, else relaxed_law, else too short (throws).
+// --- §7.6 choosing the law ---------------------------------------------------------------------
+
+// (23) The law of §7 over `distance` (the brake's distance included): peak_law with the largest
+// feasible peak if it fits, else relaxed_law, else a dip, else too short (throws).
 Draft solve(const Start& start, double distance, const Limits& lim, double v_start, double a_start,
             double v_end) {
   const double w_max = std::sqrt(std::max(0.0, lim.v_max - start.lowest));
@@ -317,9 +344,9 @@ Draft solve(const Start& start, double distance, const Limits& lim, double v_sta
       const double a1 = increasing_root(excess, a_lo, a_hi, shortest.end().s - distance, low.end().s - distance);
       return relaxed_law(start, a1, lim);
     }
-    throw_too_short(distance, shortest.end().s, v_start, a_start, v_end, lim);
+    return dip(start, shortest, distance, lim, v_start, a_start, v_end);
   }
-  throw_too_short(distance, low.end().s, v_start, a_start, v_end, lim);
+  return dip(start, low, distance, lim, v_start, a_start, v_end);
 }
 
 }  // namespace

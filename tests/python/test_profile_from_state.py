@@ -9,7 +9,7 @@ two must be explained, as in test_profile.py: Ruckig's law misses S by more than
 valid here by an independent integration of its phases. Such cases must stay rare.
 
 The cases are drawn in strata, each covering one part of the maths: near-zero distances (just
-above the shortest law), v_end = v_max, a_start = +-a_max, an a_start that must be cut at once
+above the shortest law), dips (a little above it), v_end = v_max, a_start = +-a_max, an a_start that must be cut at once
 (v_n = v_max), long distances with a cruise, and the relaxed family (S between the direct pulse
 and the pulse through v_n). COUNT // 4 cases per stratum (DISPKIN_TEST_COUNT, default 10^4):
 about 15 s in all. A run of 10^6 states is reported in benchmarks/RESULTS.md.
@@ -135,13 +135,14 @@ def inside_state(rng, stratum):
             return v_max, a_max, j_max, v0, a0, v1, S
 
 
-STRATA = ["anywhere", "near-zero distance", "v_end = v_max", "a_start = +-a_max", "cut at once", "cruise", "relaxed"]
+STRATA = ["anywhere", "near-zero distance", "dip", "v_end = v_max", "a_start = +-a_max", "cut at once", "cruise", "relaxed"]
 
 
 def plan_stratum(rng, stratum):
     """A state of the stratum and our law for it. "near-zero distance": S just above the
-    shortest law (1 + 1e-9 ... 1e-3); "relaxed": a_start and v_end on the sides where the
-    relaxed family exists, S up to 30 % above the shortest law."""
+    shortest law (1 + 1e-9 ... 1e-3); "dip": S up to 5 % above it, where most laws dip;
+    "relaxed": a_start and v_end on the sides where the relaxed family exists, S up to 30 %
+    above the shortest law."""
     while True:
         v_max, a_max, j_max, v0, a0, v1, S = inside_state(rng, stratum)
         if stratum == "relaxed":
@@ -150,13 +151,14 @@ def plan_stratum(rng, stratum):
                 continue
         try:
             law = dispkin.Profile.from_state(S, v_max, a_max, j_max, v0, a0, v1)
-            if stratum not in ("near-zero distance", "relaxed"):
+            if stratum not in ("near-zero distance", "dip", "relaxed"):
                 return (S, v_max, a_max, j_max, v0, a0, v1), law
-        except ValueError as e:
-            if stratum not in ("near-zero distance", "relaxed"):
+        except ValueError:
+            if stratum not in ("near-zero distance", "dip", "relaxed"):
                 continue
         shortest = needed(str(_too_short(v_max, a_max, j_max, v0, a0, v1)))
-        scale = log_uniform(rng, 1e-9, 1e-3) if stratum == "near-zero distance" else 1e-9 + rng.uniform(0, 0.3)
+        top = {"near-zero distance": 0.0, "dip": 0.05, "relaxed": 0.3}[stratum]
+        scale = log_uniform(rng, 1e-9, 1e-3) if stratum == "near-zero distance" else 1e-9 + rng.uniform(0, top)
         S = shortest * (1 + scale)
         return (S, v_max, a_max, j_max, v0, a0, v1), dispkin.Profile.from_state(S, v_max, a_max, j_max, v0, a0, v1)
 
@@ -167,14 +169,34 @@ def _too_short(v_max, a_max, j_max, v0, a0, v1):
     return e.value
 
 
+def family(law, v0, a0, v1, j_max):
+    """Which family of doc/profiles.md §7 a law (inside the limits) belongs to, from its phases:
+    "cruise" (a peak law at v_max), "trough" (its velocity dips below both ends, §7.5),
+    "relaxed" (a_start != 0 turned back towards zero but not to it, then pushed again: the
+    acceleration keeps the sign of a_start, §7.4), else "peak" (§7.3)."""
+    phases = law.phases
+    if any(jerk == 0.0 and a == 0.0 and d > 0.0 for d, jerk, _, _, a in phases):
+        return "cruise"
+    lowest = integrated_end(law, v0, a0)[3]
+    floor = min(natural(v0, min(a0, 0.0), j_max), v1)
+    if lowest < floor - 1e-9 * max(v0, v1, 1e-300):
+        return "trough"
+    accelerations = [a for *_, a in phases][1:]
+    if a0 != 0.0 and len(phases) >= 2 and all(a * a0 > 0.0 for a in accelerations) and phases[0][1] * a0 < 0.0:
+        return "relaxed"
+    return "peak"
+
+
 @pytest.mark.parametrize("stratum", STRATA)
 def test_inside_the_limits_matches_ruckig(stratum):
     rng = rng_for("from_state " + stratum)
     r = Ruckig1()
     n = max(COUNT // 4, 50)
     verdicts = {"equal": 0, "ruckig imprecise": 0, "ruckig slower": 0, "ruckig failed": 0}
+    families = {"cruise": 0, "peak": 0, "relaxed": 0, "trough": 0}
     for _ in range(n):
         case, law = plan_stratum(rng, stratum)
+        families[family(law, *case[4:], case[3])] += 1
         trajectory = r.plan(*case)
         if trajectory is None:
             verdicts["ruckig failed"] += 1
@@ -185,36 +207,28 @@ def test_inside_the_limits_matches_ruckig(stratum):
         verdicts[v] += 1
     # Ruckig's failures, imprecise and slower laws together below 1 % of the cases.
     assert verdicts["equal"] >= 0.99 * n, verdicts
+    # The strata reach the families they are for.
+    wanted = {"cruise": ("cruise", 0.9), "dip": ("trough", 0.2), "relaxed": ("relaxed", 0.2), "anywhere": ("peak", 0.2)}
+    if stratum in wanted:
+        name, share = wanted[stratum]
+        assert families[name] >= share * n, families
 
 
-def test_refused_distances_need_a_dip():
-    """Where dispkin refuses a distance as too short (0.1 % below the shortest law it plans),
-    Ruckig either finds nothing or a law outside dispkin's families: one whose acceleration,
-    after the start's relaxation towards zero, turns from braking to accelerating (a dip of the
-    velocity), or one that brakes below v_n (16) first."""
+def test_refused_distances_have_no_law():
+    """Where dispkin refuses a distance as too short (0.1 % below the shortest law, the
+    stop-and-go law of the dips when there is one), Ruckig finds no law either, except where the
+    shortfall is below Ruckig's position tolerance (1e-8 absolute)."""
     rng = rng_for("from_state refused")
     r = Ruckig1()
-    dips = 0
-    for _ in range(max(COUNT // 20, 50)):
+    refused = 0
+    for _ in range(max(COUNT // 10, 50)):
         v_max, a_max, j_max, v0, a0, v1, _ = inside_state(rng, "anywhere")
-        S = needed(str(_too_short(v_max, a_max, j_max, v0, a0, v1))) * (1 - 1e-3)
+        shortest = needed(str(_too_short(v_max, a_max, j_max, v0, a0, v1)))
+        S = shortest * (1 - 1e-3)
         trajectory = r.plan(S, v_max, a_max, j_max, v0, a0, v1)
-        if trajectory is None:
-            continue
-        t = np.linspace(0.0, trajectory.duration, 2001)
-        states = np.array([trajectory.at_time(x) for x in t])[:, :, 0]
-        v, a = states[:, 1], states[:, 2]
-        tol = 1e-6 * a_max
-        # After the acceleration first reaches zero (the start's relaxation), a law of the
-        # families brakes at most once: no braking followed by accelerating.
-        first = np.argmax(a >= -tol) if a0 < 0 else 0
-        later = a[first:]
-        braking = np.flatnonzero(later < -tol)
-        dip = braking.size > 0 and np.any(later[braking[0]:] > tol)
-        below = a0 < 0 and v.min() < natural(v0, a0, j_max) - 1e-6 * v_max
-        assert dip or below, (S, v_max, a_max, j_max, v0, a0, v1)
-        dips += 1
-    assert dips > 0
+        assert trajectory is None or shortest - S < 1e-8, (S, v_max, a_max, j_max, v0, a0, v1)
+        refused += 1
+    assert refused > 0
 
 
 def test_beyond_the_limits_never_slower_than_ruckig():
