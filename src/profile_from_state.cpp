@@ -23,6 +23,7 @@ namespace {
 
 struct Limits {
   double v_max, a_max, j_max;
+  double jerk_time;  //!< 1/j_max: seconds per unit of acceleration at full jerk (products, not divisions)
 };
 
 // --- kernels -----------------------------------------------------------------------------------
@@ -30,7 +31,7 @@ struct Limits {
 // (16) The velocity change while the acceleration a returns to zero at full jerk: a|a|/(2j).
 // v + natural_change(a) is the velocity every law from (v, a) passes through first or must
 // overshoot; it is constant along a ramp that moves the acceleration towards zero.
-double natural_change(double a, double j_max) { return a * (std::abs(a) / (2.0 * j_max)); }
+double natural_change(double a, const Limits& lim) { return a * (std::abs(a) * (0.5 * lim.jerk_time)); }
 
 // (12) One constant-jerk piece: s, v, a after `d` seconds of jerk `j`.
 struct Motion {
@@ -50,7 +51,7 @@ struct Pulse {
   double hold;  //!< time at sign · p
 };
 Pulse pulse(double a, double dv, const Limits& lim) {
-  const double sign = dv >= natural_change(a, lim.j_max) ? 1.0 : -1.0;
+  const double sign = dv >= natural_change(a, lim) ? 1.0 : -1.0;
   const double am = sign * a, dm = sign * dv;
   // p² is a difference when a < 0: below its rounding error (a few ε a²) it is 0, else a
   // rounding-level velocity step would add two vanishing ramps.
@@ -85,7 +86,7 @@ class Draft {
   //! Jerk ±j_max from the current acceleration to `a` (exactly `a` at the end).
   void ramp(double a) {
     const double j = a >= x_.a ? lim_.j_max : -lim_.j_max;
-    push(std::abs(a - x_.a) / lim_.j_max, j, a);
+    push(std::abs(a - x_.a) * lim_.jerk_time, j, a);
   }
   //! Jerk 0 for `duration` at the current acceleration.
   void hold(double duration) { push(duration, 0.0, x_.a); }
@@ -127,6 +128,31 @@ class Draft {
   Limits lim_;
 };
 
+// The end state of a law without its pieces: the same steps as Draft (bit for bit the same end),
+// for the root searches, which only need the distance a law covers.
+class Endpoint {
+ public:
+  Endpoint(const Motion& x, const Limits& lim) : x_(x), lim_(lim) {}
+  const Motion& end() const { return x_; }
+  void ramp(double a) {
+    x_ = advance(x_, std::abs(a - x_.a) * lim_.jerk_time, a >= x_.a ? lim_.j_max : -lim_.j_max);
+    x_.a = a;
+  }
+  void hold(double duration) {
+    if (duration > 0.0) x_ = advance(x_, duration, 0.0);
+  }
+  void cruise(double duration) { hold(duration); }
+  void add(const Pulse& p) {
+    ramp(p.sign * p.peak);
+    hold(p.hold);
+    ramp(0.0);
+  }
+
+ private:
+  Motion x_;
+  Limits lim_;
+};
+
 // --- §7.2 the brake into the limits ------------------------------------------------------------
 
 // (18)–(19): back within |a| ≤ a_max at full jerk, and, where v + natural_change(a) > v_max,
@@ -137,13 +163,13 @@ class Draft {
 bool brake_into_limits(Draft& law, const Limits& lim) {
   if (law.end().a < -lim.a_max) law.ramp(-lim.a_max);
   const Motion& x = law.end();
-  if (x.v + natural_change(x.a, lim.j_max) > lim.v_max) {
+  if (x.v + natural_change(x.a, lim) > lim.v_max) {
     const double a_b = -std::sqrt(0.5 * x.a * x.a + lim.j_max * (x.v - lim.v_max));
     if (a_b >= -lim.a_max) {
       law.ramp(a_b);
     } else {
       law.ramp(-lim.a_max);
-      const double natural = law.end().v + natural_change(-lim.a_max, lim.j_max);
+      const double natural = law.end().v + natural_change(-lim.a_max, lim);
       law.hold(std::max(0.0, (natural - lim.v_max) / lim.a_max));
     }
     return true;
@@ -155,60 +181,80 @@ bool brake_into_limits(Draft& law, const Limits& lim) {
 // --- §7.3–7.5: the three families -----------------------------------------------------------
 
 // The start of the families: the state after the brake, and the velocities (16) that bound them.
+// Each family appends its pieces to either a Draft (the law returned, holding the brake) or an
+// Endpoint (the distance only, for the root searches).
 struct Start {
-  Draft law;        //!< the brake into the limits (possibly empty)
+  Motion braked;    //!< the state after the brake into the limits (the start state if none)
   double natural;   //!< v_n = v + natural_change(a) ≤ v_max
   double lowest;    //!< v_lo = max(v_n, v_end), the lowest peak of the family (20)
   double v_end;
+  Limits lim;
+
+  Endpoint endpoint() const { return Endpoint(braked, lim); }
 };
 
 // (20) Accelerate to a peak v_p = v_lo + w² ≥ v_lo with acceleration 0 there, cruise, decelerate
 // to v_end: two pulses (17). The velocity steps are carried as c + w² (c exact), not as
 // differences of velocities: a small step keeps its digits.
-Draft peak_law(const Start& start, double w, double cruise, const Limits& lim) {
-  Draft law = start.law;
-  const Motion& x = law.end();
+template <class Law>
+void peak_law(Law& law, const Start& start, double w, double cruise) {
+  const Motion& x = start.braked;
   const bool natural_above = start.natural >= start.v_end;
-  const double c_up = natural_above ? natural_change(x.a, lim.j_max) : start.v_end - x.v;
+  const double c_up = natural_above ? natural_change(x.a, start.lim) : start.v_end - x.v;
   const double c_down = natural_above ? start.natural - start.v_end : 0.0;
-  law.add(pulse(x.a, c_up + w * w, lim));
+  law.add(pulse(x.a, c_up + w * w, start.lim));
   law.cruise(cruise);
-  law.add(pulse(0.0, -(c_down + w * w), lim));
-  return law;
+  law.add(pulse(0.0, -(c_down + w * w), start.lim));
 }
 
 // (22) Relax the acceleration from a towards zero, to a₁ (between a and 0), then the direct
 // pulse (17) to v_end. Exists where the direct pulse and peak_law at w = 0 differ: a < 0 with
 // v_end < v_n (ease the braking, brake again), a > 0 with v_end > v_n (ease the acceleration,
 // accelerate again).
-Draft relaxed_law(const Start& start, double a1, const Limits& lim) {
-  Draft law = start.law;
+template <class Law>
+void relaxed_law(Law& law, const Start& start, double a1) {
   law.ramp(a1);
-  law.add(pulse(a1, start.v_end - law.end().v, lim));
-  return law;
+  law.add(pulse(a1, start.v_end - law.end().v, start.lim));
 }
 
 // (24) Dip through a trough: a pulse down to (v_t, 0), v_t = v_hi − u² ≤ v_hi = min(v_n, v_end),
 // then a pulse up to v_end — the velocity falls below the velocities the law starts from and ends
 // at, and recovers. At u = 0 it is the shortest law of (20)–(22).
-Draft trough_law(const Start& start, double u, const Limits& lim) {
-  Draft law = start.law;
-  const Motion& x = law.end();
+template <class Law>
+void trough_law(Law& law, const Start& start, double u) {
+  const Motion& x = start.braked;
   const bool natural_below = start.natural <= start.v_end;
-  const double c_down = natural_below ? natural_change(x.a, lim.j_max) : start.v_end - x.v;
+  const double c_down = natural_below ? natural_change(x.a, start.lim) : start.v_end - x.v;
   const double c_up = natural_below ? start.v_end - start.natural : 0.0;
-  law.add(pulse(x.a, c_down - u * u, lim));
-  law.add(pulse(0.0, c_up + u * u, lim));
-  return law;
+  law.add(pulse(x.a, c_down - u * u, start.lim));
+  law.add(pulse(0.0, c_up + u * u, start.lim));
+}
+
+// The distances the root searches compare with S.
+double peak_distance(const Start& start, double w) {
+  Endpoint law = start.endpoint();
+  peak_law(law, start, w, 0.0);
+  return law.end().s;
+}
+double relaxed_distance(const Start& start, double a1) {
+  Endpoint law = start.endpoint();
+  relaxed_law(law, start, a1);
+  return law.end().s;
+}
+double trough_distance(const Start& start, double u) {
+  Endpoint law = start.endpoint();
+  trough_law(law, start, u);
+  return law.end().s;
 }
 
 // --- safeguarded root search -------------------------------------------------------------------
 
 // The root of an increasing f on [lo, hi] with f(lo) < 0 < f(hi): Brent's method (inverse
 // quadratic interpolation and secant steps, bisection whenever they do not shrink the bracket
-// fast enough), to a bracket of a few ulps.
+// fast enough), to a bracket of a few ulps or |f| ≤ f_tol (f is a distance minus S: once it is at
+// rounding level, further steps change nothing the law can show).
 template <class F>
-double increasing_root(F f, double lo, double hi, double f_lo, double f_hi) {
+double increasing_root(F f, double lo, double hi, double f_lo, double f_hi, double f_tol) {
   double a = lo, b = hi, fa = f_lo, fb = f_hi;
   double c = a, fc = fa, d = b - a, e = d;
   for (int iteration = 0; iteration < 200; ++iteration) {
@@ -227,7 +273,7 @@ double increasing_root(F f, double lo, double hi, double f_lo, double f_hi) {
     }
     const double tol = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + std::numeric_limits<double>::denorm_min();
     const double m = 0.5 * (c - b);
-    if (std::abs(m) <= tol || fb == 0.0) break;
+    if (std::abs(m) <= tol || std::abs(fb) <= f_tol) break;
     if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
       const double s = fb / fa;
       double p, q;
@@ -257,6 +303,9 @@ double increasing_root(F f, double lo, double hi, double f_lo, double f_hi) {
   return b;
 }
 
+// The rounding level of a distance S: a root search stops when the law's distance is within it.
+double rounding(double distance) { return 4.0 * std::numeric_limits<double>::epsilon() * distance; }
+
 // --- input checks ------------------------------------------------------------------------------
 
 std::string number(double x) {
@@ -279,7 +328,7 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
   }
   // (16) with a < 0: the acceleration returns to zero at full jerk at v + natural_change(a);
   // below zero the law would run backwards whatever it does.
-  const double lowest = v_start + natural_change(std::min(a_start, 0.0), lim.j_max);
+  const double lowest = v_start + natural_change(std::min(a_start, 0.0), lim);
   if (lowest < 0.0) {
     throw std::invalid_argument(describe(
         "a_start", a_start,
@@ -300,71 +349,64 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
           " more (even stopping on the way: no law reaches v_end in a shorter distance)"));
 }
 
-// (24) Below the shortest law without a dip (`shortest`, > S): the trough law with the highest
-// trough v_t whose distance is S. Its distance rises from `shortest` for a shallow dip and falls
-// for a deeper one, down to the stop-and-go law at v_t = 0; S is crossed once on the way down.
-Draft dip(const Start& start, const Draft& shortest, double distance, const Limits& lim, double v_start,
-          double a_start, double v_end) {
-  const double u_max = std::sqrt(std::max(0.0, std::min(start.natural, v_end)));
-  const Draft deepest = trough_law(start, u_max, lim);
-  if (deepest.end().s > distance) throw_too_short(distance, deepest.end().s, v_start, a_start, v_end, lim);
-  auto shortfall = [&](double u) { return distance - trough_law(start, u, lim).end().s; };
-  const double u = increasing_root(shortfall, 0.0, u_max, distance - shortest.end().s, distance - deepest.end().s);
-  return trough_law(start, u, lim);
+// (24) Below the shortest law without a dip (of distance `shortest` > S): the trough law with the
+// highest trough v_t whose distance is S. Its distance rises from `shortest` for a shallow dip and
+// falls for a deeper one, down to the stop-and-go law at v_t = 0; S is crossed once on the way down.
+void dip(Draft& law, const Start& start, double shortest, double distance, double v_start, double a_start) {
+  const double u_max = std::sqrt(std::max(0.0, std::min(start.natural, start.v_end)));
+  const double deepest = trough_distance(start, u_max);
+  if (deepest > distance) throw_too_short(distance, deepest, v_start, a_start, start.v_end, start.lim);
+  auto shortfall = [&](double u) { return distance - trough_distance(start, u); };
+  const double u = increasing_root(shortfall, 0.0, u_max, distance - shortest, distance - deepest, rounding(distance));
+  trough_law(law, start, u);
 }
 
 // --- §7.6 choosing the law ---------------------------------------------------------------------
 
-// (23) The law of §7 over `distance` (the brake's distance included): peak_law with the largest
-// feasible peak if it fits, else relaxed_law, else a dip, else too short (throws).
-Draft solve(const Start& start, double distance, const Limits& lim, double v_start, double a_start,
-            double v_end) {
-  const double w_max = std::sqrt(std::max(0.0, lim.v_max - start.lowest));
+// (23) The law of §7 over `distance` (the brake's distance included), appended to `law` (the
+// brake): peak_law with the largest feasible peak if it fits, else relaxed_law, else a dip, else
+// too short (throws).
+void solve(Draft& law, const Start& start, double distance, double v_start, double a_start) {
+  const double w_max = std::sqrt(std::max(0.0, start.lim.v_max - start.lowest));
   // (21) v_p = v_max with a cruise over the rest.
-  const Draft top = peak_law(start, w_max, 0.0, lim);
-  if (top.end().s <= distance) {
-    return peak_law(start, w_max, (distance - top.end().s) / lim.v_max, lim);
-  }
-  const Draft low = peak_law(start, 0.0, 0.0, lim);
-  if (low.end().s <= distance) {
+  const double top = peak_distance(start, w_max);
+  if (top <= distance) return peak_law(law, start, w_max, (distance - top) / start.lim.v_max);
+  const double low = peak_distance(start, 0.0);
+  if (low <= distance) {
     // (20) D(w) increasing from D(0) ≤ S to D(w_max) > S.
-    auto excess = [&](double w) { return peak_law(start, w, 0.0, lim).end().s - distance; };
-    const double w = increasing_root(excess, 0.0, w_max, low.end().s - distance, top.end().s - distance);
-    return peak_law(start, w, 0.0, lim);
+    auto excess = [&](double w) { return peak_distance(start, w) - distance; };
+    const double w = increasing_root(excess, 0.0, w_max, low - distance, top - distance, rounding(distance));
+    return peak_law(law, start, w, 0.0);
   }
   // (22) a₁ between a and 0: D increasing in a₁ up to D(0) of peak_law (> S).
-  const double a = start.law.end().a;
+  const double a = start.braked.a;
   const double v_n = start.natural;
-  const bool relaxes = (a < 0.0 && v_end < v_n) || (a > 0.0 && v_end > v_n);
-  if (relaxes) {
-    const double a_lo = std::min(a, 0.0), a_hi = std::max(a, 0.0);
-    const Draft shortest = relaxed_law(start, a_lo, lim);
-    if (shortest.end().s <= distance) {
-      auto excess = [&](double a1) { return relaxed_law(start, a1, lim).end().s - distance; };
-      const double a1 = increasing_root(excess, a_lo, a_hi, shortest.end().s - distance, low.end().s - distance);
-      return relaxed_law(start, a1, lim);
-    }
-    return dip(start, shortest, distance, lim, v_start, a_start, v_end);
-  }
-  return dip(start, low, distance, lim, v_start, a_start, v_end);
+  const bool relaxes = (a < 0.0 && start.v_end < v_n) || (a > 0.0 && start.v_end > v_n);
+  if (!relaxes) return dip(law, start, low, distance, v_start, a_start);
+  const double a_lo = std::min(a, 0.0), a_hi = std::max(a, 0.0);
+  const double shortest = relaxed_distance(start, a_lo);
+  if (shortest > distance) return dip(law, start, shortest, distance, v_start, a_start);
+  auto excess = [&](double a1) { return relaxed_distance(start, a1) - distance; };
+  const double a1 = increasing_root(excess, a_lo, a_hi, shortest - distance, low - distance, rounding(distance));
+  relaxed_law(law, start, a1);
 }
 
 }  // namespace
 
 Profile Profile::from_state(double distance, double v_max, double a_max, double j_max, double v_start,
                             double a_start, double v_end) {
-  const Limits lim{v_max, a_max, j_max};
+  const Limits lim{v_max, a_max, j_max, 1.0 / j_max};
   check_input(distance, lim, v_start, a_start, v_end);
 
-  Start start{Draft(v_start, a_start, lim), 0.0, 0.0, v_end};
-  const bool braked_to_limit = brake_into_limits(start.law, lim);
-  const Motion& braked = start.law.end();
+  Draft law(v_start, a_start, lim);
+  const bool braked_to_limit = brake_into_limits(law, lim);
+  const Motion braked = law.end();
   // After a brake v_n = v_max in exact arithmetic: taken as such (not a rounding-level peak above
   // it that would add vanishing phases).
-  start.natural = braked_to_limit ? v_max : std::min(braked.v + natural_change(braked.a, j_max), v_max);
-  start.lowest = std::max(start.natural, v_end);
+  const double natural = braked_to_limit ? v_max : std::min(braked.v + natural_change(braked.a, lim), v_max);
+  const Start start{braked, natural, std::max(natural, v_end), v_end, lim};
   // The brake alone may overrun S: then every family is too short.
-  const Draft law = solve(start, distance, lim, v_start, a_start, v_end);
+  solve(law, start, distance, v_start, a_start);
 
   Profile p;
   p.kind_ = ProfileKind::scurve;

@@ -75,14 +75,15 @@ class Profile {
   //! |a_start| > a_max, or an a_start that carries ṡ above v_max even when cut at once): the law
   //! then first eases onto the limits at full jerk (and at −a_max), the velocity falling to v_max
   //! as fast as the limits allow, and is time-optimal from there. At most seven phases.
-  //! Throws std::invalid_argument on bad input (v_end ∉ [0, v_max]; an a_start < 0 that makes ṡ
-  //! negative before the acceleration can return to zero), or if `distance` is too short for the
-  //! laws without a dip of the velocity (the message names the distance needed and the shortfall).
+  //! Where S is too short for a law whose velocity stays between its start and end, the law dips
+  //! (slows down and speeds up again). Throws std::invalid_argument on bad input (v_end ∉
+  //! [0, v_max]; an a_start < 0 that makes ṡ negative before the acceleration can return to zero),
+  //! or if no law fits in `distance` (the message names the distance needed and the shortfall).
   static Profile from_state(double distance, double v_max, double a_max, double j_max, double v_start = 0.0,
                             double a_start = 0.0, double v_end = 0.0);
 
   //! The time-optimal law without a jerk limit from velocity `v_start` ≥ 0, which may exceed
-  //! v_max (doc/profiles.md §7.6): as trapezoid() for v_start ≤ v_max; above it, brake at −a_max
+  //! v_max (doc/profiles.md §7.8): as trapezoid() for v_start ≤ v_max; above it, brake at −a_max
   //! to v_max, cruise, decelerate to v_end. The acceleration is not a state of this law (it
   //! jumps). Throws std::invalid_argument on bad input, or if S < |v_end² − v_start²| / (2 a).
   static Profile trapezoid_from_state(double distance, double v_max, double a_max, double v_start = 0.0,

@@ -87,9 +87,10 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
                   "The time-optimal jerk-limited law from a moving, accelerating state (v_start, a_start) "
                   "to (distance, v_end, acceleration 0) under 0 <= v <= v_max, |a| <= a_max, |jerk| <= jerk; "
                   "it never runs backwards. A start beyond the limits (v_start > v_max, |a_start| > a_max, or "
-                  "an a_start that carries v above v_max) first eases onto them at full jerk. v_end in "
-                  "[0, v_max]. ValueError on bad input, or if `distance` is too short (the message names the "
-                  "distance needed and the shortfall).")
+                  "an a_start that carries v above v_max) first eases onto them at full jerk. Where the "
+                  "distance is too short for a law between its end velocities, the law dips (slows down and "
+                  "speeds up again). v_end in [0, v_max]. ValueError on bad input, or if no law fits in "
+                  "`distance` (the message names the distance needed and the shortfall).")
       .def_static("trapezoid_from_state", &Profile::trapezoid_from_state, py::arg("distance"), py::arg("v_max"),
                   py::arg("a_max"), py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
                   "The time-optimal law without a jerk limit from velocity v_start >= 0, which may exceed "

@@ -15,8 +15,9 @@ and the pulse through v_n). COUNT // 4 cases per stratum (DISPKIN_TEST_COUNT, de
 about 15 s in all. A run of 10^6 states is reported in benchmarks/RESULTS.md.
 
 Beyond the limits Ruckig first brakes hard into them; dispkin eases onto them. There our law must
-never be slower than Ruckig's (up to Ruckig's brake, which ends a few ulps inside the limit and so
-keeps its velocity above v_max a little longer: 1e-8 relative), and never run backwards.
+never be slower than Ruckig's, and never run backwards. (Ruckig's brake holds its deceleration a
+hair inside -a_max, a few 1e-9 relative, so its velocity stays above ours while both fall to v_max:
+where its law is faster by more than 1e-9, that must be the reason, and the gap below 2e-8.)
 """
 
 import math
@@ -234,7 +235,7 @@ def test_refused_distances_have_no_law():
 def test_beyond_the_limits_never_slower_than_ruckig():
     rng = rng_for("from_state beyond")
     r = Ruckig1()
-    faster = compared = 0
+    faster = compared = slower = 0
     for _ in range(max(COUNT // 4, 50)):
         v_max, a_max, j_max = log_uniform(rng, 1e-2, 10), log_uniform(rng, 1e-2, 100), log_uniform(rng, 1e-1, 1e4)
         v0, a0, v1 = v_max * rng.uniform(), a_max * rng.uniform(-1, 1), v_max * rng.uniform()
@@ -261,9 +262,17 @@ def test_beyond_the_limits_never_slower_than_ruckig():
         if trajectory is None:
             continue
         compared += 1
-        assert law.duration <= trajectory.duration * (1 + 1e-8), (S, v_max, a_max, j_max, v0, a0, v1, law.duration, trajectory.duration)
+        case = (S, v_max, a_max, j_max, v0, a0, v1, law.duration, trajectory.duration)
+        if law.duration > trajectory.duration * (1 + REL):
+            # Explained only by Ruckig's brake: it holds its deceleration a hair inside -a_max
+            # (its brake ends its jerk ramp an epsilon early), so its velocity stays above ours
+            # while both fall to v_max. Ours brakes at -a_max exactly.
+            lowest = min(trajectory.at_time(t)[2][0] for t in np.linspace(0.0, trajectory.duration, 2001))
+            assert law.duration <= trajectory.duration * (1 + 2e-8), case
+            assert -a_max < lowest and min(p[4] for p in law.phases) == -a_max, case
+            slower += 1
         faster += law.duration < trajectory.duration * (1 - REL)
-    assert compared > 0 and faster > compared // 2
+    assert compared > 0 and faster > compared // 2 and slower < compared // 100
 
 
 # --- invariants (hypothesis) -------------------------------------------------------------------
