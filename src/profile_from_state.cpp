@@ -70,7 +70,7 @@ Pulse pulse(double a, double dv, const Limits& lim) {
 
 // Constant-jerk pieces from (0, v_start, a_start), with the state at their end. Consecutive
 // ramps of the same jerk (and holds at the same acceleration) are one piece: a brake into the
-// limits followed by a ramp of the same sign stays within Profile::max_phases (doc §7.6).
+// limits followed by a ramp of the same sign stays within Profile::max_phases (doc/profiles.md §7.7).
 struct Piece {
   double duration, jerk, a_start, a_end;
 };
@@ -116,7 +116,7 @@ class Draft {
       return;
     }
     if (count_ == static_cast<int>(pieces_.size())) {
-      throw std::logic_error("Profile::from_state: more phases than the law can have (doc/profiles.md §7.6)");
+      throw std::logic_error("Profile::from_state: more phases than the law can have (doc/profiles.md §7.7)");
     }
     pieces_[static_cast<std::size_t>(count_++)] = {duration, jerk, a_start, a_end};
   }
