@@ -350,14 +350,17 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
 }
 
 // (24) Below the shortest law without a dip (of distance `shortest` > S): the trough law with the
-// highest trough v_t whose distance is S. Its distance rises from `shortest` for a shallow dip and
-// falls for a deeper one, down to the stop-and-go law at v_t = 0; S is crossed once on the way down.
+// highest trough v_t whose distance is S. From u = 0 (a law without a dip, longer than S) its
+// distance rises for a shallow dip and may fall for a deeper one, to the stop-and-go law at
+// v_t = 0; if that is at most S, S is crossed once on the way down. Else no law fits.
 void dip(Draft& law, const Start& start, double shortest, double distance, double v_start, double a_start) {
   const double u_max = std::sqrt(std::max(0.0, std::min(start.natural, start.v_end)));
   const double deepest = trough_distance(start, u_max);
-  if (deepest > distance) throw_too_short(distance, deepest, v_start, a_start, start.v_end, start.lim);
+  if (deepest > distance) {
+    throw_too_short(distance, std::min(shortest, deepest), v_start, a_start, start.v_end, start.lim);
+  }
   auto shortfall = [&](double u) { return distance - trough_distance(start, u); };
-  const double u = increasing_root(shortfall, 0.0, u_max, distance - shortest, distance - deepest, rounding(distance));
+  const double u = increasing_root(shortfall, 0.0, u_max, shortfall(0.0), distance - deepest, rounding(distance));
   trough_law(law, start, u);
 }
 
@@ -383,9 +386,11 @@ void solve(Draft& law, const Start& start, double distance, double v_start, doub
   const double v_n = start.natural;
   const bool relaxes = (a < 0.0 && start.v_end < v_n) || (a > 0.0 && start.v_end > v_n);
   if (!relaxes) return dip(law, start, low, distance, v_start, a_start);
+  // The relaxed end a₁ = min(a, 0) is the shorter one for most starts, not for all (relaxing
+  // takes longer, at lower velocities): only then do the relaxed laws fill (R(a_lo), D(0)).
   const double a_lo = std::min(a, 0.0), a_hi = std::max(a, 0.0);
   const double shortest = relaxed_distance(start, a_lo);
-  if (shortest > distance) return dip(law, start, shortest, distance, v_start, a_start);
+  if (shortest > distance) return dip(law, start, std::min(shortest, low), distance, v_start, a_start);
   auto excess = [&](double a1) { return relaxed_distance(start, a1) - distance; };
   const double a1 = increasing_root(excess, a_lo, a_hi, shortest - distance, low - distance, rounding(distance));
   relaxed_law(law, start, a1);

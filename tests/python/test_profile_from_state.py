@@ -9,10 +9,10 @@ two must be explained, as in test_profile.py: Ruckig's law misses S by more than
 valid here by an independent integration of its phases. Such cases must stay rare.
 
 The cases are drawn in strata, each covering one part of the maths: near-zero distances (just
-above the shortest law), dips (a little above it), v_end = v_max, a_start = +-a_max, an a_start that must be cut at once
+above the shortest law), dips (a small and a large end velocity, a little above it), v_end = v_max, a_start = +-a_max, an a_start that must be cut at once
 (v_n = v_max), long distances with a cruise, and the relaxed family (S between the direct pulse
-and the pulse through v_n). COUNT // 4 cases per stratum (DISPKIN_TEST_COUNT, default 10^4):
-about 15 s in all. A run of 10^6 states is reported in benchmarks/RESULTS.md.
+and the pulse through v_n). COUNT cases per stratum (DISPKIN_TEST_COUNT, default 10^4): about
+15 s for the file. A run of 10^6 states is reported in benchmarks/RESULTS.md.
 
 Beyond the limits Ruckig first brakes hard into them; dispkin eases onto them. There our law must
 never be slower than Ruckig's, and never run backwards. (Ruckig's brake holds its deceleration a
@@ -128,10 +128,16 @@ def inside_state(rng, stratum):
         elif stratum == "a_start = +-a_max":
             a0 = a_max * rng.choice([-1.0, 1.0])
         elif stratum == "cut at once":
+            # v_n = v_max to 1e-12 (inside, so that Ruckig does not see a state beyond it)
             a0 = abs(a0)
-            v0 = v_max - a0 * a0 / (2 * j_max)
+            v0 = (v_max - a0 * a0 / (2 * j_max)) * (1 - 1e-12)
         elif stratum == "cruise":
             S = log_uniform(rng, 10, 1e4) * v_max
+        elif stratum == "dip":
+            # A small velocity and a large one: the laws that dip (stop first) live here.
+            low, high = v_max * rng.uniform(0, 0.05), v_max * rng.uniform(0.5, 1)
+            v0, v1 = (low, high) if rng.uniform() < 0.5 else (high, low)
+            a0 = a_max * rng.uniform(-0.1, 0.1)
         if v0 >= 0 and natural(v0, a0, j_max) <= v_max and natural(v0, min(a0, 0), j_max) >= 0:
             return v_max, a_max, j_max, v0, a0, v1, S
 
@@ -141,9 +147,9 @@ STRATA = ["anywhere", "near-zero distance", "dip", "v_end = v_max", "a_start = +
 
 def plan_stratum(rng, stratum):
     """A state of the stratum and our law for it. "near-zero distance": S just above the
-    shortest law (1 + 1e-9 ... 1e-3); "dip": S up to 5 % above it, where most laws dip;
-    "relaxed": a_start and v_end on the sides where the relaxed family exists, S up to 30 %
-    above the shortest law."""
+    shortest law (1 + 1e-9 ... 1e-3); "dip": a small and a large end velocity, S 1e-5 ... 0.1
+    above the shortest law; "relaxed": a_start and v_end on the sides where the relaxed family
+    exists, S 1e-4 ... 1 above the shortest law (log-uniform)."""
     while True:
         v_max, a_max, j_max, v0, a0, v1, S = inside_state(rng, stratum)
         if stratum == "relaxed":
@@ -158,8 +164,9 @@ def plan_stratum(rng, stratum):
             if stratum not in ("near-zero distance", "dip", "relaxed"):
                 continue
         shortest = needed(str(_too_short(v_max, a_max, j_max, v0, a0, v1)))
-        top = {"near-zero distance": 0.0, "dip": 0.05, "relaxed": 0.3}[stratum]
-        scale = log_uniform(rng, 1e-9, 1e-3) if stratum == "near-zero distance" else 1e-9 + rng.uniform(0, top)
+        lowest = {"near-zero distance": 1e-9, "dip": 1e-5, "relaxed": 1e-4}[stratum]
+        highest = {"near-zero distance": 1e-3, "dip": 1e-1, "relaxed": 1.0}[stratum]
+        scale = 1e-9 + log_uniform(rng, lowest, highest)
         S = shortest * (1 + scale)
         return (S, v_max, a_max, j_max, v0, a0, v1), dispkin.Profile.from_state(S, v_max, a_max, j_max, v0, a0, v1)
 
@@ -192,7 +199,7 @@ def family(law, v0, a0, v1, j_max):
 def test_inside_the_limits_matches_ruckig(stratum):
     rng = rng_for("from_state " + stratum)
     r = Ruckig1()
-    n = max(COUNT // 4, 50)
+    n = max(COUNT, 50)
     verdicts = {"equal": 0, "ruckig imprecise": 0, "ruckig slower": 0, "ruckig failed": 0}
     families = {"cruise": 0, "peak": 0, "relaxed": 0, "trough": 0}
     for _ in range(n):
@@ -209,7 +216,7 @@ def test_inside_the_limits_matches_ruckig(stratum):
     # Ruckig's failures, imprecise and slower laws together below 1 % of the cases.
     assert verdicts["equal"] >= 0.99 * n, verdicts
     # The strata reach the families they are for.
-    wanted = {"cruise": ("cruise", 0.9), "dip": ("trough", 0.2), "relaxed": ("relaxed", 0.2), "anywhere": ("peak", 0.2)}
+    wanted = {"cruise": ("cruise", 0.9), "dip": ("trough", 0.1), "relaxed": ("relaxed", 0.15), "anywhere": ("peak", 0.2)}
     if stratum in wanted:
         name, share = wanted[stratum]
         assert families[name] >= share * n, families
@@ -267,9 +274,11 @@ def test_beyond_the_limits_never_slower_than_ruckig():
             # Explained only by Ruckig's brake: it holds its deceleration a hair inside -a_max
             # (its brake ends its jerk ramp an epsilon early), so its velocity stays above ours
             # while both fall to v_max. Ours brakes at -a_max exactly.
-            lowest = min(trajectory.at_time(t)[2][0] for t in np.linspace(0.0, trajectory.duration, 2001))
-            assert law.duration <= trajectory.duration * (1 + 2e-8), case
-            assert -a_max < lowest and min(p[4] for p in law.phases) == -a_max, case
+            starts = np.concatenate([[0.0], np.cumsum([p[0] for p in law.phases])])
+            holds = [k for k, p in enumerate(law.phases) if p[1] == 0.0 and p[4] == -a_max]
+            assert holds and law.duration <= trajectory.duration * (1 + 2e-8), case
+            middle = starts[holds[0]] + law.phases[holds[0]][0] / 2
+            assert trajectory.at_time(middle)[2][0] > -a_max, case
             slower += 1
         faster += law.duration < trajectory.duration * (1 - REL)
     assert compared > 0 and faster > compared // 2 and slower < compared // 100
@@ -310,13 +319,13 @@ def test_invariants(case):
     assert np.all(np.abs(j) <= j_max * (1 + 1e-12)) and np.all(np.abs(a) <= a_bound + 1e-9 * a_bound)
     # Continuity: s, v, a change by at most what the limits allow over the sample spacing.
     dt = np.diff(t)
-    assert np.all(np.abs(np.diff(a)) <= j_max * dt * (1 + 1e-9) + 1e-9 * a_bound)
+    assert np.all(np.abs(np.diff(a)) <= j_max * dt * (1 + 1e-6) + 1e-6 * a_bound)
     assert np.all(np.abs(np.diff(v)) <= a_bound * dt * (1 + 1e-9) + v_tol)
-    # Once at or below v_max, the velocity stays there; above it, it does not rise again after
-    # it started to fall.
-    at_or_below = np.flatnonzero(v <= v_max + v_tol)
-    if at_or_below.size:
-        assert np.all(v[at_or_below[0]:] <= v_max + v_tol)
+    # Once inside the limits (v <= v_max and v_n (16) <= v_max), the velocity stays at or below
+    # v_max; above it, it does not rise again after it started to fall.
+    inside = np.flatnonzero((v <= v_max) & (v + np.maximum(a, 0.0) ** 2 / (2 * j_max) <= v_max))
+    if inside.size:
+        assert np.all(v[inside[0]:] <= v_max + v_tol)
     peak = int(np.argmax(v))
     above = v[peak:][v[peak:] > v_max + v_tol]
     assert np.all(np.diff(above) <= v_tol)
