@@ -247,6 +247,25 @@ double trough_distance(const Start& start, double u) {
   return law.end().s;
 }
 
+// (20'') The peak of the peak law whose two pulses both hold ±a_max, in closed form: then
+//   D(v_p) = v_p²/A + v_p A/j + C,   C = d₁ + (e c₁ − c₁²)/(2A) − A³/(6j²) − v_e²/(2A) + v_e A/(2j),
+// e = A²/j, c₁ = v + e − a²/(2j) (the peak at which pulse 1 holds for no time), d₁ = the position
+// at the end of its first ramp (a → A). The root of D = S; NaN unless both pulses really hold
+// (v_p ≥ c₁ and v_p ≥ v_e + e). A starting point for the root search, exact in its case.
+double held_peak(const Start& start, double distance) {
+  const Limits& lim = start.lim;
+  const Motion& x = start.braked;
+  const double A = lim.a_max, e = A * A * lim.jerk_time, v_e = start.v_end;
+  const double d1 = advance(x, (A - x.a) * lim.jerk_time, lim.j_max).s;
+  const double c1 = x.v + e - 0.5 * x.a * x.a * lim.jerk_time;
+  const double C = d1 + (e * c1 - c1 * c1) / (2.0 * A) - A * e * lim.jerk_time / 6.0 - v_e * v_e / (2.0 * A) +
+                   0.5 * v_e * A * lim.jerk_time;
+  const double q = distance - C;
+  const double b = A * lim.jerk_time;  // v_p²/A + b v_p − q = 0
+  const double peak = 2.0 * q / (b + std::sqrt(b * b + 4.0 * q / A));
+  return peak >= c1 && peak >= v_e + e ? peak : std::numeric_limits<double>::quiet_NaN();
+}
+
 // --- safeguarded root search -------------------------------------------------------------------
 
 // The root of an increasing f on [lo, hi] with f(lo) < 0 < f(hi): Brent's method (inverse
@@ -376,9 +395,24 @@ void solve(Draft& law, const Start& start, double distance, double v_start, doub
   if (top <= distance) return peak_law(law, start, w_max, (distance - top) / start.lim.v_max);
   const double low = peak_distance(start, 0.0);
   if (low <= distance) {
-    // (20) D(w) increasing from D(0) ≤ S to D(w_max) > S.
+    // (20) D(w) increasing from D(0) ≤ S to D(w_max) > S; the closed form (20'') narrows the
+    // bracket, and is the root where both pulses hold a_max.
     auto excess = [&](double w) { return peak_distance(start, w) - distance; };
-    const double w = increasing_root(excess, 0.0, w_max, low - distance, top - distance, rounding(distance));
+    double lo = 0.0, hi = w_max, f_lo = low - distance, f_hi = top - distance;
+    const double held = held_peak(start, distance);
+    if (held > start.lowest && held < start.lim.v_max) {
+      const double w = std::sqrt(held - start.lowest);
+      const double f = excess(w);
+      if (std::abs(f) <= rounding(distance)) return peak_law(law, start, w, 0.0);
+      if (f < 0.0) {
+        lo = w;
+        f_lo = f;
+      } else {
+        hi = w;
+        f_hi = f;
+      }
+    }
+    const double w = increasing_root(excess, lo, hi, f_lo, f_hi, rounding(distance));
     return peak_law(law, start, w, 0.0);
   }
   // (22) a₁ between a and 0: D increasing in a₁ up to D(0) of peak_law (> S).
