@@ -213,6 +213,7 @@ def test_inside_the_limits_matches_ruckig(stratum):
         v = verdict(law, trajectory, *case)
         assert v is not None, (case, law.duration, trajectory.duration)
         verdicts[v] += 1
+    print(f"from_state vs Ruckig, {stratum}: {n} states, {verdicts}, families {families}")  # pytest -s
     # Ruckig's failures, imprecise and slower laws together below 1 % of the cases.
     assert verdicts["equal"] >= 0.99 * n, verdicts
     # The strata reach the families they are for.
