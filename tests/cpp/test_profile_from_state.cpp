@@ -189,6 +189,29 @@ TEST(ProfileFromState, InvariantsBeyondTheLimits) {
   EXPECT_GT(refused, 0);
 }
 
+// The corners of the stated numeric range (doc/guarantees-and-measurements.md): S 1e-7 … 1e4 m,
+// v 1e-6 … 1e3, a 1e-6 … 1e4, j 1e-6 … 1e6, with starts at rest, halfway, at and beyond the
+// limits; a distance too short is raised to the one the message names.
+TEST(ProfileFromState, InvariantsAtTheCornersOfTheNumericRange) {
+  Random random(20261209);
+  int planned = 0, refused = 0;
+  for (const double S : {1e-7, 1e4})
+    for (const double v : {1e-6, 1e3})
+      for (const double a : {1e-6, 1e4})
+        for (const double j : {1e-6, 1e6})
+          for (const double v0 : {0.0, 0.5, 1.0, 2.0})
+            for (const double a0 : {0.0, 0.5, -0.5, 1.0, -1.0, 2.0})
+              for (const double v1 : {0.0, 0.5, 1.0}) {
+                State c{S, v, a, j, v0 * v, a0 * a, v1 * v};
+                if (natural_velocity(c.v_start, std::min(c.a_start, 0.0), j) < 0.0) continue;
+                const Profile p = plan(c, random, refused);
+                ASSERT_TRUE(is_law_from_state(p, c));
+                ++planned;
+              }
+  EXPECT_GT(planned, 900);
+  EXPECT_GT(refused, 0);
+}
+
 // With a_start = 0 and both velocities in [0, v_max] the law is Profile::scurve's wherever that
 // one exists (§7.3 at a = 0 is §3); where scurve refuses a dip, from_state's law dips.
 TEST(ProfileFromState, FromRestAccelerationItIsTheScurve) {
