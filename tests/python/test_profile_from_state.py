@@ -17,7 +17,8 @@ and the pulse through v_n). COUNT cases per stratum (DISPKIN_TEST_COUNT, default
 Beyond the limits Ruckig first brakes hard into them; dispkin eases onto them. There our law must
 never be slower than Ruckig's, and never run backwards. (Ruckig's brake holds its deceleration a
 hair inside -a_max, a few 1e-9 relative, so its velocity stays above ours while both fall to v_max:
-where its law is faster by more than 1e-9, that must be the reason, and the gap below 2e-8.)
+where its law is faster by more than 1e-9, that must be the reason, and the gap below 5e-8;
+2e-8 is the largest seen in 6·10^5 states.)
 """
 
 import math
@@ -277,7 +278,7 @@ def test_beyond_the_limits_never_slower_than_ruckig():
             # while both fall to v_max. Ours brakes at -a_max exactly.
             starts = np.concatenate([[0.0], np.cumsum([p[0] for p in law.phases])])
             holds = [k for k, p in enumerate(law.phases) if p[1] == 0.0 and p[4] == -a_max]
-            assert holds and law.duration <= trajectory.duration * (1 + 2e-8), case
+            assert holds and law.duration <= trajectory.duration * (1 + 5e-8), case
             middle = starts[holds[0]] + law.phases[holds[0]][0] / 2
             assert trajectory.at_time(middle)[2][0] > -a_max, case
             slower += 1
