@@ -290,6 +290,37 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   return p;
 }
 
+// doc/profiles.md §7.8: above v_max the law brakes at −a_max to v_max first. The direct
+// deceleration v_start → v_end is then the shortest law, and any distance beyond it is cruised
+// at v_max (the brake ends there, and the deceleration to v_end starts there).
+Profile Profile::trapezoid_from_state(double distance, double v_max, double a_max, double v_start, double v_end) {
+  require_distance(distance);
+  require_positive(v_max, "v_max");
+  require_positive(a_max, "a_max");
+  require(std::isfinite(v_start) && v_start >= 0.0, "v_start", v_start, "must be finite and not negative");
+  require_boundary_velocity(v_end, "v_end", v_max);
+  if (v_start <= v_max) return trapezoid(distance, v_max, a_max, v_start, v_end);
+  const double needed = ramp_distance(v_start, v_end, a_max);
+  if (distance < needed) {
+    throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max),
+                    ", " + number(needed - distance) + " more (braking at a_max from above v_max = " +
+                        number(v_max) + ")");
+  }
+
+  Profile p;
+  p.distance_ = distance;
+  p.start_ = {0.0, v_start, 0.0, 0.0};
+  p.end_ = {distance, v_end, 0.0, 0.0};
+  p.peak_velocity_ = v_start;
+  p.add_phase((v_start - v_max) / a_max, 0.0, -a_max, -a_max);
+  const int cruise_index = p.count_;
+  p.add_phase(cruise_time(distance, needed, v_max), 0.0, 0.0, 0.0);
+  p.add_phase((v_max - v_end) / a_max, 0.0, -a_max, -a_max);
+  p.integrate(v_start, v_end, cruise_index);
+  require_finite_duration(p, distance, v_max, a_max, std::numeric_limits<double>::quiet_NaN());
+  return p;
+}
+
 Profile Profile::scurve(double distance, double v_max, double a_max, double j_max, double v_start, double v_end) {
   require_distance(distance);
   require_positive(v_max, "v_max");

@@ -69,6 +69,26 @@ class Profile {
   static Profile scurve(double distance, double v_max, double a_max, double j_max, double v_start = 0.0,
                         double v_end = 0.0);
 
+  //! The time-optimal jerk-limited law from a moving, accelerating state (doc/profiles.md §7):
+  //! from (0, v_start, a_start) to (distance, v_end, 0) under 0 ≤ ṡ ≤ v_max, |s̈| ≤ a_max,
+  //! |s⃛| ≤ j_max, never running backwards. The start may lie beyond the limits (v_start > v_max,
+  //! |a_start| > a_max, or an a_start that carries ṡ above v_max even when cut at once): the law
+  //! then first eases onto the limits at full jerk (and at −a_max), the velocity falling to v_max
+  //! as fast as the limits allow, and is time-optimal from there. At most seven phases.
+  //! Where S is too short for a law whose velocity stays between its start and end, the law dips
+  //! (slows down and speeds up again). Throws std::invalid_argument on bad input (v_end ∉
+  //! [0, v_max]; an a_start < 0 that makes ṡ negative before the acceleration can return to zero),
+  //! or if no law fits in `distance` (the message names the distance needed and the shortfall).
+  static Profile from_state(double distance, double v_max, double a_max, double j_max, double v_start = 0.0,
+                            double a_start = 0.0, double v_end = 0.0);
+
+  //! The time-optimal law without a jerk limit from velocity `v_start` ≥ 0, which may exceed
+  //! v_max (doc/profiles.md §7.8): as trapezoid() for v_start ≤ v_max; above it, brake at −a_max
+  //! to v_max, cruise, decelerate to v_end. The acceleration is not a state of this law (it
+  //! jumps). Throws std::invalid_argument on bad input, or if S < |v_end² − v_start²| / (2 a).
+  static Profile trapezoid_from_state(double distance, double v_max, double a_max, double v_start = 0.0,
+                                      double v_end = 0.0);
+
   //! A law from explicit constant-jerk phases, for laws the two factories above do not make
   //! (the jerk-limited optimal re-timing cuts its motion into such pieces): `count` phases
   //! (1 … max_phases) of `durations[i]` > 0 and jerk `jerks[i]`, from (0, v_start, a_start) to
@@ -104,7 +124,8 @@ class Profile {
   double duration() const noexcept { return time_[static_cast<std::size_t>(count_)]; }
   //! S, the distance covered.
   double distance() const noexcept { return distance_; }
-  //! The peak velocity v_p reached between the acceleration and the deceleration.
+  //! The peak velocity v_p reached between the acceleration and the deceleration (for
+  //! from_state and trapezoid_from_state: the highest velocity the law reaches).
   double peak_velocity() const noexcept { return peak_velocity_; }
   //! The number of phases of non-zero duration (0 … 7).
   int phase_count() const noexcept { return count_; }

@@ -109,6 +109,20 @@ class Profile:
     def scurve(
         distance: float, v_max: float, a_max: float, j_max: float, v_start: float = 0.0, v_end: float = 0.0
     ) -> Profile: ...
+    @staticmethod
+    def from_state(
+        distance: float,
+        v_max: float,
+        a_max: float,
+        jerk: float,
+        v_start: float = 0.0,
+        a_start: float = 0.0,
+        v_end: float = 0.0,
+    ) -> Profile: ...
+    @staticmethod
+    def trapezoid_from_state(
+        distance: float, v_max: float, a_max: float, v_start: float = 0.0, v_end: float = 0.0
+    ) -> Profile: ...
     @property
     def kind(self) -> str: ...
     @property

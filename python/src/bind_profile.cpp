@@ -82,6 +82,20 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
                   "accelerations zero at both ends. v_start, v_end in [0, v_max]. ValueError on bad input, "
                   "or if `distance` is too short for the accelerate-cruise-decelerate law between v_start "
                   "and v_end (a law dipping below both boundary velocities is not supported).")
+      .def_static("from_state", &Profile::from_state, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
+                  py::arg("jerk"), py::arg("v_start") = 0.0, py::arg("a_start") = 0.0, py::arg("v_end") = 0.0,
+                  "The time-optimal jerk-limited law from a moving, accelerating state (v_start, a_start) "
+                  "to (distance, v_end, acceleration 0) under 0 <= v <= v_max, |a| <= a_max, |jerk| <= jerk; "
+                  "it never runs backwards. A start beyond the limits (v_start > v_max, |a_start| > a_max, or "
+                  "an a_start that carries v above v_max) first eases onto them at full jerk. Where the "
+                  "distance is too short for a law between its end velocities, the law dips (slows down and "
+                  "speeds up again). v_end in [0, v_max]. ValueError on bad input, or if no law fits in "
+                  "`distance` (the message names the distance needed and the shortfall).")
+      .def_static("trapezoid_from_state", &Profile::trapezoid_from_state, py::arg("distance"), py::arg("v_max"),
+                  py::arg("a_max"), py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
+                  "The time-optimal law without a jerk limit from velocity v_start >= 0, which may exceed "
+                  "v_max: above it, brake at -a_max to v_max, cruise, decelerate to v_end; otherwise as "
+                  "Profile.trapezoid. ValueError on bad input or if `distance` is too short.")
       .def_property_readonly("kind", &kind_name, "\"trapezoid\" or \"scurve\".")
       .def_property_readonly("duration", &Profile::duration, "The duration T in seconds.")
       .def_property_readonly("distance", &Profile::distance, "The distance S covered.")
