@@ -135,7 +135,8 @@ class Profile {
   double phase_start_time(int i) const noexcept { return time_[static_cast<std::size_t>(i)]; }
 
   //! s, ṡ, s̈, s⃛ at time t. Outside the law the boundary states hold: for t < 0 (and NaN)
-  //! (0, v_start, 0, 0), for t ≥ T (S, v_end, 0, 0). At a phase boundary the later phase is
+  //! (0, v_start, a_start, 0) — a_start is 0 except for laws from a state (from_state,
+  //! from_phases) — and for t ≥ T (S, v_end, 0, 0). At a phase boundary the later phase is
   //! used (its jerk, and for the trapezoid its acceleration, is reported), so t = 0 gives the
   //! first phase and t = T the state after the end. Inside a phase the state is evaluated from
   //! the nearer end of the phase, so it is exact to rounding near both ends of the law.
@@ -160,7 +161,7 @@ class Profile {
   ProfileKind kind_ = ProfileKind::trapezoid;
   double distance_ = 0.0;
   double peak_velocity_ = 0.0;
-  ProfileState start_{};  //!< (0, v_start, 0, 0), the state before the start
+  ProfileState start_{};  //!< (0, v_start, a_start, 0), the state before the start
   ProfileState end_{};    //!< (S, v_end, 0, 0), the state from the end on
 };
 
