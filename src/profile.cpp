@@ -440,18 +440,20 @@ void Profile::require_consistent() const {
   const auto same = [&](const ProfileState& x, const ProfileState& y, bool acceleration, const std::string& name) {
     const bool close = std::abs(x.s - y.s) <= tol.s && std::abs(x.v - y.v) <= tol.v &&
                        (!acceleration || std::abs(x.a - y.a) <= tol.a);
-    if (!close) throw std::invalid_argument(describe(name, state_text(y), "must be " + state_text(x) + " (to 1e-8 of the law's scale)"));
+    if (!close)
+      throw std::invalid_argument(describe(name + " (s, v, a)", Eigen::Vector3d(y.s, y.v, y.a),
+                                           "must be " + state_text(x) + " (to 1e-8 of the law's scale)"));
   };
   const bool continuous_acceleration = kind_ == ProfileKind::scurve;
   require(start_.s == 0.0, "start.s", start_.s, "must be 0 (a law starts at s = 0)");
-  require(std::abs(end_.s - distance_) <= tol.s, "end.s", end_.s, "must be the distance " + std::to_string(distance_));
+  require(std::abs(end_.s - distance_) <= tol.s, "end.s", end_.s, "must be the distance " + number(distance_));
   if (n == 0) same(start_, end_, false, "end");
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePhase& p = phases_[i];
     const std::string name = "phases[" + std::to_string(i) + "]";
     const double d = p.duration;
     require(std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
-            name + ".duration", d, "must be the time between its start and end times (" + std::to_string(time_[i + 1] - time_[i]) + ")");
+            name + ".duration", d, "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")");
     const ProfileState& x = p.start;
     const ProfileState carried{x.s + d * (x.v + d * (0.5 * x.a + p.jerk * d / 6.0)), x.v + d * (x.a + 0.5 * p.jerk * d),
                                x.a + p.jerk * d, p.jerk};
@@ -462,7 +464,7 @@ void Profile::require_consistent() const {
   // 0 ≤ ṡ ≤ peak_velocity: at every phase end, and inside a phase at the vertex of its parabola.
   const auto within = [&](double v, const std::string& name) {
     require(v >= -tol.v && v <= peak_velocity_ + tol.v, name + ".v", v,
-            "must be within [0, peak_velocity = " + std::to_string(peak_velocity_) + "] (to 1e-8 of the law's scale)");
+            "must be within [0, peak_velocity = " + number(peak_velocity_) + "] (to 1e-8 of the law's scale)");
   };
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePhase& p = phases_[i];

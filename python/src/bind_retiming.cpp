@@ -63,11 +63,7 @@ py::tuple report_state(const JointLimitReport& r) {
 
 // A trajectory inside a result's state, at `where`; the Trajectory's own checks name their field.
 Trajectory nested_trajectory(const py::handle& state, const StateField& where) {
-  try {
-    return trajectory_from_state(state, where);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(where.argument() + " " + e.what());
-  }
+  return inside(where, [&] { return trajectory_from_state(state, where); });
 }
 
 // A report from the 10 items of its state; `field(k, name)` says where item k sits.
@@ -107,11 +103,7 @@ JointLimitReport report_from_state(const py::object& state) {
 JointLimitReport nested_report(const py::handle& state, const StateField& where) {
   const py::tuple s = state_fields(state, 10, where);
   const auto field = [&](std::size_t, const char* name) { return where / ("." + std::string(name)); };
-  try {
-    return report_of_items(s, field);
-  } catch (const std::invalid_argument& e) {
-    throw py::value_error(where.argument() + " " + e.what());
-  }
+  return inside(where, [&] { return report_of_items(s, field); });
 }
 
 py::tuple optimal_state(const OptimalRetimeResult& r) {

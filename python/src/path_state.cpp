@@ -116,7 +116,7 @@ Profile profile_of_items(const py::tuple& s, Field field) {
 
 Profile profile_of(const py::handle& obj, const StateField& where) {
   const py::tuple s = state_fields(obj, 7, where);
-  return profile_of_items(s, [&](std::size_t k, const char* name) { return where / ("." + std::string(name)); });
+  return inside(where, [&] { return profile_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); }); });
 }
 
 }  // namespace

@@ -91,6 +91,18 @@ T state_item(const py::tuple& state, std::size_t index, const std::string& type,
   return state_cast<T>(state[index], StateField(type, index, field));
 }
 
+//! `make()`, with what the C++ checks refuse (std::invalid_argument "<field> = <value>: <reason>")
+//! raised as ValueError "<argument of where> <field> = …": for an object inside a state, whose
+//! own checks name fields of its own.
+template <typename Make>
+auto inside(const StateField& where, Make make) {
+  try {
+    return make();
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(where.argument() + " " + e.what());
+  }
+}
+
 //! A finite float at `where`: TypeError if it is no number, ValueError if NaN or infinite.
 inline double state_number(const py::handle& item, const StateField& where) {
   const double x = state_cast<double>(item, where);
@@ -149,11 +161,13 @@ inline py::tuple state_tuple(const py::handle& state, std::size_t size, const st
 
 namespace detail {
 
-//! Whether `self` already holds its C++ value (made by a constructor or an earlier unpickling).
+//! Whether `self` already holds its C++ value: made by a constructor or an earlier unpickling, or
+//! a reference to a C++ value (an item of a result's list). pybind11's own test for a second
+//! __init__: the instance is registered once it has a value.
 template <typename T>
 bool holds_value(const py::handle& self) {
   auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
-  return instance->get_value_and_holder(py::detail::get_type_info(typeid(T))).holder_constructed();
+  return instance->get_value_and_holder(py::detail::get_type_info(typeid(T))).instance_registered();
 }
 
 //! Runs `make` and names the type in what the library refuses: the C++ checks throw

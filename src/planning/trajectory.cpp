@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "dispkin/error.hpp"
@@ -12,6 +13,14 @@
 namespace dispkin {
 
 namespace {
+
+// A length or speed in a message: 12 digits, as describe() writes values.
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(12);
+  out << x;
+  return out.str();
+}
 
 std::string indexed(const char* name, std::size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
 
@@ -80,19 +89,19 @@ void Trajectory::require_consistent() const {
     const ProfileState start = p.profile.state_at(-1.0);
     const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].profile.distance();
     require(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name + ".start_s", p.start_s,
-            "must be where the law before ends, s = " + std::to_string(s_before));
+            "must be where the law before ends, s = " + number(s_before));
     // The motion starts at rest. Between laws the speed is not compared: the optimal re-timing's
     // laws meet with speeds apart by up to a few 0.1 % (one law per grid interval).
     if (k == 0) require(std::abs(start.v) <= tol_v, name + " start velocity", start.v, "must be 0 (a trajectory starts at rest)");
     require(std::isfinite(p.end_time), name + " end time", p.end_time, "must be finite");
     const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.profile.distance(), tol_s);
     require(p.profile.peak_velocity() <= allowed * (1.0 + 1e-8), name + " peak velocity", p.profile.peak_velocity(),
-            "must be at most the velocity limit over its span, " + std::to_string(allowed) + " m/s");
+            "must be at most the velocity limit over its span, " + number(allowed) + " m/s");
   }
   const TimeLaw::Piece& last = pieces.back();
   const double law_end = last.start_s + last.profile.distance();
   require(std::abs(law_end - length) <= tol_s, "time_law distance", law_end,
-          "must be the path length, the sum of the section lengths, " + std::to_string(length) + " m");
+          "must be the path length, the sum of the section lengths, " + number(length) + " m");
   require(last.profile.state_at(last.profile.duration()).v <= tol_v, "time_law end velocity",
           last.profile.state_at(last.profile.duration()).v, "must be 0 (a trajectory ends at rest)");
   for (std::size_t k = 0; k < rest_s_.size(); ++k) {

@@ -70,7 +70,7 @@ struct JointLimitReport {
 
 //! What every report satisfies (check_joint_limits makes it so; a stored one is checked):
 //! every sample has q, q̇, q̈ of one size n ≥ 1 and torques of one size (n, or 0 for a machine
-//! without a dynamics model), every number finite, the times in order; the factors and the
+//! without a dynamics model), every number finite; the factors and the
 //! position excess finite and ≥ 0; each joint index −1 (none) or below n and each sample index
 //! naming a sample. Throws std::invalid_argument naming the field otherwise.
 inline void require_consistent(const JointLimitReport& r) {
@@ -84,8 +84,7 @@ inline void require_consistent(const JointLimitReport& r) {
           "must be the joint count " + std::to_string(n) + " or 0 (no dynamics model)");
   for (std::size_t k = 0; k < r.samples.size(); ++k) {
     const JointSample& x = r.samples[k];
-    require(std::isfinite(x.time) && (k == 0 || x.time >= r.samples[k - 1].time), sample_name(k, "time"), x.time,
-            "must be finite and not before the sample before it");
+    require_finite(x.time, sample_name(k, "time"));  // in the order checked: a PTP check takes times as given
     require_finite(x.s, sample_name(k, "s"));
     const auto sized = [&](const Eigen::VectorXd& v, const char* field, Eigen::Index size) {
       require(v.size() == size, sample_name(k, field) + " size", static_cast<long>(v.size()),
@@ -183,7 +182,7 @@ inline void require_consistent(const OptimalRetimeResult& r) {
     const std::string at = "[" + std::to_string(k) + "]";
     require(std::isfinite(r.grid_s[k]) && r.grid_s[k] >= 0.0 && r.grid_s[k] <= length * (1.0 + 1e-9) &&
                 (k == 0 || r.grid_s[k] >= r.grid_s[k - 1]),
-            "grid_s" + at, r.grid_s[k], "must lie on the path (s in [0, " + std::to_string(length) + "]), in order");
+            "grid_s" + at, r.grid_s[k], "must lie on the path (s in [0, length]), in order");
     require(std::isfinite(r.grid_speed[k]) && r.grid_speed[k] >= 0.0, "grid_speed" + at, r.grid_speed[k],
             "must be finite and not negative");
   }
