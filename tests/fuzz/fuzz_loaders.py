@@ -61,9 +61,10 @@ def urdf(data: bytes) -> None:
 def pickles(data: bytes) -> None:
     """The bytes as corruptions of valid pickled states (tests/fuzz/fuzz_pickles.py, imported on
     first use: it plans and re-times the objects whose states it corrupts)."""
-    import fuzz_pickles
-
-    fuzz_pickles.pickles(data)
+    if "fuzz_pickles" not in sys.modules:
+        with atheris.instrument_imports():  # its branches guide the fuzzer, as the loaders' do
+            import fuzz_pickles  # noqa: F401
+    sys.modules["fuzz_pickles"].pickles(data)
 
 
 TARGETS = {"hexapod_json": hexapod_json, "urdf": urdf, "pickles": pickles}
