@@ -437,47 +437,50 @@ void Profile::require_consistent() const {
   // phase's end and its start carried over its duration by the Taylor polynomials state_at
   // uses): different numbers there would make s(t) jump. The trapezoid's acceleration jumps
   // between phases by design; within a phase it is constant.
-  const auto same = [&](const ProfileState& x, const ProfileState& y, bool acceleration, const std::string& name) {
+  // Names are made on failure only: every law planned passes here.
+  const auto same = [&](const ProfileState& x, const ProfileState& y, bool acceleration, auto name) {
     const bool close = std::abs(x.s - y.s) <= tol.s && std::abs(x.v - y.v) <= tol.v &&
                        (!acceleration || std::abs(x.a - y.a) <= tol.a);
     if (!close)
-      throw std::invalid_argument(describe(name + " (s, v, a)", Eigen::Vector3d(y.s, y.v, y.a),
+      throw std::invalid_argument(describe(name() + " (s, v, a)", Eigen::Vector3d(y.s, y.v, y.a),
                                            "must be " + state_text(x) + " (to 1e-8 of the law's scale)"));
   };
+  const auto phase = [](std::size_t i, const char* field) { return [i, field] { return "phases[" + std::to_string(i) + "]" + field; }; };
+  const auto named = [](const char* name) { return [name] { return std::string(name); }; };
   const bool continuous_acceleration = kind_ == ProfileKind::scurve;
   require(start_.s == 0.0, "start.s", start_.s, "must be 0 (a law starts at s = 0)");
-  require(std::abs(end_.s - distance_) <= tol.s, "end.s", end_.s, "must be the distance " + number(distance_));
-  if (n == 0) same(start_, end_, false, "end");
+  require_lazily(std::abs(end_.s - distance_) <= tol.s, named("end.s"), end_.s, [&] { return "must be the distance " + number(distance_); });
+  if (n == 0) same(start_, end_, false, named("end"));
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePhase& p = phases_[i];
-    const std::string name = "phases[" + std::to_string(i) + "]";
     const double d = p.duration;
-    require(std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
-            name + ".duration", d, "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")");
+    require_lazily(std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
+                   phase(i, ".duration"), d,
+                   [&] { return "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")"; });
     const ProfileState& x = p.start;
     const ProfileState carried{x.s + d * (x.v + d * (0.5 * x.a + p.jerk * d / 6.0)), x.v + d * (x.a + 0.5 * p.jerk * d),
                                x.a + p.jerk * d, p.jerk};
-    same(carried, p.end, true, name + ".end");
-    same(i == 0 ? start_ : phases_[i - 1].end, x, continuous_acceleration, name + ".start");
-    if (i + 1 == n) same(p.end, end_, continuous_acceleration, "end");
+    same(carried, p.end, true, phase(i, ".end"));
+    same(i == 0 ? start_ : phases_[i - 1].end, x, continuous_acceleration, phase(i, ".start"));
+    if (i + 1 == n) same(p.end, end_, continuous_acceleration, named("end"));
   }
   // 0 ≤ ṡ ≤ peak_velocity: at every phase end, and inside a phase at the vertex of its parabola.
-  const auto within = [&](double v, const std::string& name) {
-    require(v >= -tol.v && v <= peak_velocity_ + tol.v, name + ".v", v,
-            "must be within [0, peak_velocity = " + number(peak_velocity_) + "] (to 1e-8 of the law's scale)");
+  const auto within = [&](double v, auto name) {
+    require_lazily(v >= -tol.v && v <= peak_velocity_ + tol.v, name, v, [&] {
+      return "must be within [0, peak_velocity = " + number(peak_velocity_) + "] (to 1e-8 of the law's scale)";
+    });
   };
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePhase& p = phases_[i];
-    const std::string name = "phases[" + std::to_string(i) + "]";
-    within(p.start.v, name + ".start");
-    within(p.end.v, name + ".end");
+    within(p.start.v, phase(i, ".start.v"));
+    within(p.end.v, phase(i, ".end.v"));
     if (p.jerk != 0.0) {
       const double at = -p.start.a / p.jerk;
-      if (at > 0.0 && at < p.duration) within(p.start.v + at * (p.start.a + 0.5 * p.jerk * at), name + " vertex");
+      if (at > 0.0 && at < p.duration) within(p.start.v + at * (p.start.a + 0.5 * p.jerk * at), phase(i, " vertex.v"));
     }
   }
-  within(start_.v, "start");
-  within(end_.v, "end");
+  within(start_.v, named("start.v"));
+  within(end_.v, named("end.v"));
 }
 
 Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,

@@ -32,11 +32,11 @@ void require_sections(const SampledPath& path) {
   require(lengths.size() == sections.size(), "section_lengths size", static_cast<unsigned long>(lengths.size()),
           "must be the section count " + std::to_string(sections.size()));
   for (std::size_t k = 0; k < sections.size(); ++k) {
-    require_valid(sections[k], indexed("sections", k));
+    require_valid(sections[k], [k] { return indexed("sections", k); });
     const double L = lengths[k];
-    require(std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), indexed("section_lengths", k), L,
-            "must be finite and > 0, with a finite inverse");
-    if (k > 0) require_join(section_end(sections[k - 1]), section_start(sections[k]), indexed("sections", k) + ".start");
+    require_lazily(std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), [k] { return indexed("section_lengths", k); }, L,
+                   [] { return "must be finite and > 0, with a finite inverse"; });
+    if (k > 0) require_join(section_end(sections[k - 1]), section_start(sections[k]), [k] { return indexed("sections", k) + ".start"; });
   }
   require(std::isfinite(path.length()), "length", path.length(), "must be finite (the sum of the section lengths)");
 }
@@ -46,25 +46,28 @@ void require_speed_limits(const std::vector<SpeedLimit>& limits, double length, 
   double last_end = 0.0;
   for (std::size_t k = 0; k < limits.size(); ++k) {
     const SpeedLimit& l = limits[k];
-    const std::string name = indexed("speed_limits", k);
-    require(std::isfinite(l.start_s) && l.start_s >= last_end - tol_s && l.start_s <= length + tol_s, name + ".start_s", l.start_s,
-            "must lie on the path, after the span before it");
-    require(std::isfinite(l.length) && l.length >= 0.0 && l.start_s + l.length <= length + tol_s, name + ".length", l.length,
-            "must be finite, not negative, and end on the path");
+    const auto name = [k](const char* field) { return [k, field] { return indexed("speed_limits", k) + field; }; };
+    require_lazily(std::isfinite(l.start_s) && l.start_s >= last_end - tol_s && l.start_s <= length + tol_s, name(".start_s"),
+                   l.start_s, [] { return "must lie on the path, after the span before it"; });
+    require_lazily(std::isfinite(l.length) && l.length >= 0.0 && l.start_s + l.length <= length + tol_s, name(".length"), l.length,
+                   [] { return "must be finite, not negative, and end on the path"; });
     // Curvature lowers a limit below the system velocity (never to 0); above 1e12 m/s durations overflow.
-    require(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name + ".limit", l.limit,
-            "must be in (0, 1e12] m/s");
+    require_lazily(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name(".limit"), l.limit,
+                   [] { return "must be in (0, 1e12] m/s"; });
     last_end = l.start_s + l.length;
   }
 }
 
 // The largest limit of the spans that [s0, s1] crosses (+inf without a curve): a law over
-// [s0, s1] may reach it somewhere, never more.
-double largest_limit(const std::vector<SpeedLimit>& limits, double s0, double s1, double tol_s) {
+// [s0, s1] may reach it somewhere, never more. The laws come in order along the path, and so do
+// the spans: `first` is where the search for the next law starts (one walk over both, not a
+// search over every span per law: a long job has 10⁵ of each).
+double largest_limit(const std::vector<SpeedLimit>& limits, double s0, double s1, double tol_s, std::size_t& first) {
   if (limits.empty()) return std::numeric_limits<double>::infinity();
+  while (first + 1 < limits.size() && limits[first].start_s + limits[first].length < s0 - tol_s) ++first;
   double out = 0.0;
-  for (const SpeedLimit& l : limits)
-    if (l.start_s <= s1 + tol_s && l.start_s + l.length >= s0 - tol_s) out = std::max(out, l.limit);
+  for (std::size_t k = first; k < limits.size() && limits[k].start_s <= s1 + tol_s; ++k)
+    if (limits[k].start_s + limits[k].length >= s0 - tol_s) out = std::max(out, limits[k].limit);
   return out;
 }
 
@@ -83,20 +86,21 @@ void Trajectory::require_consistent() const {
   double speed_scale = 0.0;
   for (const TimeLaw::Piece& p : pieces) speed_scale = std::max(speed_scale, p.profile.peak_velocity());
   const double tol_v = 1e-8 * speed_scale;
+  std::size_t span = 0;  // the first span the next law may cross
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const TimeLaw::Piece& p = pieces[k];
-    const std::string name = indexed("time_law pieces", k);
-    const ProfileState start = p.profile.state_at(-1.0);
+    const auto name = [k](const char* field) { return [k, field] { return indexed("time_law pieces", k) + field; }; };
     const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].profile.distance();
-    require(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name + ".start_s", p.start_s,
-            "must be where the law before ends, s = " + number(s_before));
+    require_lazily(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name(".start_s"), p.start_s,
+                   [&] { return "must be where the law before ends, s = " + number(s_before); });
     // The motion starts at rest. Between laws the speed is not compared: the optimal re-timing's
     // laws meet with speeds apart by up to a few 0.1 % (one law per grid interval).
-    if (k == 0) require(std::abs(start.v) <= tol_v, name + " start velocity", start.v, "must be 0 (a trajectory starts at rest)");
-    require(std::isfinite(p.end_time), name + " end time", p.end_time, "must be finite");
-    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.profile.distance(), tol_s);
-    require(p.profile.peak_velocity() <= allowed * (1.0 + 1e-8), name + " peak velocity", p.profile.peak_velocity(),
-            "must be at most the velocity limit over its span, " + number(allowed) + " m/s");
+    const double v0 = p.profile.state_at(-1.0).v;
+    if (k == 0) require(std::abs(v0) <= tol_v, "time_law pieces[0] start velocity", v0, "must be 0 (a trajectory starts at rest)");
+    require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
+    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.profile.distance(), tol_s, span);
+    require_lazily(p.profile.peak_velocity() <= allowed * (1.0 + 1e-8), name(" peak velocity"), p.profile.peak_velocity(),
+                   [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
   }
   const TimeLaw::Piece& last = pieces.back();
   const double law_end = last.start_s + last.profile.distance();
@@ -106,19 +110,19 @@ void Trajectory::require_consistent() const {
           last.profile.state_at(last.profile.duration()).v, "must be 0 (a trajectory ends at rest)");
   for (std::size_t k = 0; k < rest_s_.size(); ++k) {
     const double s = rest_s_[k];
-    require(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
-            indexed("rest_positions", k), s, "must lie on the path, in order");
+    require_lazily(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
+                   [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
   }
   for (std::size_t k = 0; k < stops_.size(); ++k)
-    require(std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s, indexed("stops", k) + ".s",
-            stops_[k].s, "must lie on the path");
+    require_lazily(std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
+                   [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
   require(sources_.empty() || sources_.size() == path_.section_count(), "section_sources size",
           static_cast<unsigned long>(sources_.size()), "must be 0 or the section count " + std::to_string(path_.section_count()));
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const SectionSource& source = sources_[k];
-    require(source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
-            indexed("section_sources", k), Eigen::Vector2d(source.tau_start, source.tau_end),
-            "must be a part [tau_start, tau_end] of [0, 1]");
+    require_lazily(source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
+                   [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
+                   [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
   }
 }
 
