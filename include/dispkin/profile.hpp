@@ -129,8 +129,8 @@ class Profile {
   //! What every law satisfies, the factories' and a stored one's alike; std::invalid_argument
   //! naming the part otherwise. The law starts at s = 0 and ends at the distance; each phase's
   //! duration is the time between its start and end times; each phase's end state is its start
-  //! state carried over its duration with its jerk; each phase starts where the one before ends
-  //! (the S-curve's acceleration too); and 0 ≤ ṡ ≤ peak_velocity throughout — each to 1e-8 of
+  //! state carried over its duration with its jerk; each phase starts where (s) and as fast (ṡ)
+  //! as the one before ends; and 0 ≤ ṡ ≤ peak_velocity throughout — each to 1e-8 of
   //! the law's scale (the tolerance within which from_phases' halves meet).
   void require_consistent() const;
   //! Appends a phase of `duration` > 0 and jerk `jerk` whose acceleration runs from `a_start`

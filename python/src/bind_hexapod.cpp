@@ -206,8 +206,7 @@ void bind_hexapod(py::module_& m) {
       .def("__repr__", [](const LegViolation& v) {
         return "LegViolation(leg=" + std::to_string(v.leg) + ", length=" + float_repr(v.length) +
                ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) + ", excess=" + float_repr(v.excess) + ")";
-      })
-;
+      });
   def_pickle(violation, "LegViolation", &violation_state, &violation_from_state);
 
   py::class_<WorkspaceCheck> workspace_check(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).");
@@ -215,8 +214,7 @@ void bind_hexapod(py::module_& m) {
       .def_readonly("violations", &WorkspaceCheck::violations, "list of LegViolation, empty when reachable")
       .def_property_readonly("reachable", &WorkspaceCheck::reachable, "True when every leg is within its range")
       .def("__bool__", &WorkspaceCheck::reachable)
-      .def("__repr__", &workspace_check_repr)
-;
+      .def("__repr__", &workspace_check_repr);
   def_pickle(
       workspace_check, "WorkspaceCheck",
       [](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); }, &workspace_check_from_state);
@@ -235,8 +233,7 @@ void bind_hexapod(py::module_& m) {
         return std::string("LegExcursion(kind='") + kind_name(e) +
                "', leg=" + std::to_string(e.leg) + ", start_time=" + float_repr(e.start_time) +
                ", end_time=" + float_repr(e.end_time) + ", excess=" + float_repr(e.excess) + ")";
-      })
-;
+      });
   def_pickle(excursion, "LegExcursion", &excursion_state, &excursion_from_state);
 
   py::class_<TrajectoryCheck> trajectory_check(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).");
@@ -246,8 +243,7 @@ void bind_hexapod(py::module_& m) {
       .def_readonly("excursions", &TrajectoryCheck::excursions, "list of LegExcursion, empty when ok")
       .def_property_readonly("ok", &TrajectoryCheck::ok, "True when no leg leaves its range or exceeds its speed")
       .def("__bool__", &TrajectoryCheck::ok)
-      .def("__repr__", &trajectory_check_repr)
-;
+      .def("__repr__", &trajectory_check_repr);
   def_pickle(
       trajectory_check, "TrajectoryCheck",
       [](const TrajectoryCheck& c) {

@@ -173,8 +173,7 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       .def("__repr__", [](const JointLimitReport& r) {
         return "JointLimitReport(velocity_factor=" + float_repr(r.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.acceleration_factor) + ", samples=" + std::to_string(r.samples.size()) + ")";
-      })
-;
+      });
   def_pickle(report, "JointLimitReport", &report_state, &report_from_state);
 
   m.def(
@@ -211,8 +210,7 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
         return "RetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", iterations=" + std::to_string(r.iterations) +
                ", velocity_factor=" + float_repr(r.report.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.report.acceleration_factor) + ")";
-      })
-;
+      });
   def_pickle(
       retime_result, "RetimeResult",
       [](const RetimeResult& r) { return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report)); },
@@ -246,8 +244,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                float_repr(r.velocity_ratio) + ", acceleration_ratio=" + float_repr(r.acceleration_ratio) +
                ", torque_ratio=" + float_repr(r.torque_ratio) + ", margin=" + float_repr(r.margin) +
                ", refinements=" + std::to_string(r.refinements) + ")";
-      })
-;
+      });
   def_pickle(optimal, "OptimalRetimeResult", &optimal_state, &optimal_from_state);
 
   m.def(

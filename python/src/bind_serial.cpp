@@ -283,8 +283,7 @@ void bind_serial(py::module_& m) {
       .def("__repr__", [](const JointLimits& l) {
         return "JointLimits(lower=" + tuple_repr(l.lower) + ", upper=" + tuple_repr(l.upper) +
                ", velocity=" + tuple_repr(l.velocity) + ", effort=" + tuple_repr(l.effort) + ")";
-      })
-;
+      });
   def_pickle(joint_limits, "JointLimits", &joint_limits_state, &joint_limits_from_state);
 
   py::class_<InverseResult> inverse_result(m, "InverseResult", "What SerialArm.inverse_solutions found.");
@@ -296,8 +295,7 @@ void bind_serial(py::module_& m) {
                     "True: every solution (analytic family); False: what the numeric search found")
       .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
                              "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'")
-      .def("__repr__", &inverse_result_repr)
-;
+      .def("__repr__", &inverse_result_repr);
   def_pickle(
       inverse_result, "InverseResult",
       [](const InverseResult& r) {

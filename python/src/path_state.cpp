@@ -293,6 +293,7 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
   std::vector<SectionSource> sources =
       each<SectionSource>(s[6], field(6, "section_sources"), [](const py::handle& item, const StateField& at) {
         const py::tuple t = state_fields(item, 3, at);
+        // Any index: it names a section of the path as planned, which the state does not hold.
         return SectionSource{state_count(t[0], at / ".section", std::numeric_limits<std::size_t>::max() >> 1),
                              state_number(t[1], at / ".tau_start"), state_number(t[2], at / ".tau_end")};
       });

@@ -135,7 +135,7 @@ TEST(Planner, ATrajectoryKeepsItsOwnLimitsAndJoinsUp) {
   const Trajectory same = traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 0.1, 0.5, 5.0)}, 1));
   EXPECT_EQ(same.duration(), traj.duration());
   EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 100.0, 500.0, 5000.0)}, 1)); })
-                .find("time_law pieces[0] peak velocity = 100: must be at most the velocity limit over its span, 0.1 m/s"),
+                .find(": must be at most the velocity limit over its span, 0.1 m/s"),
             std::string::npos);
   EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(2.0 * length, 0.1, 0.5, 5.0)}, 1)); })
                 .find("time_law distance = "),

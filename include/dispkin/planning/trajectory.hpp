@@ -69,8 +69,8 @@ class Trajectory {
   //! - the sections join (require_join) and each has one length L_k, finite and > 0, whose
   //!   inverse is finite (sampling divides by it);
   //! - the time law runs its pieces one after another (each starts where the one before ends, to
-  //!   1e-9 of the path length), in at least one and at most one run per piece, from rest at
-  //!   s = 0 to rest at the path's length (to 1e-9 of it, the speed to 1e-8 of the fastest law's);
+  //!   1e-9 of the path length), in at least one and at most one run per piece, from s = 0 to
+  //!   the path's length (to 1e-9 of it);
   //! - no piece is faster than the velocity-limit curve over its span allows (its peak at most the
   //!   largest limit of the spans it crosses, to 1e-8), every limit in dispkin's numeric range
   //!   and the spans in order along the path;
