@@ -138,9 +138,13 @@ fuzz: deps python
 FUZZ_CI_SECONDS ?= 35
 # Limits files (fuzz_limits_files: MoveIt / Pilz, alone and named by a job) for FUZZ_CI_LIMITS_SECONDS.
 FUZZ_CI_LIMITS_SECONDS ?= 20
+# Pickled states (py_fuzz_pickles, tests/fuzz/fuzz_pickles.py) briefly too: its set-up plans and
+# re-times once, then each state is unpickled in well under a millisecond.
+FUZZ_CI_PICKLE_SECONDS ?= 15
 fuzz-ci: deps
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_jobs py_fuzz_urdf py_fuzz_hexapod_json
 	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_LIMITS_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh fuzz_limits_files
+	FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_CI_PICKLE_SECONDS) VENV=$(VENV) scripts/run-fuzzers.sh py_fuzz_pickles
 
 # The sweeps at 10⁷ cases per family (doc/guarantees-and-measurements.md): their own Release build directory, only the
 # tests labelled "sweep" (tests/CMakeLists.txt). Hours on a 2-core machine; SWEEP_COUNT scales it.

@@ -12,14 +12,16 @@
 # py_fuzz_hexapod_json (tests/fuzz/fuzz_loaders.py) fuzz the C++ loaders the same way, through
 # the package, without clang: `make fuzz-ci` runs the three for a short time. fuzz_limits_files
 # (tests/fuzz/fuzz_limits_files.py, atheris) fuzzes MoveIt and Pilz limits files, alone and named
-# by a job; its seeds are tests/fuzz/corpus/fuzz_limits_files.
+# by a job; its seeds are tests/fuzz/corpus/fuzz_limits_files. py_fuzz_pickles
+# (fuzz_loaders.py pickles, tests/fuzz/fuzz_pickles.py) unpickles corrupted states of every type.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 
 build=${FUZZ_BUILD:-build/fuzz}
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs fuzz_limits_files)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_pose fuzz_metric fuzz_profile fuzz_path_plan fuzz_hexapod_json fuzz_urdf fuzz_serial_ik fuzz_jobs
+  fuzz_limits_files py_fuzz_pickles)
 # The dictionary of a target (tests/fuzz/dict/<target>.dict: deep nesting, aliases, huge numbers,
 # bytes that are not UTF-8), when it has one; py_<loader> shares the C++ target's.
 dict_of() { local d="tests/fuzz/dict/${1#py_}.dict"; [ -f "$d" ] && echo "-dict=$d"; }

@@ -287,6 +287,7 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   p.add_phase((peak - v_end) / a_max, 0.0, -a_max, -a_max);
   p.integrate(v_start, v_end, cruise_index);
   require_finite_duration(p, distance, v_max, a_max, std::numeric_limits<double>::quiet_NaN());
+  p.require_consistent();
   return p;
 }
 
@@ -369,6 +370,7 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
   p.add_phase(down.jerk_time, j_max, -da, 0.0);
   p.integrate(v_start, v_end, cruise_index);
   require_finite_duration(p, distance, v_max, a_max, j_max);
+  p.require_consistent();
   return p;
 }
 
@@ -377,8 +379,8 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
 Profile Profile::from_parts(const Parts& parts) {
   require(parts.count >= 0 && parts.count <= max_phases, "count", static_cast<long>(parts.count), "must be within [0, 7]");
   const auto finite_state = [](const ProfileState& x, const std::string& name) {
-    require(std::isfinite(x.s) && std::isfinite(x.v) && std::isfinite(x.a) && std::isfinite(x.j), name + ".s", x.s,
-            "every value of the state must be finite");
+    require(std::isfinite(x.s) && std::isfinite(x.v) && std::isfinite(x.a) && std::isfinite(x.j), name,
+            Eigen::Vector4d(x.s, x.v, x.a, x.j), "every value of the state (s, v, a, j) must be finite");
   };
   const std::size_t n = static_cast<std::size_t>(parts.count);
   require(parts.times[0] == 0.0, "times[0]", parts.times[0], "must be 0");
@@ -386,13 +388,15 @@ Profile Profile::from_parts(const Parts& parts) {
     const std::string name = "phases[" + std::to_string(i) + "]";
     require(std::isfinite(parts.times[i + 1]) && parts.times[i + 1] >= parts.times[i], "times[" + std::to_string(i + 1) + "]",
             parts.times[i + 1], "must be finite and not below the time before it");
-    require(std::isfinite(parts.phases[i].duration) && std::isfinite(parts.phases[i].jerk), name + ".duration",
-            parts.phases[i].duration, "duration and jerk must be finite");
+    require(std::isfinite(parts.phases[i].duration) && parts.phases[i].duration >= 0.0, name + ".duration",
+            parts.phases[i].duration, "must be finite and not negative");
+    require_finite(parts.phases[i].jerk, name + ".jerk");
     finite_state(parts.phases[i].start, name + ".start");
     finite_state(parts.phases[i].end, name + ".end");
   }
-  require(std::isfinite(parts.distance) && std::isfinite(parts.peak_velocity), "distance", parts.distance,
-          "distance and peak_velocity must be finite");
+  require(std::isfinite(parts.distance) && parts.distance >= 0.0, "distance", parts.distance, "must be finite and not negative");
+  require(std::isfinite(parts.peak_velocity) && parts.peak_velocity >= 0.0, "peak_velocity", parts.peak_velocity,
+          "must be finite and not negative");
   finite_state(parts.start, "start");
   finite_state(parts.end, "end");
   Profile law;
@@ -404,7 +408,113 @@ Profile Profile::from_parts(const Parts& parts) {
   law.peak_velocity_ = parts.peak_velocity;
   law.start_ = parts.start;
   law.end_ = parts.end;
+  law.require_consistent();
   return law;
+}
+
+namespace {
+
+// The scales of a law, against which its consistency is measured: the largest speed,
+// acceleration and jerk any phase end reaches (the speed widened by what the acceleration adds
+// over the law), and its duration.
+struct LawScales {
+  double v = 0.0, a = 0.0, j = 0.0, duration = 0.0, distance = 0.0;
+};
+
+// How far two states of a law may differ and still be the same state: 1e-8 of the law's scales,
+// the tolerance within which from_phases lets its forward and backward halves meet (the
+// factories meet to rounding, a few ε), and 64 times the smallest double, the resolution of
+// laws far outside the numeric range (S = 1e-315 m has 32 significant bits left).
+struct StateTolerance {
+  static constexpr double relative = 1e-8;
+  double s, v, a;
+  explicit StateTolerance(const LawScales& x) {
+    const double resolution = 64.0 * std::numeric_limits<double>::denorm_min();
+    s = relative * (x.distance + x.v * x.duration) + resolution;
+    v = relative * x.v + resolution;
+    a = relative * (x.a + x.j * x.duration) + 1e-12 * x.v / std::max(x.duration, std::numeric_limits<double>::min()) +
+        resolution;
+  }
+};
+
+std::string state_text(const ProfileState& x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "(s = " << x.s << ", v = " << x.v << ", a = " << x.a << ")";
+  return out.str();
+}
+
+}  // namespace
+
+void Profile::require_consistent() const {
+  const std::size_t n = static_cast<std::size_t>(count_);
+  LawScales scale;
+  scale.duration = duration();
+  scale.distance = distance_;
+  const auto widen = [&](const ProfileState& x) {
+    scale.v = std::max(scale.v, std::abs(x.v));
+    scale.a = std::max(scale.a, std::abs(x.a));
+  };
+  widen(start_);
+  widen(end_);
+  for (std::size_t i = 0; i < n; ++i) {
+    widen(phases_[i].start);
+    widen(phases_[i].end);
+    scale.j = std::max(scale.j, std::abs(phases_[i].jerk));
+  }
+  scale.v += scale.a * scale.duration;
+  const StateTolerance tol(scale);
+  // Each pair is one state seen from two sides (the end of a phase and the start of the next, a
+  // phase's end and its start carried over its duration by the Taylor polynomials state_at
+  // uses): different numbers there would make s(t) jump. The trapezoid's acceleration jumps
+  // between phases by design; within a phase it is constant.
+  // Names are made on failure only: every law planned passes here.
+  const auto same = [&](const ProfileState& x, const ProfileState& y, bool acceleration, auto name) {
+    const bool close = std::abs(x.s - y.s) <= tol.s && std::abs(x.v - y.v) <= tol.v &&
+                       (!acceleration || std::abs(x.a - y.a) <= tol.a);
+    if (!close)
+      throw std::invalid_argument(describe(name() + " (s, v, a)", Eigen::Vector3d(y.s, y.v, y.a),
+                                           "must be " + state_text(x) + " (to 1e-8 of the law's scale)"));
+  };
+  const auto phase = [](std::size_t i, const char* field) { return [i, field] { return "phases[" + std::to_string(i) + "]" + field; }; };
+  const auto named = [](const char* name) { return [name] { return std::string(name); }; };
+  // Accelerations are compared within phases only: the trapezoid's jump between phases by design,
+  // and an S-curve's jerk phase shorter than its start time's resolution is left out, its
+  // acceleration then jumping (a = 1e-300 m/s² at j = 1e300 m/s³).
+  const bool continuous_acceleration = false;
+  require(start_.s == 0.0, "start.s", start_.s, "must be 0 (a law starts at s = 0)");
+  require_lazily(std::abs(end_.s - distance_) <= tol.s, named("end.s"), end_.s, [&] { return "must be the distance " + number(distance_); });
+  if (n == 0) same(start_, end_, false, named("end"));
+  for (std::size_t i = 0; i < n; ++i) {
+    const ProfilePhase& p = phases_[i];
+    const double d = p.duration;
+    require_lazily(std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
+                   phase(i, ".duration"), d,
+                   [&] { return "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")"; });
+    const ProfileState& x = p.start;
+    const ProfileState carried{x.s + d * (x.v + d * (0.5 * x.a + p.jerk * d / 6.0)), x.v + d * (x.a + 0.5 * p.jerk * d),
+                               x.a + p.jerk * d, p.jerk};
+    same(carried, p.end, true, phase(i, ".end"));
+    same(i == 0 ? start_ : phases_[i - 1].end, x, continuous_acceleration, phase(i, ".start"));
+    if (i + 1 == n) same(p.end, end_, continuous_acceleration, named("end"));
+  }
+  // 0 ≤ ṡ ≤ peak_velocity: at every phase end, and inside a phase at the vertex of its parabola.
+  const auto within = [&](double v, auto name) {
+    require_lazily(v >= -tol.v && v <= peak_velocity_ + tol.v, name, v, [&] {
+      return "must be within [0, peak_velocity = " + number(peak_velocity_) + "] (to 1e-8 of the law's scale)";
+    });
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const ProfilePhase& p = phases_[i];
+    within(p.start.v, phase(i, ".start.v"));
+    within(p.end.v, phase(i, ".end.v"));
+    if (p.jerk != 0.0) {
+      const double at = -p.start.a / p.jerk;
+      if (at > 0.0 && at < p.duration) within(p.start.v + at * (p.start.a + 0.5 * p.jerk * at), phase(i, " vertex.v"));
+    }
+  }
+  within(start_.v, named("start.v"));
+  within(end_.v, named("end.v"));
 }
 
 Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
@@ -498,6 +608,7 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
                                                                  number(lowest) + "): s would move backwards"));
   }
   p.peak_velocity_ = peak;
+  p.require_consistent();
   return p;
 }
 

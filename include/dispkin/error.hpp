@@ -139,6 +139,13 @@ void require(bool condition, std::string_view argument, const Value& value, std:
   if (!condition) throw std::invalid_argument(describe(argument, value, reason));
 }
 
+//! require() for checks on the planning path of every object (each law, each section): the
+//! argument's name and the reason are made by `argument()` and `reason()` only on failure.
+template <typename Value, typename Argument, typename Reason>
+void require_lazily(bool condition, Argument argument, const Value& value, Reason reason) {
+  if (!condition) throw std::invalid_argument(describe(argument(), value, reason()));
+}
+
 //! A finite scalar (not NaN, not ±inf).
 template <typename Scalar, typename = std::enable_if_t<!std::is_base_of_v<Eigen::EigenBase<Scalar>, Scalar>>>
 void require_finite(Scalar value, std::string_view argument) {

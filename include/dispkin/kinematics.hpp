@@ -4,11 +4,13 @@
 //! functions may allocate and throw std::invalid_argument / std::runtime_error.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "dispkin/error.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
@@ -20,6 +22,28 @@ struct JointLimits {
   Eigen::VectorXd velocity;  //!< largest joint speed (m/s or rad/s), > 0
   Eigen::VectorXd effort;    //!< largest joint force / torque (N or N·m), > 0; empty if the machine states none
 };
+
+//! What joint limits of `n` joints satisfy: lower, upper and velocity of size n, effort of size n
+//! or 0; for each joint lower < upper (±inf for a continuous joint; no NaN), velocity and effort
+//! > 0 (+inf: none). `joint_name(i)` names joint i in messages. Throws std::invalid_argument.
+template <typename JointName>
+void require_joint_limits(const JointLimits& limits, Eigen::Index n, JointName joint_name) {
+  const auto sized = [n](const Eigen::VectorXd& v, const std::string& name, bool may_be_empty) {
+    require(v.size() == n || (may_be_empty && v.size() == 0), name + " size", static_cast<long>(v.size()),
+            "must be the dof " + std::to_string(n) + (may_be_empty ? " (or 0: none)" : ""));
+  };
+  sized(limits.lower, "lower", false);
+  sized(limits.upper, "upper", false);
+  sized(limits.velocity, "velocity", false);
+  sized(limits.effort, "effort", true);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::string joint = joint_name(i) + " ";
+    require(!std::isnan(limits.lower(i)) && !std::isnan(limits.upper(i)) && limits.lower(i) < limits.upper(i),
+            joint + "(lower, upper)", Eigen::Vector2d(limits.lower(i), limits.upper(i)), "must have lower < upper");
+    require(limits.velocity(i) > 0.0, joint + "velocity", limits.velocity(i), "must be > 0 (+inf: none)");
+    if (limits.effort.size()) require(limits.effort(i) > 0.0, joint + "effort", limits.effort(i), "must be > 0 (+inf: none)");
+  }
+}
 
 //! Forward and inverse kinematics plus joint limits of one machine.
 class Kinematics {

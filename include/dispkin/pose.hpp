@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include <Eigen/Core>
@@ -157,17 +158,21 @@ class Pose {
   //! From a unit quaternion (w, x, y, z) and a translation. Throws if anything is not finite
   //! or |‖q‖ − 1| exceeds unit_quaternion_tolerance(); a quaternion within it is normalised.
   Pose(const Quaternion& quaternion, const Vector3& translation) : t_(translation) {
-    const Eigen::Matrix<Scalar, 4, 1> wxyz(quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z());
-    require_finite(wxyz, "quaternion (w, x, y, z)");
-    require_translation(translation, "translation");
-    using std::abs;
-    const Scalar norm = quaternion.norm();
-    if (!(abs(norm - Scalar(1)) <= unit_quaternion_tolerance<Scalar>())) {
-      throw std::invalid_argument(describe("quaternion (w, x, y, z)", wxyz,
-                                           "must be a unit quaternion, its norm is " + std::to_string(norm)));
-    }
-    q_ = Quaternion(quaternion.coeffs() / norm);
+    q_ = Quaternion(quaternion.coeffs() / require_pose(quaternion, translation, unit_quaternion_tolerance<Scalar>()));
   }
+
+  //! A pose as stored (a pickle): the quaternion is taken as it is, not normalised again, so that
+  //! the pose is the same bit for bit. The constructor's checks, with the unit norm to rounding:
+  //! a stored quaternion was normalised, so |‖q‖ − 1| is a few ε (stored_quaternion_tolerance()).
+  static Pose from_stored(const Quaternion& unit_quaternion, const Vector3& translation) {
+    require_pose(unit_quaternion, translation, stored_quaternion_tolerance());
+    return unchecked(unit_quaternion, translation);
+  }
+
+  //! How far from 1 the norm of a stored (already normalised) quaternion may be: dividing by the
+  //! norm leaves it within 2ε of 1; 4096ε (9·10⁻¹³ for double) also takes a quaternion written
+  //! out with 17 digits and composed a few times.
+  static constexpr Scalar stored_quaternion_tolerance() { return Scalar(4096) * std::numeric_limits<Scalar>::epsilon(); }
 
   //! From an orthonormal rotation matrix (det +1, checked to 1e-6) and a translation.
   Pose(const Matrix3& rotation, const Vector3& translation) : Pose(checked_quaternion(rotation), translation) {}
@@ -308,6 +313,23 @@ class Pose {
   }
 
  private:
+  //! What every pose holds: a finite quaternion of norm 1 to `tolerance` and a translation within
+  //! dispkin's numeric range. Returns the norm.
+  static Scalar require_pose(const Quaternion& quaternion, const Vector3& translation, Scalar tolerance) {
+    const Eigen::Matrix<Scalar, 4, 1> wxyz(quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z());
+    require_finite(wxyz, "quaternion (w, x, y, z)");
+    require_translation(translation, "translation");
+    using std::abs;
+    const Scalar norm = quaternion.norm();
+    if (!(abs(norm - Scalar(1)) <= tolerance)) {
+      std::ostringstream reason;
+      reason.precision(17);  // a stored quaternion may be off by 1e-12: show the digits that differ
+      reason << "must be a unit quaternion, its norm is " << norm << " (within " << tolerance << " of 1 expected)";
+      throw std::invalid_argument(describe("quaternion (w, x, y, z)", wxyz, reason.str()));
+    }
+    return norm;
+  }
+
   static Quaternion checked_quaternion(const Matrix3& r) {
     require_finite(r, "rotation");
     const Scalar orthogonality = (r.transpose() * r - Matrix3::Identity()).cwiseAbs().maxCoeff();

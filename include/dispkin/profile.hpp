@@ -115,7 +115,8 @@ class Profile {
   Parts parts() const noexcept { return {kind_, count_, phases_, time_, distance_, peak_velocity_, start_, end_}; }
   //! The law of `parts`, taken as they are (nothing integrated again). Throws
   //! std::invalid_argument unless count is within [0, max_phases], the used times start at 0
-  //! and do not decrease, and every used number is finite.
+  //! and do not decrease, every used number is finite, and the parts make a law as the
+  //! factories do (require_consistent).
   static Profile from_parts(const Parts& parts);
 
   //! Trapezoid (acceleration-limited) or S-curve (jerk-limited).
@@ -147,6 +148,13 @@ class Profile {
 
  private:
   Profile() = default;
+  //! What every law satisfies, the factories' and a stored one's alike; std::invalid_argument
+  //! naming the part otherwise. The law starts at s = 0 and ends at the distance; each phase's
+  //! duration is the time between its start and end times; each phase's end state is its start
+  //! state carried over its duration with its jerk; each phase starts where (s) and as fast (ṡ)
+  //! as the one before ends; and 0 ≤ ṡ ≤ peak_velocity throughout — each to 1e-8 of
+  //! the law's scale (the tolerance within which from_phases' halves meet).
+  void require_consistent() const;
   //! Appends a phase of `duration` > 0 and jerk `jerk` whose acceleration runs from `a_start`
   //! to `a_end` (s and v are filled in by integrate()). Zero durations are skipped.
   void add_phase(double duration, double jerk, double a_start, double a_end) noexcept;

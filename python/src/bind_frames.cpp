@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/frames.hpp"
 
@@ -31,23 +32,18 @@ Envelope envelope_of(const std::string& name) {
 }  // namespace
 
 void bind_frames(py::module_& m) {
-  py::class_<WorkToolFrames>(m, "WorkToolFrames", R"doc(
+  py::class_<WorkToolFrames> frames(m, "WorkToolFrames", R"doc(
 A work frame W (world coordinates, stays put) and a tool frame F (platform coordinates, moves with
 the platform), PI-style: a command is the pose X of the tool frame in the work frame, realised by
 the platform pose T = W X F^-1 (and X = W^-1 T F). XYZUVW commands rotate about the tool origin,
 `pivot` (platform coordinates). Envelopes around the origins generate metric sets: relative
-points around the tool origin, absolute points around the work origin.)doc")
-      .def(py::init([](const py::object& work, const py::object& tool) {
+points around the tool origin, absolute points around the work origin.)doc");
+  frames.def(py::init([](const py::object& work, const py::object& tool) {
              return WorkToolFrames(work.is_none() ? Posed() : pose_argument(work, "work"),
                                    tool.is_none() ? Posed() : pose_argument(tool, "tool"));
            }),
            py::arg("work") = py::none(), py::arg("tool") = py::none(),
            "Work frame in world coordinates and tool frame in platform coordinates (Pose or (4, 4); default identity).")
-      .def(py::pickle([](const WorkToolFrames& f) { return py::make_tuple(f.work(), f.tool()); },
-                      [](const py::tuple& state) {
-                        if (state.size() != 2) throw py::value_error("WorkToolFrames.__setstate__: state: expected a tuple of 2 items");
-                        return WorkToolFrames(state[0].cast<Posed>(), state[1].cast<Posed>());
-                      }))
       .def_property_readonly("work", &WorkToolFrames::work, "W: the work frame in world coordinates")
       .def_property_readonly("tool", &WorkToolFrames::tool, "F: the tool frame in platform coordinates")
       .def_property_readonly("pivot", [](const WorkToolFrames& f) { return to_array(f.pivot()); },
@@ -76,6 +72,12 @@ points around the tool origin, absolute points around the work origin.)doc")
            "origin to `metric_set` as absolute objects of `group`.")
       .def("__repr__", [](const WorkToolFrames& f) {
         return "WorkToolFrames(work_origin=" + tuple_repr(f.work().translation()) + ", tool_origin=" + tuple_repr(f.pivot()) + ")";
+      });
+  def_pickle(
+      frames, "WorkToolFrames", [](const WorkToolFrames& f) { return py::make_tuple(f.work(), f.tool()); },
+      [](const py::object& state) {
+        const py::tuple s = state_tuple(state, 2, "WorkToolFrames");
+        return WorkToolFrames(state_item<Posed>(s, 0, "WorkToolFrames", "work"), state_item<Posed>(s, 1, "WorkToolFrames", "tool"));
       });
 }
 

@@ -103,9 +103,20 @@ py::array_t<double> inverse_xyzuvw(const Hexapod& h, const py::object& xyzuvw, c
 // Pickled states of the check results: their fields, in declaration order.
 py::tuple violation_state(const LegViolation& v) { return py::make_tuple(v.leg, v.length, v.lower, v.upper, v.excess); }
 
-LegViolation violation_from_state(const py::tuple& state) {
-  const py::tuple s = state_tuple(state, 5, "LegViolation");
-  return LegViolation{s[0].cast<int>(), s[1].cast<double>(), s[2].cast<double>(), s[3].cast<double>(), s[4].cast<double>()};
+// The checks' results are checked like what Hexapod::check makes (require_consistent): a stored
+// one is read field by field, then checked whole.
+template <typename Field>
+LegViolation violation_of(const py::tuple& s, Field field) {
+  return LegViolation{state_cast<int>(s[0], field(0, "leg")), state_cast<double>(s[1], field(1, "length")),
+                      state_cast<double>(s[2], field(2, "lower")), state_cast<double>(s[3], field(3, "upper")),
+                      state_cast<double>(s[4], field(4, "excess"))};
+}
+
+LegViolation violation_from_state(const py::object& state) {
+  const LegViolation v = violation_of(state_tuple(state, 5, "LegViolation"),
+                                      [](std::size_t k, const char* name) { return StateField("LegViolation", k, name); });
+  require_consistent(v);
+  return v;
 }
 
 const char* kind_name(const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; }
@@ -114,12 +125,60 @@ py::tuple excursion_state(const LegExcursion& e) {
   return py::make_tuple(kind_name(e), e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess);
 }
 
-LegExcursion excursion_from_state(const py::tuple& state) {
-  const py::tuple s = state_tuple(state, 7, "LegExcursion");
-  const std::string kind = s[0].cast<std::string>();
-  if (kind != "length" && kind != "speed") throw std::invalid_argument(describe("LegExcursion state kind", kind, "must be 'length' or 'speed'"));
-  return LegExcursion{kind == "length" ? LegExcursion::Kind::length : LegExcursion::Kind::speed, s[1].cast<int>(),
-                      s[2].cast<double>(), s[3].cast<double>(), s[4].cast<double>(), s[5].cast<double>(), s[6].cast<double>()};
+template <typename Field>
+LegExcursion excursion_of(const py::tuple& s, Field field) {
+  const StateField kind_at = field(0, "kind");
+  const std::string kind = state_cast<std::string>(s[0], kind_at);
+  if (kind != "length" && kind != "speed") throw py::value_error(kind_at.message(s[0], "must be 'length' or 'speed'"));
+  return LegExcursion{kind == "length" ? LegExcursion::Kind::length : LegExcursion::Kind::speed, state_cast<int>(s[1], field(1, "leg")),
+                      state_cast<double>(s[2], field(2, "start_time")), state_cast<double>(s[3], field(3, "end_time")),
+                      state_cast<double>(s[4], field(4, "worst_time")), state_cast<double>(s[5], field(5, "worst_value")),
+                      state_cast<double>(s[6], field(6, "excess"))};
+}
+
+LegExcursion excursion_from_state(const py::object& state) {
+  const LegExcursion e = excursion_of(state_tuple(state, 7, "LegExcursion"),
+                                      [](std::size_t k, const char* name) { return StateField("LegExcursion", k, name); });
+  require_consistent(e);
+  return e;
+}
+
+// The items of a list field, each the state of a T (`of` reads its fields).
+template <typename T, typename Of>
+std::vector<T> nested_items(const py::handle& obj, const StateField& where, std::size_t size, Of of) {
+  std::vector<T> out;
+  const py::sequence items = state_sequence(obj, where);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const StateField at = where.at(k);
+    // A LegViolation / LegExcursion object as stored by pickle, or its state tuple.
+    if (py::isinstance<T>(items[k])) {
+      out.push_back(state_cast<T>(items[k], at));
+      continue;
+    }
+    const py::tuple s = state_fields(items[k], size, at);
+    out.push_back(of(s, [&](std::size_t, const char* name) { return at / ("." + std::string(name)); }));
+  }
+  return out;
+}
+
+WorkspaceCheck workspace_check_from_state(const py::object& state) {
+  const py::tuple s = state_tuple(state, 2, "WorkspaceCheck");
+  const WorkspaceCheck c{state_vector<6>(s[0], StateField("WorkspaceCheck", 0, "lengths")),
+                         nested_items<LegViolation>(s[1], StateField("WorkspaceCheck", 1, "violations"), 5,
+                                                    [](const py::tuple& v, auto field) { return violation_of(v, field); })};
+  require_consistent(c);
+  return c;
+}
+
+TrajectoryCheck trajectory_check_from_state(const py::object& state) {
+  const py::tuple s = state_tuple(state, 4, "TrajectoryCheck");
+  const auto field = [](std::size_t k, const char* name) { return StateField("TrajectoryCheck", k, name); };
+  const TrajectoryCheck c{state_vector<6>(s[0], field(0, "min_length")), state_vector<6>(s[1], field(1, "max_length")),
+                          state_vector<6>(s[2], field(2, "max_speed")),
+                          nested_items<LegExcursion>(s[3], field(3, "excursions"), 7,
+                                                     [](const py::tuple& e, auto f) { return excursion_of(e, f); })};
+  require_consistent(c);
+  return c;
 }
 
 std::string workspace_check_repr(const WorkspaceCheck& c) {
@@ -138,8 +197,8 @@ std::string trajectory_check_repr(const TrajectoryCheck& c) {
 }  // namespace
 
 void bind_hexapod(py::module_& m) {
-  py::class_<LegViolation>(m, "LegViolation", "A leg out of its length range (Hexapod.check).")
-      .def_readonly("leg", &LegViolation::leg, "0-based leg index")
+  py::class_<LegViolation> violation(m, "LegViolation", "A leg out of its length range (Hexapod.check).");
+  violation.def_readonly("leg", &LegViolation::leg, "0-based leg index")
       .def_readonly("length", &LegViolation::length, "the leg's length at the pose (m)")
       .def_readonly("lower", &LegViolation::lower, "the leg's shortest length (m)")
       .def_readonly("upper", &LegViolation::upper, "the leg's longest length (m)")
@@ -147,24 +206,22 @@ void bind_hexapod(py::module_& m) {
       .def("__repr__", [](const LegViolation& v) {
         return "LegViolation(leg=" + std::to_string(v.leg) + ", length=" + float_repr(v.length) +
                ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) + ", excess=" + float_repr(v.excess) + ")";
-      })
-      .def(py::pickle(&violation_state, &violation_from_state));
+      });
+  def_pickle(violation, "LegViolation", &violation_state, &violation_from_state);
 
-  py::class_<WorkspaceCheck>(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).")
-      .def_property_readonly("lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
+  py::class_<WorkspaceCheck> workspace_check(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).");
+  workspace_check.def_property_readonly("lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
       .def_readonly("violations", &WorkspaceCheck::violations, "list of LegViolation, empty when reachable")
       .def_property_readonly("reachable", &WorkspaceCheck::reachable, "True when every leg is within its range")
       .def("__bool__", &WorkspaceCheck::reachable)
-      .def("__repr__", &workspace_check_repr)
-      .def(py::pickle([](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); },
-                      [](const py::tuple& state) {
-                        const py::tuple s = state_tuple(state, 2, "WorkspaceCheck");
-                        return WorkspaceCheck{vector<6>(s[0], "WorkspaceCheck state lengths"), s[1].cast<std::vector<LegViolation>>()};
-                      }));
+      .def("__repr__", &workspace_check_repr);
+  def_pickle(
+      workspace_check, "WorkspaceCheck",
+      [](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); }, &workspace_check_from_state);
 
-  py::class_<LegExcursion>(m, "LegExcursion",
-                           "A stretch of a trajectory where a leg leaves its range or exceeds its speed.")
-      .def_property_readonly("kind", [](const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; },
+  py::class_<LegExcursion> excursion(m, "LegExcursion",
+                           "A stretch of a trajectory where a leg leaves its range or exceeds its speed.");
+  excursion.def_property_readonly("kind", [](const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; },
                              "'length' or 'speed'")
       .def_readonly("leg", &LegExcursion::leg, "0-based leg index")
       .def_readonly("start_time", &LegExcursion::start_time, "first sample out of range (s)")
@@ -176,32 +233,29 @@ void bind_hexapod(py::module_& m) {
         return std::string("LegExcursion(kind='") + kind_name(e) +
                "', leg=" + std::to_string(e.leg) + ", start_time=" + float_repr(e.start_time) +
                ", end_time=" + float_repr(e.end_time) + ", excess=" + float_repr(e.excess) + ")";
-      })
-      .def(py::pickle(&excursion_state, &excursion_from_state));
+      });
+  def_pickle(excursion, "LegExcursion", &excursion_state, &excursion_from_state);
 
-  py::class_<TrajectoryCheck>(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).")
-      .def_property_readonly("min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
+  py::class_<TrajectoryCheck> trajectory_check(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).");
+  trajectory_check.def_property_readonly("min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
       .def_property_readonly("max_length", [](const TrajectoryCheck& c) { return legs_array(c.max_length); }, "(6,) m")
       .def_property_readonly("max_speed", [](const TrajectoryCheck& c) { return legs_array(c.max_speed); }, "(6,) m/s")
       .def_readonly("excursions", &TrajectoryCheck::excursions, "list of LegExcursion, empty when ok")
       .def_property_readonly("ok", &TrajectoryCheck::ok, "True when no leg leaves its range or exceeds its speed")
       .def("__bool__", &TrajectoryCheck::ok)
-      .def("__repr__", &trajectory_check_repr)
-      .def(py::pickle(
-          [](const TrajectoryCheck& c) {
-            return py::make_tuple(legs_array(c.min_length), legs_array(c.max_length), legs_array(c.max_speed), c.excursions);
-          },
-          [](const py::tuple& state) {
-            const py::tuple s = state_tuple(state, 4, "TrajectoryCheck");
-            return TrajectoryCheck{vector<6>(s[0], "TrajectoryCheck state min_length"), vector<6>(s[1], "TrajectoryCheck state max_length"),
-                                   vector<6>(s[2], "TrajectoryCheck state max_speed"), s[3].cast<std::vector<LegExcursion>>()};
-          }));
+      .def("__repr__", &trajectory_check_repr);
+  def_pickle(
+      trajectory_check, "TrajectoryCheck",
+      [](const TrajectoryCheck& c) {
+        return py::make_tuple(legs_array(c.min_length), legs_array(c.max_length), legs_array(c.max_speed), c.excursions);
+      },
+      &trajectory_check_from_state);
 
-  py::class_<Hexapod>(m, "Hexapod", R"doc(
+  py::class_<Hexapod> hexapod(m, "Hexapod", R"doc(
 A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
 joints p_i (platform coordinates). A platform pose T maps platform to base coordinates and
-leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
-      .def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
+leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
+  hexapod.def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
                        const py::object& speed, const py::object& home) {
              return Hexapod(joints(base, "base_joints"), joints(platform, "platform_joints"), legs(lo, "leg_min"),
                             legs(hi, "leg_max"), legs(speed, "leg_speed"),
@@ -293,14 +347,13 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc")
           },
           py::arg("metric_set"), py::arg("group"),
            "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
-      .def(py::pickle([](const Hexapod& h) { return py::make_tuple(h.to_json()); },
-                      [](const py::tuple& state) {
-                        return Hexapod::from_json(state_tuple(state, 1, "Hexapod")[0].cast<std::string>());
-                      }))
       .def("__repr__", [](const Hexapod& h) {
         return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
                ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";
       });
+  def_pickle(hexapod, "Hexapod", [](const Hexapod& h) { return py::make_tuple(h.to_json()); }, [](const py::object& state) {
+    return Hexapod::from_json(state_item<std::string>(state_tuple(state, 1, "Hexapod"), 0, "Hexapod", "json"));
+  });
 
   m.def(
       "xyzuvw_for_new_pivot",

@@ -88,20 +88,38 @@ py::list metric_set_state(const MetricSetd& set) {
   return groups;
 }
 
-MetricSetd metric_set_from_state(const py::list& groups) {
+// add_points, add_sphere and set_group_speed check every value, as for a set built by hand.
+MetricSetd metric_set_from_state(const py::object& state) {
+  if (!py::isinstance<py::list>(state) && !py::isinstance<py::tuple>(state))
+    throw py::type_error("MetricSet.__setstate__: state: expected a list of groups, got " + echoed(std::string(py::repr(state))));
   MetricSetd set;
-  for (const py::handle item : groups) {
-    const py::tuple g = state_tuple(item, 6, "MetricSet group");
-    const int id = g[0].cast<int>();
-    if (!g[1].is_none()) set.set_group_speed(id, g[1].cast<double>());
-    set.add_points(points(g[2], "MetricSet state relative points", false), Frame::relative, id);
-    set.add_points(points(g[3], "MetricSet state absolute points", false), Frame::absolute, id);
-    for (int k = 0; k < 2; ++k) {
-      const Array rows = as_array(g[4 + k], "MetricSet state spheres", "an array of shape (N, 4)");
-      if (rows.ndim() != 2 || rows.shape(1) != 4) wrong_shape("MetricSet state spheres", "an array of shape (N, 4)", rows);
-      for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
-        const double* r = rows.data() + 4 * i;
-        set.add_sphere(Eigen::Vector3d(r[0], r[1], r[2]), r[3], k == 0 ? Frame::relative : Frame::absolute, id);
+  std::size_t k = 0;
+  for (const py::handle item : py::reinterpret_borrow<py::sequence>(state)) {
+    const StateField group_at("MetricSet", k++, "group");
+    const py::tuple g = state_fields(item, 6, group_at);
+    const int id = state_cast<int>(g[0], group_at / ".id");
+    const std::optional<double> speed = state_cast<std::optional<double>>(g[1], group_at / ".speed_limit");
+    if (speed) set.set_group_speed(id, *speed);
+    const auto rows = [&](std::size_t i, const char* name, py::ssize_t columns) {
+      const StateField at = group_at / ("." + std::string(name));
+      const bool sequence = py::isinstance<py::tuple>(g[i]) || py::isinstance<py::list>(g[i]) || py::isinstance<py::array>(g[i]);
+      const Array a = sequence ? Array::ensure(g[i]) : Array(py::ssize_t{0});
+      if (!sequence || !a) throw py::type_error(at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + ")"));
+      if (a.size() > 0 && (a.ndim() != 2 || a.shape(1) != columns))
+        throw py::value_error(at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + "), not " + shape_string(a)));
+      return a;
+    };
+    for (std::size_t i = 2; i < 4; ++i) {
+      const Array a = rows(i, i == 2 ? "relative_points" : "absolute_points", 3);
+      std::vector<Eigen::Vector3d> points;
+      for (py::ssize_t r = 0; a.size() > 0 && r < a.shape(0); ++r) points.emplace_back(Eigen::Map<const Eigen::Vector3d>(a.data() + 3 * r));
+      set.add_points(points, i == 2 ? Frame::relative : Frame::absolute, id);
+    }
+    for (std::size_t i = 4; i < 6; ++i) {
+      const Array a = rows(i, i == 4 ? "relative_spheres" : "absolute_spheres", 4);
+      for (py::ssize_t r = 0; a.size() > 0 && r < a.shape(0); ++r) {
+        const double* x = a.data() + 4 * r;
+        set.add_sphere(Eigen::Vector3d(x[0], x[1], x[2]), x[3], i == 4 ? Frame::relative : Frame::absolute, id);
       }
     }
   }
@@ -123,13 +141,13 @@ std::string metric_set_repr(const MetricSetd& set) {
 }  // namespace
 
 void bind_metric_set(py::module_& m) {
-  py::class_<MetricSetd>(m, "MetricSet", R"doc(
+  py::class_<MetricSetd> metric_set(m, "MetricSet", R"doc(
 The metric establishment set: the points and spheres the speed limit applies to.
 Relative points and spheres are in body (tool) coordinates and move with the tool; absolute ones
 are in world coordinates and stay put (their apparent speed seen from the tool is limited).
 Objects belong to groups (non-negative integers, default 0); a group may have its own speed limit.
-Lengths in metres.)doc")
-      .def(py::init<>(), "An empty set.")
+Lengths in metres.)doc");
+  metric_set.def(py::init<>(), "An empty set.")
       .def(
           "add_relative",
           [](MetricSetd& self, const py::object& pts, int group) {
@@ -222,8 +240,8 @@ Lengths in metres.)doc")
           },
           py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
           "Like ==, with math.isclose for every coordinate, radius and speed limit.")
-      .def(py::pickle(&metric_set_state, &metric_set_from_state))
       .def("__repr__", &metric_set_repr);
+  def_pickle(metric_set, "MetricSet", &metric_set_state, &metric_set_from_state);
 }
 
 }  // namespace python

@@ -110,8 +110,8 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
       .def("__repr__", [](const SectionHolder& s) { return std::string("Section(kind=\"") + section_kind(s) + "\")"; });
 
   // Before Path, so that the signature of Path.ptp names the Python type, not the C++ one.
-  py::class_<JointPath>(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).")
-      .def_property_readonly("start", &JointPath::start, "q at u = 0.")
+  py::class_<JointPath> joint_path(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).");
+  joint_path.def_property_readonly("start", &JointPath::start, "q at u = 0.")
       .def_property_readonly("end", &JointPath::end, "q at u = 1.")
       .def(
           "sample",
@@ -120,17 +120,19 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
             return p.sample(u);
           },
           py::arg("u"), "q(u) = q_a + u (q_b - q_a), u clamped to [0, 1].")
-      .def(py::pickle([](const JointPath& p) { return py::make_tuple(p.start(), p.end()); },
-                      [](const py::tuple& state) {
-                        const py::tuple s = state_tuple(state, 2, "JointPath");
-                        return JointPath(s[0].cast<Eigen::VectorXd>(), s[1].cast<Eigen::VectorXd>());
-                      }))
       .def("__repr__", [](const JointPath& p) { return "JointPath(" + std::to_string(p.start().size()) + " joints)"; });
+  def_pickle(
+      joint_path, "JointPath", [](const JointPath& p) { return py::make_tuple(p.start(), p.end()); },
+      [](const py::object& state) {
+        const py::tuple s = state_tuple(state, 2, "JointPath");
+        return JointPath(state_vector<Eigen::Dynamic>(s[0], StateField("JointPath", 0, "start")),
+                         state_vector<Eigen::Dynamic>(s[1], StateField("JointPath", 1, "end")));
+      });
 
-  py::class_<Path>(m, "Path", R"doc(
+  py::class_<Path> path(m, "Path", R"doc(
 A pose path (geometry only, no time): a chain of sections. Build it with Path.lin / Path.circ
-and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
-      .def_static(
+and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
+  path.def_static(
           "lin",
           [](const Posed& a, const Posed& b, const std::string& interpolation, const py::object& pivot,
              std::optional<double> velocity, std::optional<double> acceleration) {
@@ -234,8 +236,8 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc")
       .def_property_readonly("start", &Path::start, "The first pose.")
       .def_property_readonly("end", &Path::end, "The last pose.")
       .def("__len__", &Path::size, "Number of sections.")
-      .def(py::pickle(&path_state, &path_from_state))
       .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " sections)"; });
+  def_pickle(path, "Path", &path_state, &path_from_state);
 }
 
 }  // namespace python

@@ -153,9 +153,9 @@ void add_sampling(py::class_<T>& cls) {
 }  // namespace
 
 void bind_planner(py::module_& m) {
-  py::class_<Limits>(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
-                                  "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).")
-      .def(py::init(&make_limits),
+  py::class_<Limits> limits(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
+                                  "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).");
+  limits.def(py::init(&make_limits),
            py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(), py::arg("angular_velocity") = py::none(),
            py::arg("angular_acceleration") = py::none(),
            "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
@@ -173,12 +173,6 @@ void bind_planner(py::module_& m) {
       .def("__hash__", [](const Limits& l) { return py::hash(limits_state(l)); })
       .def("isclose", &limits_close, py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
            "math.isclose for every limit (a limit of None only matches None).")
-      .def(py::pickle(&limits_state,
-                      [](const py::tuple& state) {
-                        const py::tuple s = state_tuple(state, 5, "Limits");
-                        return make_limits(s[0].cast<double>(), s[1].cast<double>(), s[2].cast<std::optional<double>>(),
-                                           s[3].cast<std::optional<double>>(), s[4].cast<std::optional<double>>());
-                      }))
       .def("__repr__", [](const Limits& l) {
         std::string out = "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
                           ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None"));
@@ -186,6 +180,12 @@ void bind_planner(py::module_& m) {
         if (l.angular_acceleration) out += ", angular_acceleration=" + float_repr(*l.angular_acceleration);
         return out + ")";
       });
+  def_pickle(limits, "Limits", &limits_state, [](const py::object& state) {
+    const py::tuple s = state_tuple(state, 5, "Limits");
+    const auto item = [&s](std::size_t k, const char* field) { return state_item<std::optional<double>>(s, k, "Limits", field); };
+    return make_limits(state_item<double>(s, 0, "Limits", "velocity"), state_item<double>(s, 1, "Limits", "acceleration"),
+                       item(2, "jerk"), item(3, "angular_velocity"), item(4, "angular_acceleration"));
+  });
 
   py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
 A planned trajectory: no point or sphere of the metric set moves faster than its limit at any
@@ -238,11 +238,11 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
           py::arg("times"),
           "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
           "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
-      .def(py::pickle(&trajectory_state, &trajectory_from_state))
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });
 
+  def_pickle(trajectory, "Trajectory", &trajectory_state, [](const py::object& state) { return trajectory_from_state(state); });
   add_sampling(trajectory);
 
   py::class_<OverlappedTrajectory> overlapped(m, "OverlappedTrajectory", R"doc(

@@ -54,14 +54,11 @@ py::tuple pose_state(const Posed& pose) {
   return py::make_tuple(py::make_tuple(q(0), q(1), q(2), q(3)), py::make_tuple(t(0), t(1), t(2)));
 }
 
-Posed pose_from_state(const py::tuple& state) {
+Posed pose_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 2, "Pose");
-  const Eigen::Vector4d q = vector<4>(s[0], "Pose state quaternion");
-  const Eigen::Vector3d t = vector3(s[1], "Pose state translation");
-  require_finite(q, "Pose state quaternion");
-  require_finite(t, "Pose state translation");
-  require(std::abs(q.norm() - 1.0) <= 1e-12, "Pose state quaternion", q.norm(), "norm must be 1");
-  return Posed::unchecked(Eigen::Quaterniond(q(0), q(1), q(2), q(3)), t);
+  const Eigen::Vector4d q = state_vector<4>(s[0], StateField("Pose", 0, "quaternion (w, x, y, z)"));
+  const Eigen::Vector3d t = state_vector<3>(s[1], StateField("Pose", 1, "translation"));
+  return Posed::from_stored(Eigen::Quaterniond(q(0), q(1), q(2), q(3)), t);
 }
 
 }  // namespace
@@ -69,12 +66,12 @@ Posed pose_from_state(const py::tuple& state) {
 void bind_pose(py::module_& m) {
   const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
 
-  py::class_<Posed>(m, "Pose", R"doc(
+  py::class_<Posed> pose(m, "Pose", R"doc(
 A rigid transform T = (R, t) in SE(3), mapping body (tool) coordinates to world coordinates:
 x_world = R x_body + t. Stored as a unit quaternion and a translation in metres; immutable.
 Twists are (6,) arrays (v, ω): body velocity in m/s (or m per unit parameter) and angular
-velocity in rad/s, both in body coordinates.)doc")
-      .def(py::init(&make_pose), py::arg_v("quaternion", py::make_tuple(1.0, 0.0, 0.0, 0.0), "(1, 0, 0, 0)"),
+velocity in rad/s, both in body coordinates.)doc");
+  pose.def(py::init(&make_pose), py::arg_v("quaternion", py::make_tuple(1.0, 0.0, 0.0, 0.0), "(1, 0, 0, 0)"),
            py::arg_v("translation", origin, "(0, 0, 0)"),
            "Pose from a unit quaternion (w, x, y, z) (normalised if within 1e-6 of unit norm) and a "
            "translation (x, y, z) in metres. The defaults give the identity.")
@@ -178,10 +175,10 @@ velocity in rad/s, both in body coordinates.)doc")
           py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
           "math.isclose for every coordinate: each translation coordinate (m) and each rotation-matrix "
           "entry agree within max(rel_tol * larger magnitude, abs_tol). Entries near 0 need abs_tol.")
-      .def(py::pickle(&pose_state, &pose_from_state))
       .def("__repr__", [](const Posed& self) {
         return "Pose(quaternion=" + tuple_repr(wxyz(self)) + ", translation=" + tuple_repr(self.translation()) + ")";
       });
+  def_pickle(pose, "Pose", &pose_state, &pose_from_state);
 }
 
 }  // namespace python

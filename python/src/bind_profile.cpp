@@ -12,6 +12,7 @@
 #include "conversions.hpp"
 #include "interpreter_lock.hpp"
 #include "path_state.hpp"
+#include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
@@ -67,11 +68,11 @@ std::string profile_repr(const Profile& p) {
 }  // namespace
 
 void bind_profile(py::module_& m) {
-  py::class_<Profile>(m, "Profile", R"doc(
+  py::class_<Profile> profile(m, "Profile", R"doc(
 A one-dimensional time-optimal time law s(t) over a distance S (metres, or any unit of path
 length): piecewise-constant jerk, at most seven phases, from velocity v_start to v_end with
-zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurve; immutable.)doc")
-      .def_static("trapezoid", &Profile::trapezoid, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
+zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurve; immutable.)doc");
+  profile.def_static("trapezoid", &Profile::trapezoid, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
                   py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
                   "The time-optimal law under |v| <= v_max, |a| <= a_max (no jerk limit): accelerate at "
                   "+a_max to the peak velocity, cruise, decelerate at -a_max. v_start, v_end in [0, v_max]. "
@@ -108,8 +109,8 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
       .def("sample", &sample, py::arg("times"),
            "States at `times` ((N,) seconds, finite) as an (N, 4) array of rows (s, v, a, jerk). Times "
            "outside [0, duration] give the start or end state.")
-      .def(py::pickle(&profile_state, [](const py::tuple& state) { return profile_from_state(state); }))
       .def("__repr__", &profile_repr);
+  def_pickle(profile, "Profile", &profile_state, [](const py::object& state) { return profile_from_state(state); });
 
   m.def(
       "velocity_limited_law",

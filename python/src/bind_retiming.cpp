@@ -61,27 +61,49 @@ py::tuple report_state(const JointLimitReport& r) {
                         r.torque_joint, r.torque_sample, r.position_excess, r.position_joint, r.position_sample);
 }
 
-JointLimitReport report_from_state(const py::handle& state) {
-  const py::tuple s = state_tuple(state, 10, "JointLimitReport");
+// A trajectory inside a result's state, at `where`; the Trajectory's own checks name their field.
+Trajectory nested_trajectory(const py::handle& state, const StateField& where) {
+  return inside(where, [&] { return trajectory_from_state(state, where); });
+}
+
+// A report from the 10 items of its state; `field(k, name)` says where item k sits.
+template <typename Field>
+JointLimitReport report_of_items(const py::tuple& s, Field field) {
   JointLimitReport r;
-  for (const py::handle item : s[0].cast<py::sequence>()) {
-    const py::tuple x = state_tuple(item, 7, "JointSample");
-    r.samples.push_back(JointSample{x[0].cast<double>(), x[1].cast<double>(), x[2].cast<Eigen::VectorXd>(), x[3].cast<Eigen::VectorXd>(),
-                                    x[4].cast<Eigen::VectorXd>(), x[5].cast<Eigen::VectorXd>(), x[6].cast<Eigen::VectorXd>()});
+  const StateField samples_at = field(0, "samples");
+  const py::sequence samples = state_sequence(s[0], samples_at);
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const StateField at = samples_at.at(k);
+    const py::tuple x = state_fields(samples[k], 7, at);
+    const auto joints = [&](std::size_t i, const char* name) { return state_vector<Eigen::Dynamic>(x[i], at / ("." + std::string(name))); };
+    r.samples.push_back(JointSample{state_number(x[0], at / ".time"), state_number(x[1], at / ".s"), joints(2, "q"), joints(3, "qd"),
+                                    joints(4, "qdd"), joints(5, "static_torque"), joints(6, "dynamic_torque")});
   }
-  r.velocity_factor = s[1].cast<double>();
-  r.acceleration_factor = s[2].cast<double>();
-  r.velocity_joint = s[3].cast<int>();
-  r.velocity_sample = s[4].cast<std::size_t>();
-  r.torque_joint = s[5].cast<int>();
-  r.torque_sample = s[6].cast<std::size_t>();
-  r.position_excess = s[7].cast<double>();
-  r.position_joint = s[8].cast<int>();
-  r.position_sample = s[9].cast<std::size_t>();
-  const std::size_t n = r.samples.size();
-  require(n == 0 || (r.velocity_sample < n && r.torque_sample < n && r.position_sample < n), "JointLimitReport state sample index",
-          static_cast<long>(std::max({r.velocity_sample, r.torque_sample, r.position_sample})), "must index a sample");
+  const auto joint = [&](std::size_t k, const char* name) { return state_cast<int>(s[k], field(k, name)); };
+  const auto sample = [&](std::size_t k, const char* name) { return state_count(s[k], field(k, name), r.samples.size()); };
+  r.velocity_factor = state_cast<double>(s[1], field(1, "velocity_factor"));
+  r.acceleration_factor = state_cast<double>(s[2], field(2, "acceleration_factor"));
+  r.velocity_joint = joint(3, "velocity_joint");
+  r.velocity_sample = sample(4, "velocity_sample");
+  r.torque_joint = joint(5, "torque_joint");
+  r.torque_sample = sample(6, "torque_sample");
+  r.position_excess = state_cast<double>(s[7], field(7, "position_excess"));
+  r.position_joint = joint(8, "position_joint");
+  r.position_sample = sample(9, "position_sample");
+  require_consistent(r);  // the sizes agree before anything reads a sample's vectors
   return r;
+}
+
+JointLimitReport report_from_state(const py::object& state) {
+  const py::tuple s = state_tuple(state, 10, "JointLimitReport");
+  return report_of_items(s, [](std::size_t k, const char* name) { return StateField("JointLimitReport", k, name); });
+}
+
+// A report inside a re-timing result's state, at `where`; its own messages name the field.
+JointLimitReport nested_report(const py::handle& state, const StateField& where) {
+  const py::tuple s = state_fields(state, 10, where);
+  const auto field = [&](std::size_t, const char* name) { return where / ("." + std::string(name)); };
+  return inside(where, [&] { return report_of_items(s, field); });
 }
 
 py::tuple optimal_state(const OptimalRetimeResult& r) {
@@ -89,19 +111,32 @@ py::tuple optimal_state(const OptimalRetimeResult& r) {
                         r.torque_ratio, r.margin, r.refinements, r.grid_s, r.grid_speed, r.jerk_window);
 }
 
-OptimalRetimeResult optimal_from_state(const py::tuple& state) {
+OptimalRetimeResult optimal_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 10, "OptimalRetimeResult");
+  const auto field = [](std::size_t k, const char* name) { return StateField("OptimalRetimeResult", k, name); };
   OptimalRetimeResult r;
-  r.trajectory = trajectory_from_state(s[0].cast<py::tuple>());
-  r.report = report_from_state(s[1]);
-  r.velocity_ratio = s[2].cast<double>();
-  r.acceleration_ratio = s[3].cast<double>();
-  r.torque_ratio = s[4].cast<double>();
-  r.margin = s[5].cast<double>();
-  r.refinements = s[6].cast<int>();
-  r.grid_s = s[7].cast<std::vector<double>>();
-  r.grid_speed = s[8].cast<std::vector<double>>();
-  r.jerk_window = s[9].cast<double>();
+  r.trajectory = nested_trajectory(s[0], field(0, "trajectory"));
+  r.report = nested_report(s[1], field(1, "report"));
+  r.velocity_ratio = state_cast<double>(s[2], field(2, "velocity_ratio"));
+  r.acceleration_ratio = state_cast<double>(s[3], field(3, "acceleration_ratio"));
+  r.torque_ratio = state_cast<double>(s[4], field(4, "torque_ratio"));
+  r.margin = state_cast<double>(s[5], field(5, "margin"));
+  r.refinements = state_cast<int>(s[6], field(6, "refinements"));
+  const Eigen::VectorXd grid_s = state_vector<Eigen::Dynamic>(s[7], field(7, "grid_s"));
+  const Eigen::VectorXd grid_speed = state_vector<Eigen::Dynamic>(s[8], field(8, "grid_speed"));
+  r.grid_s.assign(grid_s.data(), grid_s.data() + grid_s.size());
+  r.grid_speed.assign(grid_speed.data(), grid_speed.data() + grid_speed.size());
+  r.jerk_window = state_cast<double>(s[9], field(9, "jerk_window"));
+  require_consistent(r);
+  return r;
+}
+
+RetimeResult retime_from_state(const py::object& state) {
+  const py::tuple s = state_tuple(state, 4, "RetimeResult");
+  const auto field = [](std::size_t k, const char* name) { return StateField("RetimeResult", k, name); };
+  RetimeResult r{nested_trajectory(s[0], field(0, "trajectory")), state_cast<Limits>(s[1], field(1, "limits")),
+                 state_cast<int>(s[2], field(2, "iterations")), nested_report(s[3], field(3, "report"))};
+  require(r.iterations >= 1, "iterations", static_cast<long>(r.iterations), "must be at least 1 (plans made)");
   return r;
 }
 
@@ -115,13 +150,13 @@ JointCheckOptions check_options(int samples_between, double difference_step) {
 }  // namespace
 
 void bind_retiming(py::module_& m) {
-  py::class_<JointLimitReport>(m, "JointLimitReport", R"doc(
+  py::class_<JointLimitReport> report(m, "JointLimitReport", R"doc(
 What check_joint_limits found along a trajectory: the KUKA re-timing patent's factors FVEL = max |qd_i| / qd_max_i
 and FACC = max |tau_dyn_i| / (tau_max_i - |tau_static_i|) (each <= 1 when the limits hold), where
 they are reached, the largest excursion of q outside its position range, and the per-sample
 arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque; the torques are
-(N, 0) arrays for a machine without a dynamics model, a hexapod).)doc")
-      .def_readonly("velocity_factor", &JointLimitReport::velocity_factor, "FVEL.")
+(N, 0) arrays for a machine without a dynamics model, a hexapod).)doc");
+  report.def_readonly("velocity_factor", &JointLimitReport::velocity_factor, "FVEL.")
       .def_readonly("acceleration_factor", &JointLimitReport::acceleration_factor, "FACC.")
       .def_readonly("velocity_joint", &JointLimitReport::velocity_joint, "Joint index where FVEL is reached (-1: none).")
       .def_readonly("torque_joint", &JointLimitReport::torque_joint, "Joint index where FACC is reached (-1: none).")
@@ -138,8 +173,8 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       .def("__repr__", [](const JointLimitReport& r) {
         return "JointLimitReport(velocity_factor=" + float_repr(r.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.acceleration_factor) + ", samples=" + std::to_string(r.samples.size()) + ")";
-      })
-      .def(py::pickle(&report_state, [](const py::tuple& state) { return report_from_state(state); }));
+      });
+  def_pickle(report, "JointLimitReport", &report_state, &report_from_state);
 
   m.def(
       "check_joint_limits",
@@ -166,8 +201,8 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       "twist, qdd by central differences; velocity_factor against leg_speed, position_excess against the leg "
       "range. No dynamics model: torques stay empty and acceleration_factor 0.");
 
-  py::class_<RetimeResult>(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.")
-      .def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
+  py::class_<RetimeResult> retime_result(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.");
+  retime_result.def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
       .def_readonly("limits", &RetimeResult::limits, "The scaled limits it was planned with.")
       .def_readonly("iterations", &RetimeResult::iterations, "Plans made (1: the original plan already fits).")
       .def_readonly("report", &RetimeResult::report, "The joint-limit report of the final trajectory (within_limits is True).")
@@ -175,24 +210,19 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
         return "RetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", iterations=" + std::to_string(r.iterations) +
                ", velocity_factor=" + float_repr(r.report.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.report.acceleration_factor) + ")";
-      })
-      .def(py::pickle(
-          [](const RetimeResult& r) {
-            return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report));
-          },
-          [](const py::tuple& state) {
-            const py::tuple s = state_tuple(state, 4, "RetimeResult");
-            return RetimeResult{trajectory_from_state(s[0].cast<py::tuple>()), s[1].cast<Limits>(), s[2].cast<int>(),
-                                report_from_state(s[3])};
-          }));
+      });
+  def_pickle(
+      retime_result, "RetimeResult",
+      [](const RetimeResult& r) { return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report)); },
+      &retime_from_state);
 
-  py::class_<OptimalRetimeResult>(m, "OptimalRetimeResult", R"doc(
+  py::class_<OptimalRetimeResult> optimal(m, "OptimalRetimeResult", R"doc(
 What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
 grid interval; with a jerk limit constant-jerk laws), the dense check of it (`report`), the largest joint velocity, acceleration and
 torque ratios found by that check (each <= 1; torque = static + dynamic against the effort limit),
 the fraction by which the limits were tightened on the grid so that they also hold between grid
-points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc")
-      .def_readonly("trajectory", &OptimalRetimeResult::trajectory,
+points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc");
+  optimal.def_readonly("trajectory", &OptimalRetimeResult::trajectory,
                     "The re-timed trajectory: the same path, one constant-acceleration law per grid interval (with a jerk "
                     "limit: constant-jerk laws).")
       .def_readonly("report", &OptimalRetimeResult::report, "The dense joint-limit check of `trajectory`.")
@@ -214,8 +244,8 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                float_repr(r.velocity_ratio) + ", acceleration_ratio=" + float_repr(r.acceleration_ratio) +
                ", torque_ratio=" + float_repr(r.torque_ratio) + ", margin=" + float_repr(r.margin) +
                ", refinements=" + std::to_string(r.refinements) + ")";
-      })
-      .def(py::pickle(&optimal_state, &optimal_from_state));
+      });
+  def_pickle(optimal, "OptimalRetimeResult", &optimal_state, &optimal_from_state);
 
   m.def(
       "retime",

@@ -193,10 +193,52 @@ py::tuple joint_limits_state(const JointLimits& l) {
   return py::make_tuple(to_vector_array(l.lower), to_vector_array(l.upper), to_vector_array(l.velocity), to_vector_array(l.effort));
 }
 
-JointLimits joint_limits_from_state(const py::handle& state) {
-  const py::tuple s = state_tuple(state, 4, "JointLimits");
-  return JointLimits{joint_vector(s[0], "JointLimits state lower"), joint_vector(s[1], "JointLimits state upper"),
-                     joint_vector(s[2], "JointLimits state velocity"), joint_vector(s[3], "JointLimits state effort")};
+// Joint limits from the 4 items of their state; `field(k, name)` says where item k sits. Checked
+// as SerialArm::with_joint_limits checks them (require_joint_limits), for as many joints as
+// `lower` has.
+template <typename Field>
+JointLimits joint_limits_of(const py::tuple& s, Field field) {
+  JointLimits l{state_vector<Eigen::Dynamic>(s[0], field(0, "lower")), state_vector<Eigen::Dynamic>(s[1], field(1, "upper")),
+                state_vector<Eigen::Dynamic>(s[2], field(2, "velocity")), state_vector<Eigen::Dynamic>(s[3], field(3, "effort"))};
+  require(l.lower.size() >= 1, "lower size", 0L, "must be at least 1 (one entry per joint)");
+  require_joint_limits(l, l.lower.size(), [](Eigen::Index i) { return "joint " + std::to_string(i); });
+  return l;
+}
+
+JointLimits joint_limits_from_state(const py::object& state) {
+  return joint_limits_of(state_tuple(state, 4, "JointLimits"),
+                         [](std::size_t k, const char* name) { return StateField("JointLimits", k, name); });
+}
+
+InverseResult inverse_result_from_state(const py::object& state) {
+  const py::tuple s = state_tuple(state, 4, "InverseResult");
+  const auto field = [](std::size_t k, const char* name) { return StateField("InverseResult", k, name); };
+  InverseResult r;
+  r.solutions = [&] {
+    std::vector<Eigen::VectorXd> out;
+    const py::sequence items = state_sequence(s[0], field(0, "solutions"));
+    for (std::size_t k = 0; k < items.size(); ++k) out.push_back(state_vector<Eigen::Dynamic>(items[k], field(0, "solutions").at(k)));
+    return out;
+  }();
+  r.within_limits = state_cast<std::vector<bool>>(s[1], field(1, "within_limits"));
+  r.complete = state_cast<bool>(s[2], field(2, "complete"));
+  const StateField family_at = field(3, "family");
+  const std::string family = state_cast<std::string>(s[3], family_at);
+  try {
+    r.family = family_named(family);
+  } catch (const std::invalid_argument&) {
+    throw py::value_error(family_at.message(s[3], "must be 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'"));
+  }
+  // One flag per solution, every solution of one size and finite (a joint vector).
+  require(r.within_limits.size() == r.solutions.size(), "within_limits size", static_cast<unsigned long>(r.within_limits.size()),
+          "must be the number of solutions, " + std::to_string(r.solutions.size()));
+  for (std::size_t k = 0; k < r.solutions.size(); ++k) {
+    const std::string name = "solutions[" + std::to_string(k) + "]";
+    require(r.solutions[k].size() == r.solutions.front().size(), name + " size", static_cast<long>(r.solutions[k].size()),
+            "must be the size of solutions[0], " + std::to_string(r.solutions.front().size()));
+    require_finite(r.solutions[k], name);
+  }
+  return r;
 }
 
 std::string inverse_result_repr(const InverseResult& r) {
@@ -212,19 +254,25 @@ py::tuple arm_state(const SerialArm& a) {
   return py::make_tuple(a.urdf(), a.base_link(), a.tip_link(), joint_limits_state(a.joint_limits()), to_array(a.gravity()));
 }
 
-SerialArm arm_from_state(const py::tuple& state) {
+// The URDF goes through the loader's checks, the limits through with_joint_limits'.
+SerialArm arm_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 5, "SerialArm");
-  SerialArm arm = SerialArm::from_urdf_string(s[0].cast<std::string>(), s[1].cast<std::string>(), s[2].cast<std::string>())
-                      .with_joint_limits(joint_limits_from_state(s[3]));
-  arm.set_gravity(vector3(s[4], "SerialArm state gravity"));
+  const auto field = [](std::size_t k, const char* name) { return StateField("SerialArm", k, name); };
+  const std::string urdf = state_cast<std::string>(s[0], field(0, "urdf"));
+  const std::string base = state_cast<std::string>(s[1], field(1, "base_link")), tip = state_cast<std::string>(s[2], field(2, "tip_link"));
+  const py::tuple limits = state_fields(s[3], 4, field(3, "joint_limits"));
+  const JointLimits joint_limits = joint_limits_of(limits, [&](std::size_t, const char* name) { return field(3, "joint_limits") / ("." + std::string(name)); });
+  const Eigen::Vector3d gravity = state_vector<3>(s[4], field(4, "gravity"));
+  SerialArm arm = SerialArm::from_urdf_string(urdf, base, tip).with_joint_limits(joint_limits);
+  arm.set_gravity(gravity);
   return arm;
 }
 
 }  // namespace
 
 void bind_serial(py::module_& m) {
-  py::class_<JointLimits>(m, "JointLimits", "Joint-space limits, one entry per joint ((n,) arrays).")
-      .def_property_readonly("lower", [](const JointLimits& l) { return to_vector_array(l.lower); },
+  py::class_<JointLimits> joint_limits(m, "JointLimits", "Joint-space limits, one entry per joint ((n,) arrays).");
+  joint_limits.def_property_readonly("lower", [](const JointLimits& l) { return to_vector_array(l.lower); },
                              "smallest joint positions (rad); -inf for a continuous joint")
       .def_property_readonly("upper", [](const JointLimits& l) { return to_vector_array(l.upper); },
                              "largest joint positions (rad); +inf for a continuous joint")
@@ -235,11 +283,11 @@ void bind_serial(py::module_& m) {
       .def("__repr__", [](const JointLimits& l) {
         return "JointLimits(lower=" + tuple_repr(l.lower) + ", upper=" + tuple_repr(l.upper) +
                ", velocity=" + tuple_repr(l.velocity) + ", effort=" + tuple_repr(l.effort) + ")";
-      })
-      .def(py::pickle(&joint_limits_state, &joint_limits_from_state));
+      });
+  def_pickle(joint_limits, "JointLimits", &joint_limits_state, &joint_limits_from_state);
 
-  py::class_<InverseResult>(m, "InverseResult", "What SerialArm.inverse_solutions found.")
-      .def_property_readonly("solutions", [](const InverseResult& r) { return to_list(r.solutions); },
+  py::class_<InverseResult> inverse_result(m, "InverseResult", "What SerialArm.inverse_solutions found.");
+  inverse_result.def_property_readonly("solutions", [](const InverseResult& r) { return to_list(r.solutions); },
                              "list of (n,) joint vectors, each reproducing the pose to 1e-10")
       .def_readonly("within_limits", &InverseResult::within_limits,
                     "per solution: inside the position limits (all True unless keep_outside_limits)")
@@ -247,22 +295,19 @@ void bind_serial(py::module_& m) {
                     "True: every solution (analytic family); False: what the numeric search found")
       .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
                              "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'")
-      .def("__repr__", &inverse_result_repr)
-      .def(py::pickle(
-          [](const InverseResult& r) {
-            return py::make_tuple(to_list(r.solutions), py::cast(r.within_limits), r.complete, serial::to_string(r.family));
-          },
-          [](const py::tuple& state) {
-            const py::tuple s = state_tuple(state, 4, "InverseResult");
-            return InverseResult{joint_vectors(s[0], "InverseResult state solutions"), s[1].cast<std::vector<bool>>(),
-                                 s[2].cast<bool>(), family_named(s[3].cast<std::string>())};
-          }));
+      .def("__repr__", &inverse_result_repr);
+  def_pickle(
+      inverse_result, "InverseResult",
+      [](const InverseResult& r) {
+        return py::make_tuple(to_list(r.solutions), py::cast(r.within_limits), r.complete, serial::to_string(r.family));
+      },
+      &inverse_result_from_state);
 
-  py::class_<SerialArm>(m, "SerialArm", R"doc(
+  py::class_<SerialArm> serial_arm(m, "SerialArm", R"doc(
 A serial arm of revolute joints between two links of a URDF (urdfdom into an Orocos KDL chain).
 Fixed joints are folded in, continuous joints have infinite position limits, prismatic, planar
-and floating joints on the path are refused. Units: metres, radians, seconds, kilograms, N m.)doc")
-      .def_static("from_urdf", &from_urdf, py::arg("path_or_string"), py::arg("base_link"), py::arg("tip_link"),
+and floating joints on the path are refused. Units: metres, radians, seconds, kilograms, N m.)doc");
+  serial_arm.def_static("from_urdf", &from_urdf, py::arg("path_or_string"), py::arg("base_link"), py::arg("tip_link"),
                   "From a URDF file, or URDF text when the string starts with '<'. ValueError naming the file, "
                   "link or joint for malformed URDF, unknown links, base not an ancestor of tip, unsupported joints.")
       .def_property_readonly("robot_name", &SerialArm::robot_name, "the URDF's <robot name>")
@@ -442,11 +487,11 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "JointLimitReport of a PTP move (JointTrajectory) at `times` (s): the factors FVEL and FACC of its "
           "joint line's own q, qd, qdd. RuntimeError where the static torque alone reaches an effort limit.")
       .def_property_readonly("urdf", &SerialArm::urdf, "the URDF text the arm was read from")
-      .def(py::pickle(&arm_state, &arm_from_state))
       .def("__repr__", [](const SerialArm& a) {
         return "SerialArm(robot='" + a.robot_name() + "', base_link='" + a.base_link() + "', tip_link='" +
                a.tip_link() + "', dof=" + std::to_string(a.dof()) + ", family='" + serial::to_string(a.family()) + "')";
       });
+  def_pickle(serial_arm, "SerialArm", &arm_state, &arm_from_state);
 }
 
 }  // namespace python

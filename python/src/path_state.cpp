@@ -2,6 +2,9 @@
 // which are the doubles themselves: nothing is rounded on the way.
 #include "path_state.hpp"
 
+#include <algorithm>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,23 +33,11 @@ py::tuple pose_floats(const Posed& p) {
   return py::make_tuple(q.w(), q.x(), q.y(), q.z(), t.x(), t.y(), t.z());
 }
 
-Posed pose_of_floats(const py::handle& obj, const std::string& name) {
-  const Eigen::Matrix<double, 7, 1> x = vector<7>(obj, name);
-  require_finite(x, name);
-  require(std::abs(x.head<4>().norm() - 1.0) <= 1e-12, name, x.head<4>().norm(), "quaternion norm must be 1");
+// The numbers are taken as stored; Path::from_sections and the Trajectory constructor check
+// them (require_valid of each section), as they check sections made by the moves.
+Posed pose_of_floats(const py::handle& obj, const StateField& where) {
+  const Eigen::Matrix<double, 7, 1> x = state_vector<7>(obj, where);
   return Posed::unchecked(Eigen::Quaterniond(x(0), x(1), x(2), x(3)), x.tail<3>());
-}
-
-Eigen::Vector3d finite3(const py::handle& obj, const std::string& name) {
-  const Eigen::Vector3d v = vector3(obj, name);
-  require_finite(v, name);
-  return v;
-}
-
-double finite(const py::handle& obj, const std::string& name) {
-  const double x = obj.cast<double>();
-  require_finite(x, name);
-  return x;
 }
 
 py::tuple cubic_floats(const Cubic3& c) {
@@ -55,23 +46,32 @@ py::tuple cubic_floats(const Cubic3& c) {
   return floats(x);
 }
 
-Cubic3 cubic_of_floats(const py::handle& obj, const std::string& name) {
-  const Eigen::Matrix<double, 12, 1> x = vector<12>(obj, name);
-  require_finite(x, name);
+Cubic3 cubic_of_floats(const py::handle& obj, const StateField& where) {
+  const Eigen::Matrix<double, 12, 1> x = state_vector<12>(obj, where);
   Cubic3 c;
   for (int k = 0; k < 4; ++k) c.a[static_cast<std::size_t>(k)] = x.segment<3>(3 * k);
   return c;
 }
 
-ProfileState profile_state_of(const py::handle& obj, const std::string& name) {
-  const Eigen::Vector4d x = vector<4>(obj, name);
+ProfileState profile_state_of(const py::handle& obj, const StateField& where) {
+  const Eigen::Vector4d x = state_vector<4>(obj, where);
   return ProfileState{x(0), x(1), x(2), x(3)};
 }
 
-std::vector<double> doubles(const py::handle& obj, const std::string& name) {
-  std::vector<double> out;
-  for (const py::handle x : obj.cast<py::sequence>()) out.push_back(finite(x, name));
+// The items of a sequence field, each converted by `item(handle, field of item k)`.
+template <typename T, typename Item>
+std::vector<T> each(const py::handle& obj, const StateField& where, Item item) {
+  std::vector<T> out;
+  std::size_t k = 0;
+  for (const py::handle x : state_sequence(obj, where)) {
+    out.push_back(item(x, where.at(k)));
+    ++k;
+  }
   return out;
+}
+
+std::vector<double> numbers(const py::handle& obj, const StateField& where) {
+  return each<double>(obj, where, [](const py::handle& x, const StateField& at) { return state_number(x, at); });
 }
 
 py::tuple sections_state(const std::vector<Section>& sections) {
@@ -80,10 +80,43 @@ py::tuple sections_state(const std::vector<Section>& sections) {
   return out;
 }
 
-std::vector<Section> sections_from_state(const py::handle& obj) {
-  std::vector<Section> out;
-  for (const py::handle s : obj.cast<py::sequence>()) out.push_back(section_from_state(s));
-  return out;
+std::vector<Section> sections_from_state(const py::handle& obj, const StateField& where) {
+  return each<Section>(obj, where, [](const py::handle& x, const StateField& at) { return section_from_state(x, at); });
+}
+
+// A law's parts from the 7 items of its state; `field(k, name)` says where item k sits.
+template <typename Field>
+Profile profile_of_items(const py::tuple& s, Field field) {
+  Profile::Parts p;
+  const StateField kind_at = field(0, "kind");
+  const std::string kind = state_cast<std::string>(s[0], kind_at);
+  if (kind != "scurve" && kind != "trapezoid") throw py::value_error(kind_at.message(s[0], "must be 'scurve' or 'trapezoid'"));
+  p.kind = profile_kind(kind);
+  const StateField phases_at = field(1, "phases"), times_at = field(2, "times");
+  const py::sequence phases = state_sequence(s[1], phases_at);
+  const std::vector<double> times = numbers(s[2], times_at);
+  if (phases.size() > static_cast<std::size_t>(Profile::max_phases))
+    throw py::value_error(phases_at.message(s[1], "must hold at most 7 phases"));
+  if (times.size() != phases.size() + 1)
+    throw py::value_error(times_at.message(s[2], "must hold one time more than there are phases (" + std::to_string(phases.size()) + ")"));
+  p.count = static_cast<int>(phases.size());
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    const StateField at = phases_at.at(i);
+    const py::tuple ph = state_fields(phases[i], 4, at);
+    p.phases[i] = ProfilePhase{state_number(ph[0], at / ".duration"), state_number(ph[1], at / ".jerk"),
+                               profile_state_of(ph[2], at / ".start"), profile_state_of(ph[3], at / ".end")};
+  }
+  std::copy(times.begin(), times.end(), p.times.begin());
+  p.distance = state_number(s[3], field(3, "distance"));
+  p.peak_velocity = state_number(s[4], field(4, "peak_velocity"));
+  p.start = profile_state_of(s[5], field(5, "start"));
+  p.end = profile_state_of(s[6], field(6, "end"));
+  return Profile::from_parts(p);
+}
+
+Profile profile_of(const py::handle& obj, const StateField& where) {
+  const py::tuple s = state_fields(obj, 7, where);
+  return inside(where, [&] { return profile_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); }); });
 }
 
 }  // namespace
@@ -104,24 +137,7 @@ py::tuple profile_state(const Profile& law) {
 
 Profile profile_from_state(const py::handle& state) {
   const py::tuple s = state_tuple(state, 7, "Profile");
-  Profile::Parts p;
-  p.kind = profile_kind(s[0].cast<std::string>());
-  const py::tuple phases = s[1].cast<py::tuple>();
-  const py::tuple times = s[2].cast<py::tuple>();
-  require(phases.size() <= static_cast<std::size_t>(Profile::max_phases) && times.size() == phases.size() + 1,
-          "Profile state phases", static_cast<long>(phases.size()), "must be at most 7, with one time more than phases");
-  p.count = static_cast<int>(phases.size());
-  for (std::size_t i = 0; i < phases.size(); ++i) {
-    const py::tuple ph = state_tuple(phases[i], 4, "Profile phase");
-    p.phases[i] = ProfilePhase{ph[0].cast<double>(), ph[1].cast<double>(), profile_state_of(ph[2], "Profile phase start"),
-                               profile_state_of(ph[3], "Profile phase end")};
-  }
-  for (std::size_t i = 0; i < times.size(); ++i) p.times[i] = times[i].cast<double>();
-  p.distance = s[3].cast<double>();
-  p.peak_velocity = s[4].cast<double>();
-  p.start = profile_state_of(s[5], "Profile start");
-  p.end = profile_state_of(s[6], "Profile end");
-  return Profile::from_parts(p);
+  return profile_of_items(s, [](std::size_t k, const char* name) { return StateField("Profile", k, name); });
 }
 
 py::tuple section_state(const Section& section) {
@@ -138,64 +154,57 @@ py::tuple section_state(const Section& section) {
                         floats(c.pivot));
 }
 
-Section section_from_state(const py::handle& state) {
-  if (!py::isinstance<py::tuple>(state) || py::len(state) == 0) {
-    throw py::value_error("Section state: expected a tuple starting with \"lin\", \"arc\", \"curve\" or \"slerp_blend\", got " +
-                          std::string(py::repr(state)));
-  }
-  const std::string kind = state.cast<py::tuple>()[0].cast<std::string>();
+Section section_from_state(const py::handle& state, const StateField& where) {
+  if (!py::isinstance<py::tuple>(state) || py::len(state) == 0)
+    throw py::type_error(where.message(state, "must be a tuple starting with 'lin', 'arc', 'curve' or 'slerp_blend'"));
+  const StateField kind_at = where / ".kind";
+  const std::string kind = state_cast<std::string>(py::reinterpret_borrow<py::tuple>(state)[0], kind_at);
+  const auto fields = [&](std::size_t size) { return state_fields(state, size, where); };
   if (kind == "lin") {
-    const py::tuple s = state_tuple(state, 5, "Section (lin)");
-    return LinSection{pose_of_floats(s[1], "lin start"), pose_of_floats(s[2], "lin end"),
-                      interpolation_from_string(s[3].cast<std::string>()), finite3(s[4], "lin pivot")};
+    const py::tuple s = fields(5);
+    const StateField interpolation_at = where / ".interpolation";
+    const std::string interpolation = state_cast<std::string>(s[3], interpolation_at);
+    if (interpolation != "decoupled" && interpolation != "screw")
+      throw py::value_error(interpolation_at.message(s[3], "must be 'decoupled' or 'screw'"));
+    return LinSection{pose_of_floats(s[1], where / ".start"), pose_of_floats(s[2], where / ".end"),
+                      interpolation_from_string(interpolation), state_vector<3>(s[4], where / ".pivot")};
   }
   if (kind == "arc") {
-    const py::tuple s = state_tuple(state, 8, "Section (arc)");
+    const py::tuple s = fields(8);
     ArcSection arc;
-    arc.start = pose_of_floats(s[1], "arc start");
-    arc.center = finite3(s[2], "arc center");
-    arc.normal = finite3(s[3], "arc normal");
-    arc.angle = finite(s[4], "arc angle");
-    arc.rotation_axis = finite3(s[5], "arc rotation_axis");
-    arc.rotation_angle = finite(s[6], "arc rotation_angle");
-    arc.pivot = finite3(s[7], "arc pivot");
+    arc.start = pose_of_floats(s[1], where / ".start");
+    arc.center = state_vector<3>(s[2], where / ".center");
+    arc.normal = state_vector<3>(s[3], where / ".normal");
+    arc.angle = state_number(s[4], where / ".angle");
+    arc.rotation_axis = state_vector<3>(s[5], where / ".rotation_axis");
+    arc.rotation_angle = state_number(s[6], where / ".rotation_angle");
+    arc.pivot = state_vector<3>(s[7], where / ".pivot");
     return arc;
   }
   if (kind == "curve") {
-    const py::tuple s = state_tuple(state, 7, "Section (curve)");
+    const py::tuple s = fields(7);
     CurveSection c;
-    const Eigen::Vector4d q = vector<4>(s[1], "curve q0");  // Eigen's coeffs(): x, y, z, w
-    require(std::abs(q.norm() - 1.0) <= 1e-12, "curve q0", q.norm(), "quaternion norm must be 1");
-    c.q0.coeffs() = q;
-    c.position = cubic_of_floats(s[2], "curve position");
-    c.rotation = cubic_of_floats(s[3], "curve rotation");
-    c.v0 = finite(s[4], "curve v0");
-    c.v1 = finite(s[5], "curve v1");
-    c.pivot = finite3(s[6], "curve pivot");
+    c.q0.coeffs() = state_vector<4>(s[1], where / ".q0");  // Eigen's coeffs(): x, y, z, w
+    c.position = cubic_of_floats(s[2], where / ".position");
+    c.rotation = cubic_of_floats(s[3], where / ".rotation");
+    c.v0 = state_number(s[4], where / ".v0");
+    c.v1 = state_number(s[5], where / ".v1");
+    c.pivot = state_vector<3>(s[6], where / ".pivot");
     return c;
   }
   if (kind == "slerp_blend") {
-    const py::tuple s = state_tuple(state, 8, "Section (slerp_blend)");
+    const py::tuple s = fields(8);
     SlerpBlendSection b;
-    const Eigen::Vector4d q = vector<4>(s[1], "slerp_blend q_start");  // Eigen's coeffs(): x, y, z, w
-    require_finite(q, "slerp_blend q_start");
-    require(std::abs(q.norm() - 1.0) <= 1e-12, "slerp_blend q_start", q.norm(), "quaternion norm must be 1");
-    b.q_start.coeffs() = q;
-    b.a = finite3(s[2], "slerp_blend a");
-    b.b = finite3(s[3], "slerp_blend b");
-    // Each turn of the nested SLERP is below π (a blend takes at most half a LIN's turn ≤ π):
-    // its logarithms, and so the motion, are smooth only there.
-    require(b.a.norm() < pi, "slerp_blend a", b.a.norm(), "must be a turn below pi rad");
-    require(b.b.norm() < pi, "slerp_blend b", b.b.norm(), "must be a turn below pi rad");
-    b.position = cubic_of_floats(s[4], "slerp_blend position");
-    b.v0 = finite(s[5], "slerp_blend v0");
-    b.v1 = finite(s[6], "slerp_blend v1");
-    require(0.0 <= b.v0 && b.v0 < b.v1 && b.v1 <= 1.0, "slerp_blend v0", b.v0, "must satisfy 0 <= v0 < v1 <= 1");
-    b.pivot = finite3(s[7], "slerp_blend pivot");
+    b.q_start.coeffs() = state_vector<4>(s[1], where / ".q_start");  // Eigen's coeffs(): x, y, z, w
+    b.a = state_vector<3>(s[2], where / ".a");
+    b.b = state_vector<3>(s[3], where / ".b");
+    b.position = cubic_of_floats(s[4], where / ".position");
+    b.v0 = state_number(s[5], where / ".v0");
+    b.v1 = state_number(s[6], where / ".v1");
+    b.pivot = state_vector<3>(s[7], where / ".pivot");
     return b;
   }
-  throw std::invalid_argument(
-      describe("Section state kind", kind, "must be \"lin\", \"arc\", \"curve\" or \"slerp_blend\""));
+  throw py::value_error(kind_at.message(py::reinterpret_borrow<py::tuple>(state)[0], "must be 'lin', 'arc', 'curve' or 'slerp_blend'"));
 }
 
 py::tuple path_state(const Path& path) {
@@ -205,15 +214,20 @@ py::tuple path_state(const Path& path) {
                         py::tuple(py::cast(path.move_starts())));
 }
 
-Path path_from_state(const py::tuple& state) {
+Path path_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 5, "Path");
-  std::vector<MoveLimits> limits;
-  for (const py::handle item : s[3].cast<py::sequence>()) {
-    const py::tuple l = state_tuple(item, 2, "Path move limits");
-    limits.push_back({l[0].cast<std::optional<double>>(), l[1].cast<std::optional<double>>()});
-  }
-  return Path::from_sections(sections_from_state(s[0]), s[1].cast<double>(), s[2].cast<double>(), limits,
-                             s[4].cast<std::vector<std::size_t>>());
+  const StateField limits_at("Path", 3, "section_limits");
+  const std::vector<MoveLimits> limits = each<MoveLimits>(s[3], limits_at, [](const py::handle& item, const StateField& at) {
+    const py::tuple l = state_fields(item, 2, at);
+    return MoveLimits{state_cast<std::optional<double>>(l[0], at / ".velocity"),
+                      state_cast<std::optional<double>>(l[1], at / ".acceleration")};
+  });
+  const std::vector<Section> sections = sections_from_state(s[0], StateField("Path", 0, "sections"));
+  const std::vector<std::size_t> move_starts = each<std::size_t>(
+      s[4], StateField("Path", 4, "move_starts"),
+      [&](const py::handle& x, const StateField& at) { return state_count(x, at, sections.size()); });
+  return Path::from_sections(sections, state_item<double>(s, 1, "Path", "first_move_size"),
+                             state_item<double>(s, 2, "Path", "last_move_size"), limits, move_starts);
 }
 
 py::tuple time_law_state(const TimeLaw& law) {
@@ -222,15 +236,19 @@ py::tuple time_law_state(const TimeLaw& law) {
   return py::make_tuple(law.run_count(), py::tuple(pieces));
 }
 
-TimeLaw time_law_from_state(const py::handle& state) {
-  const py::tuple s = state_tuple(state, 2, "TimeLaw");
+TimeLaw time_law_from_state(const py::handle& state, const StateField& where) {
+  const py::tuple s = state_fields(state, 2, where);
   TimeLaw law;
   // append places each law after the one before, as planning did: the same sums, the same times.
-  for (const py::handle piece : s[1].cast<py::sequence>()) {
-    const py::tuple p = state_tuple(piece, 2, "TimeLaw piece");
-    law.append(profile_from_state(p[0]), finite(p[1], "TimeLaw piece start_s"));
+  const StateField pieces_at = where / ".pieces";
+  const py::sequence pieces = state_sequence(s[1], pieces_at);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const StateField at = pieces_at.at(k);
+    const py::tuple p = state_fields(pieces[k], 2, at);
+    law.append(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"));
   }
-  const std::size_t runs = s[0].cast<std::size_t>();
+  // Runs: at least one, at most one per law (the Trajectory constructor checks it).
+  const std::size_t runs = state_count(s[0], where / ".runs", pieces.size());
   for (std::size_t k = 0; k < runs; ++k) law.end_run();
   return law;
 }
@@ -249,32 +267,50 @@ py::tuple trajectory_state(const Trajectory& trajectory) {
                         py::tuple(sources));
 }
 
-Trajectory trajectory_from_state(const py::tuple& state) {
+namespace {
+
+// A trajectory from the 7 items of its state; `field(k, name)` says where item k sits.
+template <typename Field>
+Trajectory trajectory_of_items(const py::tuple& s, Field field) {
+  std::vector<Section> sections = sections_from_state(s[0], field(0, "sections"));
+  std::vector<double> lengths = numbers(s[1], field(1, "section_lengths"));
+  // The constructor checks everything else; the lengths must pair with the sections before
+  // SampledPath divides by them.
+  if (lengths.size() != sections.size())
+    throw py::value_error(field(1, "section_lengths").message(s[1], "must hold one length per section (" +
+                                                                        std::to_string(sections.size()) + ")"));
+  for (std::size_t k = 0; k < lengths.size(); ++k)
+    if (!(lengths[k] > 0.0)) throw py::value_error(field(1, "section_lengths").at(k).message(py::float_(lengths[k]), "must be > 0"));
+  const std::vector<SpeedLimit> limits =
+      each<SpeedLimit>(s[3], field(3, "speed_limits"), [](const py::handle& item, const StateField& at) {
+        const py::tuple l = state_fields(item, 3, at);
+        return SpeedLimit{state_number(l[0], at / ".start_s"), state_number(l[1], at / ".length"), state_number(l[2], at / ".limit")};
+      });
+  std::vector<Stop> stops = each<Stop>(s[5], field(5, "stops"), [](const py::handle& item, const StateField& at) {
+    const py::tuple t = state_fields(item, 2, at);
+    return Stop{state_number(t[0], at / ".s"), state_cast<std::string>(t[1], at / ".reason")};
+  });
+  std::vector<SectionSource> sources =
+      each<SectionSource>(s[6], field(6, "section_sources"), [](const py::handle& item, const StateField& at) {
+        const py::tuple t = state_fields(item, 3, at);
+        // Any index: it names a section of the path as planned, which the state does not hold.
+        return SectionSource{state_count(t[0], at / ".section", std::numeric_limits<std::size_t>::max() >> 1),
+                             state_number(t[1], at / ".tau_start"), state_number(t[2], at / ".tau_end")};
+      });
+  return Trajectory(SampledPath(std::move(sections), std::move(lengths)), time_law_from_state(s[2], field(2, "time_law")),
+                    limits, numbers(s[4], field(4, "rest_positions")), std::move(stops), std::move(sources));
+}
+
+}  // namespace
+
+Trajectory trajectory_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 7, "Trajectory");
-  const std::vector<Section> sections = sections_from_state(s[0]);
-  std::vector<double> lengths = doubles(s[1], "Trajectory state lengths");
-  require(lengths.size() == sections.size(), "Trajectory state lengths", static_cast<long>(lengths.size()),
-          "must hold one length per section");
-  for (double l : lengths) require(l > 0.0, "Trajectory state lengths", l, "must be > 0");
-  std::vector<SpeedLimit> limits;
-  for (const py::handle item : s[3].cast<py::sequence>()) {
-    const py::tuple l = state_tuple(item, 3, "Trajectory speed limit");
-    limits.push_back(SpeedLimit{finite(l[0], "speed limit start_s"), finite(l[1], "speed limit length"), finite(l[2], "speed limit")});
-  }
-  std::vector<Stop> stops;
-  for (const py::handle item : s[5].cast<py::sequence>()) {
-    const py::tuple t = state_tuple(item, 2, "Trajectory stop");
-    stops.push_back({finite(t[0], "stop s"), t[1].cast<std::string>()});
-  }
-  std::vector<SectionSource> sources;
-  for (const py::handle item : s[6].cast<py::sequence>()) {
-    const py::tuple t = state_tuple(item, 3, "Trajectory section source");
-    sources.push_back({t[0].cast<std::size_t>(), finite(t[1], "section source tau_start"), finite(t[2], "section source tau_end")});
-  }
-  require(sources.empty() || sources.size() == sections.size(), "Trajectory state section sources",
-          static_cast<long>(sources.size()), "must hold none or one per section");
-  return Trajectory(SampledPath(sections, std::move(lengths)), time_law_from_state(s[2]), std::move(limits),
-                    doubles(s[4], "Trajectory state rest positions"), std::move(stops), std::move(sources));
+  return trajectory_of_items(s, [](std::size_t k, const char* name) { return StateField("Trajectory", k, name); });
+}
+
+Trajectory trajectory_from_state(const py::handle& state, const StateField& where) {
+  const py::tuple s = state_fields(state, 7, where);
+  return trajectory_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); });
 }
 
 }  // namespace python

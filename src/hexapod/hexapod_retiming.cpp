@@ -46,6 +46,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod&
     }
     report.samples.push_back(std::move(sample));
   }
+  require_consistent(report);  // what a stored report is checked for, a made one holds too
   return report;
 }
 

@@ -2,6 +2,7 @@
 #include "dispkin/path/path.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -134,6 +135,8 @@ Path Path::from_sections(const std::vector<Section>& sections, double first_move
   require(std::isfinite(last_move_size) && last_move_size > 0.0, "last_move_size", last_move_size, "must be finite and > 0");
   Path path;
   for (const Section& section : sections) {
+    const std::size_t k = path.sections_.size();
+    require_valid(section, [k] { return "sections[" + std::to_string(k) + "]"; });
     if (!path.sections_.empty()) {
       Path next;
       next.sections_.push_back(section);
@@ -162,16 +165,101 @@ Path Path::from_sections(const std::vector<Section>& sections, double first_move
   return path;
 }
 
-void Path::require_joins(const Path& next) const {
-  const Posed here = end();
-  const Posed there = next.start();
-  const double gap = (here.translation() - there.translation()).norm();
-  const double turn = rotation_angle(here, there);
-  if (gap > 1e-9 || turn > 1e-9) {
-    throw std::invalid_argument(describe("next", there.translation(),
+namespace {
+
+using Name = std::function<std::string()>;
+
+// Each check names `name()` + `field` only when it fails.
+Name field(const Name& name, const char* sub) {
+  return [&name, sub] { return name() + sub; };
+}
+
+void require_stored_pose(const Posed& pose, const Name& name) {
+  try {
+    Posed::from_stored(pose.quaternion(), pose.translation());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(name() + " " + e.what());
+  }
+}
+
+void require_point(const Eigen::Vector3d& x, const Name& name) {
+  if (!within_translation_range(x)) require_translation(x, name());
+}
+
+void require_unit(const Eigen::Vector3d& axis, const Name& name) {
+  require_lazily(axis.allFinite() && std::abs(axis.norm() - 1.0) <= Posed::stored_quaternion_tolerance(), name, axis,
+                 [] { return "must be a unit vector"; });
+}
+
+void require_unit(const Eigen::Quaterniond& q, const Name& name) {
+  require_lazily(q.coeffs().allFinite() && std::abs(q.norm() - 1.0) <= Posed::stored_quaternion_tolerance(), name, q.coeffs(),
+                 [] { return "must be a unit quaternion (x, y, z, w)"; });
+}
+
+void require_angle(double angle, const Name& name) {
+  require_lazily(std::isfinite(angle) && std::abs(angle) <= 2.0 * pi, name, angle, [] { return "must be finite and at most 2 pi rad"; });
+}
+
+void require_cubic(const Cubic3& c, const Name& name) {
+  for (std::size_t k = 0; k < c.a.size(); ++k) {
+    const Eigen::Vector3d& x = c.a[k];
+    require_lazily(x.allFinite() && x.cwiseAbs().maxCoeff() <= 1e14, [&] { return name() + ".a[" + std::to_string(k) + "]"; }, x,
+                   [] { return "must have coordinates within ±1e14 (dispkin's numeric range)"; });
+  }
+}
+
+void require_curve_part(double v0, double v1, const Name& name) {
+  require_lazily(0.0 <= v0 && v0 < v1 && v1 <= 1.0, field(name, " (v0, v1)"), Eigen::Vector2d(v0, v1),
+                 [] { return "must satisfy 0 <= v0 < v1 <= 1"; });
+}
+
+}  // namespace
+
+void require_valid(const Section& section, const Name& name) {
+  if (const auto* lin = std::get_if<LinSection>(&section)) {
+    require_stored_pose(lin->start, field(name, ".start"));
+    require_stored_pose(lin->end, field(name, ".end"));
+    require_point(lin->pivot, field(name, ".pivot"));
+  } else if (const auto* arc = std::get_if<ArcSection>(&section)) {
+    require_stored_pose(arc->start, field(name, ".start"));
+    require_point(arc->center, field(name, ".center"));
+    require_unit(arc->normal, field(name, ".normal"));
+    require_angle(arc->angle, field(name, ".angle"));
+    require_unit(arc->rotation_axis, field(name, ".rotation_axis"));
+    require_angle(arc->rotation_angle, field(name, ".rotation_angle"));
+    require_point(arc->pivot, field(name, ".pivot"));
+  } else if (const auto* curve = std::get_if<CurveSection>(&section)) {
+    require_unit(curve->q0, field(name, ".q0"));
+    require_cubic(curve->position, field(name, ".position"));
+    require_cubic(curve->rotation, field(name, ".rotation"));
+    require_curve_part(curve->v0, curve->v1, name);
+    require_point(curve->pivot, field(name, ".pivot"));
+  } else {
+    const auto& blend = std::get<SlerpBlendSection>(section);
+    require_unit(blend.q_start, field(name, ".q_start"));
+    // Each turn of the nested SLERP is below π (a blend takes at most half a LIN's turn ≤ π):
+    // its logarithms, and so the motion, are smooth only there.
+    require_lazily(blend.a.allFinite() && blend.a.norm() < pi, field(name, ".a"), blend.a, [] { return "must be a turn below pi rad"; });
+    require_lazily(blend.b.allFinite() && blend.b.norm() < pi, field(name, ".b"), blend.b, [] { return "must be a turn below pi rad"; });
+    require_cubic(blend.position, field(name, ".position"));
+    require_curve_part(blend.v0, blend.v1, name);
+    require_point(blend.pivot, field(name, ".pivot"));
+  }
+}
+
+void require_join(const Posed& end, const Posed& start, const Name& name) {
+  const double gap = (end.translation() - start.translation()).norm();
+  const double turn = rotation_angle(end, start);
+  const double size = std::max(end.translation().cwiseAbs().maxCoeff(), start.translation().cwiseAbs().maxCoeff());
+  if (!(gap <= 1e-9 + 64.0 * std::numeric_limits<double>::epsilon() * size) || !(turn <= 1e-9)) {
+    throw std::invalid_argument(describe(name(), start.translation(),
                                          "must start where the path ends (gap " + std::to_string(gap) + " m, " +
                                              std::to_string(turn) + " rad)"));
   }
+}
+
+void Path::require_joins(const Path& next) const {
+  require_join(end(), next.start(), [] { return std::string("next"); });
 }
 
 Path& Path::then(const Path& next) {

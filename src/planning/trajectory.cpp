@@ -2,7 +2,123 @@
 // body twist per unit τ at s (trajectory.hpp).
 #include "dispkin/planning/trajectory.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "dispkin/error.hpp"
+
 namespace dispkin {
+
+namespace {
+
+// A length or speed in a message: 12 digits, as describe() writes values.
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(12);
+  out << x;
+  return out.str();
+}
+
+std::string indexed(const char* name, std::size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
+
+// The sections join, and each has a length that sampling can divide by.
+void require_sections(const SampledPath& path) {
+  const std::vector<Section>& sections = path.sections();
+  const std::vector<double>& lengths = path.section_lengths();
+  require(!sections.empty(), "sections", 0L, "must hold at least one section");
+  require(lengths.size() == sections.size(), "section_lengths size", static_cast<unsigned long>(lengths.size()),
+          "must be the section count " + std::to_string(sections.size()));
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    require_valid(sections[k], [k] { return indexed("sections", k); });
+    const double L = lengths[k];
+    require_lazily(std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), [k] { return indexed("section_lengths", k); }, L,
+                   [] { return "must be finite and > 0, with a finite inverse"; });
+    if (k > 0) require_join(section_end(sections[k - 1]), section_start(sections[k]), [k] { return indexed("sections", k) + ".start"; });
+  }
+  require(std::isfinite(path.length()), "length", path.length(), "must be finite (the sum of the section lengths)");
+}
+
+// The velocity-limit curve: spans in order along the path, limits in the numeric range.
+void require_speed_limits(const std::vector<SpeedLimit>& limits, double length, double tol_s) {
+  double last_end = 0.0;
+  for (std::size_t k = 0; k < limits.size(); ++k) {
+    const SpeedLimit& l = limits[k];
+    const auto name = [k](const char* field) { return [k, field] { return indexed("speed_limits", k) + field; }; };
+    require_lazily(std::isfinite(l.start_s) && l.start_s >= last_end - tol_s && l.start_s <= length + tol_s, name(".start_s"),
+                   l.start_s, [] { return "must lie on the path, after the span before it"; });
+    require_lazily(std::isfinite(l.length) && l.length >= 0.0 && l.start_s + l.length <= length + tol_s, name(".length"), l.length,
+                   [] { return "must be finite, not negative, and end on the path"; });
+    // Curvature lowers a limit below the system velocity (never to 0); above 1e12 m/s durations overflow.
+    require_lazily(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name(".limit"), l.limit,
+                   [] { return "must be in (0, 1e12] m/s"; });
+    last_end = l.start_s + l.length;
+  }
+}
+
+// The largest limit of the spans that [s0, s1] crosses (+inf without a curve): a law over
+// [s0, s1] may reach it somewhere, never more. The laws come in order along the path, and so do
+// the spans: `first` is where the search for the next law starts (one walk over both, not a
+// search over every span per law: a long job has 10⁵ of each).
+double largest_limit(const std::vector<SpeedLimit>& limits, double s0, double s1, double tol_s, std::size_t& first) {
+  if (limits.empty()) return std::numeric_limits<double>::infinity();
+  while (first + 1 < limits.size() && limits[first].start_s + limits[first].length < s0 - tol_s) ++first;
+  double out = 0.0;
+  for (std::size_t k = first; k < limits.size() && limits[k].start_s <= s1 + tol_s; ++k)
+    if (limits[k].start_s + limits[k].length >= s0 - tol_s) out = std::max(out, limits[k].limit);
+  return out;
+}
+
+}  // namespace
+
+void Trajectory::require_consistent() const {
+  require_sections(path_);
+  const double length = path_.length();
+  // Positions along the path are sums of lengths: they agree to rounding, 1e-9 of the length.
+  const double tol_s = 1e-9 * length;
+  require_speed_limits(speed_limits_, length, tol_s);
+  const std::vector<TimeLaw::Piece>& pieces = law_.pieces();
+  require(!pieces.empty(), "time_law pieces", 0L, "must hold at least one law");
+  require(law_.run_count() >= 1 && law_.run_count() <= pieces.size(), "time_law runs", static_cast<unsigned long>(law_.run_count()),
+          "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()));
+  std::size_t span = 0;  // the first span the next law may cross
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const TimeLaw::Piece& p = pieces[k];
+    const auto name = [k](const char* field) { return [k, field] { return indexed("time_law pieces", k) + field; }; };
+    const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].profile.distance();
+    require_lazily(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name(".start_s"), p.start_s,
+                   [&] { return "must be where the law before ends, s = " + number(s_before); });
+    // Speeds where laws meet are not compared: the optimal re-timing's laws meet with speeds
+    // apart by up to a few 0.1 % (one law per grid interval), and end at rest to its solver's
+    // precision (1.6e-8 m/s), not to rounding.
+    require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
+    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.profile.distance(), tol_s, span);
+    require_lazily(p.profile.peak_velocity() <= allowed * (1.0 + 1e-8), name(" peak velocity"), p.profile.peak_velocity(),
+                   [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
+  }
+  const TimeLaw::Piece& last = pieces.back();
+  const double law_end = last.start_s + last.profile.distance();
+  require(std::abs(law_end - length) <= tol_s, "time_law distance", law_end,
+          "must be the path length, the sum of the section lengths, " + number(length) + " m");
+  for (std::size_t k = 0; k < rest_s_.size(); ++k) {
+    const double s = rest_s_[k];
+    require_lazily(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
+                   [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
+  }
+  for (std::size_t k = 0; k < stops_.size(); ++k)
+    require_lazily(std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
+                   [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
+  require(sources_.empty() || sources_.size() == path_.section_count(), "section_sources size",
+          static_cast<unsigned long>(sources_.size()), "must be 0 or the section count " + std::to_string(path_.section_count()));
+  for (std::size_t k = 0; k < sources_.size(); ++k) {
+    const SectionSource& source = sources_[k];
+    require_lazily(source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
+                   [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
+                   [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
+  }
+}
 
 TrajectorySample Trajectory::sample(double t) const noexcept {
   Cursor search{law_.size(), path_.section_count()};  // no hint: binary search

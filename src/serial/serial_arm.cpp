@@ -74,22 +74,9 @@ JointLimits SerialArm::joint_limits() const { return model_->limits; }
 std::vector<std::string> SerialArm::joint_names() const { return model_->joint_names; }
 
 SerialArm SerialArm::with_joint_limits(const JointLimits& limits) const {
-  const auto n = static_cast<Eigen::Index>(dof());
-  auto sized = [n](const Eigen::VectorXd& v, const std::string& name, bool may_be_empty) {
-    require(v.size() == n || (may_be_empty && v.size() == 0), name + " size", static_cast<long>(v.size()),
-            "must be the arm's dof " + std::to_string(n) + (may_be_empty ? " (or 0: none)" : ""));
-  };
-  sized(limits.lower, "lower", false);
-  sized(limits.upper, "upper", false);
-  sized(limits.velocity, "velocity", false);
-  sized(limits.effort, "effort", true);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const std::string joint = "joint \"" + model_->joint_names[static_cast<std::size_t>(i)] + "\" ";
-    require(!std::isnan(limits.lower(i)) && !std::isnan(limits.upper(i)) && limits.lower(i) < limits.upper(i),
-            joint + "(lower, upper)", Eigen::Vector2d(limits.lower(i), limits.upper(i)), "must have lower < upper");
-    require(limits.velocity(i) > 0.0, joint + "velocity", limits.velocity(i), "must be > 0 (+inf: none)");
-    if (limits.effort.size()) require(limits.effort(i) > 0.0, joint + "effort", limits.effort(i), "must be > 0 (+inf: none)");
-  }
+  require_joint_limits(limits, static_cast<Eigen::Index>(dof()), [this](Eigen::Index i) {
+    return "joint \"" + model_->joint_names[static_cast<std::size_t>(i)] + "\"";
+  });
   auto model = std::make_shared<Model>(*model_);
   model->limits = limits;
   return SerialArm(std::move(model));

@@ -148,6 +148,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
     add_sample(report, std::move(sample), arm, limits, here.s);
     q_prev = report.samples.back().q;
   }
+  require_consistent(report);  // what a stored report is checked for, a made one holds too
   return report;
 }
 
@@ -171,6 +172,7 @@ JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const ser
     sample.dynamic_torque = torque - sample.static_torque;
     add_sample(report, std::move(sample), arm, limits, here.s);
   }
+  require_consistent(report);  // what a stored report is checked for, a made one holds too
   return report;
 }
 

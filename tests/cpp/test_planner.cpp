@@ -123,6 +123,34 @@ TEST(Planner, StopsAtCornersAndPassesTangentJunctions) {
   EXPECT_EQ(plan(arc, set, limits).piece_count(), 1u);
 }
 
+// Whoever makes a trajectory (plan, a re-timing, a pickle), the constructor checks it: a law
+// faster than the velocity-limit curve, a law that does not cover the path, sections that do
+// not join are refused, naming the part.
+TEST(Planner, ATrajectoryKeepsItsOwnLimitsAndJoinsUp) {
+  MetricSetd set;
+  set.add_sphere(V::Zero(), 0.1);
+  const Posed a, b = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0));
+  const Trajectory traj = plan(Path::lin(a, b), set, Limits{0.1, 0.5, 5.0});
+  const double length = traj.length();
+  const Trajectory same = traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 0.1, 0.5, 5.0)}, 1));
+  EXPECT_EQ(same.duration(), traj.duration());
+  EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 100.0, 500.0, 5000.0)}, 1)); })
+                .find(": must be at most the velocity limit over its span, 0.1 m/s"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(2.0 * length, 0.1, 0.5, 5.0)}, 1)); })
+                .find("time_law distance = "),
+            std::string::npos);
+  std::vector<Section> sections = traj.path().sections();
+  const Posed far = Posed(Eigen::Quaterniond::Identity(), V(8.6, 0, 0));
+  sections.push_back(LinSection{far, far * Posed(Eigen::Quaterniond::Identity(), V(0.1, 0, 0))});
+  std::vector<double> lengths = traj.section_lengths();
+  lengths.push_back(0.1);
+  EXPECT_NE(message_of([&] {
+              Trajectory(SampledPath(sections, lengths), traj.time_law(), traj.speed_limits(), traj.rest_positions());
+            }).find("must start where the path ends (gap 8.3"),
+            std::string::npos);
+}
+
 // The section holding path position s (by walking the lengths, independently of the
 // trajectory's own search) and τ within it.
 std::pair<std::size_t, double> section_and_tau(const std::vector<double>& lengths, double s) {

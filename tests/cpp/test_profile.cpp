@@ -210,6 +210,40 @@ TEST(Profile, FromPartsMakesTheSameLaw) {
   EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("times[2]"), std::string::npos);
 }
 
+// Parts that are no law are refused as the factories' laws would be (require_consistent): a
+// phase whose end is not its start carried over its duration, a law faster than its peak, a
+// law that does not end at its distance. Scaled consistently (v × f, a × f², j × f³, t / f) it is
+// a law again.
+TEST(Profile, FromPartsRefusesPartsThatAreNoLaw) {
+  const Profile law = Profile::scurve(0.3, 0.25, 1.0, 10.0);
+  Profile::Parts bad = law.parts();
+  bad.phases[2].end.v = 1e308;
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("phases[2].end (s, v, a) = ("), std::string::npos);
+  bad = law.parts();
+  bad.peak_velocity = 0.5 * law.peak_velocity();
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("must be within [0, peak_velocity = 0.125]"), std::string::npos);
+  bad = law.parts();
+  bad.distance *= 2.0;
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("end.s = 0.3: must be the distance 0.6"), std::string::npos);
+  Profile::Parts faster = law.parts();
+  const double f = 1000.0;
+  const auto scale = [f](ProfileState& x) {
+    x.v *= f;
+    x.a *= f * f;
+    x.j *= f * f * f;
+  };
+  for (int i = 0; i < faster.count; ++i) {
+    ProfilePhase& p = faster.phases[static_cast<std::size_t>(i)];
+    p.duration /= f;
+    p.jerk *= f * f * f;
+    scale(p.start);
+    scale(p.end);
+  }
+  for (double& t : faster.times) t /= f;
+  faster.peak_velocity *= f;
+  EXPECT_NEAR(Profile::from_parts(faster).duration(), law.duration() / f, 1e-12 * law.duration());
+}
+
 TEST(Profile, TrapezoidRestToRestSweep) {
   Random random(401);
   const int n = case_count(10000);

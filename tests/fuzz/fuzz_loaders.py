@@ -12,7 +12,9 @@ run in CI, in seconds, from the seeds and dictionaries of ``tests/fuzz/corpus/fu
 and ``tests/fuzz/dict/fuzz_<target>.dict`` (deep nesting, many attributes, huge numbers, bytes
 that are not UTF-8).
 
-Usage: ``python tests/fuzz/fuzz_loaders.py {hexapod_json,urdf} [libFuzzer flags] CORPUS...``
+``pickles``: the bytes as corruptions of valid pickled states (tests/fuzz/fuzz_pickles.py).
+
+Usage: ``python tests/fuzz/fuzz_loaders.py {hexapod_json,urdf,pickles} [libFuzzer flags] CORPUS...``
 """
 
 import sys
@@ -56,7 +58,16 @@ def urdf(data: bytes) -> None:
         raise AssertionError("a loaded arm gives non-finite kinematics or torques at q = 0")
 
 
-TARGETS = {"hexapod_json": hexapod_json, "urdf": urdf}
+def pickles(data: bytes) -> None:
+    """The bytes as corruptions of valid pickled states (tests/fuzz/fuzz_pickles.py, imported on
+    first use: it plans and re-times the objects whose states it corrupts)."""
+    if "fuzz_pickles" not in sys.modules:
+        with atheris.instrument_imports():  # its branches guide the fuzzer, as the loaders' do
+            import fuzz_pickles  # noqa: F401
+    sys.modules["fuzz_pickles"].pickles(data)
+
+
+TARGETS = {"hexapod_json": hexapod_json, "urdf": urdf, "pickles": pickles}
 
 
 def main() -> None:

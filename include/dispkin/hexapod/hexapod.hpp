@@ -65,6 +65,54 @@ struct TrajectoryCheck {
   bool ok() const noexcept { return excursions.empty(); }
 };
 
+//! What the check results satisfy (Hexapod::check and check_trajectory make them so; a stored
+//! one is checked): legs 0…5, every number finite, a leg's range lower < upper, an excess > 0
+//! that is how far the length lies outside that range (to rounding), an excursion's worst time
+//! inside its stretch, extremes in order (min_length ≤ max_length, speeds ≥ 0), violations one
+//! per leg and in order with the lengths they report. std::invalid_argument naming the field.
+inline void require_consistent(const LegViolation& v, const std::string& name = "") {
+  require(v.leg >= 0 && v.leg < 6, name + "leg", static_cast<long>(v.leg), "must be a leg index 0 to 5");
+  require_finite(Eigen::Vector4d(v.length, v.lower, v.upper, v.excess), name + "(length, lower, upper, excess)");
+  require(v.lower < v.upper, name + "(lower, upper)", Eigen::Vector2d(v.lower, v.upper), "must have lower < upper");
+  // The excess is lower − length or length − upper, computed once: equal to a few ε of the sizes.
+  const double outside = std::max(v.lower - v.length, v.length - v.upper);
+  const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(v.length), std::abs(v.lower), std::abs(v.upper)});
+  require(v.excess > 0.0 && std::abs(v.excess - outside) <= rounding, name + "excess", v.excess,
+          "must be > 0 and how far the length lies outside [lower, upper] (" + std::to_string(outside) + ")");
+}
+
+inline void require_consistent(const WorkspaceCheck& c) {
+  require_finite(c.lengths, "lengths");
+  for (std::size_t k = 0; k < c.violations.size(); ++k) {
+    const LegViolation& v = c.violations[k];
+    const std::string name = "violations[" + std::to_string(k) + "].";
+    require_consistent(v, name);
+    require(k == 0 || v.leg > c.violations[k - 1].leg, name + "leg", static_cast<long>(v.leg), "must follow the leg before it (one per leg, in order)");
+    require(v.length == c.lengths(v.leg), name + "length", v.length,
+            "must be the length of leg " + std::to_string(v.leg) + " in lengths, " + std::to_string(c.lengths(v.leg)));
+  }
+}
+
+inline void require_consistent(const LegExcursion& e, const std::string& name = "") {
+  require(e.kind == LegExcursion::Kind::length || e.kind == LegExcursion::Kind::speed, name + "kind",
+          static_cast<long>(e.kind), "must be 'length' or 'speed'");
+  require(e.leg >= 0 && e.leg < 6, name + "leg", static_cast<long>(e.leg), "must be a leg index 0 to 5");
+  require_finite(Eigen::Vector3d(e.start_time, e.end_time, e.worst_time), name + "(start_time, end_time, worst_time)");
+  require(e.start_time <= e.worst_time && e.worst_time <= e.end_time, name + "(start_time, end_time, worst_time)",
+          Eigen::Vector3d(e.start_time, e.end_time, e.worst_time), "must have start_time <= worst_time <= end_time");
+  require_finite(e.worst_value, name + "worst_value");
+  require(std::isfinite(e.excess) && e.excess > 0.0, name + "excess", e.excess, "must be finite and > 0");
+}
+
+inline void require_consistent(const TrajectoryCheck& c) {
+  require_finite(c.min_length, "min_length");
+  require_finite(c.max_length, "max_length");
+  require_finite(c.max_speed, "max_speed");
+  require((c.min_length.array() <= c.max_length.array()).all(), "min_length", c.min_length, "must not exceed max_length");
+  require((c.max_speed.array() >= 0.0).all(), "max_speed", c.max_speed, "must not be negative");
+  for (std::size_t k = 0; k < c.excursions.size(); ++k) require_consistent(c.excursions[k], "excursions[" + std::to_string(k) + "].");
+}
+
 //! Forward kinematics tuning: Newton's method on SE(3).
 struct ForwardOptions {
   double tolerance = 1e-12;    //!< converged when every |ℓ_i(T) − ℓ_i| ≤ this (m)

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <variant>
@@ -183,6 +184,23 @@ inline Posed section_start(const Section& section) noexcept {
 inline Posed section_end(const Section& section) noexcept {
   return std::visit([](const auto& s) { return s.pose(1.0); }, section);
 }
+
+//! Throws std::invalid_argument naming `name` (e.g. "sections[3]") unless every number of the
+//! section lies in dispkin's numeric range, as the moves that make sections ensure: poses as
+//! Pose::from_stored takes them, points within ±1e12 m, axes and quaternions unit (to
+//! Pose::stored_quaternion_tolerance()), angles finite and at most 2π a section (a CIRC is cut
+//! into arcs of at most 2π, a LIN turns at most π), the curves' polynomial coefficients within
+//! ±1e14 (differences of points within ±1e12, scaled by the few units of a Hermite or Bézier
+//! form), and a curve's parameter part 0 ≤ v0 < v1 ≤ 1.
+//! `name()` is called only to name what fails (a trajectory checks every section it is made of).
+void require_valid(const Section& section, const std::function<std::string()>& name);
+
+//! Throws std::invalid_argument naming `name` unless `start` is where `end` is: the chain of a
+//! path (Path::then, Path::from_sections) and of a trajectory's sections. To 1e-9 m and
+//! 1e-9 rad, and for translations far from the origin 64ε of their size besides: a section cut
+//! at τ (section_part) starts at the pose its neighbour ends at as computed by another
+//! formula, which rounds to a few ε of the coordinates.
+void require_join(const Posed& end, const Posed& start, const std::function<std::string()>& name);
 
 //! L of any section under the set (exact for LIN, a tight upper bound for arcs).
 inline double section_length(const Section& section, const MetricSetd& set,

@@ -23,9 +23,11 @@
 //! joint limits through the same dense check and refinement.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -65,6 +67,56 @@ struct JointLimitReport {
     return velocity_factor <= 1.0 && acceleration_factor <= 1.0 && position_excess == 0.0;
   }
 };
+
+//! What every report satisfies (check_joint_limits makes it so; a stored one is checked):
+//! every sample has q, q̇, q̈ of one size n ≥ 1 and torques of one size (n, or 0 for a machine
+//! without a dynamics model), every number finite; the factors and the
+//! position excess finite and ≥ 0; each joint index −1 (none) or below n and each sample index
+//! naming a sample. Throws std::invalid_argument naming the field otherwise.
+inline void require_consistent(const JointLimitReport& r) {
+  const auto sample_name = [](std::size_t k, const char* field) {
+    return "samples[" + std::to_string(k) + "]." + field;
+  };
+  const Eigen::Index n = r.samples.empty() ? 0 : r.samples.front().q.size();
+  const Eigen::Index torques = r.samples.empty() ? 0 : r.samples.front().static_torque.size();
+  require(r.samples.empty() || n >= 1, "samples[0].q size", static_cast<long>(n), "must be at least 1 (one per joint)");
+  require(torques == 0 || torques == n, "samples[0].static_torque size", static_cast<long>(torques),
+          "must be the joint count " + std::to_string(n) + " or 0 (no dynamics model)");
+  for (std::size_t k = 0; k < r.samples.size(); ++k) {
+    const JointSample& x = r.samples[k];
+    require_finite(x.time, sample_name(k, "time"));  // in the order checked: a PTP check takes times as given
+    require_finite(x.s, sample_name(k, "s"));
+    const auto sized = [&](const Eigen::VectorXd& v, const char* field, Eigen::Index size) {
+      require(v.size() == size, sample_name(k, field) + " size", static_cast<long>(v.size()),
+              "must be " + std::to_string(size) + ", as in samples[0]");
+      require_finite(v, sample_name(k, field));
+    };
+    sized(x.q, "q", n);
+    sized(x.qd, "qd", n);
+    sized(x.qdd, "qdd", n);
+    sized(x.static_torque, "static_torque", torques);
+    sized(x.dynamic_torque, "dynamic_torque", torques);
+  }
+  const auto factor = [](double f, const char* name) {
+    require(std::isfinite(f) && f >= 0.0, name, f, "must be finite and not negative");
+  };
+  factor(r.velocity_factor, "velocity_factor");
+  factor(r.acceleration_factor, "acceleration_factor");
+  factor(r.position_excess, "position_excess");
+  const auto joint = [n](int j, const char* name) {
+    require(j >= -1 && j < n, name, static_cast<long>(j), "must be -1 (none) or a joint index below " + std::to_string(n));
+  };
+  joint(r.velocity_joint, "velocity_joint");
+  joint(r.torque_joint, "torque_joint");
+  joint(r.position_joint, "position_joint");
+  const auto sample = [&r](std::size_t i, const char* name) {
+    require(i == 0 || i < r.samples.size(), name, static_cast<unsigned long>(i),
+            "must index a sample (there are " + std::to_string(r.samples.size()) + ")");
+  };
+  sample(r.velocity_sample, "velocity_sample");
+  sample(r.torque_sample, "torque_sample");
+  sample(r.position_sample, "position_sample");
+}
 
 //! The result of the KUKA re-timing patent's scaling loop (retime_by_scaling).
 struct RetimeResult {
@@ -117,6 +169,29 @@ struct OptimalRetimeResult {
   double jerk_window = 0.0;
 };
 
+//! What every result satisfies, beyond its trajectory's and report's own checks: the grid's
+//! positions and speeds pair up, finite, the positions in order on the path and the speeds not
+//! negative; ratios, margin and jerk window finite and ≥ 0 (the margin below 1: it is a
+//! fraction the limits were tightened by); refinements ≥ 0. std::invalid_argument otherwise.
+inline void require_consistent(const OptimalRetimeResult& r) {
+  require_consistent(r.report);
+  require(r.grid_speed.size() == r.grid_s.size(), "grid_speed size", static_cast<unsigned long>(r.grid_speed.size()),
+          "must be the size of grid_s, " + std::to_string(r.grid_s.size()));
+  const double length = r.trajectory.length();
+  for (std::size_t k = 0; k < r.grid_s.size(); ++k) {
+    const std::string at = "[" + std::to_string(k) + "]";
+    require(std::isfinite(r.grid_s[k]) && r.grid_s[k] >= 0.0 && r.grid_s[k] <= length * (1.0 + 1e-9) &&
+                (k == 0 || r.grid_s[k] >= r.grid_s[k - 1]),
+            "grid_s" + at, r.grid_s[k], "must lie on the path (s in [0, length]), in order");
+    require(std::isfinite(r.grid_speed[k]) && r.grid_speed[k] >= 0.0, "grid_speed" + at, r.grid_speed[k],
+            "must be finite and not negative");
+  }
+  for (const auto& [value, name] : {std::pair{r.velocity_ratio, "velocity_ratio"}, std::pair{r.acceleration_ratio, "acceleration_ratio"},
+                                    std::pair{r.torque_ratio, "torque_ratio"}, std::pair{r.jerk_window, "jerk_window"}})
+    require(std::isfinite(value) && value >= 0.0, name, value, "must be finite and not negative");
+  require(std::isfinite(r.margin) && r.margin >= 0.0 && r.margin < 1.0, "margin", r.margin, "must be in [0, 1)");
+  require(r.refinements >= 0, "refinements", static_cast<long>(r.refinements), "must not be negative");
+}
 
 //! The joint limits re-timing keeps (+∞ where none).
 struct JointBounds {

@@ -60,7 +60,23 @@ class Trajectory {
         speed_limits_(std::move(speed_limits)),
         rest_s_(std::move(rest_positions)),
         stops_(std::move(stops)),
-        sources_(std::move(sources)) {}
+        sources_(std::move(sources)) {
+    require_consistent();
+  }
+
+  //! What every trajectory satisfies, whoever made it (plan, a re-timing, a pickle); the
+  //! constructor checks it and throws std::invalid_argument naming the part otherwise:
+  //! - the sections join (require_join) and each has one length L_k, finite and > 0, whose
+  //!   inverse is finite (sampling divides by it);
+  //! - the time law runs its pieces one after another (each starts where the one before ends, to
+  //!   1e-9 of the path length), in at least one and at most one run per piece, from s = 0 to
+  //!   the path's length (to 1e-9 of it);
+  //! - no piece is faster than the velocity-limit curve over its span allows (its peak at most the
+  //!   largest limit of the spans it crosses, to 1e-8), every limit in dispkin's numeric range
+  //!   and the spans in order along the path;
+  //! - the rests lie on the path in order; the section sources each name a part τ ⊂ [0, 1].
+  //! The metric set is not part of a trajectory: the lengths themselves are taken as given.
+  void require_consistent() const;
 
   //! The same path, velocity-limit curve and rests under another time law (re-timing).
   Trajectory with_time_law(TimeLaw law) const {

@@ -1,0 +1,443 @@
+"""A pickle is input like any other: __setstate__ refuses a state that breaks what a constructed
+object of the type satisfies (the same C++ checks run on both paths), names the type, the field and
+the value in the house format, raises TypeError for a wrong type and ValueError for a bad value,
+never crashes, and an object it accepts samples finite numbers within its own limits. Called on an
+object that already exists, __setstate__ raises TypeError instead of silently doing nothing."""
+
+import copy
+import functools
+import math
+import pickle
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+import dispkin
+
+from test_python_objects import Q0, arm, blended_path, hexapod, pose, tool
+
+
+def fresh(cls, state):
+    """What unpickling does: a new, empty instance made from `state`."""
+    obj = cls.__new__(cls)
+    obj.__setstate__(state)
+    return obj
+
+
+def plain(x):
+    """A state as nested tuples of Python values (arrays as tuples, dispkin objects as their state)."""
+    if isinstance(x, np.ndarray):
+        return plain(x.tolist())
+    if isinstance(x, (list, tuple)):
+        return tuple(plain(v) for v in x)
+    if hasattr(x, "__getstate__") and type(x).__module__.startswith("dispkin"):
+        return (type(x).__name__, plain(x.__getstate__()))
+    return x
+
+
+def replaced(state, path, value):
+    """`state` with the item at `path` (indices into nested tuples) replaced by `value`."""
+    if not path:
+        return value
+    items = list(state)
+    items[path[0]] = replaced(items[path[0]], path[1:], value)
+    return tuple(items)
+
+
+def item(state, path):
+    for k in path:
+        state = state[k]
+    return state
+
+
+def number_paths(state, path=()):
+    """The paths of every float (not int, not bool) in a plain state."""
+    if isinstance(state, tuple):
+        for k, v in enumerate(state):
+            yield from number_paths(v, path + (k,))
+    elif isinstance(state, float):
+        yield path
+
+
+# --- objects of every pickled type --------------------------------------------------------------
+
+@functools.lru_cache(maxsize=None)
+def trajectory():
+    return dispkin.plan(blended_path(), tool(), dispkin.Limits(0.25, 1.0, 10.0))
+
+
+@functools.lru_cache(maxsize=None)
+def retimed():
+    a = arm()
+    lin = dispkin.Path.lin(a.forward(Q0), a.forward(Q0) * pose(0, 0, 0, 0, 0, 90))
+    scaled = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0, 10.0), a, Q0)
+    optimal = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0), a, Q0, profile="trapezoid", method="optimal")
+    return scaled, optimal
+
+
+@functools.lru_cache(maxsize=None)
+def hexapod_checks():
+    h = hexapod()
+    far = h.home * dispkin.Pose(translation=(0, 0, 0.2))
+    ms = dispkin.MetricSet()
+    h.add_leg_speed_group(ms, 0)
+    traj = dispkin.plan(dispkin.Path.lin(h.home, far), ms, dispkin.Limits(0.05, 0.5), "trapezoid")
+    return h.check(far), h.check_trajectory(traj, 1e-3)
+
+
+def objects():
+    """(name, object) for every type with a py::pickle."""
+    scaled, optimal = retimed()
+    workspace, checked = hexapod_checks()
+    a = arm()
+    return [
+        ("Pose", pose(0.1, 0.2, 0.3, 10, 20, 30)),
+        ("WorkToolFrames", dispkin.WorkToolFrames(pose(0, 0, 0.2, 0, 0, 10), pose(0, 0, 0.05, 5, 0, 0))),
+        ("MetricSet", tool()),
+        ("Limits", dispkin.Limits(0.25, 1.0, 10.0, angular_velocity=2.0)),
+        ("JointPath", dispkin.Path.ptp(Q0, Q0 + 0.3)),
+        ("Path", blended_path()),
+        ("Profile", dispkin.Profile.scurve(0.3, 0.25, 1.0, 10.0, 0.05, 0.1)),
+        ("Trajectory", trajectory()),
+        ("LegViolation", workspace.violations[0]),
+        ("WorkspaceCheck", workspace),
+        ("LegExcursion", checked.excursions[0]),
+        ("TrajectoryCheck", checked),
+        ("Hexapod", hexapod()),
+        ("JointLimits", a.joint_limits),
+        ("InverseResult", a.inverse_solutions(a.forward(Q0))),
+        ("SerialArm", a),
+        ("JointLimitReport", optimal.report),
+        ("RetimeResult", scaled),
+        ("OptimalRetimeResult", optimal),
+    ]
+
+
+NAMES = [name for name, _ in objects()]
+
+
+def named(name):
+    return dict(objects())[name]
+
+
+def assert_refused(cls, state, error, *fragments):
+    """`cls.__setstate__(state)` on a fresh instance raises exactly `error`, whose message names the
+    type and contains each fragment."""
+    with pytest.raises(Exception) as caught:
+        fresh(cls, state)
+    assert type(caught.value) is error, f"{type(caught.value).__name__}: {caught.value}"
+    message = str(caught.value)
+    assert message.startswith(cls.__name__ + ".__setstate__: "), message
+    for fragment in fragments:
+        assert fragment in message, message
+    return message
+
+
+# --- every type ---------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_type_round_trips_to_the_same_state(name):
+    obj = named(name)
+    for copied in [pickle.loads(pickle.dumps(obj, protocol)) for protocol in range(2, pickle.HIGHEST_PROTOCOL + 1)] + \
+                  [copy.copy(obj), copy.deepcopy(obj)]:
+        assert type(copied) is type(obj)
+        assert plain(copied.__getstate__()) == plain(obj.__getstate__())
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_setstate_on_a_live_object_raises_and_changes_nothing(name):
+    obj = named(name)
+    before = plain(obj.__getstate__())
+    with pytest.raises(TypeError, match=rf"^{name}\.__setstate__: the object already holds a {name}"):
+        obj.__setstate__(obj.__getstate__())
+    assert plain(obj.__getstate__()) == before
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_a_state_of_the_wrong_shape_is_refused_with_the_type_named(name):
+    obj = named(name)
+    cls = type(obj)
+    state = obj.__getstate__()
+    if isinstance(state, list):  # MetricSet: a list of groups
+        assert_refused(cls, 42, TypeError, "expected a list of groups, got 42")
+        assert_refused(cls, [(0, None)], ValueError, "state[0] (group) = (0, None): must be a tuple of 6 items, not 2")
+        return
+    assert_refused(cls, state + (0.0,), ValueError, f"state: expected a tuple of {len(state)} items, got (")
+    assert_refused(cls, state[:-1], ValueError, f"state: expected a tuple of {len(state)} items")
+    assert_refused(cls, list(state), TypeError, f"state: expected a tuple of {len(state)} items, got [")
+
+
+# --- the invariants, type by type ----------------------------------------------------------------
+
+def test_pose_numbers_within_the_constructors_range():
+    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (1e300, 0.0, 0.0)), ValueError,
+                   "translation = (1e+300, 0, 0): must have coordinates within ±1e12 m")
+    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, math.nan, 0.0)), ValueError,
+                   "translation = (0, nan, 0): must be finite")
+    assert_refused(dispkin.Pose, ((1.0, 1e-5, 0.0, 0.0), (0.0, 0.0, 0.0)), ValueError,
+                   "quaternion (w, x, y, z) = (1, 1e-05, 0, 0): must be a unit quaternion")
+    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0)), ValueError,
+                   "state[1] (translation) = (0.0, 0.0): must be a tuple of 3 floats, not of shape (2,)")
+    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0, "x")), TypeError,
+                   "state[1] (translation) = (0.0, 0.0, 'x'): must be a tuple of 3 floats")
+    # Within rounding of a unit quaternion the state is taken bit for bit.
+    q = (math.cos(0.3), math.sin(0.3), 0.0, 0.0)
+    assert fresh(dispkin.Pose, (q, (1e12, -1e12, 0.0))).__getstate__() == (q, (1e12, -1e12, 0.0))
+
+
+def test_limits_and_frames_name_the_field():
+    assert_refused(dispkin.Limits, (1e300, 1.0, None, None, None), ValueError,
+                   "velocity = 1e+300: must be in [1e-12, 1e12]")
+    assert_refused(dispkin.Limits, (1.0, 1.0, "fast", None, None), TypeError,
+                   "state[2] (jerk) = 'fast': must be a float or None")
+    assert_refused(dispkin.WorkToolFrames, (1, dispkin.Pose()), TypeError, "state[0] (work) = 1: must be a Pose")
+
+
+def scaled_profile(state, factor, peak=True):
+    """A Profile state run `factor` times faster (velocities × f, accelerations × f², jerks × f³);
+    the peak velocity too only if `peak`."""
+    kind, phases, times, distance, peak_velocity, start, end = state
+    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)
+    phases = tuple((d / factor, j * factor ** 3, scale(a), scale(b)) for d, j, a, b in phases)
+    return (kind, phases, tuple(t / factor for t in times), distance, peak_velocity * (factor if peak else 1.0),
+            scale(start), scale(end))
+
+
+def test_a_profile_must_be_a_law():
+    state = named("Profile").__getstate__()
+    assert_refused(dispkin.Profile, scaled_profile(state, 1000.0, peak=False), ValueError,
+                   ".v = ", "must be within [0, peak_velocity = 0.25]")
+    assert_refused(dispkin.Profile, replaced(state, (3,), 2 * state[3]), ValueError, "end.s = 0.3: must be the distance 0.6")
+    assert_refused(dispkin.Profile, replaced(state, (1, 2, 3, 1), 1e308), ValueError, "phases[2].end (s, v, a) = (0.045, 1e+308, 0): must be (s = ")
+    assert_refused(dispkin.Profile, replaced(state, (4,), math.inf), ValueError, "state[4] (peak_velocity) = inf: must be finite")
+    assert_refused(dispkin.Profile, replaced(state, (0,), "cubic"), ValueError, "state[0] (kind) = 'cubic': must be 'scurve' or 'trapezoid'")
+    assert_refused(dispkin.Profile, replaced(state, (2,), state[2][:-1]), ValueError, "state[2] (times)", "one time more than there are phases")
+    assert_refused(dispkin.Profile, replaced(state, (1, 0, 0), "1"), TypeError, "state[1] (phases[0].duration) = '1': must be a float")
+    # A law run consistently faster is still a law: a Profile alone has no limits but its own.
+    faster = fresh(dispkin.Profile, scaled_profile(state, 2.0))
+    assert faster.duration == pytest.approx(named("Profile").duration / 2, rel=1e-12)
+
+
+def test_a_trajectory_must_keep_its_own_limits_and_join_up():
+    traj = trajectory()
+    s = traj.__getstate__()
+    runs, pieces = s[2]
+    faster = (runs, tuple((scaled_profile(p, 1000.0), s0) for p, s0 in pieces))
+    assert_refused(dispkin.Trajectory, s[:2] + (faster,) + s[3:], ValueError,
+                   "time_law pieces[0] peak velocity = 250: must be at most the velocity limit over its span, 0.25 m/s")
+    # A section left out: the next one starts where the one before the gap did not end.
+    assert_refused(dispkin.Trajectory, ((s[0][0],) + s[0][2:], s[1][1:]) + s[2:], ValueError,
+                   "sections[1].start = (", "must start where the path ends (gap ")
+    # An 8.6 m jump: the last section moved away along x.
+    last = list(s[0][-1])
+    assert last[0] == "lin"
+    moved = lambda p: p[:4] + (p[4] + 8.6,) + p[5:]
+    jumped = s[0][:-1] + (tuple([last[0], moved(last[1]), moved(last[2])] + last[3:]),)
+    assert_refused(dispkin.Trajectory, (jumped,) + s[1:], ValueError, f"sections[{len(jumped) - 1}].start = (", "gap 8.6")
+    assert_refused(dispkin.Trajectory, (s[0], tuple(2 * L for L in s[1])) + s[2:], ValueError,
+                   "time_law distance = ", "must be the path length, the sum of the section lengths")
+    assert_refused(dispkin.Trajectory, (s[0], s[1][:-1]) + s[2:], ValueError,
+                   "state[1] (section_lengths) = (", "must hold one length per section")
+    assert_refused(dispkin.Trajectory, (s[0], (math.nan,) + s[1][1:]) + s[2:], ValueError,
+                   "state[1] (section_lengths[0]) = nan: must be finite")
+    huge = replaced(s, (2, 1, 0, 0, 3), 1e308)
+    assert_refused(dispkin.Trajectory, huge, ValueError, "state[2] (time_law.pieces[0].profile) end.s = ", "must be the distance 1e+308")
+    assert_refused(dispkin.Trajectory, replaced(s, (2, 1, 0, 0, 3), "x"), TypeError,
+                   "state[2] (time_law.pieces[0].profile.distance) = 'x': must be a float")
+    assert_refused(dispkin.Trajectory, replaced(s, (3, 0, 2), 2.5e14), ValueError, "speed_limits[0].limit = 2.5e+14: must be in (0, 1e12]")
+    assert_refused(dispkin.Trajectory, replaced(s, (2, 0), 0), ValueError, "time_law runs = 0: must be at least 1")
+    assert_refused(dispkin.Trajectory, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300")
+
+
+def test_a_path_must_join_up_and_stay_in_range():
+    s = blended_path().__getstate__()
+    assert_refused(dispkin.Path, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300")
+    assert_refused(dispkin.Path, replaced(s, (0, 0, 0), "line"), ValueError, "state[0] (sections[0].kind) = 'line'")
+    assert_refused(dispkin.Path, replaced(s, (4,), (0, 10 ** 6)), ValueError, "state[4] (move_starts[1]) = 1000000: must be in [0, ")
+    assert_refused(dispkin.JointPath, (Q0, Q0[:3]), ValueError, "q_end size = 3: must equal q_start size 6")
+
+
+def report_state_with_one_sample_short(report_state):
+    """The report's state with sample 3's q two joints long: the arrays then disagree in size."""
+    samples = list(report_state[0])
+    sample = list(samples[3])
+    sample[2] = sample[2][:2]
+    samples[3] = tuple(sample)
+    return (tuple(samples),) + report_state[1:]
+
+
+def test_report_arrays_must_agree_in_size():
+    report = named("JointLimitReport")
+    broken = report_state_with_one_sample_short(report.__getstate__())
+    assert_refused(dispkin.JointLimitReport, broken, ValueError, "samples[3].q size = 2: must be 6, as in samples[0]")
+    optimal = named("OptimalRetimeResult").__getstate__()
+    assert_refused(dispkin.OptimalRetimeResult, (optimal[0], broken) + optimal[2:], ValueError,
+                   "state[1] (report) samples[3].q size = 2: must be 6")
+    scaled = named("RetimeResult").__getstate__()
+    assert_refused(dispkin.RetimeResult, scaled[:3] + (broken,), ValueError, "state[3] (report) samples[3].q size = 2")
+    assert_refused(dispkin.JointLimitReport, replaced(report.__getstate__(), (3,), 9), ValueError,
+                   "velocity_joint = 9: must be -1 (none) or a joint index below 6")
+    assert_refused(dispkin.JointLimitReport, replaced(report.__getstate__(), (4,), 10 ** 9), ValueError,
+                   "state[4] (velocity_sample) = 1000000000: must be in [0, ")
+    assert_refused(dispkin.OptimalRetimeResult, optimal[:8] + (optimal[8][:-1],) + optimal[9:], ValueError,
+                   "grid_speed size = ")
+
+
+def test_broken_report_sizes_do_not_crash_the_interpreter():
+    """The per-sample arrays of a report whose sizes disagree were read past their heap buffers
+    (garbage, or a segmentation fault): run in a child, so that a regression fails this test
+    instead of killing pytest."""
+    code = textwrap.dedent("""
+        import pickle, sys
+        sys.path.insert(0, sys.argv[1])
+        import dispkin
+        from test_pickle_invariants import named, report_state_with_one_sample_short
+        report = named("JointLimitReport")
+        state = report_state_with_one_sample_short(report.__getstate__())
+        optimal = named("OptimalRetimeResult").__getstate__()
+        for cls, s in ((dispkin.JointLimitReport, state), (dispkin.OptimalRetimeResult, (optimal[0], state) + optimal[2:])):
+            obj = cls.__new__(cls)
+            try:
+                obj.__setstate__(s)
+            except ValueError:
+                continue
+            print("accepted", cls.__name__, (obj.report if hasattr(obj, "report") else obj).samples["q"].shape)
+        print("done")
+    """)
+    here = str(__import__("pathlib").Path(__file__).parent)
+    done = subprocess.run([sys.executable, "-c", code, here], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, f"child exited with {done.returncode} (negative: killed by a signal): {done.stderr[-2000:]}"
+    assert done.stdout == "done\n", done.stdout
+
+
+def test_machine_results_must_be_consistent():
+    v = named("LegViolation").__getstate__()
+    assert_refused(dispkin.LegViolation, replaced(v, (0,), 7), ValueError, "leg = 7: must be a leg index 0 to 5")
+    assert_refused(dispkin.LegViolation, replaced(v, (4,), 2 * v[4]), ValueError, "excess = ", "how far the length lies outside")
+    assert_refused(dispkin.LegViolation, replaced(v, (0,), 1.5), TypeError, "state[0] (leg) = 1.5: must be an int")
+    w = named("WorkspaceCheck").__getstate__()
+    lengths = tuple(w[0].tolist())
+    assert_refused(dispkin.WorkspaceCheck, ((lengths[0] + 1.0,) + lengths[1:], w[1]), ValueError,
+                   f"violations[0].length = ", "must be the length of leg")
+    e = named("LegExcursion").__getstate__()
+    assert_refused(dispkin.LegExcursion, replaced(e, (0,), "width"), ValueError, "state[0] (kind) = 'width': must be 'length' or 'speed'")
+    assert_refused(dispkin.LegExcursion, replaced(e, (4,), e[3] + 1.0), ValueError, "must have start_time <= worst_time <= end_time")
+    c = named("TrajectoryCheck").__getstate__()
+    assert_refused(dispkin.TrajectoryCheck, (c[1], c[0] - 1.0) + c[2:], ValueError, "min_length = (", "must not exceed max_length")
+    assert_refused(dispkin.TrajectoryCheck, c[:3] + ([e[:3] + (math.nan,) + e[4:]],), ValueError,
+                   "excursions[0].(start_time, end_time, worst_time) = (")
+    assert_refused(dispkin.Hexapod, (42,), TypeError, "state[0] (json) = 42: must be a str")
+
+
+def test_arm_states_name_the_field():
+    a = named("SerialArm").__getstate__()
+    assert_refused(dispkin.SerialArm, replaced(a, (0,), 5), TypeError, "state[0] (urdf) = 5: must be a str")
+    assert_refused(dispkin.SerialArm, replaced(a, (0,), "<robot"), ValueError)
+    limits = a[3]
+    swapped = (limits[1], limits[0]) + limits[2:]
+    assert_refused(dispkin.SerialArm, replaced(a, (3,), swapped), ValueError, "(lower, upper) = (", "must have lower < upper")
+    j = named("JointLimits").__getstate__()
+    assert_refused(dispkin.JointLimits, (j[0], j[1][:2]) + j[2:], ValueError, "upper size = 2: must be the dof 6")
+    assert_refused(dispkin.JointLimits, j[:2] + (j[2] * 0.0,) + j[3:], ValueError, "joint 0 velocity = 0: must be > 0")
+    r = named("InverseResult").__getstate__()
+    assert_refused(dispkin.InverseResult, (r[0], r[1][:-1]) + r[2:], ValueError, "within_limits size = ")
+    assert_refused(dispkin.InverseResult, r[:3] + ("magic",), ValueError, "state[3] (family) = 'magic'")
+    m = named("MetricSet").__getstate__()
+    group = m[0]
+    assert_refused(dispkin.MetricSet, [(group[0], group[1], [[0.0, math.nan, 0.0]]) + group[3:]], ValueError, "nan")
+    assert_refused(dispkin.MetricSet, [("0",) + group[1:]], TypeError, "state[0] (group.id) = '0': must be an int")
+
+
+# --- properties ---------------------------------------------------------------------------------
+
+FINITE = st.floats(allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=60, deadline=None)
+@given(distance=st.floats(1e-3, 10.0), v=st.floats(1e-2, 5.0), a=st.floats(1e-2, 50.0), j=st.floats(0.1, 500.0),
+       ends=st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)), scurve=st.booleans())
+def test_random_profiles_round_trip_exactly(distance, v, a, j, ends, scurve):
+    v_start, v_end = ends[0] * v, ends[1] * v
+    try:
+        law = dispkin.Profile.scurve(distance, v, a, j, v_start, v_end) if scurve else \
+            dispkin.Profile.trapezoid(distance, v, a, v_start, v_end)
+    except ValueError:
+        return  # too short for the boundary velocities
+    copied = pickle.loads(pickle.dumps(law))
+    assert copied.__getstate__() == law.__getstate__()
+    t = np.linspace(0.0, law.duration, 101)
+    np.testing.assert_array_equal(copied.sample(t), law.sample(t))
+
+
+@settings(max_examples=60, deadline=None)
+@given(xyzuvw=st.tuples(*[st.floats(-1e3, 1e3)] * 3, *[st.floats(-math.pi, math.pi)] * 3),
+       limits=st.tuples(st.floats(1e-3, 1e3), st.floats(1e-3, 1e3), st.none() | st.floats(1e-3, 1e3)))
+def test_random_poses_and_limits_round_trip_exactly(xyzuvw, limits):
+    p = dispkin.Pose.from_xyzuvw(list(xyzuvw))
+    assert pickle.loads(pickle.dumps(p)).__getstate__() == p.__getstate__()
+    lim = dispkin.Limits(*limits)
+    assert pickle.loads(pickle.dumps(lim)) == lim
+
+
+CORRUPTIONS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 0.0, -1.0, 5e-324]
+
+
+def corrupted(state, data):
+    """`state` (plain) with one of its floats replaced by a hostile or slightly moved value."""
+    paths = list(number_paths(state))
+    path = data.draw(st.sampled_from(paths), label="path")
+    old = item(state, path)
+    value = data.draw(st.sampled_from(CORRUPTIONS + [old * 1000.0, old * (1 + 1e-6), old + 8.6, -old]), label="value")
+    return replaced(state, path, value)
+
+
+def accepted_or_refused(cls, state):
+    try:
+        return fresh(cls, state)
+    except (ValueError, TypeError):
+        return None
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_a_corrupted_trajectory_is_refused_or_finite_within_its_limits(data):
+    traj = trajectory()
+    copy_ = accepted_or_refused(dispkin.Trajectory, corrupted(plain(traj.__getstate__()), data))
+    if copy_ is None:
+        return
+    assert math.isfinite(copy_.duration) and copy_.duration >= 0.0
+    t = np.linspace(0.0, copy_.duration, 301)
+    for method in ("sample", "body_twist", "path_position", "path_velocity", "path_acceleration", "body_acceleration"):
+        assert np.all(np.isfinite(getattr(copy_, method)(t))), method
+    fastest = copy_.speed_limits()[:, 2].max()
+    assert np.all(copy_.path_velocity(t) <= fastest * (1 + 1e-8))
+    assert np.all(copy_.path_velocity(t) >= -1e-9 * fastest)
+
+
+@settings(max_examples=200, deadline=None)
+@given(data=st.data())
+def test_a_corrupted_profile_is_refused_or_a_law_within_its_peak(data):
+    law = named("Profile")
+    copy_ = accepted_or_refused(dispkin.Profile, corrupted(plain(law.__getstate__()), data))
+    if copy_ is None:
+        return
+    x = copy_.sample(np.linspace(-0.1, copy_.duration + 0.1, 501))
+    assert np.all(np.isfinite(x)) and math.isfinite(copy_.duration)
+    assert np.all(x[:, 1] <= copy_.peak_velocity * (1 + 1e-7) + 1e-12)
+    assert np.all(x[:, 1] >= -1e-7 * copy_.peak_velocity - 1e-12)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_a_corrupted_report_is_refused_or_reads_finite_arrays(data):
+    report = named("JointLimitReport")
+    copy_ = accepted_or_refused(dispkin.JointLimitReport, corrupted(plain(report.__getstate__()), data))
+    if copy_ is None:
+        return
+    for key, value in copy_.samples.items():
+        assert np.all(np.isfinite(value)), key
+    assert math.isfinite(copy_.velocity_time) and math.isfinite(copy_.torque_time)
