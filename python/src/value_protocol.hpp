@@ -33,7 +33,17 @@ class StateField {
   std::string argument() const { return type_ + ".__setstate__: state[" + std::to_string(index_) + "] (" + name_ + ")"; }
   //! "<argument> = <repr of value>: <reason>".
   std::string message(const py::handle& value, const std::string& reason) const {
-    return argument() + " = " + echoed(std::string(py::repr(value))) + ": " + reason;
+    return argument() + " = " + shown(value) + ": " + reason;
+  }
+
+  //! The repr of a value, or its type's name where repr fails (an instance made by __new__
+  //! alone has no value to show).
+  static std::string shown(const py::handle& value) {
+    try {
+      return echoed(std::string(py::repr(value)));
+    } catch (const py::error_already_set&) {
+      return "<" + std::string(py::str(py::type::handle_of(value).attr("__name__"))) + " without a value>";
+    }
   }
 
  private:
@@ -43,6 +53,15 @@ class StateField {
 };
 
 namespace detail {
+
+//! Whether `self` already holds its C++ value: made by a constructor or an earlier unpickling, or
+//! a reference to a C++ value (an item of a result's list). pybind11's own test for a second
+//! __init__: the instance is registered once it has a value.
+template <typename T>
+bool holds_value(const py::handle& self) {
+  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
+  return instance->get_value_and_holder(py::detail::get_type_info(typeid(T))).instance_registered();
+}
 
 //! What a state item of type T must be, as a Python user reads it.
 template <typename T>
@@ -78,9 +97,19 @@ T state_cast(const py::handle& item, const StateField& where) {
     if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
       throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>()));
   }
+  if constexpr (!std::is_arithmetic_v<T> && !std::is_same_v<T, std::string> && !std::is_same_v<T, std::optional<double>> &&
+                !std::is_base_of_v<Eigen::EigenBase<T>, T> && !std::is_same_v<T, std::vector<bool>>) {
+    // A bound class: an instance made by __new__ alone has no value to copy.
+    if (py::isinstance<T>(item) && !detail::holds_value<T>(item))
+      throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>() + " that holds a value"));
+  }
   try {
     return item.cast<T>();
   } catch (const py::cast_error&) {
+    throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>()));
+  } catch (const py::reference_cast_error&) {
+    // None, or an instance without a value, for a bound class. pybind11's dispatcher would take
+    // this exception for "try the next overload" and say only that the arguments do not fit.
     throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>()));
   }
 }
@@ -161,14 +190,6 @@ inline py::tuple state_tuple(const py::handle& state, std::size_t size, const st
 
 namespace detail {
 
-//! Whether `self` already holds its C++ value: made by a constructor or an earlier unpickling, or
-//! a reference to a C++ value (an item of a result's list). pybind11's own test for a second
-//! __init__: the instance is registered once it has a value.
-template <typename T>
-bool holds_value(const py::handle& self) {
-  auto* instance = reinterpret_cast<py::detail::instance*>(self.ptr());
-  return instance->get_value_and_holder(py::detail::get_type_info(typeid(T))).instance_registered();
-}
 
 //! Runs `make` and names the type in what the library refuses: the C++ checks throw
 //! std::invalid_argument "<field> = <value>: <reason>", which becomes the ValueError

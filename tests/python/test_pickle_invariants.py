@@ -195,6 +195,10 @@ def test_limits_and_frames_name_the_field():
     assert_refused(dispkin.Limits, (1.0, 1.0, "fast", None, None), TypeError,
                    "state[2] (jerk) = 'fast': must be a float or None")
     assert_refused(dispkin.WorkToolFrames, (1, dispkin.Pose()), TypeError, "state[0] (work) = 1: must be a Pose")
+    # None, and a Pose without a value, were taken by pybind11 for arguments of another overload.
+    assert_refused(dispkin.WorkToolFrames, (dispkin.Pose(), None), TypeError, "state[1] (tool) = None: must be a Pose")
+    assert_refused(dispkin.WorkToolFrames, (dispkin.Pose.__new__(dispkin.Pose), dispkin.Pose()), TypeError,
+                   "state[0] (work) = ", "must be a Pose")
 
 
 def scaled_profile(state, factor, peak=True):
