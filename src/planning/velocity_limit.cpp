@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "carried_acceleration.hpp"
 #include "dispkin/error.hpp"
 
 namespace dispkin {
@@ -32,8 +33,8 @@ double velocity_change_distance(double u, double w, double a, std::optional<doub
   return 0.5 * (u + w) * time;
 }
 
-std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
-                                          std::optional<double> j_max, double v_start, double v_end) {
+std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& segments, double a_max,
+                                            std::optional<double> j_max, double v_start, double v_end) {
   require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
   require_positive(a_max, "a_max");
   if (j_max) require_positive(*j_max, "j_max");
@@ -76,6 +77,43 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
     const LimitedSegment& g = segments[i];
     laws.push_back(j_max ? Profile::scurve(g.length, g.limit, accel(i), *j_max, u[i], u[i + 1])
                          : Profile::trapezoid(g.length, g.limit, accel(i), u[i], u[i + 1]));
+  }
+  return laws;
+}
+
+std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
+                                          std::optional<double> j_max, double v_start, double v_end) {
+  std::vector<Profile> laws = velocity_limited_chain(segments, a_max, j_max, v_start, v_end);
+  if (!j_max || v_end != 0.0) return laws;
+  // The jerk-limited chain returns to zero acceleration at every boundary; the law that carries
+  // acceleration across them (doc/profiles.md §8), built forwards and, from rest, backwards,
+  // replaces it wherever it is faster.
+  const auto total = [](const std::vector<Profile>& chain) {
+    double sum = 0.0;
+    for (const Profile& p : chain) sum += p.duration();
+    return sum;
+  };
+  double duration = total(laws);
+  std::vector<double> accelerations(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const double own = segments[i].acceleration;
+    accelerations[i] = own > 0.0 ? std::min(own, a_max) : a_max;
+  }
+  const auto keep_if_faster = [&](std::vector<Profile> candidate) {
+    const double d = total(candidate);
+    if (d < duration) {
+      laws = std::move(candidate);
+      duration = d;
+    }
+  };
+  if (auto forward = detail::carried_acceleration_law(segments, accelerations, *j_max, v_start)) keep_if_faster(std::move(*forward));
+  if (v_start == 0.0) {
+    // Built from the end and run backwards, it enters the lower limits ahead with zero
+    // acceleration where the forward law brakes late and undershoots them.
+    const std::vector<LimitedSegment> reversed(segments.rbegin(), segments.rend());
+    const std::vector<double> reversed_accelerations(accelerations.rbegin(), accelerations.rend());
+    if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, *j_max, 0.0))
+      keep_if_faster(detail::reversed_in_time(*backward));
   }
   return laws;
 }

@@ -2,6 +2,9 @@
 // doc/planning.md §4).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include <dispkin/planning/planner.hpp>
 #include <dispkin/shapes.hpp>
 #include <dispkin/planning/velocity_limit.hpp>
@@ -57,13 +60,95 @@ TEST(VelocityLimit, TrapezoidChainIsTimeOptimal) {
   }
 }
 
-TEST(VelocityLimit, LawsKeepEveryLimitAndJoin) {
+double total_duration(const std::vector<Profile>& laws) {
+  double sum = 0.0;
+  for (const Profile& p : laws) sum += p.duration();
+  return sum;
+}
+
+// Checks a law under the staircase densely: laws in order, each within one segment; s, ṡ, s̈
+// continuous where laws meet; 0 ≤ ṡ ≤ V_k, |s̈| ≤ A_k, |s⃛| ≤ j inside segment k; ends at rest.
+void expect_within_staircase(const std::vector<Profile>& laws, const std::vector<LimitedSegment>& segments, double a,
+                             double j, const std::string& where) {
+  std::size_t k = 0;
+  double s = 0.0, segment_end = segments[0].length, total = 0.0;
+  for (const LimitedSegment& g : segments) total += g.length;
+  ProfileState before{};
+  for (std::size_t n = 0; n < laws.size(); ++n) {
+    const Profile& p = laws[n];
+    while (k + 1 < segments.size() && s >= segment_end - 1e-12 * total) segment_end += segments[++k].length;
+    ASSERT_LE(s + p.distance(), segment_end + 1e-9 * total) << where << ": law " << n << " leaves segment " << k;
+    const double a_k = segments[k].acceleration > 0.0 ? std::min(segments[k].acceleration, a) : a;
+    const ProfileState first = p.state_at(0.0);
+    ASSERT_NEAR(first.v, before.v, 1e-9) << where << ": velocity jumps before law " << n;
+    ASSERT_NEAR(p.phase_count() > 0 ? p.phase(0).start.a : 0.0, before.a, 1e-6 * a) << where << ": acceleration jumps before law " << n;
+    for (int m = 0; m <= 64; ++m) {
+      const ProfileState st = p.state_at(p.duration() * m / 64.0);
+      ASSERT_LE(st.v, segments[k].limit * (1 + 1e-9)) << where << ": law " << n << " in segment " << k;
+      ASSERT_GE(st.v, -1e-12) << where;
+      ASSERT_LE(std::abs(st.a), a_k * (1 + 1e-9)) << where << ": law " << n << " in segment " << k;
+      ASSERT_LE(std::abs(st.j), j * (1 + 1e-12)) << where;
+    }
+    before = p.state_at(p.duration());
+    if (p.phase_count() > 0) before.a = p.phase(p.phase_count() - 1).end.a;
+    s += p.distance();
+  }
+  ASSERT_NEAR(s, total, 1e-9 * total) << where;
+  ASSERT_NEAR(before.v, 0.0, 1e-9) << where;
+}
+
+// doc/profiles.md §8: the S-curve law carries acceleration across boundaries; on random
+// staircases (lengths over three decades, per-segment accelerations) it keeps every limit densely
+// and is never slower than the chain at rest boundaries.
+TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
+  Random rnd(503);
+  int faster = 0;
+  const int count = 400;
+  for (int i = 0; i < count; ++i) {
+    std::vector<LimitedSegment> segments;
+    for (int k = rnd.integer(1, 12); k > 0; --k) {
+      const double own = rnd.uniform(0.0, 1.0) < 0.2 ? rnd.uniform(0.3, 3.0) : 0.0;
+      segments.push_back({std::pow(10.0, rnd.uniform(-3.0, -0.5)), rnd.uniform(0.02, 0.5), own});
+    }
+    const double a = rnd.uniform(0.5, 3.5), j = std::pow(10.0, rnd.uniform(0.5, 3.0));
+    const std::vector<Profile> laws = velocity_limited_law(segments, a, j);
+    const double chain = total_duration(velocity_limited_chain(segments, a, j));
+    const double law = total_duration(laws);
+    ASSERT_LE(law, chain) << "case " << i;
+    faster += law < chain * (1 - 1e-6);
+    expect_within_staircase(laws, segments, a, j, "case " + std::to_string(i));
+  }
+  // The law is not the chain under another name: most staircases gain.
+  EXPECT_GT(faster, count / 2);
+}
+
+// A smooth dip of the limit cut into many short segments: the chain, which must reach zero
+// acceleration in each, can hardly change speed and crawls; the law that carries acceleration
+// follows the dip within a few tens of percent of the trapezoid (the jerk-free optimum).
+TEST(VelocityLimit, CarriedAccelerationFollowsAFinelyCutDip) {
+  for (const int n : {100, 1000}) {
+    std::vector<LimitedSegment> segments;
+    for (int i = 0; i < n; ++i) {
+      const double s = (i + 0.5) * 0.1 / n;
+      segments.push_back({0.1 / n, 0.2 - 0.15 * std::exp(-std::pow((s - 0.05) / 0.01, 2))});
+    }
+    const double a = 2.0, j = 20.0;
+    const std::vector<Profile> laws = velocity_limited_law(segments, a, j);
+    expect_within_staircase(laws, segments, a, j, "dip of " + std::to_string(n));
+    const double law = total_duration(laws), chain = total_duration(velocity_limited_chain(segments, a, j));
+    const double trapezoid = total_duration(velocity_limited_law(segments, a, std::nullopt));
+    EXPECT_LT(law, 0.5 * chain) << n << " segments";
+    EXPECT_LT(law, 1.2 * trapezoid) << n << " segments";
+  }
+}
+
+TEST(VelocityLimit, ChainKeepsEveryLimitAndJoins) {
   Random rnd(502);
   for (int i = 0; i < 2000; ++i) {
     const auto segments = random_segments(rnd);
     const double a = rnd.uniform(0.2, 5.0);
     const std::optional<double> j = i % 2 ? std::optional<double>(rnd.uniform(1.0, 100.0)) : std::nullopt;
-    const std::vector<Profile> laws = velocity_limited_law(segments, a, j);
+    const std::vector<Profile> laws = velocity_limited_chain(segments, a, j);
     ASSERT_EQ(laws.size(), segments.size());
     double v_before = 0;
     for (std::size_t k = 0; k < laws.size(); ++k) {

@@ -9,8 +9,10 @@
 //!   S-curve:    (u + w)/2 · T,  T = Δ/a + a/j if Δ ≥ a²/j, else 2√(Δ/j),  Δ = |w − u|
 //! (a jerk-limited change from rest acceleration to rest acceleration is symmetric in time, so
 //! its distance is the mean velocity times its duration). For the trapezoid the result is the
-//! time-optimal law under v_lim. For the S-curve every segment starts and ends with zero
-//! acceleration — time-optimal per segment, a little slower than optimal across boundaries.
+//! time-optimal law under v_lim. For the S-curve every segment of the chain starts and ends with
+//! zero acceleration — time-optimal per segment, slow across many short segments — so the S-curve
+//! law ending at rest is also built carrying acceleration across boundaries (§8), and the faster
+//! of the two is taken.
 #pragma once
 
 #include <optional>
@@ -32,11 +34,20 @@ struct LimitedSegment {
 //! given), starting and ending with zero acceleration.
 double velocity_change_distance(double u, double w, double a, std::optional<double> j) noexcept;
 
-//! The time-optimal chain of laws over `segments` (see the file comment), from v_start to
-//! v_end (each at most the limit of its segment); segment i accelerates at most at its own
-//! acceleration (when given) and a_max. Returns one Profile per segment, in order;
-//! their velocities join continuously. Throws std::invalid_argument for bad input (naming it)
-//! or if v_end cannot be reached (too little distance to slow down or speed up).
+//! The chain of laws over `segments` of doc/profiles.md §5: one Profile per segment, its
+//! boundary velocities from the two passes, every boundary crossed at zero acceleration; from
+//! v_start to v_end (each at most the limit of its segment); segment i accelerates at most at its
+//! own acceleration (when given) and a_max. For the trapezoid it is the time-optimal law under the
+//! staircase. Throws std::invalid_argument for bad input (naming it) or if v_end cannot be reached
+//! (too little distance to slow down or speed up).
+std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& segments, double a_max,
+                                            std::optional<double> j_max, double v_start = 0.0, double v_end = 0.0);
+
+//! The law under the staircase (doc/profiles.md §5, §8): the chain above, or, for the S-curve
+//! ending at rest, the law that carries acceleration across the boundaries where it is faster —
+//! never slower than the chain. The laws come in order, each within one segment (a segment may
+//! hold several); their s, ṡ (and s̈ for the S-curve) join continuously, ṡ ≤ the limit of the
+//! segment at every instant. Throws as velocity_limited_chain.
 std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
                                           std::optional<double> j_max, double v_start = 0.0, double v_end = 0.0);
 

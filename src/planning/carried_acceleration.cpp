@@ -1,0 +1,418 @@
+// The staircase law that carries acceleration across segment boundaries (carried_acceleration.hpp;
+// doc/profiles.md §8, equation numbers (25)–(30) below refer to it).
+//
+// A state (s, ṡ, s̈) is viable when the fastest stop from it (25) stays under the staircase and
+// comes to rest on the path (26)–(28): every law that respects the staircase and ends at rest
+// is at least as fast as that stop at every position, so the test is exact. The law is built
+// in time, phase by phase: the largest jerk among +j, 0 and the stop's own jerk whose phase keeps
+// the state viable, each phase ended at the first of: the acceleration limit, the next segment
+// boundary, the last viable instant (bisection), or the end of the stop's piece (29).
+#include "carried_acceleration.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "../jerk_kernels.hpp"
+
+namespace dispkin::detail {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// Range minima over the segments: a binary tree on a power-of-two number of leaves (the padding
+// leaves are +∞). all() accepts a block of segments whole where its minimum fits and splits it
+// where it does not, so a test against many segments costs a logarithm per segment near its limit.
+class MinimumTree {
+ public:
+  explicit MinimumTree(const std::vector<double>& values) {
+    while (leaves_ < values.size()) leaves_ *= 2;
+    node_.assign(2 * leaves_, infinity);
+    std::copy(values.begin(), values.end(), node_.begin() + static_cast<std::ptrdiff_t>(leaves_));
+    for (std::size_t i = leaves_; i-- > 1;) node_[i] = std::min(node_[2 * i], node_[2 * i + 1]);
+  }
+
+  //! Whether fits(minimum, first, last) holds for the segments [l, r] (true if l > r).
+  template <class Fits>
+  bool all(std::size_t l, std::size_t r, const Fits& fits) const {
+    return l > r || all(1, 0, leaves_ - 1, l, r, fits);
+  }
+
+ private:
+  template <class Fits>
+  bool all(std::size_t i, std::size_t lo, std::size_t hi, std::size_t l, std::size_t r, const Fits& fits) const {
+    if (hi < l || lo > r) return true;
+    if (l <= lo && hi <= r) {
+      if (fits(node_[i], lo, hi)) return true;
+      if (lo == hi) return false;
+    }
+    const std::size_t mid = lo + (hi - lo) / 2;
+    return all(2 * i, lo, mid, l, r, fits) && all(2 * i + 1, mid + 1, hi, l, r, fits);
+  }
+
+  std::size_t leaves_ = 1;
+  std::vector<double> node_;
+};
+
+// (25) The fastest stop from (v, a) under the braking limit A and jerk j: if a > 0, a ramp at −j
+// to the peak (v + a²/(2j), 0); then the pulse (17) down by the peak velocity — a ramp at −j to
+// −p, a hold at −p, a ramp at +j to rest. It exists unless a < 0 with v + a|a|/(2j) < 0 (the
+// velocity would turn negative whatever the law does).
+struct Stop {
+  bool exists = false;
+  Motion start{};                   // the state it stops from
+  Motion peak{};                    // where the acceleration reaches 0 (the start if a ≤ 0)
+  int count = 0;                    // pieces after the peak
+  std::array<Motion, 4> at{};       // at[0] = peak, at[i] the start of piece i, at[count] = rest
+  std::array<double, 3> duration{};
+  std::array<double, 3> jerk{};
+};
+
+Stop fastest_stop(const Motion& x, double brake, double j) {
+  Stop stop;
+  stop.start = x;
+  const JerkLimits lim{infinity, std::max(brake, -x.a), j, 1.0 / j};
+  // v + a|a|/(2j) is a difference of nearly equal numbers on the stop's last ramp: rounding apart.
+  if (x.a < 0.0 && x.v + natural_change(x.a, lim) < -1e-12 * x.v) return stop;
+  stop.exists = true;
+  stop.peak = x;
+  if (x.a > 0.0) {
+    stop.peak = advance(x, x.a * lim.jerk_time, -j);
+    stop.peak.a = 0.0;
+  }
+  stop.at[0] = stop.peak;
+  const Pulse p = pulse(stop.peak.a, -stop.peak.v, lim);
+  // Upwards only when v + a|a|/(2j) = 0 to rounding: the ramp back to a = 0 is the whole stop.
+  const double peak = p.sign > 0.0 ? -stop.peak.a : p.peak;
+  const std::array<double, 3> durations{p.sign > 0.0 ? 0.0 : (p.peak + stop.peak.a) * lim.jerk_time,
+                                        p.sign > 0.0 ? 0.0 : p.hold, peak * lim.jerk_time};
+  const std::array<double, 3> jerks{-j, 0.0, j};
+  const std::array<double, 3> a_after{-peak, -peak, 0.0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!(durations[i] > 0.0)) continue;
+    const auto c = static_cast<std::size_t>(stop.count);
+    stop.duration[c] = durations[i];
+    stop.jerk[c] = jerks[i];
+    stop.at[c + 1] = advance(stop.at[c], durations[i], jerks[i]);
+    stop.at[c + 1].a = a_after[i];
+    ++stop.count;
+  }
+  stop.at[static_cast<std::size_t>(stop.count)].v = 0.0;
+  return stop;
+}
+
+// (27) Where the stop, on its way up to the peak, reaches the velocity w (v ≤ w ≤ peak):
+// v + a t − j t²/2 = w, the smaller root in its cancellation-free form.
+double rising_position(const Stop& stop, double w, double j) {
+  const Motion& x = stop.start;
+  if (w >= stop.peak.v) return stop.peak.s;
+  const double dv = std::max(0.0, w - x.v);
+  const double t = 2.0 * dv / (x.a + std::sqrt(std::max(0.0, x.a * x.a - 2.0 * j * dv)));
+  return advance(x, t, -j).s;
+}
+
+// (28) Where the stop, after its peak, has slowed to w (0 ≤ w ≤ peak): in the piece where the
+// velocity passes w, v₀ + a₀ t + j t²/2 = w has the root t = 2Δ / (−a₀ + √(a₀² − 2jΔ)),
+// Δ = v₀ − w (a₀ ≤ 0 after the peak: no cancellation).
+double falling_position(const Stop& stop, double w) {
+  if (w >= stop.peak.v) return stop.peak.s;
+  for (int i = 0; i < stop.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (w < stop.at[k + 1].v && i + 1 < stop.count) continue;
+    const Motion& x = stop.at[k];
+    const double dv = std::max(0.0, x.v - w);
+    const double root = std::sqrt(std::max(0.0, x.a * x.a - 2.0 * stop.jerk[k] * dv));
+    const double t = -x.a + root > 0.0 ? std::min(stop.duration[k], 2.0 * dv / (-x.a + root)) : stop.duration[k];
+    return advance(x, t, stop.jerk[k]).s;
+  }
+  return stop.at[static_cast<std::size_t>(stop.count)].s;
+}
+
+class Staircase {
+ public:
+  Staircase(const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations, double j)
+      : j_(j), accel_(accelerations), brake_(accelerations), limit_(segments.size()),
+        start_(segments.size() + 1, 0.0), limits_(limit_values(segments)), accels_(accelerations) {
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+      limit_[k] = segments[k].limit * (1.0 - margin);
+      start_[k + 1] = start_[k] + segments[k].length;
+    }
+    for (std::size_t k = brake_.size() - 1; k-- > 0;) brake_[k] = std::min(brake_[k], brake_[k + 1]);
+  }
+
+  //! The internal limits lie this much (relative) below the given ones: room for the rounding of
+  //! the law's phases, so that the checked result keeps the given limits exactly.
+  static constexpr double margin = 1e-10;
+
+  std::size_t count() const { return limit_.size(); }
+  double length() const { return start_.back(); }
+  double start(std::size_t k) const { return start_[k]; }
+  double limit(std::size_t k) const { return limit_[k]; }
+  double acceleration(std::size_t k) const { return accel_[k]; }
+  double jerk() const { return j_; }
+
+  //! The segment holding position s (the last one for s ≥ the length).
+  std::size_t segment_at(double s) const {
+    const auto it = std::upper_bound(start_.begin() + 1, start_.end() - 1, s);
+    return static_cast<std::size_t>(it - (start_.begin() + 1));
+  }
+
+  //! (26)–(28): whether x, reached by a phase within segment `law_segment`, keeps that segment's
+  //! limits, and the fastest stop from x keeps under the staircase and rests on the path. (The
+  //! phase's velocity is largest at one of its ends: the phases are cut where s̈ = 0.)
+  bool viable(const Motion& x, std::size_t law_segment) const {
+    if (!(x.v >= 0.0) || x.v > limit_[law_segment] || x.a > accel_[law_segment]) return false;
+    const std::size_t m = segment_at(x.s);
+    if (x.a > accel_[m]) return false;
+    const Stop stop = fastest_stop(x, brake_[m], j_);
+    if (!stop.exists) return false;
+    const Motion& rest = stop.at[static_cast<std::size_t>(stop.count)];
+    if (rest.s > length()) return false;
+    const std::size_t kp = segment_at(stop.peak.s);
+    if (stop.peak.v > limit_[kp]) return false;
+    if (x.a > 0.0 && kp > m) {
+      // (27) on the way up each segment is left before the velocity passes its limit, and
+      // entered with an acceleration within its own.
+      const bool below = limits_.all(m, kp - 1, [&](double v_min, std::size_t, std::size_t last) {
+        return v_min >= stop.peak.v || rising_position(stop, v_min, j_) >= start_[last + 1];
+      });
+      if (!below) return false;
+      if (!accels_.all(m + 1, kp, [&](double a_min, std::size_t, std::size_t) { return a_min >= x.a; })) return false;
+    }
+    // (28) after the peak each segment begins where the velocity has fallen to its limit.
+    return limits_.all(kp + 1, segment_at(rest.s), [&](double v_min, std::size_t first, std::size_t) {
+      return v_min >= stop.peak.v || falling_position(stop, v_min) <= start_[first];
+    });
+  }
+
+  //! The fastest stop from x under this staircase's braking limit there.
+  Stop stop_from(const Motion& x) const { return fastest_stop(x, brake_[segment_at(x.s)], j_); }
+
+ private:
+  static std::vector<double> limit_values(const std::vector<LimitedSegment>& segments) {
+    std::vector<double> v(segments.size());
+    for (std::size_t k = 0; k < segments.size(); ++k) v[k] = segments[k].limit * (1.0 - margin);
+    return v;
+  }
+
+  double j_;
+  std::vector<double> accel_;  // A_k, each segment's acceleration limit
+  std::vector<double> brake_;  // min over k' ≥ k of A_k': the braking limit of the stops
+  std::vector<double> limit_;  // V_k (1 − margin)
+  std::vector<double> start_;  // s_k, k = 0 … n (s_n the length)
+  MinimumTree limits_, accels_;
+};
+
+// One phase of constant jerk of the law being built.
+struct Phase {
+  double duration, jerk;
+  Motion start;
+};
+
+// The time at which a constant-jerk phase from x reaches position `target` (≤ its position after
+// `cap`): bisection on the non-decreasing s(t).
+double time_to_position(const Motion& x, double jerk, double cap, double target) {
+  double lo = 0.0, hi = cap;
+  for (int i = 0; i < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (advance(x, mid, jerk).s < target ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+// (30) A law is kept only if every phase keeps 0 ≤ ṡ ≤ V, |s̈| ≤ A, |s⃛| ≤ j of its segment,
+// the velocity's maximum over a phase taken at its ends or where s̈ = 0 inside it.
+bool within_limits(const Profile& law, double v_max, double a_max, double j) {
+  const double slack = 1e-12;
+  for (int i = 0; i < law.phase_count(); ++i) {
+    const ProfilePhase& p = law.phase(i);
+    double v_top = std::max(p.start.v, p.end.v);
+    if (p.jerk != 0.0 && (p.start.a > 0.0) != (p.end.a > 0.0)) {
+      const double t = -p.start.a / p.jerk;
+      v_top = std::max(v_top, p.start.v + t * (p.start.a + 0.5 * p.jerk * t));
+    }
+    const double v_low = std::min(p.start.v, p.end.v);
+    if (!(v_top <= v_max * (1.0 + slack)) || !(v_low >= -slack * v_max)) return false;
+    if (!(std::max(std::abs(p.start.a), std::abs(p.end.a)) <= a_max * (1.0 + 1e-9))) return false;
+    if (!(std::abs(p.jerk) <= j * (1.0 + slack))) return false;
+  }
+  return true;
+}
+
+// The laws of one segment from its phases (consecutive phases of the same jerk merged), at most
+// Profile::max_phases each, the last ending at the segment's end `s_end` in state `end`; false if
+// a law does not keep the segment's limits (30).
+bool append_segment_laws(std::vector<Phase>& phases, double s_end, const Motion& end, const LimitedSegment& segment,
+                         double a_max, double j, std::vector<Profile>& laws) {
+  std::vector<Phase> merged;
+  for (const Phase& p : phases) {
+    if (!(p.duration > 0.0)) continue;
+    if (!merged.empty() && merged.back().jerk == p.jerk) {
+      merged.back().duration += p.duration;
+    } else {
+      merged.push_back(p);
+    }
+  }
+  phases.clear();
+  if (merged.empty()) return false;
+  std::array<double, Profile::max_phases> durations{}, jerks{};
+  for (std::size_t first = 0; first < merged.size(); first += Profile::max_phases) {
+    const std::size_t count = std::min<std::size_t>(Profile::max_phases, merged.size() - first);
+    for (std::size_t i = 0; i < count; ++i) {
+      durations[i] = merged[first + i].duration;
+      jerks[i] = merged[first + i].jerk;
+    }
+    const Motion& from = merged[first].start;
+    const bool last = first + count == merged.size();
+    const Motion to = last ? end : merged[first + count].start;
+    const double to_s = last ? s_end : to.s;
+    laws.push_back(Profile::from_phases(durations.data(), jerks.data(), static_cast<int>(count), from.v, from.a,
+                                        to_s - from.s, to.v, to.a));
+    if (!within_limits(laws.back(), segment.limit, a_max, j)) return false;
+  }
+  return true;
+}
+
+// The largest τ ∈ [0, cap] for which the phase of jerk `jerk` from x ends in a viable state,
+// assuming that once it leaves the viable states it does not come back (bisection to 1e-12 of
+// the jerk's time scale a/j).
+double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap, double resolution) {
+  if (stairs.viable(advance(x, cap, jerk), m)) return cap;
+  double lo = 0.0, hi = cap;
+  while (hi - lo > resolution) {
+    const double mid = 0.5 * (lo + hi);
+    (stairs.viable(advance(x, mid, jerk), m) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<LimitedSegment>& segments,
+                                                             const std::vector<double>& accelerations, double j_max,
+                                                             double v_start) {
+  const Staircase stairs(segments, accelerations, j_max);
+  const std::size_t n = stairs.count();
+  const double length = stairs.length();
+  double a_top = 0.0;
+  for (double a : accelerations) a_top = std::max(a_top, a);
+  const double resolution = 1e-12 * a_top / j_max;  // time resolution of the phase ends
+  // A phase of +j or 0 shorter than this is not taken (its velocity change is below 1e-12 a²/j):
+  // near the edge of the viable states rounding leaves room for vanishing phases only.
+  const double shortest = 1e-6 * a_top / j_max;
+  // Whether the last phase ended on the edge of the viable states: the stop is followed from there
+  // to its next event, not alternated with other jerks in vanishing steps (29).
+  bool on_edge = false;
+  std::vector<Profile> laws;
+  laws.reserve(n);
+  std::vector<Phase> phases;
+  Motion x{0.0, v_start, 0.0};
+  std::size_t m = 0;
+  // Each step ends a phase at an event; a segment rarely needs more than a handful.
+  const std::size_t max_steps = 64 * n + 1024;
+  try {
+    for (std::size_t step = 0; m < n; ++step) {
+      if (step == max_steps) return std::nullopt;
+      const double a_cap = stairs.acceleration(m);
+      const double s_next = stairs.start(m + 1);
+      // Candidates, largest jerk first (29): +j up to the acceleration limit, 0, the stop's piece.
+      double jerk = 0.0, duration = 0.0;
+      bool chosen = false, stopping = false;
+      const Stop stop = stairs.stop_from(x);
+      // In the last segment, once the stop ends at the end of the path (to 1e-9 of its length),
+      // the law is that stop: what is left is rounding, not room to speed up.
+      if (m + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) on_edge = true;
+      for (int c = 0; c < 3 && !chosen; ++c) {
+        double cap = infinity;
+        if (c < 2 && on_edge) continue;
+        if (c == 0) {
+          if (!(x.a < a_cap)) continue;
+          jerk = j_max;
+          cap = (a_cap - x.a) / j_max;
+        } else if (c == 1) {
+          jerk = 0.0;
+          if (x.a < 0.0) cap = x.v / -x.a;  // where the velocity would reach zero
+          if (x.v <= 0.0 && x.a <= 0.0) continue;
+        } else {
+          if (!stop.exists) return std::nullopt;
+          if (x.a > 0.0) {
+            jerk = -j_max;
+            cap = x.a / j_max;  // to the peak, then choose again
+          } else if (stop.count > 0) {
+            jerk = stop.jerk[0];
+            cap = stop.duration[0];
+          } else {
+            return std::nullopt;  // at rest and nothing else fits: not on this path
+          }
+        }
+        // Cut at the next segment boundary.
+        const Motion far = std::isfinite(cap) ? advance(x, cap, jerk) : Motion{infinity, 0.0, 0.0};
+        // The stop that ends the path rests at its end to rounding: it is not cut there.
+        const bool final_stop = c == 2 && m + 1 == n && stop.count == 1 && jerk > 0.0 && far.s <= length * (1.0 + 1e-9);
+        if (!final_stop && (!std::isfinite(cap) || far.s >= s_next - 1e-15 * s_next)) {
+          // Without a cap (jerk 0, s̈ ≥ 0) the boundary is reached by Δ/ṡ and by √(2Δ/s̈).
+          double horizon = cap;
+          if (!std::isfinite(horizon)) {
+            if (x.v > 0.0) horizon = (s_next - x.s) / x.v;
+            if (x.a > 0.0) horizon = std::min(horizon, std::sqrt(2.0 * (s_next - x.s) / x.a));
+          }
+          cap = time_to_position(x, jerk, horizon, s_next);
+        }
+        if (c == 2) {
+          duration = cap;
+          chosen = true;
+          on_edge = false;
+          stopping = true;
+        } else {
+          duration = viable_duration(stairs, x, m, jerk, cap, resolution);
+          chosen = duration > shortest;
+          on_edge = chosen && duration < cap;
+        }
+      }
+      if (!chosen) return std::nullopt;
+      phases.push_back({duration, jerk, x});
+      Motion next = advance(x, duration, jerk);
+      if (jerk > 0.0 && next.a > a_cap) next.a = a_cap;
+      // The stop's last ramp ends at rest exactly.
+      const bool rests = stopping && stop.count == 1 && jerk > 0.0 && duration == stop.duration[0];
+      if (rests) next.v = next.a = 0.0;
+      const bool at_rest_at_end = m + 1 == n && rests && length - next.s <= 1e-9 * length;
+      if (next.s >= s_next - 1e-15 * s_next || at_rest_at_end) {
+        // The segment boundary: the segment's laws end exactly there.
+        next.s = s_next;
+        if (at_rest_at_end) next = Motion{length, 0.0, 0.0};
+        if (!append_segment_laws(phases, s_next, next, segments[m], accelerations[m], j_max, laws)) return std::nullopt;
+        ++m;
+      }
+      x = next;
+    }
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // from_phases: the phases do not lead to the end state to rounding
+  }
+  if (!(std::abs(x.v) <= 1e-9 * std::max(1.0, v_start)) || !(std::abs(x.a) <= 1e-9 * a_top)) return std::nullopt;
+  return laws;
+}
+
+std::vector<Profile> reversed_in_time(const std::vector<Profile>& laws) {
+  std::vector<Profile> out;
+  out.reserve(laws.size());
+  std::array<double, Profile::max_phases> durations{}, jerks{};
+  for (auto law = laws.rbegin(); law != laws.rend(); ++law) {
+    const int count = law->phase_count();
+    // Run backwards, s̈ changes sign and s⃛ keeps it (d/dτ = −d/dt applied three times, once to s).
+    for (int i = 0; i < count; ++i) {
+      durations[static_cast<std::size_t>(i)] = law->phase(count - 1 - i).duration;
+      jerks[static_cast<std::size_t>(i)] = law->phase(count - 1 - i).jerk;
+    }
+    const ProfileState first = law->state_at(0.0), last = law->state_at(law->duration());
+    const double a_first = count > 0 ? law->phase(0).start.a : first.a;
+    const double a_last = count > 0 ? law->phase(count - 1).end.a : last.a;
+    out.push_back(Profile::from_phases(durations.data(), jerks.data(), count, last.v, -a_last, law->distance(), first.v,
+                                       -a_first));
+  }
+  return out;
+}
+
+}  // namespace dispkin::detail
