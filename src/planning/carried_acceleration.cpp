@@ -14,6 +14,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "../jerk_kernels.hpp"
 
@@ -132,9 +134,11 @@ double falling_position(const Stop& stop, double w) {
 
 class Staircase {
  public:
-  Staircase(const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations, double j)
-      : j_(j), accel_(accelerations), brake_(accelerations), limit_(segments.size()),
-        start_(segments.size() + 1, 0.0), limits_(limit_values(segments)), accels_(accelerations) {
+  Staircase(const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations, double j,
+            bool settle_in_troughs, bool open_end)
+      : open_end_(open_end), j_(j), accel_(accelerations), brake_(accelerations), limit_(segments.size()),
+        start_(segments.size() + 1, 0.0), limits_(limit_values(segments)), accels_(accelerations),
+        troughs_(trough_values(segments, settle_in_troughs)), settle_(settle_in_troughs) {
     for (std::size_t k = 0; k < segments.size(); ++k) {
       limit_[k] = segments[k].limit * (1.0 - margin);
       start_[k + 1] = start_[k] + segments[k].length;
@@ -162,14 +166,15 @@ class Staircase {
   //! (26)–(28): whether x, reached by a phase within segment `law_segment`, keeps that segment's
   //! limits, and the fastest stop from x keeps under the staircase and rests on the path. (The
   //! phase's velocity is largest at one of its ends: the phases are cut where s̈ = 0.)
-  bool viable(const Motion& x, std::size_t law_segment) const {
+  //! When only a trough fails, its index goes to *binding_trough (if given).
+  bool viable(const Motion& x, std::size_t law_segment, std::size_t* binding_trough = nullptr) const {
     if (!(x.v >= 0.0) || x.v > limit_[law_segment] || x.a > accel_[law_segment]) return false;
     const std::size_t m = segment_at(x.s);
     if (x.a > accel_[m]) return false;
     const Stop stop = fastest_stop(x, brake_[m], j_);
     if (!stop.exists) return false;
     const Motion& rest = stop.at[static_cast<std::size_t>(stop.count)];
-    if (rest.s > length()) return false;
+    if (rest.s > length() && !open_end_) return false;
     const std::size_t kp = segment_at(stop.peak.s);
     if (stop.peak.v > limit_[kp]) return false;
     if (x.a > 0.0 && kp > m) {
@@ -182,27 +187,82 @@ class Staircase {
       if (!accels_.all(m + 1, kp, [&](double a_min, std::size_t, std::size_t) { return a_min >= x.a; })) return false;
     }
     // (28) after the peak each segment begins where the velocity has fallen to its limit.
-    return limits_.all(kp + 1, segment_at(rest.s), [&](double v_min, std::size_t first, std::size_t) {
+    const bool under = limits_.all(kp + 1, segment_at(rest.s), [&](double v_min, std::size_t first, std::size_t) {
       return v_min >= stop.peak.v || falling_position(stop, v_min) <= start_[first];
     });
+    if (!under || !settle_) return under;
+    // (29') and each trough ahead is reached at its limit with zero acceleration: the pulse (17)
+    // down to (V_k, 0) ends before it begins. The pulse to a lower velocity is longer, so a block
+    // fits where the pulse to its lowest trough does; it ends within V·a/j past where the stop has
+    // slowed to V, so no trough beyond that reach binds.
+    const JerkLimits lim{infinity, std::max(brake_[m], -x.a), j_, 1.0 / j_};
+    const double v_natural = x.v + natural_change(x.a, lim);
+    const double reach = rest.s + stop.peak.v * lim.a_max * lim.jerk_time;
+    return troughs_.all(m + 1, segment_at(reach), [&](double w, std::size_t first, std::size_t last) {
+      const bool fits = w >= v_natural || pulse_end(x, w, lim) <= start_[first];
+      if (!fits && first == last && binding_trough) *binding_trough = first;
+      return fits;
+    });
+  }
+
+  //! The limit of trough k (settled in at zero acceleration).
+  double trough(std::size_t k) const { return limit_[k]; }
+
+  //! The first piece of the pulse (17) from x down to (w, 0) under the braking limit there, as
+  //! (jerk, duration); a ramp through s̈ = 0 is cut there (the law chooses again at its peak).
+  std::pair<double, double> pulse_piece(const Motion& x, double w) const {
+    const JerkLimits lim{infinity, std::max(brake_[segment_at(x.s)], -x.a), j_, 1.0 / j_};
+    const Pulse p = pulse(x.a, w - x.v, lim);
+    const double target = p.sign * p.peak;
+    const double ramp = std::abs(target - x.a) * lim.jerk_time;
+    if (ramp > 1e-12 * lim.a_max * lim.jerk_time) {
+      const double jerk = target >= x.a ? j_ : -j_;
+      const bool through_zero = (x.a > 0.0 && target < 0.0) || (x.a < 0.0 && target > 0.0);
+      return {jerk, through_zero ? std::abs(x.a) * lim.jerk_time : ramp};
+    }
+    if (p.hold > 0.0) return {0.0, p.hold};
+    return {-p.sign * j_, p.peak * lim.jerk_time};
   }
 
   //! The fastest stop from x under this staircase's braking limit there.
   Stop stop_from(const Motion& x) const { return fastest_stop(x, brake_[segment_at(x.s)], j_); }
 
  private:
+  // The limits of the troughs — segments below the one before and not above the one after — and
+  // +∞ elsewhere (all +∞ unless troughs are settled in).
+  static std::vector<double> trough_values(const std::vector<LimitedSegment>& segments, bool settle) {
+    std::vector<double> v(segments.size(), infinity);
+    for (std::size_t k = 1; settle && k < segments.size(); ++k) {
+      const bool below_before = segments[k].limit < segments[k - 1].limit;
+      const bool not_above_after = k + 1 == segments.size() || segments[k].limit <= segments[k + 1].limit;
+      if (below_before && not_above_after) v[k] = segments[k].limit * (1.0 - margin);
+    }
+    return v;
+  }
+
+  // Where the pulse (17) from x down to (w, 0) ends.
+  static double pulse_end(const Motion& x, double w, const JerkLimits& lim) {
+    const Pulse p = pulse(x.a, w - x.v, lim);
+    Motion y = advance(x, std::abs(p.sign * p.peak - x.a) * lim.jerk_time, p.sign * p.peak >= x.a ? lim.j_max : -lim.j_max);
+    y.a = p.sign * p.peak;
+    y = advance(y, p.hold, 0.0);
+    return advance(y, p.peak * lim.jerk_time, -p.sign * lim.j_max).s;
+  }
+
   static std::vector<double> limit_values(const std::vector<LimitedSegment>& segments) {
     std::vector<double> v(segments.size());
     for (std::size_t k = 0; k < segments.size(); ++k) v[k] = segments[k].limit * (1.0 - margin);
     return v;
   }
 
+  bool open_end_;  // the last segment goes on past the end (the law ends cruising at its limit)
   double j_;
   std::vector<double> accel_;  // A_k, each segment's acceleration limit
   std::vector<double> brake_;  // min over k' ≥ k of A_k': the braking limit of the stops
   std::vector<double> limit_;  // V_k (1 − margin)
   std::vector<double> start_;  // s_k, k = 0 … n (s_n the length)
-  MinimumTree limits_, accels_;
+  MinimumTree limits_, accels_, troughs_;
+  bool settle_;
 };
 
 // One phase of constant jerk of the law being built.
@@ -212,12 +272,19 @@ struct Phase {
 };
 
 // The time at which a constant-jerk phase from x reaches position `target` (≤ its position after
-// `cap`): bisection on the non-decreasing s(t).
+// `cap`): Newton on the non-decreasing s(t) (ṡ its derivative), kept inside a shrinking bracket
+// and bisecting where a step would leave it; the result is the bracket's upper end (s ≥ target).
 double time_to_position(const Motion& x, double jerk, double cap, double target) {
-  double lo = 0.0, hi = cap;
-  for (int i = 0; i < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (advance(x, mid, jerk).s < target ? lo : hi) = mid;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double lo = 0.0, hi = cap, t = cap;
+  for (int i = 0; i < 100 && hi - lo > 4.0 * eps * hi; ++i) {
+    const Motion y = advance(x, t, jerk);
+    (y.s < target ? lo : hi) = t;
+    if (y.s >= target && y.s - target <= 4.0 * eps * std::abs(target)) return t;
+    const double step = y.v > 0.0 ? (target - y.s) / y.v : 0.0;
+    // Converged from below: the next representable times reach the target.
+    t = std::abs(step) <= 4.0 * eps * t ? t * (1.0 + 8.0 * eps) : t + step;
+    if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
   }
   return hi;
 }
@@ -278,13 +345,17 @@ bool append_segment_laws(std::vector<Phase>& phases, double s_end, const Motion&
 // The largest τ ∈ [0, cap] for which the phase of jerk `jerk` from x ends in a viable state,
 // assuming that once it leaves the viable states it does not come back (bisection to 1e-12 of
 // the jerk's time scale a/j).
-double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap, double resolution) {
+// (the first non-viable instant found goes to *edge).
+double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap, double resolution,
+                       double* edge) {
+  *edge = cap;
   if (stairs.viable(advance(x, cap, jerk), m)) return cap;
   double lo = 0.0, hi = cap;
   while (hi - lo > resolution) {
     const double mid = 0.5 * (lo + hi);
     (stairs.viable(advance(x, mid, jerk), m) ? lo : hi) = mid;
   }
+  *edge = hi;
   return lo;
 }
 
@@ -292,19 +363,22 @@ double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, 
 
 std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<LimitedSegment>& segments,
                                                              const std::vector<double>& accelerations, double j_max,
-                                                             double v_start) {
-  const Staircase stairs(segments, accelerations, j_max);
+                                                             double v_start, double v_end, bool settle_in_troughs) {
+  // v_end > 0: the law ends cruising at the last segment's limit, which goes on past the end.
+  const bool open_end = v_end > 0.0;
+  const Staircase stairs(segments, accelerations, j_max, settle_in_troughs, open_end);
   const std::size_t n = stairs.count();
   const double length = stairs.length();
   double a_top = 0.0;
   for (double a : accelerations) a_top = std::max(a_top, a);
-  const double resolution = 1e-12 * a_top / j_max;  // time resolution of the phase ends
+  const double resolution = 1e-9 * a_top / j_max;  // time resolution of the edges (a braking start 1e-9 a/j early)
   // A phase of +j or 0 shorter than this is not taken (its velocity change is below 1e-12 a²/j):
   // near the edge of the viable states rounding leaves room for vanishing phases only.
   const double shortest = 1e-6 * a_top / j_max;
   // Whether the last phase ended on the edge of the viable states: the stop is followed from there
   // to its next event, not alternated with other jerks in vanishing steps (29).
   bool on_edge = false;
+  std::optional<std::size_t> edge_trough;  // the trough whose rule made the edge, if one did
   std::vector<Profile> laws;
   laws.reserve(n);
   std::vector<Phase> phases;
@@ -323,7 +397,10 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
       const Stop stop = stairs.stop_from(x);
       // In the last segment, once the stop ends at the end of the path (to 1e-9 of its length),
       // the law is that stop: what is left is rounding, not room to speed up.
-      if (m + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) on_edge = true;
+      if (!open_end && m + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) {
+        on_edge = true;
+        edge_trough.reset();
+      }
       for (int c = 0; c < 3 && !chosen; ++c) {
         double cap = infinity;
         if (c < 2 && on_edge) continue;
@@ -335,6 +412,10 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
           jerk = 0.0;
           if (x.a < 0.0) cap = x.v / -x.a;  // where the velocity would reach zero
           if (x.v <= 0.0 && x.a <= 0.0) continue;
+        } else if (edge_trough) {
+          // The edge of a trough's rule: follow the pulse that settles in it.
+          std::tie(jerk, cap) = stairs.pulse_piece(x, stairs.trough(*edge_trough));
+          if (!(cap > 0.0)) return std::nullopt;
         } else {
           if (!stop.exists) return std::nullopt;
           if (x.a > 0.0) {
@@ -350,7 +431,7 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
         // Cut at the next segment boundary.
         const Motion far = std::isfinite(cap) ? advance(x, cap, jerk) : Motion{infinity, 0.0, 0.0};
         // The stop that ends the path rests at its end to rounding: it is not cut there.
-        const bool final_stop = c == 2 && m + 1 == n && stop.count == 1 && jerk > 0.0 && far.s <= length * (1.0 + 1e-9);
+        const bool final_stop = c == 2 && !edge_trough && m + 1 == n && stop.count == 1 && jerk > 0.0 && far.s <= length * (1.0 + 1e-9);
         if (!final_stop && (!std::isfinite(cap) || far.s >= s_next - 1e-15 * s_next)) {
           // Without a cap (jerk 0, s̈ ≥ 0) the boundary is reached by Δ/ṡ and by √(2Δ/s̈).
           double horizon = cap;
@@ -363,12 +444,21 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
         if (c == 2) {
           duration = cap;
           chosen = true;
+          stopping = !edge_trough;
           on_edge = false;
-          stopping = true;
+          edge_trough.reset();
         } else {
-          duration = viable_duration(stairs, x, m, jerk, cap, resolution);
+          double edge = cap;
+          duration = viable_duration(stairs, x, m, jerk, cap, resolution, &edge);
           chosen = duration > shortest;
           on_edge = chosen && duration < cap;
+          if (duration < cap) {
+            // Which rule the phase breaks first: a trough's, or the stop's (followed next).
+            std::size_t k = n;
+            stairs.viable(advance(x, edge, jerk), m, &k);
+            edge_trough.reset();
+            if (k < n) edge_trough = k;
+          }
         }
       }
       if (!chosen) return std::nullopt;
@@ -391,7 +481,8 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
   } catch (const std::invalid_argument&) {
     return std::nullopt;  // from_phases: the phases do not lead to the end state to rounding
   }
-  if (!(std::abs(x.v) <= 1e-9 * std::max(1.0, v_start)) || !(std::abs(x.a) <= 1e-9 * a_top)) return std::nullopt;
+  const double v_scale = std::max({1e-300, v_start, v_end});
+  if (!(std::abs(x.v - v_end) <= 1e-9 * v_scale) || !(std::abs(x.a) <= 1e-9 * a_top)) return std::nullopt;
   return laws;
 }
 

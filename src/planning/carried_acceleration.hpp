@@ -18,7 +18,7 @@ namespace dispkin::detail {
 //! of the result fails); the caller keeps the chain of §5 then. Input is validated by the caller.
 std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<LimitedSegment>& segments,
                                                              const std::vector<double>& accelerations, double j_max,
-                                                             double v_start);
+                                                             double v_start, double v_end, bool settle_in_troughs);
 
 //! The same motion run backwards: laws in reverse order, each from its end state to its start
 //! state with the acceleration's sign turned (s⃛ keeps its sign). A law of the reversed staircase

@@ -2,6 +2,8 @@
 #include "dispkin/planning/velocity_limit.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 #include <string>
 
@@ -81,40 +83,126 @@ std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& s
   return laws;
 }
 
+namespace {
+
+double total_duration(const std::vector<Profile>& laws) {
+  double sum = 0.0;
+  for (const Profile& p : laws) sum += p.duration();
+  return sum;
+}
+
+// The cruise of a chain law at its segment's limit, if it has one (phase index), where the
+// staircase is cut into runs (doc/profiles.md §8.4).
+std::optional<int> cruise_at_limit(const Profile& law, double limit) {
+  for (int i = 0; i < law.phase_count(); ++i) {
+    const ProfilePhase& p = law.phase(i);
+    if (p.jerk == 0.0 && p.start.a == 0.0 && p.duration > 0.0 && p.start.v >= limit * (1.0 - 1e-12)) return i;
+  }
+  return std::nullopt;
+}
+
+// A chain law cut in the middle of its cruise (phase `cruise`): the part before and the part after.
+std::pair<Profile, Profile> cut_in_cruise(const Profile& law, int cruise) {
+  std::array<double, Profile::max_phases> durations{}, jerks{};
+  const ProfilePhase& c = law.phase(cruise);
+  const double half = 0.5 * c.duration, s_cut = c.start.s + c.start.v * half;
+  for (int i = 0; i <= cruise; ++i) {
+    durations[static_cast<std::size_t>(i)] = i == cruise ? half : law.phase(i).duration;
+    jerks[static_cast<std::size_t>(i)] = law.phase(i).jerk;
+  }
+  const ProfileState start = law.state_at(0.0), end = law.state_at(law.duration());
+  Profile before = Profile::from_phases(durations.data(), jerks.data(), cruise + 1, start.v, 0.0, s_cut, c.start.v, 0.0);
+  const int rest = law.phase_count() - cruise;
+  for (int i = 0; i < rest; ++i) {
+    durations[static_cast<std::size_t>(i)] = i == 0 ? c.duration - half : law.phase(cruise + i).duration;
+    jerks[static_cast<std::size_t>(i)] = law.phase(cruise + i).jerk;
+  }
+  Profile after = Profile::from_phases(durations.data(), jerks.data(), rest, c.start.v, 0.0, law.distance() - s_cut, end.v, 0.0);
+  return {std::move(before), std::move(after)};
+}
+
+// One run of the staircase: its segments (the first and last possibly parts of a segment), the
+// velocities at its ends, and the chain's laws over it.
+struct Run {
+  std::vector<LimitedSegment> segments;
+  std::vector<double> accelerations;
+  double v_start = 0.0, v_end = 0.0;
+  std::vector<Profile> chain;
+};
+
+// The fastest of the chain and the laws that carry acceleration over the run, forwards and
+// backwards, with and without settling in the troughs (doc/profiles.md §8.4).
+void append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
+  std::vector<Profile>* best = &run.chain;
+  double duration = total_duration(run.chain);
+  std::vector<Profile> candidates[4];
+  // A run of one segment is crossed by its chain law, time-optimal for one segment.
+  const bool open_end = run.v_end > 0.0, open_start = run.v_start > 0.0;
+  const bool ends_fit = (!open_end || run.v_end == run.segments.back().limit) && (!open_start || run.v_start == run.segments.front().limit);
+  if (run.segments.size() > 1 && ends_fit) {
+    const std::vector<LimitedSegment> reversed(run.segments.rbegin(), run.segments.rend());
+    const std::vector<double> reversed_accelerations(run.accelerations.rbegin(), run.accelerations.rend());
+    int i = 0;
+    for (const bool settle : {false, true}) {
+      if (auto forward = detail::carried_acceleration_law(run.segments, run.accelerations, j_max, run.v_start, run.v_end, settle))
+        candidates[i] = std::move(*forward);
+      ++i;
+      // Built from the end and run backwards, it enters the limits ahead as the forward law
+      // leaves them behind.
+      if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end, run.v_start, settle))
+        candidates[i] = detail::reversed_in_time(*backward);
+      ++i;
+    }
+    for (std::vector<Profile>& candidate : candidates) {
+      if (candidate.empty()) continue;
+      const double d = total_duration(candidate);
+      if (d < duration) {
+        duration = d;
+        best = &candidate;
+      }
+    }
+  }
+  for (Profile& law : *best) out.push_back(std::move(law));
+}
+
+}  // namespace
+
 std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
                                           std::optional<double> j_max, double v_start, double v_end) {
-  std::vector<Profile> laws = velocity_limited_chain(segments, a_max, j_max, v_start, v_end);
-  if (!j_max || v_end != 0.0) return laws;
-  // The jerk-limited chain returns to zero acceleration at every boundary; the law that carries
-  // acceleration across them (doc/profiles.md §8), built forwards and, from rest, backwards,
-  // replaces it wherever it is faster.
-  const auto total = [](const std::vector<Profile>& chain) {
-    double sum = 0.0;
-    for (const Profile& p : chain) sum += p.duration();
-    return sum;
-  };
-  double duration = total(laws);
-  std::vector<double> accelerations(segments.size());
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    const double own = segments[i].acceleration;
-    accelerations[i] = own > 0.0 ? std::min(own, a_max) : a_max;
-  }
-  const auto keep_if_faster = [&](std::vector<Profile> candidate) {
-    const double d = total(candidate);
-    if (d < duration) {
-      laws = std::move(candidate);
-      duration = d;
+  std::vector<Profile> chain = velocity_limited_chain(segments, a_max, j_max, v_start, v_end);
+  if (!j_max) return chain;
+  // The jerk-limited chain returns to zero acceleration at every boundary. Where a chain law
+  // cruises at its segment's limit no law is faster, so the staircase is cut there into runs
+  // (doc/profiles.md §8.4), and each run takes the fastest of its chain and the laws that carry
+  // acceleration across its boundaries (§8).
+  std::vector<Profile> laws;
+  laws.reserve(chain.size());
+  Run run;
+  run.v_start = v_start;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const double own = segments[k].acceleration;
+    const double a_k = own > 0.0 ? std::min(own, a_max) : a_max;
+    const std::optional<int> cruise = k + 1 < segments.size() ? cruise_at_limit(chain[k], segments[k].limit) : std::nullopt;
+    if (!cruise) {
+      run.segments.push_back(segments[k]);
+      run.accelerations.push_back(a_k);
+      run.chain.push_back(std::move(chain[k]));
+      continue;
     }
-  };
-  if (auto forward = detail::carried_acceleration_law(segments, accelerations, *j_max, v_start)) keep_if_faster(std::move(*forward));
-  if (v_start == 0.0) {
-    // Built from the end and run backwards, it enters the lower limits ahead with zero
-    // acceleration where the forward law brakes late and undershoots them.
-    const std::vector<LimitedSegment> reversed(segments.rbegin(), segments.rend());
-    const std::vector<double> reversed_accelerations(accelerations.rbegin(), accelerations.rend());
-    if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, *j_max, 0.0))
-      keep_if_faster(detail::reversed_in_time(*backward));
+    auto [before, after] = cut_in_cruise(chain[k], *cruise);
+    run.segments.push_back({before.distance(), segments[k].limit, segments[k].acceleration});
+    run.accelerations.push_back(a_k);
+    run.chain.push_back(std::move(before));
+    run.v_end = segments[k].limit;
+    append_fastest(run, *j_max, laws);
+    run = Run{};
+    run.v_start = segments[k].limit;
+    run.segments.push_back({after.distance(), segments[k].limit, segments[k].acceleration});
+    run.accelerations.push_back(a_k);
+    run.chain.push_back(std::move(after));
   }
+  run.v_end = v_end;
+  append_fastest(run, *j_max, laws);
   return laws;
 }
 

@@ -114,7 +114,8 @@ TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
     const std::vector<Profile> laws = velocity_limited_law(segments, a, j);
     const double chain = total_duration(velocity_limited_chain(segments, a, j));
     const double law = total_duration(laws);
-    ASSERT_LE(law, chain) << "case " << i;
+    // (the chain's laws cut in their cruises add their durations in another order: rounding)
+    ASSERT_LE(law, chain * (1 + 1e-12)) << "case " << i;
     faster += law < chain * (1 - 1e-6);
     expect_within_staircase(laws, segments, a, j, "case " + std::to_string(i));
   }
