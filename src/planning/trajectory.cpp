@@ -130,7 +130,9 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   if (law_.size() == 0) return out;
   if (!(t > 0.0)) t = 0.0;
   const ProfileState law = law_.state_at(t, cursor.piece);
-  out.s = law.s;
+  // At and past the end the path's end exactly (the laws' distances add up to its length only
+  // to rounding).
+  out.s = t >= law_.duration() ? path_.length() : law.s;
   out.s_dot = law.v;
   out.s_ddot = law.a;
   const std::size_t k = cursor.section = path_.section_state(out.s, cursor.section, out.pose, out.body_twist);

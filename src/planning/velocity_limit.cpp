@@ -132,7 +132,7 @@ struct Run {
 
 // The fastest of the chain and the laws that carry acceleration over the run, forwards and
 // backwards, with and without settling in the troughs (doc/profiles.md §8.4).
-void append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
+bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
   std::vector<Profile>* best = &run.chain;
   double duration = total_duration(run.chain);
   std::vector<Profile> candidates[4];
@@ -163,6 +163,7 @@ void append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
     }
   }
   for (Profile& law : *best) out.push_back(std::move(law));
+  return best != &run.chain;
 }
 
 }  // namespace
@@ -179,6 +180,7 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   laws.reserve(chain.size());
   Run run;
   run.v_start = v_start;
+  bool faster = false;
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const double own = segments[k].acceleration;
     const double a_k = own > 0.0 ? std::min(own, a_max) : a_max;
@@ -186,7 +188,7 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
     if (!cruise) {
       run.segments.push_back(segments[k]);
       run.accelerations.push_back(a_k);
-      run.chain.push_back(std::move(chain[k]));
+      run.chain.push_back(chain[k]);
       continue;
     }
     auto [before, after] = cut_in_cruise(chain[k], *cruise);
@@ -194,7 +196,7 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
     run.accelerations.push_back(a_k);
     run.chain.push_back(std::move(before));
     run.v_end = segments[k].limit;
-    append_fastest(run, *j_max, laws);
+    faster = append_fastest(run, *j_max, laws) || faster;
     run = Run{};
     run.v_start = segments[k].limit;
     run.segments.push_back({after.distance(), segments[k].limit, segments[k].acceleration});
@@ -202,8 +204,9 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
     run.chain.push_back(std::move(after));
   }
   run.v_end = v_end;
-  append_fastest(run, *j_max, laws);
-  return laws;
+  faster = append_fastest(run, *j_max, laws) || faster;
+  // Where no run gains, the chain as it was (its laws uncut).
+  return faster ? laws : chain;
 }
 
 }  // namespace dispkin

@@ -19,9 +19,10 @@ JointTrajectorySample overlapped_joint_sample(double t, double overlap, double b
                                               const After& after_at) noexcept {
   const double begin = before_duration - overlap;
   if (!(t > begin)) return before_at(t);  // also t ≤ 0 and NaN: the start
-  if (t >= before_duration) {
+  if (t >= before_duration || t >= duration) {
     // Only the next move runs; its s continues from the first move's length. At and past the end
-    // exactly the next move's end (t − begin may round below its duration).
+    // exactly the next move's end (t − begin may round below its duration; and where the whole
+    // next move overlaps the first, the sum of the durations may round below the first one's).
     JointTrajectorySample out = after_at(t >= duration ? after_duration : t - begin);
     out.s += before_length;
     return out;
