@@ -30,6 +30,7 @@ from ._core import (
     point_speed,
     section_length,
     sphere_speed,
+    velocity_limited_chain,
     velocity_limited_law,
     xyzuvw_for_new_pivot,
 )
@@ -69,6 +70,7 @@ __all__ = [
     "section_length",
     "shapes",
     "sphere_speed",
+    "velocity_limited_chain",
     "velocity_limited_law",
     "xyzuvw_for_new_pivot",
 ]

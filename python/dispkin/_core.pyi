@@ -140,6 +140,9 @@ class Profile:
 def velocity_limited_law(
     segments: _ArrayLike, a_max: float, j_max: Optional[float] = None, v_start: float = 0.0, v_end: float = 0.0
 ) -> List[Profile]: ...
+def velocity_limited_chain(
+    segments: _ArrayLike, a_max: float, j_max: Optional[float] = None, v_start: float = 0.0, v_end: float = 0.0
+) -> List[Profile]: ...
 
 class Section:
     @property

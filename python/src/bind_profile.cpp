@@ -112,23 +112,38 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
       .def("__repr__", &profile_repr);
   def_pickle(profile, "Profile", &profile_state, [](const py::object& state) { return profile_from_state(state); });
 
+  // (N, 2) rows (length, limit) as the staircase's segments.
+  const auto staircase = [](const Eigen::MatrixXd& segments) {
+    if (segments.cols() != 2) {
+      throw std::invalid_argument("segments: expected an array of shape (N, 2) of (length, limit), got shape (" +
+                                  std::to_string(segments.rows()) + ", " + std::to_string(segments.cols()) + ")");
+    }
+    std::vector<LimitedSegment> list;
+    for (Eigen::Index i = 0; i < segments.rows(); ++i) list.push_back({segments(i, 0), segments(i, 1)});
+    return list;
+  };
   m.def(
       "velocity_limited_law",
-      [](const Eigen::MatrixXd& segments, double a_max, std::optional<double> j_max, double v_start, double v_end) {
-        if (segments.cols() != 2) {
-          throw std::invalid_argument("segments: expected an array of shape (N, 2) of (length, limit), got shape (" +
-                                      std::to_string(segments.rows()) + ", " + std::to_string(segments.cols()) + ")");
-        }
-        std::vector<LimitedSegment> list;
-        for (Eigen::Index i = 0; i < segments.rows(); ++i) list.push_back({segments(i, 0), segments(i, 1)});
-        return velocity_limited_law(list, a_max, j_max, v_start, v_end);
-      },
+      [staircase](const Eigen::MatrixXd& segments, double a_max, std::optional<double> j_max, double v_start,
+                  double v_end) { return velocity_limited_law(staircase(segments), a_max, j_max, v_start, v_end); },
       py::arg("segments"), py::arg("a_max"), py::arg("j_max") = py::none(), py::arg("v_start") = 0.0,
       py::arg("v_end") = 0.0,
-      "The time-optimal chain of laws under a piecewise-constant velocity limit: `segments` is an "
-      "(N, 2) array of rows (length, limit). Returns one Profile per segment (a trapezoid without "
-      "j_max, an S-curve with it), velocities joining continuously; the boundary velocities come "
-      "from a forward and a backward pass. S-curves have zero acceleration at every segment boundary.");
+      "The time law under a piecewise-constant velocity limit: `segments` is an (N, 2) array of rows "
+      "(length, limit). A list of Profiles in order, each within one segment (a segment may hold "
+      "several), velocities joining continuously, every velocity within its segment's limit. Without "
+      "j_max the time-optimal trapezoid chain (velocity_limited_chain); with it, for a law ending at rest, "
+      "the faster of that chain and the law that carries acceleration across the boundaries "
+      "(doc/profiles.md §8) — never slower than the chain.");
+  m.def(
+      "velocity_limited_chain",
+      [staircase](const Eigen::MatrixXd& segments, double a_max, std::optional<double> j_max, double v_start,
+                  double v_end) { return velocity_limited_chain(staircase(segments), a_max, j_max, v_start, v_end); },
+      py::arg("segments"), py::arg("a_max"), py::arg("j_max") = py::none(), py::arg("v_start") = 0.0,
+      py::arg("v_end") = 0.0,
+      "The chain of laws under a piecewise-constant velocity limit (doc/profiles.md §5): one Profile "
+      "per row (length, limit) of `segments` (a trapezoid without j_max, an S-curve with it), the "
+      "boundary velocities from a forward and a backward pass, every S-curve at zero acceleration at "
+      "its segment's boundaries.");
 }
 
 }  // namespace python

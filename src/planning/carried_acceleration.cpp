@@ -1,12 +1,12 @@
 // The staircase law that carries acceleration across segment boundaries (carried_acceleration.hpp;
-// doc/profiles.md §8, equation numbers (25)–(30) below refer to it).
+// doc/profiles.md §8, equation numbers (26)–(32) below refer to it).
 //
-// A state (s, ṡ, s̈) is viable when the fastest stop from it (25) stays under the staircase and
-// comes to rest on the path (26)–(28): every law that respects the staircase and ends at rest
+// A state (s, ṡ, s̈) is viable when the fastest stop from it (26) stays under the staircase and
+// comes to rest on the path (27)–(29): every law that respects the staircase and ends at rest
 // is at least as fast as that stop at every position, so the test is exact. The law is built
 // in time, phase by phase: the largest jerk among +j, 0 and the stop's own jerk whose phase keeps
 // the state viable, each phase ended at the first of: the acceleration limit, the next segment
-// boundary, the last viable instant (bisection), or the end of the stop's piece (29).
+// boundary, the last viable instant (bisection), or the end of the stop's piece (31).
 #include "carried_acceleration.hpp"
 
 #include <algorithm>
@@ -58,7 +58,7 @@ class MinimumTree {
   std::vector<double> node_;
 };
 
-// (25) The fastest stop from (v, a) under the braking limit A and jerk j: if a > 0, a ramp at −j
+// (26) The fastest stop from (v, a) under the braking limit A and jerk j: if a > 0, a ramp at −j
 // to the peak (v + a²/(2j), 0); then the pulse (17) down by the peak velocity — a ramp at −j to
 // −p, a hold at −p, a ramp at +j to rest. It exists unless a < 0 with v + a|a|/(2j) < 0 (the
 // velocity would turn negative whatever the law does).
@@ -105,7 +105,7 @@ Stop fastest_stop(const Motion& x, double brake, double j) {
   return stop;
 }
 
-// (27) Where the stop, on its way up to the peak, reaches the velocity w (v ≤ w ≤ peak):
+// (28) Where the stop, on its way up to the peak, reaches the velocity w (v ≤ w ≤ peak):
 // v + a t − j t²/2 = w, the smaller root in its cancellation-free form.
 double rising_position(const Stop& stop, double w, double j) {
   const Motion& x = stop.start;
@@ -115,7 +115,7 @@ double rising_position(const Stop& stop, double w, double j) {
   return advance(x, t, -j).s;
 }
 
-// (28) Where the stop, after its peak, has slowed to w (0 ≤ w ≤ peak): in the piece where the
+// (29) Where the stop, after its peak, has slowed to w (0 ≤ w ≤ peak): in the piece where the
 // velocity passes w, v₀ + a₀ t + j t²/2 = w has the root t = 2Δ / (−a₀ + √(a₀² − 2jΔ)),
 // Δ = v₀ − w (a₀ ≤ 0 after the peak: no cancellation).
 double falling_position(const Stop& stop, double w) {
@@ -163,7 +163,7 @@ class Staircase {
     return static_cast<std::size_t>(it - (start_.begin() + 1));
   }
 
-  //! (26)–(28): whether x, reached by a phase within segment `law_segment`, keeps that segment's
+  //! (27)–(30): whether x, reached by a phase within segment `law_segment`, keeps that segment's
   //! limits, and the fastest stop from x keeps under the staircase and rests on the path. (The
   //! phase's velocity is largest at one of its ends: the phases are cut where s̈ = 0.)
   //! When only a trough fails, its index goes to *binding_trough (if given).
@@ -178,7 +178,7 @@ class Staircase {
     const std::size_t kp = segment_at(stop.peak.s);
     if (stop.peak.v > limit_[kp]) return false;
     if (x.a > 0.0 && kp > m) {
-      // (27) on the way up each segment is left before the velocity passes its limit, and
+      // (28) on the way up each segment is left before the velocity passes its limit, and
       // entered with an acceleration within its own.
       const bool below = limits_.all(m, kp - 1, [&](double v_min, std::size_t, std::size_t last) {
         return v_min >= stop.peak.v || rising_position(stop, v_min, j_) >= start_[last + 1];
@@ -186,12 +186,12 @@ class Staircase {
       if (!below) return false;
       if (!accels_.all(m + 1, kp, [&](double a_min, std::size_t, std::size_t) { return a_min >= x.a; })) return false;
     }
-    // (28) after the peak each segment begins where the velocity has fallen to its limit.
+    // (29) after the peak each segment begins where the velocity has fallen to its limit.
     const bool under = limits_.all(kp + 1, segment_at(rest.s), [&](double v_min, std::size_t first, std::size_t) {
       return v_min >= stop.peak.v || falling_position(stop, v_min) <= start_[first];
     });
     if (!under || !settle_) return under;
-    // (29') and each trough ahead is reached at its limit with zero acceleration: the pulse (17)
+    // (30) and, settling in troughs, each trough ahead is reached at its limit with zero acceleration: the pulse (17)
     // down to (V_k, 0) ends before it begins. The pulse to a lower velocity is longer, so a block
     // fits where the pulse to its lowest trough does; it ends within V·a/j past where the stop has
     // slowed to V, so no trough beyond that reach binds.
@@ -289,7 +289,7 @@ double time_to_position(const Motion& x, double jerk, double cap, double target)
   return hi;
 }
 
-// (30) A law is kept only if every phase keeps 0 ≤ ṡ ≤ V, |s̈| ≤ A, |s⃛| ≤ j of its segment,
+// (32) A law is kept only if every phase keeps 0 ≤ ṡ ≤ V, |s̈| ≤ A, |s⃛| ≤ j of its segment,
 // the velocity's maximum over a phase taken at its ends or where s̈ = 0 inside it.
 bool within_limits(const Profile& law, double v_max, double a_max, double j) {
   const double slack = 1e-12;
@@ -310,7 +310,7 @@ bool within_limits(const Profile& law, double v_max, double a_max, double j) {
 
 // The laws of one segment from its phases (consecutive phases of the same jerk merged), at most
 // Profile::max_phases each, the last ending at the segment's end `s_end` in state `end`; false if
-// a law does not keep the segment's limits (30).
+// a law does not keep the segment's limits (32).
 bool append_segment_laws(std::vector<Phase>& phases, double s_end, const Motion& end, const LimitedSegment& segment,
                          double a_max, double j, std::vector<Profile>& laws) {
   std::vector<Phase> merged;
@@ -376,7 +376,7 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
   // near the edge of the viable states rounding leaves room for vanishing phases only.
   const double shortest = 1e-6 * a_top / j_max;
   // Whether the last phase ended on the edge of the viable states: the stop is followed from there
-  // to its next event, not alternated with other jerks in vanishing steps (29).
+  // to its next event, not alternated with other jerks in vanishing steps (31).
   bool on_edge = false;
   std::optional<std::size_t> edge_trough;  // the trough whose rule made the edge, if one did
   std::vector<Profile> laws;
@@ -391,7 +391,7 @@ std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<L
       if (step == max_steps) return std::nullopt;
       const double a_cap = stairs.acceleration(m);
       const double s_next = stairs.start(m + 1);
-      // Candidates, largest jerk first (29): +j up to the acceleration limit, 0, the stop's piece.
+      // Candidates, largest jerk first (31): +j up to the acceleration limit, 0, the manoeuvre's piece.
       double jerk = 0.0, duration = 0.0;
       bool chosen = false, stopping = false;
       const Stop stop = stairs.stop_from(x);

@@ -92,7 +92,7 @@ double total_duration(const std::vector<Profile>& laws) {
 }
 
 // The cruise of a chain law at its segment's limit, if it has one (phase index), where the
-// staircase is cut into runs (doc/profiles.md §8.4).
+// staircase is cut into runs (doc/profiles.md §8.3, eq. 33).
 std::optional<int> cruise_at_limit(const Profile& law, double limit) {
   for (int i = 0; i < law.phase_count(); ++i) {
     const ProfilePhase& p = law.phase(i);
@@ -127,11 +127,12 @@ struct Run {
   std::vector<LimitedSegment> segments;
   std::vector<double> accelerations;
   double v_start = 0.0, v_end = 0.0;
+  double a_max = 0.0;
   std::vector<Profile> chain;
 };
 
 // The fastest of the chain and the laws that carry acceleration over the run, forwards and
-// backwards, with and without settling in the troughs (doc/profiles.md §8.4).
+// backwards, with and without settling in the troughs (doc/profiles.md §8.3, eq. 33).
 bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
   std::vector<Profile>* best = &run.chain;
   double duration = total_duration(run.chain);
@@ -139,7 +140,12 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
   // A run of one segment is crossed by its chain law, time-optimal for one segment.
   const bool open_end = run.v_end > 0.0, open_start = run.v_start > 0.0;
   const bool ends_fit = (!open_end || run.v_end == run.segments.back().limit) && (!open_start || run.v_start == run.segments.front().limit);
-  if (run.segments.size() > 1 && ends_fit) {
+  // No jerk-limited law is faster than the trapezoid law over the run (§5): where the chain is
+  // within 1 % of it, at most that much is left to gain: not worth the search.
+  const bool worth = run.segments.size() > 1 && ends_fit &&
+                     duration > 1.01 * total_duration(velocity_limited_chain(run.segments, run.a_max, std::nullopt,
+                                                                              run.v_start, run.v_end));
+  if (worth) {
     const std::vector<LimitedSegment> reversed(run.segments.rbegin(), run.segments.rend());
     const std::vector<double> reversed_accelerations(run.accelerations.rbegin(), run.accelerations.rend());
     int i = 0;
@@ -174,12 +180,13 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   if (!j_max) return chain;
   // The jerk-limited chain returns to zero acceleration at every boundary. Where a chain law
   // cruises at its segment's limit no law is faster, so the staircase is cut there into runs
-  // (doc/profiles.md §8.4), and each run takes the fastest of its chain and the laws that carry
+  // (doc/profiles.md §8.3), and each run takes the fastest of its chain and the laws that carry
   // acceleration across its boundaries (§8).
   std::vector<Profile> laws;
   laws.reserve(chain.size());
   Run run;
   run.v_start = v_start;
+  run.a_max = a_max;
   bool faster = false;
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const double own = segments[k].acceleration;
@@ -199,6 +206,7 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
     faster = append_fastest(run, *j_max, laws) || faster;
     run = Run{};
     run.v_start = segments[k].limit;
+    run.a_max = a_max;
     run.segments.push_back({after.distance(), segments[k].limit, segments[k].acceleration});
     run.accelerations.push_back(a_k);
     run.chain.push_back(std::move(after));

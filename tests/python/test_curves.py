@@ -77,12 +77,24 @@ def test_overlapped_velocity_method_follows_the_articles_formulas():
 
 
 def test_velocity_limited_law_joins_segments_under_their_limits():
-    laws = dispkin.velocity_limited_law(np.array([[0.2, 0.5], [0.05, 0.1], [0.3, 0.4]]), a_max=1.0, j_max=20.0)
-    assert [law.kind for law in laws] == ["scurve"] * 3
-    speeds = [law.sample(np.linspace(0, law.duration, 200))[:, 1] for law in laws]
-    assert max(speeds[1]) <= 0.1 * (1 + 1e-12)
-    assert speeds[0][-1] == pytest.approx(speeds[1][0], abs=1e-9)
-    assert speeds[2][-1] == pytest.approx(0.0, abs=1e-9)
+    segments = np.array([[0.2, 0.5], [0.05, 0.1], [0.3, 0.4]])
+    laws = dispkin.velocity_limited_law(segments, a_max=1.0, j_max=20.0)
+    assert {law.kind for law in laws} == {"scurve"} and len(laws) >= 3
+    # Laws in order, each within one segment (a segment may hold several); the velocity joins.
+    edges = np.cumsum(segments[:, 0])
+    start, before = 0.0, 0.0
+    for law in laws:
+        states = law.sample(np.linspace(0, law.duration, 200))
+        segment = int(np.searchsorted(edges, start + 0.5 * law.distance))
+        assert start + law.distance <= edges[segment] + 1e-12
+        assert states[:, 1].max() <= segments[segment, 1] * (1 + 1e-9)
+        assert states[0, 1] == pytest.approx(before, abs=1e-9)
+        before, start = states[-1, 1], start + law.distance
+    assert start == pytest.approx(edges[-1]) and before == pytest.approx(0.0, abs=1e-9)
+    # Never slower than the chain that rests its acceleration at every boundary.
+    chain = dispkin.velocity_limited_chain(segments, a_max=1.0, j_max=20.0)
+    assert len(chain) == 3
+    assert sum(law.duration for law in laws) <= sum(law.duration for law in chain) * (1 + 1e-12)
     with pytest.raises(ValueError, match=r"segments: expected an array of shape \(N, 2\)"):
         dispkin.velocity_limited_law(np.ones((2, 3)), 1.0)
 
