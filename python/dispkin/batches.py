@@ -151,21 +151,36 @@ Task = Tuple[str, str, bool]
 Runner = Callable[[List[Task]], Iterator[Tuple[int, Dict[str, Any]]]]
 
 
-def _run_on_processes(workers: int) -> Runner:
+def _run_on_processes(workers: int, plan: Callable[..., Dict[str, Any]] = plan_job_file) -> Runner:
     """Runs the tasks on a pool of `workers` fresh Python processes (spawned: nothing of this
-    process's threads or state is inherited), yielding (index, outcome) as jobs finish."""
+    process's threads or state is inherited), yielding (index, outcome) as jobs finish. A process
+    that dies (killed for its memory, a crash) breaks the pool and every job it still held: those
+    jobs run again, each in a process of its own, so that only the job that kills its process
+    fails, and says so."""
 
     def run(tasks: List[Task]) -> Iterator[Tuple[int, Dict[str, Any]]]:
-        import concurrent.futures
-        import multiprocessing
+        import concurrent.futures.process
 
-        context = multiprocessing.get_context("spawn")
-        with concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-            futures = {pool.submit(plan_job_file, *task): i for i, task in enumerate(tasks)}
+        lost: List[int] = []
+        with _process_pool(workers) as pool:
+            futures = {pool.submit(plan, *task): i for i, task in enumerate(tasks)}
             for future in concurrent.futures.as_completed(futures):
-                yield futures[future], _outcome(future)
+                if isinstance(future.exception(), concurrent.futures.process.BrokenProcessPool):
+                    lost.append(futures[future])
+                else:
+                    yield futures[future], _outcome(future)
+        for i in sorted(lost):
+            with _process_pool(1) as alone:
+                yield i, _outcome(alone.submit(plan, *tasks[i]))
 
     return run
+
+
+def _process_pool(workers: int) -> Any:
+    import concurrent.futures
+    import multiprocessing
+
+    return concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
 
 
 def _run_on_cluster(scheduler: Any) -> Runner:
@@ -215,7 +230,8 @@ def _outcome(future: Any) -> Dict[str, Any]:
     try:
         return future.result()
     except Exception as error:  # noqa: BLE001 - the worker process died or the cluster lost it
-        return {"error": f"the worker planning it stopped ({type(error).__name__}: {error})"}
+        return {"error": f"the worker process planning it stopped: killed (out of memory?) or crashed "
+                         f"({type(error).__name__}: {error})"}
 
 
 def _result(job: str, folder: pathlib.Path, task: Task, outcome: Dict[str, Any]) -> BatchResult:

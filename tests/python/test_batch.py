@@ -6,6 +6,7 @@ import contextlib
 import csv
 import io
 import json
+import os
 import pathlib
 import shutil
 
@@ -122,3 +123,20 @@ def test_batch_on_a_dask_cluster_is_planning_each_job_alone(job_files, tmp_path)
     rows = assert_same_as_planned_alone(job_files, tmp_path / "out", tmp_path / "alone")
     assert [r.duration for r in results[:3]] == [float(r["duration"]) for r in rows[:3]]
     assert results[3].error == rows[3]["error"] and results[2].violations == rows[2]["broken_limits"].split("; ")
+
+
+def plan_or_die(job_file, outdir, plot):
+    """The planning of a batch's worker, except that the process planning fast.yaml dies (as one
+    killed for its memory does)."""
+    if pathlib.Path(job_file).name == "fast.yaml":
+        os._exit(9)
+    return batches.plan_job_file(job_file, outdir, plot)
+
+
+def test_a_worker_process_that_dies_fails_its_job_alone(job_files, tmp_path):
+    tasks = [(str(pathlib.Path(job).absolute()), str(tmp_path / "out" / str(k)), False) for k, job in enumerate(job_files[:3])]
+    outcomes = dict(batches._run_on_processes(2, plan_or_die)(tasks))
+    assert sorted(outcomes) == [0, 1, 2]
+    assert outcomes[1]["error"].startswith("the worker process planning it stopped: killed (out of memory?) or crashed")
+    for k in (0, 2):  # the jobs the dying process took down with its pool are planned again
+        assert outcomes[k]["duration"] > 0 and (tmp_path / "out" / str(k)).is_dir()
