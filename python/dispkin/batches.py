@@ -108,6 +108,10 @@ def batch(jobs: Iterable[Union[str, os.PathLike]], outdir: Union[str, os.PathLik
     job_files = [os.fspath(job) for job in jobs]
     if not job_files:
         raise JobError("jobs: no job file given")
+    if plot:
+        from .commands import require_matplotlib
+
+        require_matplotlib()  # before the work, not in every job
     if scheduler is not None and workers is not None:
         raise JobError(f"workers = {workers!r}: give either workers (local processes) or scheduler (a Dask "
                        "cluster), not both")
@@ -171,7 +175,11 @@ def _run_on_processes(workers: int, plan: Callable[..., Dict[str, Any]] = plan_j
                     yield futures[future], _outcome(future)
         for i in sorted(lost):
             with _process_pool(1) as alone:
-                yield i, _outcome(alone.submit(plan, *tasks[i]))
+                future = alone.submit(plan, *tasks[i])
+                if isinstance(future.exception(), concurrent.futures.process.BrokenProcessPool):
+                    yield i, {"error": "the worker process planning it died: killed (out of memory?) or crashed"}
+                else:
+                    yield i, _outcome(future)
 
     return run
 
@@ -226,12 +234,12 @@ def _connect(distributed: Any, address: str) -> Any:
 
 
 def _outcome(future: Any) -> Dict[str, Any]:
-    """The outcome of a finished job; a worker that died while planning it fails the job alone."""
+    """The outcome of a finished job; a worker that could not plan it (a cluster's worker that
+    died, a worker without dispkin) fails the job alone."""
     try:
         return future.result()
-    except Exception as error:  # noqa: BLE001 - the worker process died or the cluster lost it
-        return {"error": f"the worker process planning it stopped: killed (out of memory?) or crashed "
-                         f"({type(error).__name__}: {error})"}
+    except Exception as error:  # noqa: BLE001 - the job's failure, not the batch's
+        return {"error": f"the worker planning it failed: {type(error).__name__}: {error}"}
 
 
 def _result(job: str, folder: pathlib.Path, task: Task, outcome: Dict[str, Any]) -> BatchResult:
@@ -268,14 +276,12 @@ def _write_summary(directory: pathlib.Path, results: List[BatchResult]) -> pathl
 def run_batch(jobs: Sequence[str], outdir: str, workers: Optional[int], scheduler: Optional[str], plot: bool,
               out: TextIO, allow_violations: bool = False, progress: Optional[Progress] = None,
               errors: Optional[TextIO] = None) -> int:
-    """`dispkin batch`: plan the jobs, write the summary table, print a line per job that
-    failed or breaks a machine limit and the totals. Returns 0; 1 when a job failed;
+    """`dispkin batch`: plan the jobs (:func:`batch`), print a line per job that failed or
+    breaks a machine limit and the totals. Returns 0; 1 when a job failed;
     EXIT_LIMITS_BROKEN when a trajectory breaks a machine limit unless `allow_violations`."""
-    from .commands import EXIT_LIMITS_BROKEN, require_matplotlib
+    from .commands import EXIT_LIMITS_BROKEN
 
     errors = errors or sys.stderr
-    if plot:
-        require_matplotlib()  # before the work, not after it
     results = batch(jobs, outdir, workers, scheduler, plot, progress)
     if progress is not None and progress.enabled:
         progress.finish(f"{len(results)} job(s) done")
