@@ -15,6 +15,7 @@ debian_packages=(
   liborocos-kdl-dev      # chains, Jacobians, dynamics (serial-arm plugin)
   libgtest-dev           # C++ tests
   libbenchmark-dev       # C++ benchmarks
+  doxygen                # `make docs`: the C++ API reference (doc/api/Doxyfile)
   python3-venv
 )
 missing=()

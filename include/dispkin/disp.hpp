@@ -25,6 +25,7 @@ enum class Interpolation {
   decoupled,  //!< pivot on a straight line, orientation by SLERP about one fixed axis (LIN)
 };
 
+//! The interpolation's name: "screw" or "decoupled" (read back by interpolation_from_string).
 inline const char* to_string(Interpolation kind) {
   return kind == Interpolation::screw ? "screw" : "decoupled";
 }
@@ -43,20 +44,24 @@ inline Interpolation interpolation_from_string(const std::string& name) {
 
 //! The Euclidean norm (the default, and the only one under which speeds are rotation-invariant).
 struct EuclideanNorm {
+  //! ‖u‖₂.
   template <typename Scalar>
   static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
     return u.norm();
   }
-  // Over many points: a key monotone in the norm (here its square), one root at the end.
+  //! Over many points (Eigen arrays of coordinates): a key monotone in the norm (here its
+  //! square), so that one root is taken at the end, not one per point.
   template <typename X, typename Y, typename Z>
   static auto key(const X& x, const Y& y, const Z& z) {
     return x.square() + y.square() + z.square();
   }
+  //! The norm of a key: its square root.
   template <typename Scalar>
   static Scalar from_key(Scalar key) {
     using std::sqrt;
     return sqrt(key);
   }
+  //! The largest norm of u + x over the disk x ⊥ n̂, ‖x‖₂ ≤ r (n̂ a unit vector).
   template <typename Scalar>
   static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
     using std::sqrt;
@@ -68,19 +73,23 @@ struct EuclideanNorm {
 
 //! The maximum norm max |uᵢ|.
 struct MaxNorm {
+  //! max |uᵢ|.
   template <typename Scalar>
   static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
     return u.cwiseAbs().maxCoeff();
   }
+  //! Over many points: the norm itself, coordinate-wise.
   template <typename X, typename Y, typename Z>
   static auto key(const X& x, const Y& y, const Z& z) {
     return x.abs().max(y.abs()).max(z.abs());
   }
+  //! The norm of a key: the key.
   template <typename Scalar>
   static Scalar from_key(Scalar key) {
     return key;
   }
-  // max over the disk of ±eᵢ·x is r‖eᵢ − (eᵢ·n̂)n̂‖ = r √(1 − n̂ᵢ²).
+  //! The largest norm of u + x over the disk x ⊥ n̂, ‖x‖₂ ≤ r: the max over the disk of ±eᵢ·x
+  //! is r‖eᵢ − (eᵢ·n̂)n̂‖ = r √(1 − n̂ᵢ²).
   template <typename Scalar>
   static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
     using std::abs;
@@ -96,19 +105,23 @@ struct MaxNorm {
 
 //! The L1 norm Σ |uᵢ|.
 struct L1Norm {
+  //! Σ |uᵢ|.
   template <typename Scalar>
   static Scalar of(const Eigen::Matrix<Scalar, 3, 1>& u) {
     return u.cwiseAbs().sum();
   }
+  //! Over many points: the norm itself, coordinate-wise.
   template <typename X, typename Y, typename Z>
   static auto key(const X& x, const Y& y, const Z& z) {
     return x.abs() + y.abs() + z.abs();
   }
+  //! The norm of a key: the key.
   template <typename Scalar>
   static Scalar from_key(Scalar key) {
     return key;
   }
-  // ‖x‖₁ = max over sign vectors s of s·x; over the disk s·x peaks at s·u + r‖s − (s·n̂)n̂‖.
+  //! The largest norm of u + x over the disk x ⊥ n̂, ‖x‖₂ ≤ r: ‖x‖₁ = max over sign vectors s
+  //! of s·x, and over the disk s·x peaks at s·u + r‖s − (s·n̂)n̂‖.
   template <typename Scalar>
   static Scalar max_over_disk(const Eigen::Matrix<Scalar, 3, 1>& u, const Eigen::Matrix<Scalar, 3, 1>& n, Scalar r) {
     using std::sqrt;

@@ -20,16 +20,19 @@ namespace dispkin {
 //! `f(set, a, b, 0.5)` deduce the scalar from the other arguments (std::type_identity, C++20).
 template <typename T>
 struct non_deduced_wrapper {
-  using type = T;
+  using type = T;  //!< T itself
 };
+//! T, not deduced (non_deduced_wrapper<T>::type).
 template <typename T>
 using non_deduced = typename non_deduced_wrapper<T>::type;
 
 //! How much of a value a message repeats: a message names the value, it does not echo a whole
 //! file back (a 150 MB JSON array, a 10⁵-character attribute). Longer strings are cut, with
 //! their length given; vectors and matrices show their first coefficients.
+//!@{
 constexpr std::size_t max_echoed_characters = 200;
 constexpr Eigen::Index max_echoed_coefficients = 24;
+//!@}
 
 namespace detail {
 
@@ -54,7 +57,7 @@ inline std::size_t utf8_sequence(std::string_view text, std::size_t i) noexcept 
 
 }  // namespace detail
 
-//! The text with every byte that is not part of valid UTF-8 written as \xNN: a message is
+//! The text with every byte that is not part of valid UTF-8 written as `\xNN`: a message is
 //! shown as a Python str (and on terminals), which must decode, whatever bytes a file held.
 inline std::string valid_utf8(std::string_view text) {
   std::string out;
@@ -176,8 +179,10 @@ namespace numeric_range {
 constexpr double max_translation = 1e12;
 //! Speed, acceleration and jerk limits of a plan or metric set (m/s, m/s², m/s³): in
 //! [min_limit, max_limit], so that durations, ramps and their products stay finite.
+//!@{
 constexpr double min_limit = 1e-12;
 constexpr double max_limit = 1e12;
+//!@}
 }  // namespace numeric_range
 
 //! A speed, acceleration or jerk limit inside numeric_range [min_limit, max_limit].

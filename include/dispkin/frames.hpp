@@ -31,15 +31,18 @@ namespace dispkin {
 //! contain the sphere, doc/disp-metric.md eq. 26) or the exact sphere.
 enum class Envelope { icosahedron, sphere };
 
+//! The envelope's name: "icosahedron" or "sphere".
 inline const char* to_string(Envelope envelope) { return envelope == Envelope::icosahedron ? "icosahedron" : "sphere"; }
 
 //! A work frame (world coordinates) and a tool frame (platform coordinates). Both are any rigid
 //! poses; identity for both makes the platform pose the command.
 class WorkToolFrames {
  public:
-  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  using Vector6 = Eigen::Matrix<double, 6, 1>;  //!< XYZUVW (m, rad)
 
+  //! Identity work and tool frames.
   WorkToolFrames() = default;
+  //! The work frame W (world coordinates) and the tool frame F (platform coordinates).
   WorkToolFrames(const Posed& work, const Posed& tool) : work_(work), tool_(tool) {}
 
   const Posed& work() const noexcept { return work_; }  //!< W: work frame → world

@@ -26,10 +26,13 @@ enum class Frame {
   absolute,  //!< world coordinates: the object stays put
 };
 
+//! The frame's name: "relative" or "absolute".
 inline const char* to_string(Frame frame) { return frame == Frame::relative ? "relative" : "absolute"; }
 
+//! A ball of the set: every point of it is held to the group's limit (doc/disp-metric.md §7).
 template <typename Scalar>
 struct Sphere {
+  //! Its centre, in the coordinates of its Frame.
   Eigen::Matrix<Scalar, 3, 1> center;
   Scalar radius;  //!< ≥ 0; a sphere of radius 0 is a point
 };
@@ -40,22 +43,28 @@ struct Sphere {
 template <typename Scalar>
 class PointColumns {
  public:
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
-  using Column = Eigen::Map<const Eigen::Array<Scalar, Eigen::Dynamic, 1>>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;                                 //!< a point
+  using Column = Eigen::Map<const Eigen::Array<Scalar, Eigen::Dynamic, 1>>;  //!< one coordinate of every point
 
+  //! Appends point p.
   void push_back(const Vector3& p) {
     x_.push_back(p.x());
     y_.push_back(p.y());
     z_.push_back(p.z());
   }
-  std::size_t size() const noexcept { return x_.size(); }
-  bool empty() const noexcept { return x_.empty(); }
+  std::size_t size() const noexcept { return x_.size(); }  //!< the number of points
+  bool empty() const noexcept { return x_.empty(); }       //!< whether there is no point
+  //! Point i (by value: the coordinates are stored apart).
   Vector3 operator[](std::size_t i) const noexcept { return Vector3(x_[i], y_[i], z_[i]); }
 
+  //! The x, y and z coordinates of every point, as contiguous columns.
+  //!@{
   Column x() const noexcept { return Column(x_.data(), static_cast<Eigen::Index>(x_.size())); }
   Column y() const noexcept { return Column(y_.data(), static_cast<Eigen::Index>(y_.size())); }
   Column z() const noexcept { return Column(z_.data(), static_cast<Eigen::Index>(z_.size())); }
+  //!@}
 
+  //! The points as vectors, in order.
   std::vector<Vector3> to_vectors() const {
     std::vector<Vector3> out;
     out.reserve(size());
@@ -66,20 +75,23 @@ class PointColumns {
   //! Iteration yields the points by value.
   class const_iterator {
    public:
+    //! At point i of owner.
     const_iterator(const PointColumns* owner, std::size_t i) : owner_(owner), i_(i) {}
-    Vector3 operator*() const { return (*owner_)[i_]; }
+    Vector3 operator*() const { return (*owner_)[i_]; }  //!< the point
+    //! The next point.
     const_iterator& operator++() {
       ++i_;
       return *this;
     }
+    //! Whether the two stand at different points.
     bool operator!=(const const_iterator& other) const { return i_ != other.i_; }
 
    private:
     const PointColumns* owner_;
     std::size_t i_;
   };
-  const_iterator begin() const { return const_iterator(this, 0); }
-  const_iterator end() const { return const_iterator(this, size()); }
+  const_iterator begin() const { return const_iterator(this, 0); }       //!< at the first point
+  const_iterator end() const { return const_iterator(this, size()); }  //!< past the last point
 
  private:
   std::vector<Scalar> x_, y_, z_;
@@ -88,15 +100,16 @@ class PointColumns {
 //! One group of the set: its objects and, optionally, its own speed limit.
 template <typename Scalar>
 struct MetricGroup {
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;  //!< a point
 
-  int id = 0;
+  int id = 0;                         //!< the group's number, ≥ 0
   std::optional<Scalar> speed_limit;  //!< unset: the group is held to the system velocity
-  PointColumns<Scalar> relative_points;
-  PointColumns<Scalar> absolute_points;
-  std::vector<Sphere<Scalar>> relative_spheres;
-  std::vector<Sphere<Scalar>> absolute_spheres;
+  PointColumns<Scalar> relative_points;          //!< points in body coordinates
+  PointColumns<Scalar> absolute_points;          //!< points in world coordinates
+  std::vector<Sphere<Scalar>> relative_spheres;  //!< balls in body coordinates
+  std::vector<Sphere<Scalar>> absolute_spheres;  //!< balls in world coordinates
 
+  //! Whether the group holds no point and no sphere.
   bool empty() const {
     return relative_points.empty() && absolute_points.empty() && relative_spheres.empty() &&
            absolute_spheres.empty();
@@ -166,15 +179,17 @@ struct AffineSpan {
 template <typename Scalar>
 class MetricSet {
  public:
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
-  using Group = MetricGroup<Scalar>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;  //!< a point
+  using Group = MetricGroup<Scalar>;            //!< a group of the set
 
   //! A point moving with the tool, in body coordinates.
   void add_relative(const Vector3& point, int group = 0) { add_points({point}, Frame::relative, group); }
+  //! Points moving with the tool, in body coordinates.
   void add_relative(const std::vector<Vector3>& points, int group = 0) { add_points(points, Frame::relative, group); }
 
   //! A fixed point of the world (a protected zone), in world coordinates.
   void add_absolute(const Vector3& point, int group = 0) { add_points({point}, Frame::absolute, group); }
+  //! Fixed points of the world, in world coordinates.
   void add_absolute(const std::vector<Vector3>& points, int group = 0) { add_points(points, Frame::absolute, group); }
 
   //! Points in the given frame. Every coordinate must be finite and within ±1e12 m.
@@ -213,6 +228,7 @@ class MetricSet {
     group_for(group).speed_limit = speed;
   }
 
+  //! The groups, in increasing id.
   const std::vector<Group>& groups() const noexcept { return groups_; }
 
   //! The group with this id, or nullptr.
@@ -222,16 +238,19 @@ class MetricSet {
     return nullptr;
   }
 
+  //! The number of points, relative and absolute, of every group.
   std::size_t point_count() const noexcept {
     std::size_t n = 0;
     for (const Group& g : groups_) n += g.relative_points.size() + g.absolute_points.size();
     return n;
   }
+  //! The number of spheres, relative and absolute, of every group.
   std::size_t sphere_count() const noexcept {
     std::size_t n = 0;
     for (const Group& g : groups_) n += g.relative_spheres.size() + g.absolute_spheres.size();
     return n;
   }
+  //! Whether the set holds no point and no sphere.
   bool empty() const noexcept { return point_count() == 0 && sphere_count() == 0; }
 
   //! Whether the DISP distance over this set is a metric for every pair of poses
@@ -282,6 +301,7 @@ class MetricSet {
   detail::AffineSpan<Scalar> absolute_span_;
 };
 
+//! The metric set in double precision.
 using MetricSetd = MetricSet<double>;
 
 }  // namespace dispkin

@@ -20,13 +20,14 @@ namespace dispkin {
 //! A body twist (v, ω): T⁻¹ Ṫ = ([ω]ₓ, v), both in body coordinates. As a 6-vector: (v, ω).
 template <typename Scalar>
 struct Twist {
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
-  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;  //!< v or ω
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;  //!< (v, ω) stacked
 
   Vector3 linear = Vector3::Zero();   //!< v: velocity of the body origin, body coordinates
   Vector3 angular = Vector3::Zero();  //!< ω: angular velocity, body coordinates
 
   Twist() = default;
+  //! From v and ω.
   Twist(const Vector3& v, const Vector3& w) : linear(v), angular(w) {}
   //! From the stacked 6-vector (v, ω).
   explicit Twist(const Vector6& vw) : linear(vw.template head<3>()), angular(vw.template tail<3>()) {}
@@ -37,6 +38,7 @@ struct Twist {
     vw << linear, angular;
     return vw;
   }
+  //! The twist scaled by k: (k v, k ω).
   Twist operator*(Scalar k) const { return Twist(k * linear, k * angular); }
 };
 
@@ -146,11 +148,11 @@ Eigen::Matrix<Scalar, 3, 1> quaternion_log(const Eigen::Quaternion<Scalar>& q_in
 template <typename Scalar>
 class Pose {
  public:
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
-  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;
-  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;
-  using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;
-  using Quaternion = Eigen::Quaternion<Scalar>;
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;    //!< a point or a translation
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;    //!< XYZUVW or a twist (v, ω)
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;    //!< a rotation matrix
+  using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;    //!< a homogeneous transform
+  using Quaternion = Eigen::Quaternion<Scalar>;  //!< the orientation, unit norm
 
   //! The identity.
   Pose() noexcept : q_(Quaternion::Identity()), t_(Vector3::Zero()) {}
@@ -274,6 +276,7 @@ class Pose {
   //! Transform a point from body to world coordinates.
   Vector3 operator*(const Vector3& x_body) const noexcept { return q_ * x_body + t_; }
 
+  //! T⁻¹ = (Rᵀ, −Rᵀ t): world to body coordinates.
   Pose inverse() const noexcept {
     const Quaternion qi = q_.conjugate();
     return unchecked(qi, -(qi * t_));
@@ -287,10 +290,11 @@ class Pose {
     return unchecked(orientation.q_, anchor - orientation.q_ * pivot);
   }
 
-  const Quaternion& quaternion() const noexcept { return q_; }
-  const Vector3& translation() const noexcept { return t_; }
-  Matrix3 rotation() const noexcept { return q_.toRotationMatrix(); }
+  const Quaternion& quaternion() const noexcept { return q_; }  //!< the unit quaternion of R
+  const Vector3& translation() const noexcept { return t_; }    //!< t: the body origin in world coordinates
+  Matrix3 rotation() const noexcept { return q_.toRotationMatrix(); }  //!< R
 
+  //! The 4×4 homogeneous matrix [R t; 0 1].
   Matrix4 matrix() const noexcept {
     Matrix4 m = Matrix4::Identity();
     m.template topLeftCorner<3, 3>() = rotation();
@@ -348,7 +352,7 @@ class Pose {
   Vector3 t_;
 };
 
-using Posed = Pose<double>;
-using Twistd = Twist<double>;
+using Posed = Pose<double>;    //!< a pose in double precision
+using Twistd = Twist<double>;  //!< a twist in double precision
 
 }  // namespace dispkin

@@ -40,8 +40,8 @@ struct ProfileState {
 //! Within a phase s, v, a are the cubic, quadratic and linear Taylor polynomials of either end
 //! state. For the trapezoid `start.a` = `end.a` = ±a_max or 0 and the jerk is 0.
 struct ProfilePhase {
-  double duration = 0.0;
-  double jerk = 0.0;
+  double duration = 0.0;  //!< how long the phase lasts (s)
+  double jerk = 0.0;      //!< its constant jerk s⃛
   ProfileState start;  //!< state at the start of the phase (start.j = jerk)
   ProfileState end;    //!< state at the end of the phase (end.j = jerk)
 };
@@ -52,6 +52,7 @@ struct ProfilePhase {
 //! non-decreasing; s, ṡ (and s̈ for the S-curve) are continuous.
 class Profile {
  public:
+  //! The most phases a law has (the seven of the S-curve).
   static constexpr int max_phases = 7;
 
   //! The time-optimal law under |ṡ| ≤ v_max, |s̈| ≤ a_max (no jerk limit) over `distance`,
@@ -103,15 +104,16 @@ class Profile {
   //! Everything a law is made of: what storing a law (a pickle) keeps, and from_parts makes the
   //! same law from again, bit for bit.
   struct Parts {
-    ProfileKind kind = ProfileKind::trapezoid;
+    ProfileKind kind = ProfileKind::trapezoid;      //!< which family the law is of
     int count = 0;                                  //!< phases used, 0 … max_phases
     std::array<ProfilePhase, max_phases> phases{};  //!< the first `count` are used
     std::array<double, max_phases + 1> times{};     //!< start times of the phases, then T
-    double distance = 0.0;
-    double peak_velocity = 0.0;
+    double distance = 0.0;       //!< S, the length the law covers
+    double peak_velocity = 0.0;  //!< the highest ṡ of the law
     ProfileState start{};  //!< the state before the start
     ProfileState end{};    //!< the state from the end on
   };
+  //! The law's parts (from_parts(parts()) is this law).
   Parts parts() const noexcept { return {kind_, count_, phases_, time_, distance_, peak_velocity_, start_, end_}; }
   //! The law of `parts`, taken as they are (nothing integrated again). Throws
   //! std::invalid_argument unless count is within [0, max_phases], the used times start at 0

@@ -25,8 +25,8 @@ namespace shapes {
 //! A triangulated convex polyhedron: vertices and counter-clockwise (outward) faces.
 template <typename Scalar>
 struct Polyhedron {
-  std::vector<Eigen::Matrix<Scalar, 3, 1>> vertices;
-  std::vector<std::array<int, 3>> faces;
+  std::vector<Eigen::Matrix<Scalar, 3, 1>> vertices;  //!< the corners
+  std::vector<std::array<int, 3>> faces;              //!< triangles as indices into vertices, outward
 
   //! Smallest distance from `center` to a face plane: the radius of the largest ball around
   //! `center` that the polyhedron contains.

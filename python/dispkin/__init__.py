@@ -2,7 +2,8 @@
 
 Poses (:class:`Pose`), metric sets (:class:`MetricSet`), point-set builders
 (:mod:`dispkin.shapes`), and the DISP functions: chord distance, point and sphere speeds and
-exact section lengths. Units: metres, radians, seconds. Arrays in and out are float64 numpy
+exact section lengths; :func:`batch` plans many job files on local processes or a Dask
+cluster. Units: metres, radians, seconds. Arrays in and out are float64 numpy
 arrays; bad input raises ValueError naming the argument and the value.
 """
 
@@ -35,6 +36,7 @@ from ._core import (
     xyzuvw_for_new_pivot,
 )
 from . import data, shapes
+from .batches import batch
 
 # The serial-arm plugin (URDF via urdfdom into Orocos KDL) is there when the build has it
 # (CMake option DISPKIN_BUILD_SERIAL, on by default).
@@ -60,6 +62,7 @@ __all__ = [
     "Pose",
     "Profile",
     "__version__",
+    "batch",
     "convex_hull_vertices",
     "data",
     "disp_distance",

@@ -2,7 +2,8 @@
 
 ``dispkin check JOB.yaml`` validates a job file and builds its paths; ``dispkin plan JOB.yaml``
 plans it and writes the sampled trajectory (CSV, JSON with ROS JointTrajectory field names),
-a summary and, with ``--plot``, PNG plots (see :mod:`dispkin.jobs`).
+a summary and, with ``--plot``, PNG plots (see :mod:`dispkin.jobs`); ``dispkin batch JOB...``
+plans many jobs on local processes or a Dask cluster (see :mod:`dispkin.batches`).
 
 ``dispkin demo`` compares a point-set speed limit with a controller that limits the TCP speed
 and the angular speed separately, then plans the demo job (see :mod:`dispkin.demo`; its names
@@ -52,7 +53,7 @@ def _positive_int(text: str) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``dispkin`` with its commands demo, check and plan (``--help``
+    """The argument parser of ``dispkin`` with its commands demo, check, plan and batch (``--help``
     documents every option)."""
     parser = argparse.ArgumentParser(
         prog="dispkin",
@@ -111,7 +112,41 @@ def build_parser() -> argparse.ArgumentParser:
     shown.add_argument("--progress", action="store_true",
                        help="progress on stderr even when it is not a terminal (by default only on a terminal)")
     shown.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
+    _add_batch(commands)
     return parser
+
+
+def _add_batch(commands) -> None:
+    """The `dispkin batch` command and its options."""
+    batch = commands.add_parser(
+        "batch",
+        help="plan many job files at once, on local processes or a Dask cluster, with one summary table",
+        description="Plan every JOB as `dispkin plan JOB -o DIR/NAME` plans it alone (NAME: the job file's name "
+        "without .yaml; -2, -3... when two jobs share one), on --workers local processes or on the Dask cluster of "
+        "--scheduler, and write DIR/batch_summary.csv: one row per job with its folder, status (planned, limits "
+        "broken, failed), duration (s), binding limit, the machine limits it breaks and, for a failed job, the error. "
+        "A failed job does not stop the others; each is reported on stderr. On a cluster the job files and DIR must "
+        "be at the same paths on every worker (a shared file system). Exit status: 0 every job planned within its "
+        "limits; 1 a job failed (how many is printed), DIR cannot be made or the scheduler cannot be reached; 2 "
+        "bad arguments; 3 a trajectory breaks a machine limit (--allow-violations exits 0).",
+    )
+    batch.add_argument("jobs", nargs="+", metavar="JOB.yaml", help="the job files")
+    batch.add_argument("-o", "--outdir", metavar="DIR", required=True,
+                       help="directory of the summary table and of one folder per job, created if missing")
+    where = batch.add_mutually_exclusive_group()
+    where.add_argument("--workers", metavar="N", type=_positive_int,
+                       help="local worker processes (default: one per core, at most one per job)")
+    where.add_argument("--scheduler", metavar="ADDRESS",
+                       help="plan on the Dask cluster of the scheduler at ADDRESS (e.g. tcp://host:8786); needs "
+                       "pip install 'dispkin[distributed]'")
+    batch.add_argument("--plot", action="store_true", help="also write each job's PNG, as `dispkin plan --plot` does")
+    batch.add_argument("--allow-violations", action="store_true",
+                       help="exit 0 even when a trajectory breaks a machine limit (still reported and in the table)")
+    shown = batch.add_mutually_exclusive_group()
+    shown.add_argument("--progress", action="store_true",
+                       help="a line per finished job on stderr even when it is not a terminal (by default only on a "
+                       "terminal)")
+    shown.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
 
 
 def main(argv: Optional[List[str]] = None) -> int:
@@ -128,6 +163,12 @@ def main(argv: Optional[List[str]] = None) -> int:
         if args.command == "plan":
             progress = Progress.for_stderr(sys.stderr, "dispkin plan", force=args.progress, quiet=args.quiet)
             return run_plan(args.job, args.outdir, args.plot, sys.stdout, args.allow_violations, progress)
+        if args.command == "batch":
+            from .batches import run_batch
+
+            progress = Progress.for_stderr(sys.stderr, "dispkin batch", force=args.progress, quiet=args.quiet)
+            return run_batch(args.jobs, args.outdir, args.workers, args.scheduler, args.plot, sys.stdout,
+                             args.allow_violations, progress)
     except JobError as error:
         print(f"dispkin {args.command}: {error}", file=sys.stderr)
         return 1

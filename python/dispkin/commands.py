@@ -9,7 +9,8 @@ import json
 import os
 import pathlib
 import sys
-from typing import Dict, List, Optional, TextIO, Tuple
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, TextIO, Tuple
 
 import numpy as np
 
@@ -81,10 +82,55 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     """`dispkin plan`: plan the job, write CSV, JSON, the summary and (plot) PNGs. Returns 0, or
     EXIT_LIMITS_BROKEN when the trajectory breaks a machine limit (each one is described on
     `errors`, default stderr) unless `allow_violations`; the files are written either way."""
+    progress = progress or Progress(None, "")
+    errors = errors or sys.stderr
+    planned = plan_to_files(job_file, outdir, plot, progress)
+    if progress.enabled:
+        progress.finish(f"{planned.samples} samples")
+    out.write(planned.text)
+    print("wrote " + ", ".join(str(p) for p in planned.written), file=out)
+    broken = planned.violations
+    if not broken:
+        return 0
+    verdict = "allowed by --allow-violations" if allow_violations else "use --allow-violations to accept it"
+    print(f"dispkin plan: {planned.job_file}: the trajectory breaks {len(broken)} machine limit(s) ({verdict}):",
+          file=errors)
+    for line in broken:
+        print("  " + line, file=errors)
+    return 0 if allow_violations else EXIT_LIMITS_BROKEN
+
+
+@dataclass
+class PlannedJob:
+    """What planning one job wrote (see :func:`plan_to_files`); plain data, so that it pickles
+    back from a worker process of ``dispkin batch``."""
+
+    #: The job file, as the job reader names it in its messages.
+    job_file: str
+    #: The summary of :func:`dispkin.jobs.summarize` (duration, binding limit, violations, ...).
+    summary: Dict[str, Any]
+    #: The summary as text (the summary file, what `dispkin plan` prints).
+    text: str
+    #: The files written, in the order `dispkin plan` lists them.
+    written: List[pathlib.Path]
+    #: How many samples the trajectory has.
+    samples: int
+
+    @property
+    def violations(self) -> List[str]:
+        """Each machine limit the trajectory breaks, described on one line."""
+        return [Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe()
+                for v in self.summary["violations"]]
+
+
+def plan_to_files(job_file: str, outdir: str, plot: bool, progress: Optional[Progress] = None) -> PlannedJob:
+    """Load, plan, sample and summarize a job and write its files into `outdir` (CSV, JSON, the
+    summary and, with `plot`, PNGs): the work of `dispkin plan` and of each job of `dispkin batch`.
+    Every mistake raises a JobError; the outputs are checked before planning and again before
+    writing."""
     from . import jobs
 
     progress = progress or Progress(None, "")
-    errors = errors or sys.stderr
     if plot:
         require_matplotlib()  # before the work, not after it
     job = jobs.load_job(job_file)
@@ -108,18 +154,7 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     written[2].write_text(text, encoding="utf-8")
     if plot:
         written += write_plots(job, trajectory, samples, directory)
-    if progress.enabled:
-        progress.finish(f"{len(samples.time)} samples")
-    out.write(text)
-    print("wrote " + ", ".join(str(p) for p in written), file=out)
-    broken = summary["violations"]
-    if not broken:
-        return 0
-    verdict = "allowed by --allow-violations" if allow_violations else "use --allow-violations to accept it"
-    print(f"dispkin plan: {job.file}: the trajectory breaks {len(broken)} machine limit(s) ({verdict}):", file=errors)
-    for v in broken:
-        print("  " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe(), file=errors)
-    return 0 if allow_violations else EXIT_LIMITS_BROKEN
+    return PlannedJob(str(job.file), summary, text, written, len(samples.time))
 
 
 def output_files(job, directory: pathlib.Path, plot: bool) -> Dict[str, pathlib.Path]:

@@ -35,21 +35,23 @@ namespace dispkin {
 struct LegViolation {
   int leg;        //!< 0-based leg index
   double length;  //!< its length at the checked pose
-  double lower;   //!< the leg's range
-  double upper;
+  double lower;   //!< the leg's shortest length (m)
+  double upper;   //!< the leg's longest length (m)
   double excess;  //!< how far outside: lower − length or length − upper, > 0
 };
 
 //! The result of Hexapod::check(pose): the leg lengths and the legs out of range.
 struct WorkspaceCheck {
-  Eigen::Matrix<double, 6, 1> lengths;
+  Eigen::Matrix<double, 6, 1> lengths;   //!< the six leg lengths at the pose (m)
   std::vector<LegViolation> violations;  //!< empty when every leg is within its range
+  //! Whether every leg is within its range.
   bool reachable() const noexcept { return violations.empty(); }
 };
 
 //! One stretch of a trajectory where a leg leaves its length range or exceeds its speed.
 struct LegExcursion {
-  enum class Kind { length, speed } kind;
+  //! What a leg can leave: its length range or its speed limit.
+  enum class Kind { length, speed } kind;  //!< what this leg leaves
   int leg;             //!< 0-based leg index
   double start_time;   //!< first sample out of range (s)
   double end_time;     //!< last sample out of range (s)
@@ -60,8 +62,12 @@ struct LegExcursion {
 
 //! The result of Hexapod::check_trajectory: extremes per leg and every excursion.
 struct TrajectoryCheck {
+  //! Per leg: its shortest and longest length (m) and its largest speed |ℓ̇| (m/s).
+  //!@{
   Eigen::Matrix<double, 6, 1> min_length, max_length, max_speed;
+  //!@}
   std::vector<LegExcursion> excursions;  //!< in order of leg, then time
+  //! Whether no leg leaves its range or exceeds its speed.
   bool ok() const noexcept { return excursions.empty(); }
 };
 
@@ -81,6 +87,7 @@ inline void require_consistent(const LegViolation& v, const std::string& name = 
           "must be > 0 and how far the length lies outside [lower, upper] (" + std::to_string(outside) + ")");
 }
 
+//! A WorkspaceCheck: finite lengths, each violation consistent and reporting its leg's length.
 inline void require_consistent(const WorkspaceCheck& c) {
   require_finite(c.lengths, "lengths");
   for (std::size_t k = 0; k < c.violations.size(); ++k) {
@@ -93,6 +100,7 @@ inline void require_consistent(const WorkspaceCheck& c) {
   }
 }
 
+//! A LegExcursion: a known kind, a leg 0…5, start ≤ worst ≤ end time, finite values, excess > 0.
 inline void require_consistent(const LegExcursion& e, const std::string& name = "") {
   require(e.kind == LegExcursion::Kind::length || e.kind == LegExcursion::Kind::speed, name + "kind",
           static_cast<long>(e.kind), "must be 'length' or 'speed'");
@@ -104,6 +112,7 @@ inline void require_consistent(const LegExcursion& e, const std::string& name = 
   require(std::isfinite(e.excess) && e.excess > 0.0, name + "excess", e.excess, "must be finite and > 0");
 }
 
+//! A TrajectoryCheck: finite extremes in order, speeds ≥ 0, each excursion consistent.
 inline void require_consistent(const TrajectoryCheck& c) {
   require_finite(c.min_length, "min_length");
   require_finite(c.max_length, "max_length");
@@ -127,8 +136,8 @@ struct ForwardOptions {
 class Hexapod : public Kinematics {
  public:
   using Joints = Eigen::Matrix<double, 3, 6>;  //!< one joint per column
-  using Legs = Eigen::Matrix<double, 6, 1>;
-  using Jacobian = Eigen::Matrix<double, 6, 6>;
+  using Legs = Eigen::Matrix<double, 6, 1>;      //!< one value per leg (lengths, speeds)
+  using Jacobian = Eigen::Matrix<double, 6, 6>;  //!< ∂ℓ/∂ξ, see leg_jacobian()
 
   //! From any layout. `home` is the pose forward() starts from when no guess is given.
   Hexapod(const Joints& base_joints, const Joints& platform_joints, const Legs& leg_min, const Legs& leg_max,
@@ -149,16 +158,17 @@ class Hexapod : public Kinematics {
   static Hexapod load(const std::string& path);
   //! Writes the JSON description (base, platform, limits per leg, home pose).
   void save(const std::string& path) const;
-  //! The JSON description as text, and back.
+  //! The JSON description as text.
   std::string to_json() const;
+  //! The hexapod of a JSON description (the text of save()); errors as load().
   static Hexapod from_json(const std::string& text);
 
-  const Joints& base_joints() const noexcept { return base_; }
-  const Joints& platform_joints() const noexcept { return platform_; }
-  const Legs& leg_min() const noexcept { return leg_min_; }
-  const Legs& leg_max() const noexcept { return leg_max_; }
-  const Legs& leg_speed() const noexcept { return leg_speed_; }
-  const Posed& home() const noexcept { return home_; }
+  const Joints& base_joints() const noexcept { return base_; }          //!< b_i, base coordinates (m)
+  const Joints& platform_joints() const noexcept { return platform_; }  //!< p_i, platform coordinates (m)
+  const Legs& leg_min() const noexcept { return leg_min_; }             //!< shortest leg lengths (m)
+  const Legs& leg_max() const noexcept { return leg_max_; }             //!< longest leg lengths (m)
+  const Legs& leg_speed() const noexcept { return leg_speed_; }         //!< leg speed limits (m/s)
+  const Posed& home() const noexcept { return home_; }                  //!< the pose forward() starts from
 
   //! Inverse kinematics: ℓ_i = ‖T p_i − b_i‖. No checks, no allocation.
   Legs leg_lengths(const Posed& pose) const noexcept;
@@ -178,6 +188,7 @@ class Hexapod : public Kinematics {
   //! the iteration count and residual, when the Jacobian is singular or Newton does not
   //! converge (unreachable lengths, a start too far away).
   Posed forward(const Legs& legs, const Posed& guess, const ForwardOptions& options = {}) const;
+  //! Forward kinematics from home().
   Posed forward(const Legs& legs) const { return forward(legs, home_); }
 
   //! Which legs are out of their length range at `pose`, and by how much.

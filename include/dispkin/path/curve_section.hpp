@@ -28,13 +28,14 @@ namespace dispkin {
 
 //! A cubic polynomial in v with vector coefficients: p(v) = Σ aᵢ vⁱ.
 struct Cubic3 {
+  //! The coefficients a₀ … a₃.
   std::array<Eigen::Vector3d, 4> a{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
                                    Eigen::Vector3d::Zero()};
 
-  Eigen::Vector3d value(double v) const noexcept { return a[0] + v * (a[1] + v * (a[2] + v * a[3])); }
-  Eigen::Vector3d first(double v) const noexcept { return a[1] + v * (2.0 * a[2] + 3.0 * v * a[3]); }
-  Eigen::Vector3d second(double v) const noexcept { return 2.0 * a[2] + 6.0 * v * a[3]; }
-  Eigen::Vector3d third() const noexcept { return 6.0 * a[3]; }
+  Eigen::Vector3d value(double v) const noexcept { return a[0] + v * (a[1] + v * (a[2] + v * a[3])); }  //!< p(v)
+  Eigen::Vector3d first(double v) const noexcept { return a[1] + v * (2.0 * a[2] + 3.0 * v * a[3]); }  //!< p′(v)
+  Eigen::Vector3d second(double v) const noexcept { return 2.0 * a[2] + 6.0 * v * a[3]; }  //!< p″(v)
+  Eigen::Vector3d third() const noexcept { return 6.0 * a[3]; }  //!< p‴, constant
 
   //! The cubic Hermite polynomial with p(0) = p0, p′(0) = m0, p(1) = p1, p′(1) = m1.
   static Cubic3 hermite(const Eigen::Vector3d& p0, const Eigen::Vector3d& m0, const Eigen::Vector3d& p1,
@@ -87,11 +88,16 @@ struct CurveSection {
   Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();  //!< R₀
   Cubic3 position;                                          //!< c(v), world
   Cubic3 rotation;                                          //!< φ(v), body of R₀
+  //! The part of the curve, 0 ≤ v0 < v1 ≤ 1.
+  //!@{
   double v0 = 0.0, v1 = 1.0;
+  //!@}
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates of the point on c(v)
 
+  //! v1 − v0: dv/dτ.
   double span() const noexcept { return v1 - v0; }
 
+  //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept {
     Posed p;
     Twistd xi;

@@ -34,10 +34,14 @@ struct BlendPlan;
 
 //! A straight section: the decoupled LIN (pivot on a line, SLERP about one axis) or a screw.
 struct LinSection {
+  //! Its start and end poses.
+  //!@{
   Posed start, end;
-  Interpolation interpolation = Interpolation::decoupled;
+  //!@}
+  Interpolation interpolation = Interpolation::decoupled;  //!< how it moves between them
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
 
+  //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept { return interpolate(start, end, tau, interpolation, pivot); }
 
   //! Body twist per unit τ at τ.
@@ -67,20 +71,22 @@ struct LinSection {
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
 //! orientation turns by `rotation_angle` about the fixed world axis `rotation_axis`.
 struct ArcSection {
-  Posed start;
+  Posed start;  //!< the pose at τ = 0
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  //!< world
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); //!< world, unit; the pivot turns about it
   double angle = 0.0;                                 //!< of the pivot about `normal`
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();  //!< world, unit
-  double rotation_angle = 0.0;
+  double rotation_angle = 0.0;  //!< of the orientation about `rotation_axis` (rad)
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
 
+  //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept {
     const Eigen::Vector3d c = center + detail::axis_turn(normal, tau * angle) * (start * pivot - center);
     const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, tau * rotation_angle) * start.quaternion()).normalized();
     return Posed::unchecked(q, c - q * pivot);
   }
 
+  //! The pose at τ = 1.
   Posed end() const noexcept { return pose(1.0); }
 
   //! Body twist per unit τ at τ: pivot velocity φ n × (c − o), rotation θ ŵ.
@@ -165,6 +171,7 @@ struct ArcSection {
   }
 };
 
+//! A section of a path, of any kind.
 using Section = std::variant<LinSection, ArcSection, CurveSection, SlerpBlendSection>;
 
 //! The pose at τ of any section.
@@ -177,10 +184,11 @@ inline Twistd section_twist(const Section& section, double tau) noexcept {
   return std::visit([tau](const auto& s) { return s.twist(tau); }, section);
 }
 
-//! The start and end poses of any section.
+//! The start pose of any section.
 inline Posed section_start(const Section& section) noexcept {
   return std::visit([](const auto& s) { return s.pose(0.0); }, section);
 }
+//! The end pose of any section.
 inline Posed section_end(const Section& section) noexcept {
   return std::visit([](const auto& s) { return s.pose(1.0); }, section);
 }
@@ -229,9 +237,9 @@ SectionBounds section_bounds_from_middle(const Section& section, GroupFactors& f
 //! Geometry of a circle through three points (doc/section-length.md §4: circumcentre), with the arc
 //! from the first to the last point passing through the middle one.
 struct CircleThroughPoints {
-  Eigen::Vector3d center;
+  Eigen::Vector3d center;  //!< the circumcentre
   Eigen::Vector3d normal;  //!< unit; the arc runs counter-clockwise about it
-  double radius;
+  double radius;           //!< the circle's radius (m)
   double angle;  //!< of the arc from start to end through via, in (0, 2π)
 };
 
@@ -252,6 +260,7 @@ struct MoveLimits {
   //! is inside dispkin's numeric range [1e-12, 1e12], as the plan's Limits are: a smaller one
   //! would make the move last longer than any duration the time laws represent.
   void validate(const std::string& argument) const;
+  //! Whether both fields are equal (both unset, or the same value).
   bool operator==(const MoveLimits& other) const noexcept {
     return velocity == other.velocity && acceleration == other.acceleration;
   }
@@ -268,6 +277,7 @@ enum class OrientationBlend {
   nested_slerp,
 };
 
+//! The blend's name: "rotation_vector" or "nested_slerp".
 inline const char* to_string(OrientationBlend kind) {
   return kind == OrientationBlend::nested_slerp ? "nested_slerp" : "rotation_vector";
 }
@@ -283,7 +293,7 @@ inline OrientationBlend orientation_blend_from_string(const std::string& name) {
 //! A junction where corner blending (Path::blended) leaves the path with a corner, and why.
 struct CornerStop {
   std::size_t section;  //!< the corner lies at the end of this section of the blended path
-  std::string reason;
+  std::string reason;   //!< why the junction is not blended
 };
 
 //! A path: a chain of sections, each starting where the previous one ends.
@@ -334,6 +344,7 @@ class Path {
   //! `orientation_blend` or `next` otherwise.
   Path& then(const Path& next, double before, double after, double tolerance = 1e-3,
              OrientationBlend orientation = OrientationBlend::rotation_vector);
+  //! then() with the same blend distance on both sides of the corner.
   Path& then(const Path& next, double blend) { return then(next, blend, blend); }
 
   //! The article's form of a blend: by a weight w ∈ (0, 0.5] of the neighbouring moves
@@ -369,18 +380,22 @@ class Path {
   static Path from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size,
                             const std::vector<MoveLimits>& section_limits = {}, const std::vector<std::size_t>& move_starts = {});
 
+  //! The sections, in order along the path.
   const std::vector<Section>& sections() const noexcept { return sections_; }
   //! The move limits of every section (parallel to sections()).
   const std::vector<MoveLimits>& section_limits() const noexcept { return limits_; }
   //! The index of the first section of every move, in order (starts with 0).
   const std::vector<std::size_t>& move_starts() const noexcept { return move_starts_; }
+  //! The number of sections.
   std::size_t size() const noexcept { return sections_.size(); }
   //! Geometric sizes (pivot travel + 0.1 m per radian) of the first and the last move before
   //! any blend: a blend may take at most half of each.
+  //!@{
   double first_move_size() const noexcept { return first_move_size_; }
   double last_move_size() const noexcept { return last_move_size_; }
-  Posed start() const noexcept { return section_start(sections_.front()); }
-  Posed end() const noexcept { return section_end(sections_.back()); }
+  //!@}
+  Posed start() const noexcept { return section_start(sections_.front()); }  //!< the first section's start pose
+  Posed end() const noexcept { return section_end(sections_.back()); }       //!< the last section's end pose
 
   //! L_k of every section under the set.
   std::vector<double> section_lengths(const MetricSetd& set, std::optional<double> system_velocity = std::nullopt) const;
@@ -422,9 +437,11 @@ class Path {
 //! kinematics plugins map it to poses).
 class JointPath {
  public:
+  //! From q_start to q_end (rad or m per joint). Throws std::invalid_argument naming the
+  //! argument unless both are finite and of one non-zero size.
   JointPath(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_end);
-  const Eigen::VectorXd& start() const noexcept { return q_start_; }
-  const Eigen::VectorXd& end() const noexcept { return q_end_; }
+  const Eigen::VectorXd& start() const noexcept { return q_start_; }  //!< q_a, the joints at u = 0
+  const Eigen::VectorXd& end() const noexcept { return q_end_; }      //!< q_b, the joints at u = 1
   //! q(u) = q_a + u (q_b − q_a), u clamped to [0, 1].
   Eigen::VectorXd sample(double u) const;
 

@@ -14,6 +14,8 @@
 
 namespace dispkin {
 
+//! A path ready to be sampled by its DISP arc length s: its sections with their lengths L_k
+//! under a metric set, and where each starts.
 class SampledPath {
  public:
   SampledPath() = default;
@@ -23,8 +25,8 @@ class SampledPath {
 
   //! Σ L_k, m.
   double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
-  std::size_t section_count() const noexcept { return motions_.size(); }
-  const std::vector<double>& section_lengths() const noexcept { return lengths_; }
+  std::size_t section_count() const noexcept { return motions_.size(); }  //!< the number of sections
+  const std::vector<double>& section_lengths() const noexcept { return lengths_; }  //!< L_k of each section, m
   //! The sections it was made from (what storing it keeps; sampling uses their motions).
   const std::vector<Section>& sections() const noexcept { return sections_; }
   //! s_k, the path position where section k starts.

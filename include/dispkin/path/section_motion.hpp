@@ -90,16 +90,23 @@ inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eig
 //!   q(α) p = P∥ + cos α P⊥ + sin α ŵ × P⊥   (P = q₀ p split along ŵ and across it),
 //! and the body angular velocity per unit α, q(α)⁻¹ ŵ = q₀⁻¹ ŵ, is constant.
 struct TurningFrame {
+  //! q₀, the orientation at α = 0, and r = (0, ŵ) q₀.
+  //!@{
   Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity(), r = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();
+  //!@}
+  Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();  //!< ŵ, the unit axis (world)
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body
+  //! P∥, P⊥, ŵ × P⊥ (world).
+  //!@{
   Eigen::Vector3d pivot_along = Eigen::Vector3d::Zero(), pivot_across = Eigen::Vector3d::Zero(),
-                  pivot_side = Eigen::Vector3d::Zero();  //!< P∥, P⊥, ŵ × P⊥ (world)
+                  pivot_side = Eigen::Vector3d::Zero();
+  //!@}
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   //!< θ q₀⁻¹ ŵ: ω_b per unit τ
   Eigen::Vector3d omega_cross_pivot = Eigen::Vector3d::Zero();  //!< ω_b × p, constant too
   double theta = 0.0;                                      //!< the turn over the section, rad
 
   TurningFrame() = default;
+  //! The turn by `angle` about the unit world `axis` from orientation `start`, carrying body point p.
   TurningFrame(const Eigen::Quaterniond& start, const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& p) noexcept
       : q0(start), w_hat(axis), pivot(p), theta(angle) {
     r = Eigen::Quaterniond(0.0, axis.x(), axis.y(), axis.z()) * start;
@@ -128,13 +135,19 @@ struct TurningFrame {
 //! The pivot velocity seen from the body, q(α)⁻¹ Δc = q₀⁻¹ turn(ŵ, −α) Δc, is
 //! q₀⁻¹ D∥ + cos α q₀⁻¹ D⊥ − sin α q₀⁻¹ (ŵ × D⊥) with D = Δc split along ŵ and across it.
 struct LineMotion {
-  TurningFrame frame;
+  TurningFrame frame;  //!< the orientation's turn
+  //! c₀ and Δc: the pivot's start and travel (world).
+  //!@{
   Eigen::Vector3d c0 = Eigen::Vector3d::Zero(), delta_c = Eigen::Vector3d::Zero();
+  //!@}
   //! v_b = linear_fixed + cos α linear_cos + sin α linear_sin (ω_b × p folded into the first).
+  //!@{
   Eigen::Vector3d linear_fixed = Eigen::Vector3d::Zero(), linear_cos = Eigen::Vector3d::Zero(),
                   linear_sin = Eigen::Vector3d::Zero();
+  //!@}
 
   LineMotion() = default;
+  //! The pivot from `start` by `travel` (world) while `turning` turns the orientation.
   LineMotion(const TurningFrame& turning, const Eigen::Vector3d& start, const Eigen::Vector3d& travel) noexcept
       : frame(turning), c0(start), delta_c(travel) {
     const Eigen::Quaterniond to_body = frame.q0.conjugate();
@@ -144,6 +157,7 @@ struct LineMotion {
     linear_sin = -(to_body * frame.w_hat.cross(across));
   }
 
+  //! Pose and body twist per unit τ at τ.
   void at(double tau, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond q;
     double c, s;
@@ -158,11 +172,15 @@ struct LineMotion {
 //! A CIRC section: the pivot turned by τφ about the axis (centre o, normal n̂) from c₀, the
 //! orientation by τθ about ŵ. c(β) = o + R∥ + cos β R⊥ + sin β n̂ × R⊥ with R = c₀ − o.
 struct ArcMotion {
-  TurningFrame frame;
+  TurningFrame frame;  //!< the orientation's turn
   Eigen::Vector3d center_along = Eigen::Vector3d::Zero();  //!< o + R∥
-  Eigen::Vector3d radius_across = Eigen::Vector3d::Zero(), radius_side = Eigen::Vector3d::Zero();  //!< R⊥, n̂ × R⊥
+  //! R⊥ and n̂ × R⊥ (world).
+  //!@{
+  Eigen::Vector3d radius_across = Eigen::Vector3d::Zero(), radius_side = Eigen::Vector3d::Zero();
+  //!@}
   double angle = 0.0;  //!< φ, rad
 
+  //! Pose and body twist per unit τ at τ.
   void at(double tau, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond q;
     double c, s;
@@ -179,9 +197,10 @@ struct ArcMotion {
 
 //! A screw section: T₀ exp(τ ξ), constant body twist ξ.
 struct ScrewMotion {
-  Posed start;
-  Twistd xi;
+  Posed start;  //!< T₀
+  Twistd xi;    //!< ξ, the body twist per unit τ
 
+  //! Pose and body twist per unit τ at τ.
   void at(double tau, Posed& pose, Twistd& twist) const noexcept {
     pose = start * Posed::exp(xi * tau);
     twist = xi;
@@ -205,13 +224,17 @@ inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, con
 //! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
 //! per unit τ, as CurveSection::at.
 struct CurveMotion {
-  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();
-  Cubic3 position, rotation;  //!< in v, as the CurveSection
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();  //!< R₀
+  //! c(v) (world) and φ(v) (body of R₀), as the CurveSection.
+  //!@{
+  Cubic3 position, rotation;
+  //!@}
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body coordinates of the point on c(v)
 
   //! Whether `section` is cut from this curve.
   bool holds(const CurveSection& section) const noexcept { return detail::same_curve(q0, position, rotation, pivot, section); }
 
+  //! Pose and body twist per unit τ at curve parameter v, for a section of span h = dv/dτ.
   void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
@@ -235,7 +258,7 @@ class SectionMotions {
   //! Appends the form of the next section (planning side; allocates).
   void append(const Section& section);
 
-  std::size_t size() const noexcept { return entries_.size(); }
+  std::size_t size() const noexcept { return entries_.size(); }  //!< the number of sections
 
   //! Pose and body twist per unit τ of section k at τ.
   void at(std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {

@@ -136,11 +136,16 @@ struct SlerpBlendSection {
   Eigen::Vector3d a = Eigen::Vector3d::Zero();  //!< log(q₁⁻¹ q_m): q₁ to the corner (body of q₁)
   Eigen::Vector3d b = Eigen::Vector3d::Zero();  //!< log(q_m⁻¹ q₂): the corner to q₂ (body of q_m)
   Cubic3 position;                              //!< c(v), world: the quadratic Bézier (a₃ = 0)
+  //! The part of the blend's curve, 0 ≤ v0 < v1 ≤ 1.
+  //!@{
   double v0 = 0.0, v1 = 1.0;
+  //!@}
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates of the point on c(v)
 
+  //! v1 − v0: dv/dτ.
   double span() const noexcept { return v1 - v0; }
 
+  //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept {
     Posed p;
     Twistd xi;

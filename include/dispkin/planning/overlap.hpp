@@ -19,6 +19,8 @@
 
 namespace dispkin {
 
+//! Two Cartesian moves run with an overlap t_ov: during it their motions add up (doc/planning.md
+//! §7). No speed guarantee of its own: see the file's comment.
 class OverlappedTrajectory {
  public:
   //! `before` must end where `after` starts (to 1e-9 m / 1e-9 rad); 0 ≤ overlap ≤ the shorter
@@ -26,9 +28,11 @@ class OverlappedTrajectory {
   OverlappedTrajectory(Trajectory before, Trajectory after, double overlap,
                        const Eigen::Vector3d& pivot = Eigen::Vector3d::Zero());
 
+  //! The whole motion's duration: both moves' less the overlap (s).
   double duration() const noexcept { return before_.duration() + after_.duration() - overlap_; }
   //! When the overlap begins (the next move starts), seconds.
   double overlap_start() const noexcept { return before_.duration() - overlap_; }
+  //! t_ov, the time both moves run at once (s).
   double overlap() const noexcept { return overlap_; }
 
   //! Pose and body twist at t (clamped to [0, duration]); s and ṡ, s̈ are the sums of both

@@ -37,6 +37,7 @@
 
 namespace dispkin {
 
+//! Options of the dense joint-limit check (check_joint_limits).
 struct JointCheckOptions {
   int samples_between = 10;  //!< equidistant samples between characteristic points, ≥ 0
   //! Time step of the central differences for q̈ (s), > 0.
@@ -45,24 +46,34 @@ struct JointCheckOptions {
 
 //! The machine's joint state at one checked instant.
 struct JointSample {
+  //! The instant (s) and the path position there (m).
+  //!@{
   double time = 0.0, s = 0.0;
+  //!@}
+  //! The joint positions, velocities and accelerations q, q̇, q̈.
+  //!@{
   Eigen::VectorXd q, qd, qdd;
-  Eigen::VectorXd static_torque, dynamic_torque;  //!< g(q); τ(q, q̇, q̈) − g(q)
+  //!@}
+  //! The static torque g(q) and the dynamic torque τ(q, q̇, q̈) − g(q).
+  //!@{
+  Eigen::VectorXd static_torque, dynamic_torque;
+  //!@}
 };
 
 //! What check_joint_limits found.
 struct JointLimitReport {
-  std::vector<JointSample> samples;
+  std::vector<JointSample> samples;  //!< the joint state at every checked instant, in time order
   double velocity_factor = 0.0;      //!< FVEL (0 if no joint states a velocity limit)
   double acceleration_factor = 0.0;  //!< FACC (0 if no joint states an effort limit)
-  int velocity_joint = -1;           //!< the joint and sample where FVEL is reached
-  std::size_t velocity_sample = 0;
-  int torque_joint = -1;             //!< the joint and sample where FACC is reached
-  std::size_t torque_sample = 0;
+  int velocity_joint = -1;           //!< the joint where FVEL is reached (−1: none)
+  std::size_t velocity_sample = 0;   //!< the index in `samples` where FVEL is reached
+  int torque_joint = -1;             //!< the joint where FACC is reached (−1: none)
+  std::size_t torque_sample = 0;     //!< the index in `samples` where FACC is reached
   double position_excess = 0.0;  //!< largest excursion of q outside [lower, upper] (rad), 0 if none
-  int position_joint = -1;
-  std::size_t position_sample = 0;
+  int position_joint = -1;           //!< the joint of the largest excursion (−1: none)
+  std::size_t position_sample = 0;   //!< the index in `samples` of the largest excursion
 
+  //! FVEL ≤ 1, FACC ≤ 1 and no joint outside its position range.
   bool within_limits() const noexcept {
     return velocity_factor <= 1.0 && acceleration_factor <= 1.0 && position_excess == 0.0;
   }
@@ -120,7 +131,7 @@ inline void require_consistent(const JointLimitReport& r) {
 
 //! The result of the KUKA re-timing patent's scaling loop (retime_by_scaling).
 struct RetimeResult {
-  Trajectory trajectory;
+  Trajectory trajectory;      //!< the plan under the scaled limits
   Limits limits;              //!< the scaled limits it was planned with
   int iterations = 0;         //!< plans made (1: the original already fits)
   JointLimitReport report;    //!< of the final trajectory: within_limits() is true
@@ -154,14 +165,20 @@ struct OptimalRetimeResult {
   JointLimitReport report;
   //! Largest |q̇ᵢ|/q̇maxᵢ, |q̈ᵢ|/q̈maxᵢ and |τᵢ|/τmaxᵢ at the checked samples (each ≤ 1; 0 where no
   //! limit applies). τ is the whole torque, static plus dynamic.
+  //!@{
   double velocity_ratio = 0.0, acceleration_ratio = 0.0, torque_ratio = 0.0;
+  //!@}
   //! The fraction by which the joint limits were tightened on the grid so that they hold between
   //! grid points too (0: not needed), and the re-solves that took.
+  //!@{
   double margin = 0.0;
   int refinements = 0;
+  //!@}
   //! The grid positions s (m) and ṡ there (m/s) (with a jerk limit: of the law before its
   //! moving average).
+  //!@{
   std::vector<double> grid_s, grid_speed;
+  //!@}
   //! With a jerk limit: the longest moving-average window T (s) of the rest-to-rest runs, the
   //! time each run grew by; 0 without, and 0 when the trajectory is the plain S-curve plan or
   //! the KUKA re-timing patent's scaling loop with the S-curve (either keeps every joint limit
@@ -195,7 +212,10 @@ inline void require_consistent(const OptimalRetimeResult& r) {
 
 //! The joint limits re-timing keeps (+∞ where none).
 struct JointBounds {
+  //! Per joint: the velocity (rad/s or m/s), acceleration (rad/s² or m/s²) and effort (N·m or N) limits.
+  //!@{
   Eigen::VectorXd velocity, acceleration, effort;
+  //!@}
   //! n entries of +∞.
   static Eigen::VectorXd unlimited(int n) { return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity()); }
 };
@@ -207,6 +227,7 @@ struct JointBounds {
 class JointModel {
  public:
   virtual ~JointModel() = default;
+  //! The number of joints.
   virtual int dof() const = 0;
   //! The name of joint k in messages ("shoulder_pan_joint", "leg 1").
   virtual std::string joint_name(int k) const = 0;

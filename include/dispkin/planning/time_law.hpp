@@ -12,12 +12,17 @@
 
 namespace dispkin {
 
+//! s(t) over a path: profiles one after another, each over its own span of s, in rest-to-rest
+//! runs (doc/profiles.md).
 class TimeLaw {
  public:
   //! One profile, placed in time and along the path.
   struct Piece {
-    Profile profile;
+    Profile profile;  //!< the law, from its own s = 0 and t = 0
+    //! When it starts and ends, in trajectory time (s).
+    //!@{
     double start_time, end_time;  //!< in trajectory time, s
+    //!@}
     double start_s;               //!< path position at its start, m
   };
 
@@ -30,11 +35,13 @@ class TimeLaw {
   //! Ends a rest-to-rest run (the motion is at rest after the last law appended).
   void end_run() noexcept { ++runs_; }
 
+  //! When the last law ends (s); 0 without any.
   double duration() const noexcept { return pieces_.empty() ? 0.0 : pieces_.back().end_time; }
   //! Number of laws.
   std::size_t size() const noexcept { return pieces_.size(); }
   //! Number of rest-to-rest runs.
   std::size_t run_count() const noexcept { return runs_; }
+  //! The laws in time order.
   const std::vector<Piece>& pieces() const noexcept { return pieces_; }
 
   //! The law running at t: the first that ends after t (the last one for t ≥ duration), found

@@ -27,7 +27,10 @@ struct TrajectorySample {
 
 //! One span of a velocity-limit curve: ṡ ≤ `limit` (m/s) for s in [start_s, start_s + length).
 struct SpeedLimit {
+  //! Where the span starts (m of DISP arc length), how long it is (m) and the limit of ṡ there (m/s).
+  //!@{
   double start_s, length, limit;
+  //!@}
 };
 
 //! A place inside the path where the trajectory comes to rest, and why.
@@ -40,8 +43,11 @@ struct Stop {
 //! `section` of the path as planned (the blended path in continuous-path mode). The planner
 //! cuts sections whose fastest point's speed varies (doc/planning.md §9).
 struct SectionSource {
-  std::size_t section = 0;
+  std::size_t section = 0;  //!< the index of the section in the planned path
+  //! The part of it, τ ∈ [tau_start, tau_end] ⊂ [0, 1].
+  //!@{
   double tau_start = 0.0, tau_end = 1.0;
+  //!@}
 };
 
 //! A planned trajectory. A control loop samples consecutive cycles fastest with a Cursor
@@ -83,12 +89,14 @@ class Trajectory {
     return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_);
   }
 
-  const SampledPath& path() const noexcept { return path_; }
-  const TimeLaw& time_law() const noexcept { return law_; }
+  const SampledPath& path() const noexcept { return path_; }  //!< the path, with its section lengths
+  const TimeLaw& time_law() const noexcept { return law_; }    //!< s(t)
 
-  double duration() const noexcept { return law_.duration(); }
-  double length() const noexcept { return path_.length(); }
+  double duration() const noexcept { return law_.duration(); }  //!< how long the motion takes (s)
+  double length() const noexcept { return path_.length(); }     //!< the path's DISP length (m)
+  //! The number of sections of the path.
   std::size_t section_count() const noexcept { return path_.section_count(); }
+  //! The DISP length L_k of each section (m).
   const std::vector<double>& section_lengths() const noexcept { return path_.section_lengths(); }
   //! Number of rest-to-rest pieces (1 + corners where the trajectory stops).
   std::size_t piece_count() const noexcept { return law_.run_count(); }

@@ -36,6 +36,7 @@
 namespace dispkin {
 namespace serial {
 
+//! The analytic families of 6R chains (see the file's comment); general: none applies.
 enum class IkFamily { spherical_wrist, three_parallel, offset_wrist, general };
 
 //! Every returned solution reproduces the pose to this: position error (m) and rotation
@@ -54,7 +55,8 @@ struct IkSolutionSet {
   std::array<double, 8> error{};
   int count = 0;                                  //!< number of solutions held
 
-  int size() const noexcept { return count; }
+  int size() const noexcept { return count; }  //!< the number of solutions held
+  //! Solution i, 0 ≤ i < size().
   const Eigen::Matrix<double, 6, 1>& operator[](int i) const noexcept { return q[static_cast<std::size_t>(i)]; }
   //! Appends q with its measured error (ignored when the set is full: a 6R closed form never has
   //! a ninth).
@@ -91,7 +93,7 @@ struct OffsetWristOptions {
   //! they are roots of a trigonometric polynomial in q₆). Between samples the search follows
   //! branch ends, gaps and islands and narrow root pairs (doc/inverse-kinematics.md §7); 180 recovered the
   //! original q in all of 10⁷ random round trips on the Jaco2, 120, 90 and 60 in all of 10⁵
-  //! (benchmarks/RESULTS.md).
+  //! (doc/inverse-kinematics.md §7).
   int samples = 180;
 };
 

@@ -32,6 +32,8 @@
 
 namespace dispkin {
 
+//! A Cartesian trajectory followed by a serial arm's joints on one inverse-kinematics branch,
+//! precomputed along the path (doc/ptp.md §4, eqs. 17–20; see the file's comment).
 class FollowedTrajectory {
  public:
   //! Default node spacing along the path, in DISP arc length (m).
@@ -52,14 +54,17 @@ class FollowedTrajectory {
   static FollowedTrajectory to_end(Trajectory trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_end,
                                    double spacing = default_spacing);
 
-  double duration() const noexcept { return trajectory_.duration(); }
+  double duration() const noexcept { return trajectory_.duration(); }  //!< the trajectory's duration (s)
   //! DISP arc length of the Cartesian trajectory (m).
   double length() const noexcept { return trajectory_.length(); }
-  int dof() const noexcept { return static_cast<int>(start_.size()); }
+  int dof() const noexcept { return static_cast<int>(start_.size()); }  //!< the number of joints
   //! The joints at t = 0 and at the end (one of them is the q given).
+  //!@{
   const Eigen::VectorXd& start() const noexcept { return start_; }
   const Eigen::VectorXd& end() const noexcept { return end_; }
-  const Trajectory& trajectory() const noexcept { return trajectory_; }
+  //!@}
+  const Trajectory& trajectory() const noexcept { return trajectory_; }  //!< the Cartesian trajectory followed
+  //! The arm's joint chain (forward kinematics and Jacobian of the samples).
   const serial::RevoluteChain& chain() const noexcept { return chain_; }
   //! Number of grid nodes (sections' junction nodes counted once per section).
   std::size_t node_count() const noexcept { return static_cast<std::size_t>(nodes_q_.cols()); }

@@ -16,6 +16,8 @@
 
 namespace dispkin {
 
+//! Two PTP moves run with an overlap t_ov, their joint displacements added during it (doc/ptp.md
+//! §4, eq. 16). No speed guarantee of its own: see the file's comment.
 class OverlappedJointTrajectory {
  public:
   //! `before` must end where `after` starts (joint vectors equal to 1e-9 rad), both planned on
@@ -23,12 +25,13 @@ class OverlappedJointTrajectory {
   //! the argument otherwise.
   OverlappedJointTrajectory(JointTrajectory before, JointTrajectory after, double overlap);
 
+  //! The whole motion's duration: both moves' less the overlap (s).
   double duration() const noexcept { return before_.duration() + after_.duration() - overlap_; }
   //! When the overlap begins (the next move starts), seconds.
   double overlap_start() const noexcept { return before_.duration() - overlap_; }
-  double overlap() const noexcept { return overlap_; }
-  const JointTrajectory& before() const noexcept { return before_; }
-  const JointTrajectory& after() const noexcept { return after_; }
+  double overlap() const noexcept { return overlap_; }  //!< t_ov, the time both moves run at once (s)
+  const JointTrajectory& before() const noexcept { return before_; }  //!< the first move
+  const JointTrajectory& after() const noexcept { return after_; }    //!< the next move
 
   //! The state at t (clamped to [0, duration]): joints by eq. 16, the pose and body twist by the
   //! arm's kinematics of θ and θ̇; s, ṡ, s̈ the sums of both moves' (s continues from the first

@@ -18,6 +18,8 @@
 
 namespace dispkin {
 
+//! A PTP move and a Cartesian move, in either order, run with an overlap t_ov in joint space
+//! (doc/ptp.md §4, eq. 21). No speed guarantee of its own: see the file's comment.
 class OverlappedMixedTrajectory {
  public:
   //! A PTP move, then a Cartesian one followed from its end (FollowedTrajectory::from_start with
@@ -29,14 +31,15 @@ class OverlappedMixedTrajectory {
   //! with after.start()), with the same conditions.
   OverlappedMixedTrajectory(FollowedTrajectory before, JointTrajectory after, double overlap);
 
+  //! The whole motion's duration: both moves' less the overlap (s).
   double duration() const noexcept { return before_duration() + after_duration() - overlap_; }
   //! When the overlap begins (the next move starts), seconds.
   double overlap_start() const noexcept { return before_duration() - overlap_; }
-  double overlap() const noexcept { return overlap_; }
+  double overlap() const noexcept { return overlap_; }  //!< t_ov, the time both moves run at once (s)
   //! True for PTP → Cartesian, false for Cartesian → PTP.
   bool ptp_first() const noexcept { return ptp_first_; }
-  const JointTrajectory& ptp() const noexcept { return ptp_; }
-  const FollowedTrajectory& cartesian() const noexcept { return cartesian_; }
+  const JointTrajectory& ptp() const noexcept { return ptp_; }               //!< the PTP move
+  const FollowedTrajectory& cartesian() const noexcept { return cartesian_; }  //!< the Cartesian move, in joint space
 
   //! The state at t (clamped to [0, duration]): joints by eq. 21, the pose and body twist by the
   //! arm's kinematics of θ and θ̇; s, ṡ, s̈ the sums of both moves' (s continues from the first

@@ -73,13 +73,16 @@ struct PtpOptions {
   //! Relative slack of the section bounds over the speed sampled at each section's middle, in
   //! (0, 0.5]. The bound's slack falls linearly with the section span, so the section count grows
   //! as 1/tolerance: 10⁻² gives about 10³ sections for a long 6-joint move (10⁻³ about 10⁴,
-  //! tests/cpp/test_ptp.cpp and benchmarks/RESULTS.md).
+  //! tests/cpp/test_ptp.cpp, doc/ptp.md §5).
   double tolerance = 1e-2;
 };
 
 //! One joint section: u ∈ [u0, u1] of the joint line, and its bounds.
 struct JointSection {
+  //! The part of the joint line it covers, u ∈ [u0, u1].
+  //!@{
   double u0 = 0.0, u1 = 0.0;
+  //!@}
   double length = 0.0;        //!< L_k: the weighted speed bound per unit τ (m)
   double acceleration = 0.0;  //!< A_k: unweighted acceleration bound of every object per unit τ² (m)
   double middle_speed = 0.0;  //!< the weighted fastest speed per unit τ at the middle, exact (m)
@@ -88,19 +91,22 @@ struct JointSection {
 //! What a joint trajectory is at one instant: the tool's state (pose: the tip pose in the base
 //! frame; s, ṡ, s̈ of the time law) and the joints'.
 struct JointTrajectorySample : TrajectorySample {
-  JointVector q, qd, qdd;  //!< joint positions, velocities, accelerations (rad, rad/s, rad/s²)
+  //! Joint positions, velocities, accelerations (rad, rad/s, rad/s²).
+  //!@{
+  JointVector q, qd, qdd;
+  //!@}
   double u = 0.0;          //!< the joint-line parameter
 };
 
 //! A planned PTP move. Sampling is noexcept, allocation-free and lock-free.
 class JointTrajectory {
  public:
-  double duration() const noexcept { return law_.duration(); }
+  double duration() const noexcept { return law_.duration(); }  //!< how long the move takes (s)
   //! s at the end: Σ over sections of ∫ du / (du/ds), at least Σ L_k.
   double length() const noexcept { return length_; }
-  int dof() const noexcept { return static_cast<int>(q_start_.size()); }
-  const Eigen::VectorXd& start() const noexcept { return q_start_; }
-  const Eigen::VectorXd& end() const noexcept { return q_end_; }
+  int dof() const noexcept { return static_cast<int>(q_start_.size()); }  //!< the number of joints
+  const Eigen::VectorXd& start() const noexcept { return q_start_; }  //!< the joints at t = 0
+  const Eigen::VectorXd& end() const noexcept { return q_end_; }      //!< the joints at the end
   //! The joint sections (in order of u) and their bounds.
   const std::vector<JointSection>& sections() const noexcept { return sections_; }
   //! Number of time laws (one per segment of the velocity-limit curve).

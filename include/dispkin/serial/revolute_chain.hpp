@@ -18,12 +18,14 @@
 namespace dispkin {
 namespace serial {
 
+//! A chain of revolute joints as the axes (ωᵢ, pᵢ) and the tip pose M at q = 0:
+//! T(q) = exp([ξ₁] q₁) · … · exp([ξₙ] qₙ) · M.
 struct RevoluteChain {
   std::vector<Eigen::Vector3d> axes;    //!< ωᵢ: unit joint axes, base frame, q = 0
   std::vector<Eigen::Vector3d> points;  //!< pᵢ: a point on each axis, base frame, q = 0
   Posed tip_at_zero;                    //!< M: the tip pose in the base frame at q = 0
 
-  int dof() const noexcept { return static_cast<int>(axes.size()); }
+  int dof() const noexcept { return static_cast<int>(axes.size()); }  //!< the number of joints
 };
 
 //! The pose of a rigid motion rotating by `angle` about the line through `point` along the

@@ -11,15 +11,15 @@
 //! - revolute and continuous joints are the arm's joints (q, in the order base → tip); fixed
 //!   joints are folded into the chain (their transform and their child link's inertia stay);
 //!   prismatic, planar and floating joints on the path are refused;
-//! - position limits: a revolute joint's <limit lower upper> (lower < upper required); a
+//! - position limits: a revolute joint's `<limit lower upper>` (lower < upper required); a
 //!   continuous joint gets (−∞, +∞);
-//! - velocity and effort limits: the <limit> values; a missing or zero value means "not stated"
+//! - velocity and effort limits: the `<limit>` values; a missing or zero value means "not stated"
 //!   and becomes +∞;
 //! - inertia: each moving body is the joint's child link plus every link rigidly attached to it
 //!   (through fixed joints) that is not on the path, e.g. a tool flange after the tip. Subtrees
 //!   attached through movable joints (gripper fingers) are left out. The base link's inertia
 //!   does not matter (it does not move).
-//! - <mimic> tags are ignored: every revolute / continuous joint on the path is a coordinate of q.
+//! - `<mimic>` tags are ignored: every revolute / continuous joint on the path is a coordinate of q.
 //!
 //! The analytic IK works on chain(), a RevoluteChain taken from the KDL chain at q = 0: the
 //! joint axes and a point on each in base coordinates, and the tip pose.
@@ -59,12 +59,14 @@ struct BodyInertia {
 //! For the spherical-wrist and UR families the (up to 8) analytic solutions of a pose have
 //! pairwise different flags, so the flags pick one.
 struct Configuration {
-  int shoulder = 0;
-  int elbow = 0;
-  int wrist = 0;
+  int shoulder = 0;  //!< +1 or −1 (0: on the boundary)
+  int elbow = 0;     //!< +1 or −1 (0: on the boundary)
+  int wrist = 0;     //!< +1 or −1 (0: on the boundary)
+  //! Whether all three flags are equal.
   bool operator==(const Configuration& o) const noexcept {
     return shoulder == o.shoulder && elbow == o.elbow && wrist == o.wrist;
   }
+  //! Whether a flag differs.
   bool operator!=(const Configuration& o) const noexcept { return !(*this == o); }
 };
 
@@ -116,9 +118,9 @@ class SerialArm : public Kinematics {
   //! The same from URDF text.
   static SerialArm from_urdf_string(const std::string& xml, const std::string& base_link, const std::string& tip_link);
 
-  const std::string& robot_name() const noexcept;  //!< the URDF's <robot name>
-  const std::string& base_link() const noexcept;
-  const std::string& tip_link() const noexcept;
+  const std::string& robot_name() const noexcept;  //!< the URDF's `<robot name>`
+  const std::string& base_link() const noexcept;   //!< the chain's first link (the base frame)
+  const std::string& tip_link() const noexcept;    //!< the chain's last link (the flange)
   //! The URDF text the arm was read from (with base_link(), tip_link(), joint_limits() and
   //! gravity() all it takes to make the same arm again).
   const std::string& urdf() const noexcept;
@@ -178,8 +180,10 @@ class SerialArm : public Kinematics {
 
   //! Gravitational acceleration in base coordinates (m/s²), default (0, 0, −9.81); set_gravity
   //! takes finite coordinates within ±1e12 m/s².
+  //!@{
   const Eigen::Vector3d& gravity() const noexcept { return gravity_; }
   void set_gravity(const Eigen::Vector3d& gravity);
+  //!@}
 
   //! The moving bodies' mass properties, one per joint (order of q).
   std::vector<BodyInertia> inertias() const;

@@ -39,7 +39,10 @@ JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const ser
 
 //! Joint positions, velocities and accelerations along a trajectory; row k at times[k].
 struct FollowedJoints {
+  //! q, q̇, q̈: one row per time, one column per joint.
+  //!@{
   Eigen::MatrixXd q, qd, qdd;
+  //!@}
 };
 
 //! `arm` following `trajectory` at `times` (s) as a job's samples give it: q by serial::follow
