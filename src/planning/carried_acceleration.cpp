@@ -361,129 +361,181 @@ double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, 
 
 }  // namespace
 
+namespace {
+
+// The law of §8.2 being built, phase by phase (31): the state, its segment, the segment's phases.
+class GreedyLaw {
+ public:
+  GreedyLaw(const Staircase& stairs, const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations,
+            double v_start, double v_end)
+      : stairs_(stairs), segments_(segments), accelerations_(accelerations), j_(stairs.jerk()), v_start_(v_start),
+        v_end_(v_end), open_end_(v_end > 0.0), x_{0.0, v_start, 0.0} {
+    for (double a : accelerations) a_top_ = std::max(a_top_, a);
+    resolution_ = 1e-9 * a_top_ / j_;
+    shortest_ = 1e-6 * a_top_ / j_;
+    laws_.reserve(segments.size());
+  }
+
+  bool done() const { return m_ == stairs_.count(); }
+
+  //! One phase: false where the law does not settle (no candidate fits, a check fails).
+  bool step() {
+    const Stop stop = stairs_.stop_from(x_);
+    const std::size_t n = stairs_.count();
+    // In the last segment, once the stop ends at the end of the path (to 1e-9 of its length), the
+    // law is that stop: what is left is rounding, not room to speed up.
+    const double length = stairs_.length();
+    if (!open_end_ && m_ + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) {
+      on_edge_ = true;
+      edge_trough_.reset();
+    }
+    std::optional<Choice> choice;
+    for (int c = 0; c < 3 && !choice; ++c) {
+      const std::optional<Piece> piece = candidate(c, stop);
+      if (failed_) return false;
+      if (piece) choice = take(c, *piece, stop);
+    }
+    return choice && advance_by(*choice, stop);
+  }
+
+  //! The laws, once done(), if the law ends in the state asked for.
+  std::optional<std::vector<Profile>> result() {
+    const double v_scale = std::max({1e-300, v_start_, v_end_});
+    if (!(std::abs(x_.v - v_end_) <= 1e-9 * v_scale) || !(std::abs(x_.a) <= 1e-9 * a_top_)) return std::nullopt;
+    return std::move(laws_);
+  }
+
+ private:
+  struct Piece {
+    double jerk, cap;  // a constant jerk and the longest it may last
+  };
+  struct Choice {
+    double jerk, duration;
+    bool stopping;  // the fastest stop's own piece
+  };
+
+  // Candidate c (31): 0 — +j up to the acceleration limit, 1 — 0, 2 — the piece of the manoeuvre
+  // that bounds the state (the pulse into the binding trough, or the fastest stop). Nothing where
+  // it does not apply; failed_ where nothing can.
+  std::optional<Piece> candidate(int c, const Stop& stop) {
+    if (c < 2 && on_edge_) return std::nullopt;
+    if (c == 0) {
+      const double a_cap = stairs_.acceleration(m_);
+      if (!(x_.a < a_cap)) return std::nullopt;
+      return Piece{j_, (a_cap - x_.a) / j_};
+    }
+    if (c == 1) {
+      if (x_.v <= 0.0 && x_.a <= 0.0) return std::nullopt;
+      return Piece{0.0, x_.a < 0.0 ? x_.v / -x_.a : infinity};  // braking: until ṡ would reach 0
+    }
+    if (edge_trough_) {
+      const auto [jerk, cap] = stairs_.pulse_piece(x_, stairs_.trough(*edge_trough_));
+      failed_ = !(cap > 0.0);
+      return Piece{jerk, cap};
+    }
+    failed_ = !stop.exists || (x_.a <= 0.0 && stop.count == 0);  // at rest and nothing else fits
+    if (failed_) return std::nullopt;
+    if (x_.a > 0.0) return Piece{-j_, x_.a / j_};  // to the peak, then choose again
+    return Piece{stop.jerk[0], stop.duration[0]};
+  }
+
+  // The candidate's phase: cut at the next segment boundary, and for +j and 0 at the last viable
+  // instant; nothing if that leaves less than a useful phase.
+  std::optional<Choice> take(int c, Piece piece, const Stop& stop) {
+    const std::size_t n = stairs_.count();
+    const double s_next = stairs_.start(m_ + 1);
+    const Motion far = std::isfinite(piece.cap) ? advance(x_, piece.cap, piece.jerk) : Motion{infinity, 0.0, 0.0};
+    // The stop that ends the path rests at its end to rounding: it is not cut there.
+    const bool final_stop = c == 2 && !edge_trough_ && m_ + 1 == n && stop.count == 1 && piece.jerk > 0.0 &&
+                            far.s <= stairs_.length() * (1.0 + 1e-9);
+    if (!final_stop && (!std::isfinite(piece.cap) || far.s >= s_next - 1e-15 * s_next)) {
+      // Without a cap (jerk 0, s̈ ≥ 0) the boundary is reached by Δ/ṡ and by √(2Δ/s̈).
+      double horizon = piece.cap;
+      if (!std::isfinite(horizon)) {
+        if (x_.v > 0.0) horizon = (s_next - x_.s) / x_.v;
+        if (x_.a > 0.0) horizon = std::min(horizon, std::sqrt(2.0 * (s_next - x_.s) / x_.a));
+      }
+      piece.cap = time_to_position(x_, piece.jerk, horizon, s_next);
+    }
+    if (c == 2) {
+      const bool stopping = !edge_trough_;
+      on_edge_ = false;
+      edge_trough_.reset();
+      return Choice{piece.jerk, piece.cap, stopping};
+    }
+    double edge = piece.cap;
+    const double duration = viable_duration(stairs_, x_, m_, piece.jerk, piece.cap, resolution_, &edge);
+    const bool useful = duration > shortest_;
+    on_edge_ = useful && duration < piece.cap;
+    if (duration < piece.cap) {
+      // Which rule the phase breaks first: a trough's, or the stop's (followed next).
+      std::size_t k = n;
+      stairs_.viable(advance(x_, edge, piece.jerk), m_, &k);
+      edge_trough_.reset();
+      if (k < n) edge_trough_ = k;
+    }
+    if (!useful) return std::nullopt;
+    return Choice{piece.jerk, duration, false};
+  }
+
+  // Runs the chosen phase; at the segment boundary (or at rest at the end) the segment's laws.
+  bool advance_by(const Choice& choice, const Stop& stop) {
+    const std::size_t n = stairs_.count();
+    const double s_next = stairs_.start(m_ + 1), length = stairs_.length();
+    if (++steps_ > 64 * n + 1024) return false;  // a segment rarely needs more than a handful
+    phases_.push_back({choice.duration, choice.jerk, x_});
+    Motion next = advance(x_, choice.duration, choice.jerk);
+    if (choice.jerk > 0.0) next.a = std::min(next.a, stairs_.acceleration(m_));
+    // The stop's last ramp ends at rest exactly.
+    const bool rests = choice.stopping && stop.count == 1 && choice.jerk > 0.0 && choice.duration == stop.duration[0];
+    if (rests) next.v = next.a = 0.0;
+    const bool at_rest_at_end = m_ + 1 == n && rests && length - next.s <= 1e-9 * length;
+    if (next.s >= s_next - 1e-15 * s_next || at_rest_at_end) {
+      next.s = s_next;
+      if (at_rest_at_end) next = Motion{length, 0.0, 0.0};
+      if (!append_segment_laws(phases_, s_next, next, segments_[m_], accelerations_[m_], j_, laws_)) return false;
+      ++m_;
+    }
+    x_ = next;
+    return true;
+  }
+
+  const Staircase& stairs_;
+  const std::vector<LimitedSegment>& segments_;
+  const std::vector<double>& accelerations_;
+  double j_, v_start_, v_end_;
+  bool open_end_;
+  double a_top_ = 0.0;
+  double resolution_ = 0.0;  // time resolution of the edges (a braking start 1e-9 a/j early)
+  // A phase of +j or 0 shorter than this is not taken (its velocity change is below 1e-12 a²/j):
+  // near the edge of the viable states rounding leaves room for vanishing phases only.
+  double shortest_ = 0.0;
+  // Whether the last phase ended on the edge of the viable states: the manoeuvre is followed from
+  // there to its next event, not alternated with other jerks in vanishing steps (31).
+  bool on_edge_ = false;
+  std::optional<std::size_t> edge_trough_;  // the trough whose rule made the edge, if one did
+  bool failed_ = false;
+  Motion x_;
+  std::size_t m_ = 0, steps_ = 0;
+  std::vector<Phase> phases_;
+  std::vector<Profile> laws_;
+};
+
+}  // namespace
+
 std::optional<std::vector<Profile>> carried_acceleration_law(const std::vector<LimitedSegment>& segments,
                                                              const std::vector<double>& accelerations, double j_max,
                                                              double v_start, double v_end, bool settle_in_troughs) {
   // v_end > 0: the law ends cruising at the last segment's limit, which goes on past the end.
-  const bool open_end = v_end > 0.0;
-  const Staircase stairs(segments, accelerations, j_max, settle_in_troughs, open_end);
-  const std::size_t n = stairs.count();
-  const double length = stairs.length();
-  double a_top = 0.0;
-  for (double a : accelerations) a_top = std::max(a_top, a);
-  const double resolution = 1e-9 * a_top / j_max;  // time resolution of the edges (a braking start 1e-9 a/j early)
-  // A phase of +j or 0 shorter than this is not taken (its velocity change is below 1e-12 a²/j):
-  // near the edge of the viable states rounding leaves room for vanishing phases only.
-  const double shortest = 1e-6 * a_top / j_max;
-  // Whether the last phase ended on the edge of the viable states: the stop is followed from there
-  // to its next event, not alternated with other jerks in vanishing steps (31).
-  bool on_edge = false;
-  std::optional<std::size_t> edge_trough;  // the trough whose rule made the edge, if one did
-  std::vector<Profile> laws;
-  laws.reserve(n);
-  std::vector<Phase> phases;
-  Motion x{0.0, v_start, 0.0};
-  std::size_t m = 0;
-  // Each step ends a phase at an event; a segment rarely needs more than a handful.
-  const std::size_t max_steps = 64 * n + 1024;
+  const Staircase stairs(segments, accelerations, j_max, settle_in_troughs, v_end > 0.0);
+  GreedyLaw law(stairs, segments, accelerations, v_start, v_end);
   try {
-    for (std::size_t step = 0; m < n; ++step) {
-      if (step == max_steps) return std::nullopt;
-      const double a_cap = stairs.acceleration(m);
-      const double s_next = stairs.start(m + 1);
-      // Candidates, largest jerk first (31): +j up to the acceleration limit, 0, the manoeuvre's piece.
-      double jerk = 0.0, duration = 0.0;
-      bool chosen = false, stopping = false;
-      const Stop stop = stairs.stop_from(x);
-      // In the last segment, once the stop ends at the end of the path (to 1e-9 of its length),
-      // the law is that stop: what is left is rounding, not room to speed up.
-      if (!open_end && m + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) {
-        on_edge = true;
-        edge_trough.reset();
-      }
-      for (int c = 0; c < 3 && !chosen; ++c) {
-        double cap = infinity;
-        if (c < 2 && on_edge) continue;
-        if (c == 0) {
-          if (!(x.a < a_cap)) continue;
-          jerk = j_max;
-          cap = (a_cap - x.a) / j_max;
-        } else if (c == 1) {
-          jerk = 0.0;
-          if (x.a < 0.0) cap = x.v / -x.a;  // where the velocity would reach zero
-          if (x.v <= 0.0 && x.a <= 0.0) continue;
-        } else if (edge_trough) {
-          // The edge of a trough's rule: follow the pulse that settles in it.
-          std::tie(jerk, cap) = stairs.pulse_piece(x, stairs.trough(*edge_trough));
-          if (!(cap > 0.0)) return std::nullopt;
-        } else {
-          if (!stop.exists) return std::nullopt;
-          if (x.a > 0.0) {
-            jerk = -j_max;
-            cap = x.a / j_max;  // to the peak, then choose again
-          } else if (stop.count > 0) {
-            jerk = stop.jerk[0];
-            cap = stop.duration[0];
-          } else {
-            return std::nullopt;  // at rest and nothing else fits: not on this path
-          }
-        }
-        // Cut at the next segment boundary.
-        const Motion far = std::isfinite(cap) ? advance(x, cap, jerk) : Motion{infinity, 0.0, 0.0};
-        // The stop that ends the path rests at its end to rounding: it is not cut there.
-        const bool final_stop = c == 2 && !edge_trough && m + 1 == n && stop.count == 1 && jerk > 0.0 && far.s <= length * (1.0 + 1e-9);
-        if (!final_stop && (!std::isfinite(cap) || far.s >= s_next - 1e-15 * s_next)) {
-          // Without a cap (jerk 0, s̈ ≥ 0) the boundary is reached by Δ/ṡ and by √(2Δ/s̈).
-          double horizon = cap;
-          if (!std::isfinite(horizon)) {
-            if (x.v > 0.0) horizon = (s_next - x.s) / x.v;
-            if (x.a > 0.0) horizon = std::min(horizon, std::sqrt(2.0 * (s_next - x.s) / x.a));
-          }
-          cap = time_to_position(x, jerk, horizon, s_next);
-        }
-        if (c == 2) {
-          duration = cap;
-          chosen = true;
-          stopping = !edge_trough;
-          on_edge = false;
-          edge_trough.reset();
-        } else {
-          double edge = cap;
-          duration = viable_duration(stairs, x, m, jerk, cap, resolution, &edge);
-          chosen = duration > shortest;
-          on_edge = chosen && duration < cap;
-          if (duration < cap) {
-            // Which rule the phase breaks first: a trough's, or the stop's (followed next).
-            std::size_t k = n;
-            stairs.viable(advance(x, edge, jerk), m, &k);
-            edge_trough.reset();
-            if (k < n) edge_trough = k;
-          }
-        }
-      }
-      if (!chosen) return std::nullopt;
-      phases.push_back({duration, jerk, x});
-      Motion next = advance(x, duration, jerk);
-      if (jerk > 0.0 && next.a > a_cap) next.a = a_cap;
-      // The stop's last ramp ends at rest exactly.
-      const bool rests = stopping && stop.count == 1 && jerk > 0.0 && duration == stop.duration[0];
-      if (rests) next.v = next.a = 0.0;
-      const bool at_rest_at_end = m + 1 == n && rests && length - next.s <= 1e-9 * length;
-      if (next.s >= s_next - 1e-15 * s_next || at_rest_at_end) {
-        // The segment boundary: the segment's laws end exactly there.
-        next.s = s_next;
-        if (at_rest_at_end) next = Motion{length, 0.0, 0.0};
-        if (!append_segment_laws(phases, s_next, next, segments[m], accelerations[m], j_max, laws)) return std::nullopt;
-        ++m;
-      }
-      x = next;
-    }
+    while (!law.done())
+      if (!law.step()) return std::nullopt;
   } catch (const std::invalid_argument&) {
     return std::nullopt;  // from_phases: the phases do not lead to the end state to rounding
   }
-  const double v_scale = std::max({1e-300, v_start, v_end});
-  if (!(std::abs(x.v - v_end) <= 1e-9 * v_scale) || !(std::abs(x.a) <= 1e-9 * a_top)) return std::nullopt;
-  return laws;
+  return law.result();
 }
 
 std::vector<Profile> reversed_in_time(const std::vector<Profile>& laws) {
