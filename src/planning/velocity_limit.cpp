@@ -141,9 +141,9 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
   const bool open_end = run.v_end > 0.0, open_start = run.v_start > 0.0;
   const bool ends_fit = (!open_end || run.v_end == run.segments.back().limit) && (!open_start || run.v_start == run.segments.front().limit);
   // No jerk-limited law is faster than the trapezoid law over the run (§5): where the chain is
-  // within 1 % of it, at most that much is left to gain: not worth the search.
+  // within 0.1 % of it, at most that much is left to gain: not worth the search.
   const bool worth = run.segments.size() > 1 && ends_fit &&
-                     duration > 1.01 * total_duration(velocity_limited_chain(run.segments, run.a_max, std::nullopt,
+                     duration > 1.001 * total_duration(velocity_limited_chain(run.segments, run.a_max, std::nullopt,
                                                                               run.v_start, run.v_end));
   if (worth) {
     const std::vector<LimitedSegment> reversed(run.segments.rbegin(), run.segments.rend());
