@@ -294,3 +294,25 @@ def test_check_fails_where_plan_would_on_seven_joints_without_a_parameter(tmp_pa
     job = panda_job(tmp_path, text, ptp=False)
     assert cli.main(["check", str(job)]) == 1
     assert "machine.serial_arm.redundancy" in capsys.readouterr().err
+
+
+def test_follow_refuses_a_jump_where_the_branch_ends():
+    """Paths from joints anywhere in the Panda's ranges: some leave the branch at q_start's q₇ (it
+    runs into a joint limit); there follow names the pose instead of jumping, and indeed every
+    solution at that q₇ is more than the bound away from the joints at the pose before."""
+    arm = panda()
+    rng = np.random.default_rng(SEED + 5)
+    refused = 0
+    for q in random_q(rng, arm, 20):
+        poses = lin_poses(arm, q, rng.uniform(-0.05, 0.05, 3), 26)
+        try:
+            arm.follow(poses, q)
+        except RuntimeError as e:
+            if "joint step" not in str(e):
+                continue
+            k = int(str(e).split("poses[")[1].split("]")[0])
+            before = arm.follow(poses[:k], q)[-1]
+            solutions = arm.inverse(poses[k], redundancy=q[6])
+            assert len(solutions) and np.abs(solutions - before).max(axis=1).min() > 0.3
+            refused += 1
+    assert refused >= 1
