@@ -309,7 +309,8 @@ void bind_serial(py::module_& m) {
       .def_readonly("within_limits", &InverseResult::within_limits,
                     "per solution: inside the position limits (all True unless keep_outside_limits)")
       .def_readonly("complete", &InverseResult::complete,
-                    "True: every solution (analytic family); False: what the numeric search found")
+                    "True: every solution (analytic family; a seven-joint arm: every one at the redundancy value asked for); "
+                    "False: what the numeric search found, or a seven-joint arm's solutions at the default values")
       .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
                              "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist', 'general' or "
                              "'locked_joint'")
