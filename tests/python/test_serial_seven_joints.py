@@ -316,3 +316,17 @@ def test_follow_refuses_a_jump_where_the_branch_ends():
             assert len(solutions) and np.abs(solutions - before).max(axis=1).min() > 0.3
             refused += 1
     assert refused >= 1
+
+
+def test_the_seven_joint_example_job_plans_from_q_start(tmp_path):
+    from dispkin import cli
+    import csv
+
+    job = pathlib.Path(__file__).resolve().parents[2] / "examples" / "jobs" / "iiwa14_lin_move.yaml"
+    assert cli.main(["check", str(job)]) == 0
+    assert cli.main(["plan", str(job), "-o", str(tmp_path)]) == 0
+    rows = list(csv.reader((tmp_path / "iiwa14_lin_move.csv").open()))
+    table = np.array(rows[1:], dtype=float)
+    q = table[:, [rows[0].index(f"joint_a{k}.position") for k in range(1, 8)]]
+    np.testing.assert_allclose(q[0], [0.3, 0.5, 0.2, -1.6, -0.3, 1.0, 0.4], atol=1e-9)
+    assert np.abs(q[:, 6] - 0.4).max() <= 1e-9 and np.abs(np.diff(q, axis=0)).max() <= 0.3
