@@ -87,8 +87,8 @@ bool clears_singularity(const BodyJacobian& j, const Eigen::PartialPivLU<BodyJac
   return rcond >= singular_rcond;
 }
 
-// The full body Jacobian J_b(q) (6 × dof) into `full` and the square one of the joints that move
-// into `j`: all six of a 6R arm; a redundant arm's but the locked one, whose rate is 0 on a path
+// The square body Jacobian of the joints that move into `j` (a redundant arm: the full J_b(q), 6 × dof,
+// into `full` first): all six of a 6R arm; a redundant arm's but the locked one, whose rate is 0 on a path
 // at one parameter value (doc/inverse-kinematics.md (eq. 42)).
 void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, FullJacobian& full, BodyJacobian& j,
                      serial::detail::ChainPassRecord* record) {
@@ -96,6 +96,15 @@ void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, Ful
   if (arm.dof() != 6 && locked < 0)
     throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()),
                                          "must be 6, or 7 with a redundancy parameter, to invert the Jacobian"));
+  if (locked < 0) {
+    // A 6R arm: J_b itself, computed in place (bit for bit the rates of tests/data/plan_fingerprint.txt).
+    if (record) {
+      serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
+    } else {
+      serial::chain_body_jacobian(arm.chain(), q.data(), j);
+    }
+    return;
+  }
   full.resize(6, arm.dof());
   if (record) {
     serial::detail::chain_body_jacobian(arm.chain(), q.data(), full, *record);
@@ -136,6 +145,7 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
   BodyJacobian j;
   FullJacobian full;
   const Eigen::Matrix<double, 6, 1> moving = factorised_jacobian(arm, q, full, j, t, s).solve(body.vector());
+  if (arm.dof() == 6) return moving;
   Eigen::VectorXd qd;
   all_joints(arm, moving, qd);
   return qd;
@@ -148,6 +158,12 @@ void rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd&
   BodyJacobian j;
   FullJacobian full;
   const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s, record);
+  if (arm.dof() == 6) {
+    qd = lu.solve(body.vector());
+    const Twistd product = serial::chain_velocity_product(j, qd.data());
+    qdd = lu.solve(body_rate.vector() - product.vector());
+    return;
+  }
   all_joints(arm, lu.solve(body.vector()), qd);
   const Twistd product = serial::chain_velocity_product(full, qd.data());
   all_joints(arm, lu.solve(body_rate.vector() - product.vector()), qdd);
