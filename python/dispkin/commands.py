@@ -30,6 +30,10 @@ def run_check(job_file: str, out: TextIO) -> int:
                "serial_arm": f"serial arm {job.arm.robot_name if job.arm else ''} ({job.arm.dof if job.arm else 0} joints, "
                f"family {job.arm.family if job.arm else ''})", "none": "none (poses only)"}[job.machine]
     print(f"  machine: {machine}", file=out)
+    if job.arm is not None and job.arm.redundancy.kind != "none":
+        r = job.arm.redundancy
+        print(f"  redundancy: joint {r.joint_name} (range [{r.lower:g}, {r.upper:g}] rad) held at its value in q_start, "
+              f"{r.value(job.q_start):g} rad", file=out)
     if job.hexapod is not None:
         rule = [f"leg group {job.leg_speed_group} (rule a)"] if job.leg_speed_group is not None else []
         rule += ["joint metric (rule b)"] if job.joint_metric else []

@@ -299,7 +299,7 @@ arm's forward kinematics of the joints.)doc");
                   py::arg("q_start"), py::arg("spacing") = FollowedTrajectory::default_spacing,
                   "The branch that starts at q_start (whose forward kinematics must be the trajectory's start "
                   "pose to 1e-9). ValueError naming the argument for a wrong q_start or spacing, an arm that is "
-                  "not 6R, or a trajectory the arm cannot follow (out of reach, singular, a joint limit).")
+                  "neither 6R nor 7R with a redundancy parameter (kept at q_start's value), or a trajectory the arm cannot follow (out of reach, singular, a joint limit).")
       .def_static("to_end", &FollowedTrajectory::to_end, py::arg("trajectory"), py::arg("robot"), py::arg("q_end"),
                   py::arg("spacing") = FollowedTrajectory::default_spacing,
                   "The branch that ends at q_end (followed backwards from the trajectory's end pose, which "

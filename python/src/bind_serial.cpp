@@ -98,7 +98,9 @@ py::array_t<double> solution_rows(const std::vector<Eigen::VectorXd>& solutions,
 // search, the numeric fallback and the copies take tens of µs to seconds.
 bool long_inverse(const SerialArm& arm, const InverseOptions& options) {
   const serial::IkFamily f = arm.family();
-  return options.offer_equivalents || !(f == serial::IkFamily::spherical_wrist || f == serial::IkFamily::three_parallel);
+  const bool one_closed_form = (f == serial::IkFamily::spherical_wrist || f == serial::IkFamily::three_parallel) ||
+                               (f == serial::IkFamily::locked_joint && (options.redundancy || options.q_ref));
+  return options.offer_equivalents || !one_closed_form;
 }
 
 InverseResult solve(const SerialArm& arm, const Posed& pose, const InverseOptions& options) {
@@ -143,6 +145,17 @@ std::vector<Eigen::VectorXd> joint_vectors(const py::handle& obj, const std::str
   return out;
 }
 
+// The redundancy parameter value and q_ref of inverse() (None: not given).
+void choose_redundancy(InverseOptions& o, const py::object& redundancy, const py::object& q_ref) {
+  if (!redundancy.is_none()) {
+    if (!py::isinstance<py::float_>(redundancy) && !py::isinstance<py::int_>(redundancy) &&
+        !py::hasattr(redundancy, "__float__"))
+      throw py::type_error("redundancy: expected a number (rad), got " + std::string(py::str(py::type::of(redundancy))));
+    o.redundancy = py::float_(redundancy).cast<double>();
+  }
+  if (!q_ref.is_none()) o.q_ref = joint_vector(q_ref, "q_ref");
+}
+
 InverseOptions options_of(bool keep_outside_limits, bool offer_equivalents, int max_attempts, double time_budget,
                           unsigned seed) {
   InverseOptions o;
@@ -182,11 +195,15 @@ SerialArm from_urdf(const std::string& path_or_string, const std::string& base_l
   return SerialArm::from_urdf_file(path_or_string, base_link, tip_link);
 }
 
+constexpr const char* family_names =
+    "must be 'spherical_wrist', 'three_parallel', 'offset_wrist', 'general' or 'locked_joint'";
+
 serial::IkFamily family_named(const std::string& name) {
   using serial::IkFamily;
-  for (IkFamily f : {IkFamily::spherical_wrist, IkFamily::three_parallel, IkFamily::offset_wrist, IkFamily::general})
+  for (IkFamily f : {IkFamily::spherical_wrist, IkFamily::three_parallel, IkFamily::offset_wrist, IkFamily::general,
+                     IkFamily::locked_joint})
     if (serial::to_string(f) == name) return f;
-  throw std::invalid_argument(describe("family", name, "must be 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'"));
+  throw std::invalid_argument(describe("family", name, family_names));
 }
 
 py::tuple joint_limits_state(const JointLimits& l) {
@@ -227,7 +244,7 @@ InverseResult inverse_result_from_state(const py::object& state) {
   try {
     r.family = family_named(family);
   } catch (const std::invalid_argument&) {
-    throw py::value_error(family_at.message(s[3], "must be 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'"));
+    throw py::value_error(family_at.message(s[3], family_names));
   }
   // One flag per solution, every solution of one size and finite (a joint vector).
   require(r.within_limits.size() == r.solutions.size(), "within_limits size", static_cast<unsigned long>(r.within_limits.size()),
@@ -292,9 +309,11 @@ void bind_serial(py::module_& m) {
       .def_readonly("within_limits", &InverseResult::within_limits,
                     "per solution: inside the position limits (all True unless keep_outside_limits)")
       .def_readonly("complete", &InverseResult::complete,
-                    "True: every solution (analytic family); False: what the numeric search found")
+                    "True: every solution (analytic family; a seven-joint arm: every one at the redundancy value asked for); "
+                    "False: what the numeric search found, or a seven-joint arm's solutions at the default values")
       .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
-                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist' or 'general'")
+                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist', 'general' or "
+                             "'locked_joint'")
       .def("__repr__", &inverse_result_repr);
   def_pickle(
       inverse_result, "InverseResult",
@@ -302,6 +321,26 @@ void bind_serial(py::module_& m) {
         return py::make_tuple(to_list(r.solutions), py::cast(r.within_limits), r.complete, serial::to_string(r.family));
       },
       &inverse_result_from_state);
+
+  py::class_<serial::Redundancy>(m, "Redundancy",
+                                 "The redundancy parameter of a seven-joint arm (SerialArm.redundancy): a locked joint "
+                                 "whose every value leaves a 6R closed form (doc/inverse-kinematics.md section 11).")
+      .def_readonly("kind", &serial::Redundancy::kind, "'locked_joint', or 'none' (no parameter)")
+      .def_readonly("joint", &serial::Redundancy::joint, "index in q of the locked joint (-1: none)")
+      .def_readonly("joint_name", &serial::Redundancy::joint_name, "its URDF name ('' if none)")
+      .def_readonly("lower", &serial::Redundancy::lower, "lower end of the parameter's range (rad)")
+      .def_readonly("upper", &serial::Redundancy::upper, "upper end of the parameter's range (rad)")
+      .def_property_readonly("default_values", &serial::Redundancy::default_values,
+                             "the values SerialArm.inverse solves at when given neither redundancy nor q_ref: the "
+                             "centres of 16 equal parts of [lower, upper]")
+      .def("value", [](const serial::Redundancy& r, const py::object& q) { return r.value(joint_vector(q, "q")); },
+           py::arg("q"), "the parameter value of the joint vector q (q[joint]); ValueError when there is none")
+      .def("__repr__", [](const serial::Redundancy& r) {
+        if (!r.has_parameter()) return std::string("Redundancy(kind='none')");
+        return "Redundancy(kind='" + r.kind + "', joint=" + std::to_string(r.joint) + ", joint_name='" + r.joint_name +
+               "', lower=" + py::repr(py::float_(r.lower)).cast<std::string>() +
+               ", upper=" + py::repr(py::float_(r.upper)).cast<std::string>() + ")";
+      });
 
   py::class_<SerialArm> serial_arm(m, "SerialArm", R"doc(
 A serial arm of revolute joints between two links of a URDF (urdfdom into an Orocos KDL chain).
@@ -332,6 +371,9 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "The same arm with some joint limits replaced ((dof,) arrays; None keeps the URDF's): lower < upper "
           "(+-inf for continuous joints), velocity > 0 and effort > 0 (inf: none). MoveIt's joint_limits.yaml "
           "overrides a URDF this way (dispkin.limits_files.apply_moveit_joint_limits).")
+      .def_property_readonly("redundancy", &SerialArm::redundancy, py::return_value_policy::reference_internal,
+                             "the redundancy parameter (Redundancy): for a seven-joint arm of family 'locked_joint' the "
+                             "locked joint and its range; kind 'none' for any other arm")
       .def_property_readonly("family", [](const SerialArm& a) { return serial::to_string(a.family()); },
                              "the analytic IK family recognised from the joint axes: 'spherical_wrist', "
                              "'three_parallel', 'offset_wrist' or 'general' (numeric fallback)")
@@ -341,16 +383,21 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
       .def("forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); }, py::arg("q"),
            "The tip pose in base coordinates for joint positions q (n,).")
       .def("inverse",
-           [](const SerialArm& a, const py::handle& pose, bool equivalents) {
+           [](const SerialArm& a, const py::handle& pose, bool equivalents, const py::object& redundancy,
+              const py::object& q_ref) {
              InverseOptions options;
              options.offer_equivalents = equivalents;
+             choose_redundancy(options, redundancy, q_ref);
              return solution_rows(solve(a, pose_of(pose, "pose"), options).solutions, a.dof());
            },
-           py::arg("pose"), py::arg("offer_equivalents") = false,
+           py::arg("pose"), py::arg("offer_equivalents") = false, py::kw_only(), py::arg("redundancy") = py::none(),
+           py::arg("q_ref") = py::none(),
            "The distinct joint vectors inside the limits whose forward() is `pose` (a Pose or (4, 4)) to 1e-10, "
            "as the rows of a (k, n) array, one per solution, each angle the 2pi-equivalent nearest to 0 inside "
            "the limits; with offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else "
-           "ValueError); (0, n) when unreachable.")
+           "ValueError); (0, n) when unreachable. A redundant arm with a parameter (arm.redundancy): every "
+           "solution at redundancy=value, or at q_ref's value with q_ref=q (nearest to q_ref first; on any arm "
+           "q_ref orders the solutions so), or with neither at each of arm.redundancy.default_values.")
       .def(
           "inverse_many",
           [](const SerialArm& a, const py::handle& poses, bool equivalents) {
@@ -372,11 +419,14 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "ValueError naming poses[i] for a pose that is not finite or not rigid.")
       .def("inverse_solutions",
            [](const SerialArm& a, const py::handle& pose, bool keep, bool equivalents, int attempts, double budget,
-              unsigned seed) {
-             return solve(a, pose_of(pose, "pose"), options_of(keep, equivalents, attempts, budget, seed));
+              unsigned seed, const py::object& redundancy, const py::object& q_ref) {
+             InverseOptions options = options_of(keep, equivalents, attempts, budget, seed);
+             choose_redundancy(options, redundancy, q_ref);
+             return solve(a, pose_of(pose, "pose"), options);
            },
            py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
-           py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u,
+           py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u, py::kw_only(),
+           py::arg("redundancy") = py::none(), py::arg("q_ref") = py::none(),
            "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
            "2pi copies on request (at most 10000, else ValueError); for the numeric fallback the restarts, time budget (s, "
            "bounding the search's time) and seed.")

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dispkin/error.hpp"
+#include "dispkin/serial/redundancy.hpp"
 #include "ik_internal.hpp"
 
 namespace dispkin {
@@ -85,6 +86,7 @@ void require_family(const detail::ChainGeometry& g, IkFamily family) {
     case IkFamily::three_parallel: why = g.why_not_three_parallel; break;
     case IkFamily::offset_wrist: why = g.why_not_offset; break;
     case IkFamily::general: why = "no analytic solver for the general family (use a numeric solver)"; break;
+    case IkFamily::locked_joint: why = "a 7R chain needs a value of its locked joint (locked_joint_inverse)"; break;
   }
   if (*why != '\0')
     throw std::invalid_argument(describe("family", to_string(family), std::string("does not fit the chain: ") + why));
@@ -98,6 +100,7 @@ std::string to_string(IkFamily family) {
     case IkFamily::three_parallel: return "three_parallel";
     case IkFamily::offset_wrist: return "offset_wrist";
     case IkFamily::general: return "general";
+    case IkFamily::locked_joint: return "locked_joint";
   }
   return "unknown";
 }
@@ -105,11 +108,12 @@ std::string to_string(IkFamily family) {
 IkFamily recognise(const RevoluteChain& chain, double tolerance) {
   require(std::isfinite(tolerance) && tolerance > 0.0, "tolerance", tolerance, "must be finite and positive");
   if (chain.dof() != 6) {
-    // Only 6R chains have an analytic family; other lengths are still checked for sanity.
+    // A 6R chain has a closed form or search; a 7R one may have a locked joint that leaves one
+    // (redundancy.hpp); other lengths are still checked for sanity.
     if (chain.axes.size() != chain.points.size())
       throw std::invalid_argument(describe("chain.points", static_cast<long>(chain.points.size()),
                                            "expected one point per axis (" + std::to_string(chain.axes.size()) + ")"));
-    return IkFamily::general;
+    return find_locked_joint(chain).found() ? IkFamily::locked_joint : IkFamily::general;
   }
   detail::validate_chain(chain);
   return detail::analyse(chain, tolerance).family;

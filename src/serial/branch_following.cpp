@@ -84,6 +84,9 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
   // The distinct solutions; their 2π copies are the rule's, placed by in_rule_form below.
   InverseOptions options = rule.options;
   options.offer_equivalents = false;
+  // A redundant arm with a parameter stays at q_ref's value unless the rule fixes one
+  // (doc/inverse-kinematics.md (eq. 41)): all its solutions there, in closed form.
+  if (arm.redundancy().has_parameter() && !options.redundancy) options.redundancy = q_ref(arm.redundancy().joint);
   const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
   if (solutions.empty()) return std::nullopt;
   const JointLimits limits = arm.joint_limits();
@@ -115,6 +118,9 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   // candidates whatever offer_equivalents says (found in closed form, not enumerated).
   detail::BranchRule rule{options, detail::Turns::listed};
   rule.options.offer_equivalents = true;
+  // A redundant arm keeps q_start's parameter value and never jumps (doc/inverse-kinematics.md (eq. 41)).
+  const Redundancy& redundancy = arm.redundancy();
+  if (redundancy.has_parameter()) rule.options.redundancy = q_start(redundancy.joint);
   std::vector<Eigen::VectorXd> path;
   path.reserve(poses.size());
   Eigen::VectorXd previous = q_start;
@@ -122,7 +128,17 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
     std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, poses[k], previous, rule);
     if (!q)
       throw std::runtime_error(describe("poses[" + std::to_string(k) + "] translation", poses[k].translation(),
-                                        "has no inverse-kinematics solution within the joint limits"));
+                                        "has no inverse-kinematics solution within the joint limits" +
+                                            std::string(redundancy.has_parameter() ? " at the redundancy value of q_start" : "")));
+    if (redundancy.has_parameter()) {
+      const double step = (*q - previous).lpNorm<Eigen::Infinity>();
+      if (!(step <= max_redundant_step))
+        throw std::runtime_error(describe(
+            "poses[" + std::to_string(k) + "] translation", poses[k].translation(),
+            "is reached at the redundancy value of q_start only by a joint step of " + std::to_string(step) +
+                " rad, more than " + std::to_string(max_redundant_step) +
+                " (the branch ends there, or the poses are too far apart: sample the path more densely)"));
+    }
     previous = std::move(*q);
     path.push_back(previous);
   }

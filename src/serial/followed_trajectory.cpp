@@ -145,8 +145,9 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const serial::Seri
                                        bool backwards, double spacing)
     : trajectory_(std::move(trajectory)), chain_(arm.chain()) {
   const char* given = backwards ? "q_end" : "q_start";
-  require(arm.dof() == 6, "arm", static_cast<long>(arm.dof()),
-          "joints: following a Cartesian trajectory inverts the Jacobian, so the arm must have 6");
+  require(arm.dof() == 6 || arm.redundancy().has_parameter(), "arm", static_cast<long>(arm.dof()),
+          "joints: following a Cartesian trajectory inverts the Jacobian, so the arm must have 6, or 7 with a "
+          "redundancy parameter (SerialArm::redundancy())");
   require(q_given.size() == arm.dof(), given, static_cast<long>(q_given.size()),
           "entries: must have one per joint of the arm (" + std::to_string(arm.dof()) + ")");
   require_finite(q_given, given);

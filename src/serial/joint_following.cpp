@@ -16,6 +16,7 @@
 #include "chain_pass.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "dispkin/serial/ptp.hpp"
 
 namespace dispkin {
 namespace detail {
@@ -34,6 +35,8 @@ Eigen::VectorXd branch_solution(const serial::SerialArm& arm, const Posed& pose,
 namespace {
 
 using BodyJacobian = Eigen::Matrix<double, 6, 6>;
+// 6 × dof without heap allocation up to max_ptp_joints (a 6R or 7R arm on the real-time path).
+using FullJacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, max_ptp_joints>;
 
 // Below this reciprocal condition number (1-norm, Eigen's estimate) the arm counts as singular.
 constexpr double singular_rcond = 1e-10;
@@ -84,17 +87,49 @@ bool clears_singularity(const BodyJacobian& j, const Eigen::PartialPivLU<BodyJac
   return rcond >= singular_rcond;
 }
 
-// J_b(q) and its LU (partial pivoting: J_b is square and, where it is used, well conditioned),
-// recording the pass if `record` is not null; throws naming the place near a singularity.
-Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
-                                                      BodyJacobian& j, double t, double s,
-                                                      serial::detail::ChainPassRecord* record = nullptr) {
-  if (arm.dof() != 6) throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()), "must be 6 to invert the Jacobian"));
-  if (record) {
-    serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
-  } else {
-    serial::chain_body_jacobian(arm.chain(), q.data(), j);
+// The square body Jacobian of the joints that move into `j` (a redundant arm: the full J_b(q), 6 × dof,
+// into `full` first): all six of a 6R arm; a redundant arm's but the locked one, whose rate is 0 on a path
+// at one parameter value (doc/inverse-kinematics.md (eq. 42)).
+void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, FullJacobian& full, BodyJacobian& j,
+                     serial::detail::ChainPassRecord* record) {
+  const int locked = arm.redundancy().joint;
+  if (arm.dof() != 6 && locked < 0)
+    throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()),
+                                         "must be 6, or 7 with a redundancy parameter, to invert the Jacobian"));
+  if (locked < 0) {
+    // A 6R arm: J_b itself, computed in place (bit for bit the rates of tests/data/plan_fingerprint.txt).
+    if (record) {
+      serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
+    } else {
+      serial::chain_body_jacobian(arm.chain(), q.data(), j);
+    }
+    return;
   }
+  full.resize(6, arm.dof());
+  if (record) {
+    serial::detail::chain_body_jacobian(arm.chain(), q.data(), full, *record);
+  } else {
+    serial::chain_body_jacobian(arm.chain(), q.data(), full);
+  }
+  for (int c = 0, k = 0; c < arm.dof(); ++c)
+    if (c != locked) j.col(k++) = full.col(c);
+}
+
+// The rates of the moving joints (`moving`, 6) as rates of all joints into `out`, 0 at the locked
+// one (no allocation when `out` has the size already).
+void all_joints(const serial::SerialArm& arm, const Eigen::Matrix<double, 6, 1>& moving, Eigen::VectorXd& out) {
+  const int locked = arm.redundancy().joint;
+  out.resize(arm.dof());
+  for (int c = 0, k = 0; c < arm.dof(); ++c) out(c) = c == locked ? 0.0 : moving(k++);
+}
+
+// J_b(q) of the moving joints and its LU (partial pivoting: it is square and, where it is used,
+// well conditioned), recording the pass if `record` is not null; throws naming the place near a
+// singularity.
+Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
+                                                      FullJacobian& full, BodyJacobian& j, double t, double s,
+                                                      serial::detail::ChainPassRecord* record = nullptr) {
+  moving_jacobian(arm, q, full, j, record);
   Eigen::PartialPivLU<BodyJacobian> lu(j);
   double rcond = 0.0;
   if (!clears_singularity(j, lu, rcond)) {
@@ -108,7 +143,11 @@ Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& a
 Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                                double t, double s) {
   BodyJacobian j;
-  const Eigen::Matrix<double, 6, 1> qd = factorised_jacobian(arm, q, j, t, s).solve(body.vector());
+  FullJacobian full;
+  const Eigen::Matrix<double, 6, 1> moving = factorised_jacobian(arm, q, full, j, t, s).solve(body.vector());
+  if (arm.dof() == 6) return moving;
+  Eigen::VectorXd qd;
+  all_joints(arm, moving, qd);
   return qd;
 }
 
@@ -117,10 +156,17 @@ namespace {
 void rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
            double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, serial::detail::ChainPassRecord* record) {
   BodyJacobian j;
-  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, j, t, s, record);
-  qd = lu.solve(body.vector());
-  const Twistd product = serial::chain_velocity_product(j, qd.data());
-  qdd = lu.solve(body_rate.vector() - product.vector());
+  FullJacobian full;
+  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s, record);
+  if (arm.dof() == 6) {
+    qd = lu.solve(body.vector());
+    const Twistd product = serial::chain_velocity_product(j, qd.data());
+    qdd = lu.solve(body_rate.vector() - product.vector());
+    return;
+  }
+  all_joints(arm, lu.solve(body.vector()), qd);
+  const Twistd product = serial::chain_velocity_product(full, qd.data());
+  all_joints(arm, lu.solve(body_rate.vector() - product.vector()), qdd);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "angles.hpp"
 #include "chain_dynamics.hpp"
 #include "serial_arm_model.hpp"
 
@@ -79,8 +80,29 @@ SerialArm SerialArm::with_joint_limits(const JointLimits& limits) const {
   });
   auto model = std::make_shared<Model>(*model_);
   model->limits = limits;
+  describe_redundancy(model->revolute, model->family, model->joint_names, model->limits, model->lock,
+                      model->redundancy);
   return SerialArm(std::move(model));
 }
+
+void describe_redundancy(const RevoluteChain& chain, IkFamily family, const std::vector<std::string>& joint_names,
+                         const JointLimits& limits, LockedJoint& lock, Redundancy& r) {
+  lock = LockedJoint{};
+  r = Redundancy{};
+  if (family != IkFamily::locked_joint) return;
+  lock = find_locked_joint(chain);
+  r.kind = "locked_joint";
+  r.joint = lock.joint;
+  r.joint_name = joint_names[static_cast<std::size_t>(r.joint)];
+  r.dof = chain.dof();
+  // A joint whose limits span more than a turn (or none) takes every value in one turn.
+  const double lo = limits.lower(r.joint), hi = limits.upper(r.joint);
+  const bool within_a_turn = std::isfinite(lo) && std::isfinite(hi) && hi - lo <= detail::two_pi;
+  r.lower = within_a_turn ? lo : -detail::pi;
+  r.upper = within_a_turn ? hi : detail::pi;
+}
+
+const Redundancy& SerialArm::redundancy() const noexcept { return model_->redundancy; }
 std::vector<BodyInertia> SerialArm::inertias() const { return model_->inertias; }
 const RevoluteChain& SerialArm::chain() const noexcept { return model_->revolute; }
 IkFamily SerialArm::family() const noexcept { return model_->family; }
@@ -114,7 +136,20 @@ Eigen::MatrixXd SerialArm::body_jacobian(const Eigen::VectorXd& q) const {
 }
 
 Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body_twist) {
-  const Eigen::MatrixXd j = arm.body_jacobian(q);
+  Eigen::MatrixXd j = arm.body_jacobian(q);
+  const int locked = arm.redundancy().joint;
+  if (locked >= 0) {
+    // A redundant arm at one parameter value: the locked joint does not move (doc/inverse-kinematics.md (eq. 42)).
+    const Eigen::Index n = j.cols();
+    j.block(0, locked, 6, n - 1 - locked) = j.block(0, locked + 1, 6, n - 1 - locked).eval();
+    j.conservativeResize(6, n - 1);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(std::numeric_limits<double>::epsilon() * static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
+    const Eigen::VectorXd moving = svd.solve(body_twist.vector());
+    Eigen::VectorXd qd(n);
+    qd << moving.head(locked), 0.0, moving.tail(n - 1 - locked);
+    return qd;
+  }
   // The cut-off of a least-squares solver (LAPACK's gelsd): ε · max(rows, cols) of the largest singular value.
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
   svd.setThreshold(std::numeric_limits<double>::epsilon() * static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));

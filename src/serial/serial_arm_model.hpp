@@ -12,6 +12,7 @@
 #include "dispkin/kinematics.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/redundancy.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "chain_dynamics.hpp"
@@ -35,6 +36,10 @@ struct SerialArm::Model {
   std::vector<detail::ChainBody> bodies;
   RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
   IkFamily family = IkFamily::general;
+  // A 7R arm of family locked_joint: the joint locked and the 6R chain left (redundancy.hpp),
+  // and the parameter as the arm reports it.
+  LockedJoint lock;
+  Redundancy redundancy;
   // Configuration flags, base coordinates at q = 0: the point of axis 4 nearest to axis 5
   // and the point of axis 5 nearest to axis 6 (both the wrist centre of a spherical wrist).
   Eigen::Vector3d elbow_point = Eigen::Vector3d::Zero();
@@ -67,6 +72,11 @@ constexpr double limit_slack = 1e-10;
 // inside them; joints without limits, and those that do not fit, into (−π, π]): the form in
 // which inverse_solutions returns a solution. Whether every joint fits.
 bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexcept;
+
+// The lock and the redundancy of an arm of this chain, family, joint names and limits (the
+// parameter's range follows the locked joint's limits).
+void describe_redundancy(const RevoluteChain& chain, IkFamily family, const std::vector<std::string>& joint_names,
+                         const JointLimits& limits, LockedJoint& lock, Redundancy& redundancy);
 
 // The product-of-exponentials form of a KDL chain of revolute (and fixed) segments, at q = 0.
 RevoluteChain revolute_chain_of(const KDL::Chain& chain);

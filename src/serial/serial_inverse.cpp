@@ -165,6 +165,24 @@ bool solve_before(KDL::ChainIkSolverPos_LMA& solver, const KDL::Frame& goal, KDL
   return true;
 }
 
+// The solutions (and their flags) ordered by distance to q_ref, nearest first; ties keep their order.
+void nearest_first(InverseResult& result, const Eigen::VectorXd& q_ref) {
+  std::vector<std::size_t> order(result.solutions.size());
+  std::vector<double> distance(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    order[k] = k;
+    distance[k] = (result.solutions[k] - q_ref).norm();
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+  InverseResult sorted;
+  for (const std::size_t k : order) {
+    sorted.solutions.push_back(std::move(result.solutions[k]));
+    sorted.within_limits.push_back(result.within_limits[k]);
+  }
+  result.solutions = std::move(sorted.solutions);
+  result.within_limits = std::move(sorted.within_limits);
+}
+
 }  // namespace
 
 InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptions& options) const {
@@ -175,6 +193,15 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   }
   require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
   require_positive(options.time_budget, "time_budget");
+
+  const Redundancy& redundancy = model_->redundancy;
+  if (options.redundancy) {
+    require(redundancy.has_parameter(), "redundancy", *options.redundancy,
+            "the arm has no redundancy parameter (its family is " + to_string(model_->family) + ")");
+    require(!options.q_ref, "redundancy", *options.redundancy, "give either redundancy or q_ref, not both");
+    require_finite(*options.redundancy, "redundancy");
+  }
+  if (options.q_ref) require_joint_vector(*options.q_ref, "q_ref");
 
   const JointLimits& limits = model_->limits;
   const int n = dof();
@@ -225,6 +252,19 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
       representatives.push_back(std::move(q));
       inside_limits.push_back(inside);
     }
+  } else if (model_->family == IkFamily::locked_joint) {
+    // Every solution at each parameter value (doc/inverse-kinematics.md (eq. 40)): one asked for,
+    // q_ref's, or the default set spread over the range.
+    std::vector<double> values;
+    if (options.redundancy) {
+      values.push_back(*options.redundancy);
+    } else if (options.q_ref) {
+      values.push_back(redundancy.value(*options.q_ref));
+    } else {
+      values = redundancy.default_values();
+    }
+    for (const double value : values) locked_joint_inverse(model_->revolute, model_->lock, value, pose, raw);
+    result.complete = values.size() == 1;
   } else if (model_->family != IkFamily::general) {
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
@@ -284,6 +324,7 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   if (!options.offer_equivalents) {
     result.solutions = std::move(representatives);
     result.within_limits = std::move(inside_limits);
+    if (options.q_ref) nearest_first(result, *options.q_ref);
     return result;
   }
   // The 2π copies inside the limits: counted first, refused beyond the cap, then made.
@@ -309,6 +350,7 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
       result.within_limits.push_back(true);
     }
   }
+  if (options.q_ref) nearest_first(result, *options.q_ref);
   return result;
 }
 

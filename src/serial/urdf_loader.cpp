@@ -327,6 +327,8 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
 
   model->revolute = revolute_chain_of(model->chain);
   model->family = recognise(model->revolute);
+  describe_redundancy(model->revolute, model->family, model->joint_names, model->limits, model->lock,
+                      model->redundancy);
   // The reference points of configuration() (6R arms).
   if (n == 6) {
     const RevoluteChain& c = model->revolute;

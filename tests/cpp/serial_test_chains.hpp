@@ -128,6 +128,53 @@ struct NamedChain {
   serial::RevoluteChain chain;
 };
 
+//! The chain of a modified (proximal, Craig) DH table: row i is (a_{i−1}, α_{i−1}, d_i, offset_i),
+//! T = Rx(α) Tx(a) Rz(θ + offset) Tz(d), joint i about the z axis after Rx Tx; `flange` (its
+//! offset ignored) places the tip after the last joint.
+inline serial::RevoluteChain chain_from_modified_dh(const std::vector<DhRow>& rows, const DhRow& flange) {
+  serial::RevoluteChain chain;
+  Posed frame;
+  const auto rx_tx = [](const DhRow& r) {
+    return Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.alpha, Eigen::Vector3d::UnitX())), Eigen::Vector3d::Zero()) *
+           Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(r.a, 0.0, 0.0));
+  };
+  for (const DhRow& r : rows) {
+    frame = frame * rx_tx(r);
+    chain.axes.push_back(frame.rotation().col(2));
+    chain.points.push_back(frame.translation());
+    frame = frame *
+            Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.offset, Eigen::Vector3d::UnitZ())), Eigen::Vector3d::Zero()) *
+            Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, r.d));
+  }
+  chain.tip_at_zero = frame * rx_tx(flange) * Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, flange.d));
+  return chain;
+}
+
+//! Franka Emika Panda: Franka's published modified DH table (d₁ 0.333, d₃ 0.316, a₃ 0.0825,
+//! a₄ −0.0825, d₅ 0.384, a₆ 0.088, flange 0.107). Seven joints; axes 1, 2, 3 meet, 5 and 6 meet.
+inline serial::RevoluteChain franka_panda() {
+  return chain_from_modified_dh({{0.0, 0.0, 0.333, 0.0},
+                                 {0.0, -half_pi, 0.0, 0.0},
+                                 {0.0, half_pi, 0.316, 0.0},
+                                 {0.0825, half_pi, 0.0, 0.0},
+                                 {-0.0825, -half_pi, 0.384, 0.0},
+                                 {0.0, half_pi, 0.0, 0.0},
+                                 {0.088, half_pi, 0.0, 0.0}},
+                                {0.0, 0.0, 0.107, 0.0});
+}
+
+//! KUKA LBR iiwa 14 R820: the published classic DH table (d₁ 0.36, d₃ 0.42, d₅ 0.4, d₇ 0.126,
+//! every a = 0). Seven joints, an SRS arm: axes 1, 2, 3 meet, and 5, 6, 7.
+inline serial::RevoluteChain kuka_iiwa14() {
+  return chain_from_dh({{0.0, -half_pi, 0.36, 0.0},
+                        {0.0, half_pi, 0.0, 0.0},
+                        {0.0, half_pi, 0.42, 0.0},
+                        {0.0, -half_pi, 0.0, 0.0},
+                        {0.0, -half_pi, 0.4, 0.0},
+                        {0.0, half_pi, 0.0, 0.0},
+                        {0.0, 0.0, 0.126, 0.0}});
+}
+
 //! Every test robot, by name.
 inline std::vector<NamedChain> named_test_chains() {
   return {{"kuka_kr6_r900", kuka_kr6_r900()}, {"abb_irb120", abb_irb120()},   {"abb_irb6640", abb_irb6640()},

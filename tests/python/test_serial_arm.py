@@ -170,9 +170,14 @@ def test_kinova_jaco2_spherical_wrist_with_continuous_joints():
             assert np.all(s[~continuous] <= limits.upper[~continuous] + 1e-10)
 
 
-def test_panda_numeric_fallback_reports_incomplete():
-    arm = dispkin.SerialArm.from_urdf(panda_urdf_without_fingers(), "panda_link0", "panda_hand")
-    assert arm.family == "general" and arm.dof == 7
+def test_seven_joints_without_a_closed_form_fall_back_to_the_search():
+    """The Panda with joint 2 moved 3 cm off axis 1: no locked end joint leaves a 6R closed form
+    (its shoulder no longer meets in a point), so the numeric search runs."""
+    root = ET.fromstring(panda_urdf_without_fingers())
+    origin = next(j for j in root.findall("joint") if j.get("name") == "panda_joint2").find("origin")
+    origin.set("xyz", "0.03 0 0")
+    arm = dispkin.SerialArm.from_urdf(ET.tostring(root, encoding="unicode"), "panda_link0", "panda_hand")
+    assert arm.family == "general" and arm.dof == 7 and arm.redundancy.kind == "none"
     q = random_q(np.random.default_rng(SEED + 4), arm, 1)[0]
     pose = arm.forward(q)
     result = arm.inverse_solutions(pose, max_attempts=20, time_budget=1.0)

@@ -5,6 +5,8 @@
 //! - three_parallel:  three consecutive parallel axes with the UR layout (UR3/5/10, e and non-e);
 //! - offset_wrist:    a 6R chain of neither kind whose IK is a one-dimensional search
 //!                    (Kinova Jaco2 j2n6s300);
+//! - locked_joint:    a 7R chain whose first or last joint, locked, leaves a 6R chain of a closed
+//!                    form (Franka Panda, KUKA iiwa): solved per value of that joint (redundancy.hpp);
 //! - general:         no analytic method applies (the caller uses the numeric fallback).
 //!
 //! Every solver is built from the Paden–Kahan subproblems in product-of-exponentials form
@@ -36,8 +38,10 @@
 namespace dispkin {
 namespace serial {
 
-//! The analytic families of 6R chains (see the file's comment); general: none applies.
-enum class IkFamily { spherical_wrist, three_parallel, offset_wrist, general };
+//! The analytic families of 6R chains (see the file's comment); general: none applies;
+//! locked_joint: a seven-joint chain with one end joint locked at a value (its redundancy,
+//! doc/inverse-kinematics.md §11), whose six other joints are one of the families above.
+enum class IkFamily { spherical_wrist, three_parallel, offset_wrist, general, locked_joint };
 
 //! Every returned solution reproduces the pose to this: position error (m) and rotation
 //! error (rad) both ≤ 1e-10.
@@ -68,7 +72,7 @@ struct IkSolutionSet {
   }
 };
 
-//! "spherical_wrist", "three_parallel", "offset_wrist", "general".
+//! "spherical_wrist", "three_parallel", "offset_wrist", "general", "locked_joint".
 std::string to_string(IkFamily family);
 
 //! The family of `chain`, from its axes (geometric tolerance `tolerance`, metres / radians).
@@ -76,7 +80,8 @@ IkFamily recognise(const RevoluteChain& chain, double tolerance = 1e-9);
 
 //! Every joint vector q (each component in (−π, π]) with forward(chain, q) = pose to ≤ 1e-10,
 //! by the closed form or search of `family`. No joint limits are applied here. Throws
-//! std::invalid_argument if the family does not fit the chain or is `general`.
+//! std::invalid_argument if the family does not fit the chain or is `general` or `locked_joint`
+//! (which needs a value of the locked joint: locked_joint_inverse in redundancy.hpp).
 std::vector<Eigen::VectorXd> analytic_inverse(const RevoluteChain& chain, IkFamily family, const Posed& pose);
 
 //! The closed forms (spherical_wrist, three_parallel) without heap allocation: the solutions

@@ -44,8 +44,9 @@ class FollowedTrajectory {
   //! `trajectory` followed by `arm` from q_start (its forward kinematics must be the trajectory's
   //! start pose to 1e-9: rotation-matrix entries and m), the branch continued node by node.
   //! Throws std::invalid_argument naming the argument: q_start of the wrong size, not finite, or
-  //! not at the start pose; spacing not in [1e-5, 1] m; an arm that is not 6R (its Jacobian must be
-  //! inverted) or has more than max_ptp_joints joints; a trajectory whose poses leave the arm's
+  //! not at the start pose; spacing not in [1e-5, 1] m; an arm that is neither 6R nor 7R with a
+  //! redundancy parameter (its Jacobian must be inverted; a 7R arm keeps the parameter at its value
+  //! in q_start, doc/inverse-kinematics.md (eq. 41), (eq. 42)); a trajectory whose poses leave the arm's
   //! reach, pass a singular pose, change the branch, or take a joint out of its position range.
   static FollowedTrajectory from_start(Trajectory trajectory, const serial::SerialArm& arm,
                                        const Eigen::VectorXd& q_start, double spacing = default_spacing);

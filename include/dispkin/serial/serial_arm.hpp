@@ -27,6 +27,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@
 #include "dispkin/kinematics.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/redundancy.hpp"
 #include "dispkin/serial/revolute_chain.hpp"
 
 namespace dispkin {
@@ -76,6 +78,13 @@ struct InverseOptions {
   //! Also return every q + 2πk inside the limits of joints whose range exceeds a turn, at most
   //! input_limits::max_ik_solutions in all (more is refused: ±20 rad on a 6R arm make 5·10⁵).
   bool offer_equivalents = false;
+  //! A redundant arm with a parameter (SerialArm::redundancy()): every solution at this parameter
+  //! value only (finite; a value outside the parameter's range gives the solutions there, which
+  //! the limits of the locked joint then keep or drop). Not with q_ref.
+  std::optional<double> redundancy;
+  //! The solutions at q_ref's parameter value (redundant arms with a parameter; any arm: all of
+  //! them), nearest to q_ref first (Euclidean distance in joint space). Not with redundancy.
+  std::optional<Eigen::VectorXd> q_ref;
   // Numeric fallback (family general) only:
   int max_attempts = 64;             //!< random restarts of the KDL solver, > 0
   double time_budget = 0.05;         //!< s of wall-clock time for the restarts, > 0
@@ -86,7 +95,9 @@ struct InverseOptions {
 struct InverseResult {
   std::vector<Eigen::VectorXd> solutions;  //!< each reproduces the pose to ≤ 1e-10 (forward())
   std::vector<bool> within_limits;         //!< per solution; all true unless keep_outside_limits
-  bool complete = false;                   //!< true: every solution (analytic); false: what a search found
+  //! true: every solution (analytic; for a redundant arm every one at the parameter value asked
+  //! for); false: what a search found, or a redundant arm's solutions at the default values.
+  bool complete = false;
   IkFamily family = IkFamily::general;     //!< the method used
 };
 
@@ -149,7 +160,11 @@ class SerialArm : public Kinematics {
   //! options.offer_equivalents adds the 2π copies inside the limits, and throws
   //! std::invalid_argument when they would be more than input_limits::max_ik_solutions.
   //! An unreachable pose gives none. For a
-  //! redundant arm (dof() > 6) the solutions form a continuum and the search returns samples.
+  //! redundant arm (dof() > 6) the solutions form a continuum: with a parameter (redundancy(),
+  //! family locked_joint) every solution at options.redundancy, at q_ref's value (options.q_ref),
+  //! or with neither at each of redundancy().default_values() (doc/inverse-kinematics.md (eq. 40));
+  //! without one the search returns samples. options.redundancy on an arm without a parameter,
+  //! or together with q_ref, throws std::invalid_argument.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
   //! a closed-form one as the solver measured it (eq. 25, which implies it: doc/inverse-kinematics.md
   //! eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
@@ -193,6 +208,9 @@ class SerialArm : public Kinematics {
   const RevoluteChain& chain() const noexcept;
   //! The analytic family recognised for chain().
   IkFamily family() const noexcept;
+  //! The redundancy parameter of a 7R arm of family locked_joint (redundancy.hpp); kind "none"
+  //! for any other arm.
+  const Redundancy& redundancy() const noexcept;
 
   //! The shoulder / elbow / wrist flags of q (see Configuration); needs dof() == 6.
   Configuration configuration(const Eigen::VectorXd& q) const;
@@ -220,17 +238,26 @@ Eigen::VectorXd nearest(const std::vector<Eigen::VectorXd>& solutions, const Eig
 std::vector<Eigen::VectorXd> with_configuration(const SerialArm& arm, const std::vector<Eigen::VectorXd>& solutions,
                                                 const Configuration& wanted);
 
+//! The largest joint step (rad, any joint) follow() takes between consecutive poses on a redundant arm.
+constexpr double max_redundant_step = 0.3;
+
 //! Continuity along a path: for each pose in turn the solution nearest to the previous one
 //! among all solutions and their 2π copies inside the limits (found in closed form, never
 //! enumerated; options.offer_equivalents is not needed for them), starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
 //! first, where that converges close by). Throws std::runtime_error naming the index of a pose
-//! without a solution.
+//! without a solution. A redundant arm with a parameter (redundancy()) keeps the parameter at
+//! q_start's value (options.redundancy is ignored), so the first joint vector of a path that
+//! starts at forward(q_start) is q_start to rounding; a step of more than max_redundant_step
+//! in any joint from one pose to the next throws std::runtime_error naming the pose instead of
+//! jumping (doc/inverse-kinematics.md (eq. 41)).
 std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
                                     const InverseOptions& options = {});
 
 //! The joint velocities q̇ that give the body twist ξ_b = J_b(q) q̇ (the (v, ω) of dispkin::Twist):
 //! the minimum-norm least-squares solution, singular values below 6 ε of the largest taken as
 //! zero (exact for a 6-joint arm away from singularities; the nearest twist for a shorter arm).
+//! An arm with a redundancy parameter keeps its locked joint still (rate 0) and solves for the
+//! others (doc/inverse-kinematics.md (eq. 42)), as its paths at one parameter value move.
 //! Throws std::invalid_argument for a q of the wrong size or not finite.
 Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body_twist);
 

@@ -231,6 +231,9 @@ class _Builder:
         q_start = np.asarray(a["q_start"], dtype=float)
         if q_start.size != arm.dof:
             raise self.fail(at + ("q_start",), f"{tuple(q_start.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_start.size}")
+        if "redundancy" in a and arm.redundancy.kind == "none":
+            raise self.fail(at + ("redundancy",), f"{a['redundancy']}: the arm ({arm.dof} joints, family {arm.family}) has no "
+                                                  "redundancy parameter")
         job["arm"], job["q_start"] = arm, q_start
 
     def frames(self, job: Dict[str, Any]) -> None:
@@ -397,6 +400,10 @@ class _Builder:
             if key in move and moves.built[-1].kind == "ptp":
                 raise self.fail(at + (key,), f"{move[key]}: the previous move is a PTP move, which ends at rest; nothing to blend with")
         kind = "lin" if "lin" in move else "circ" if "circ" in move else "spline"
+        arm = job.get("arm")
+        if arm is not None and arm.dof != 6 and arm.redundancy.kind == "none":
+            raise self.fail(at + (kind,), f"a {kind} move on a serial arm is followed by inverting its Jacobian: the arm needs 6 joints, "
+                                          f"or 7 with a redundancy parameter; it has {arm.dof} (family {arm.family})")
         section = {"lin": self.lin, "circ": self.circ, "spline": self.spline}[kind]
         constructor, arguments, end = section(job, at, moves.current)
         # The move's own speed and acceleration (keywords of Path.lin / circ / spline).
@@ -464,6 +471,14 @@ class _Builder:
         (SerialArm.follow)."""
         if arm.forward(q_reference).is_approx(pose, 1e-9):
             return np.asarray(q_reference, dtype=float)
+        if arm.redundancy.kind != "none":
+            # A redundant arm: the solution nearest q_reference at its redundancy value
+            # (doc/inverse-kinematics.md eq. 41 keeps that value along the moves).
+            solutions = arm.inverse(pose, q_ref=q_reference)
+            if len(solutions) == 0:
+                raise self.fail(key_path, f"the arm cannot reach this pose within its joint limits with {arm.redundancy.joint_name} "
+                                          f"at {arm.redundancy.value(q_reference):g} rad, its value at the start (no inverse-kinematics solution)")
+            return np.asarray(solutions[0])
         try:
             return np.asarray(arm.follow([pose], q_reference)[0])
         except RuntimeError as error:
