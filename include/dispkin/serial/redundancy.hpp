@@ -29,6 +29,7 @@ struct LockedJoint {
   RevoluteChain rest;      //!< the 6R chain solved for each value (reversed if so)
   IkFamily family = IkFamily::general;  //!< its closed form (spherical_wrist or three_parallel)
 
+  //! Whether a lock leaves a closed form (joint ≥ 0).
   bool found() const noexcept { return joint >= 0; }
 };
 
@@ -55,6 +56,7 @@ struct Redundancy {
   double upper = 0.0;         //!<   for a continuous joint
   int dof = 0;                //!< the arm's joints
 
+  //! Whether the arm has a redundancy parameter (a locked joint).
   bool has_parameter() const noexcept { return joint >= 0; }
   //! The parameter value of the joint vector q: q[joint]. Throws std::invalid_argument when there
   //! is no parameter, or for a q of the wrong size (not `dof` entries) or not finite.
@@ -62,6 +64,7 @@ struct Redundancy {
   //! The parameter values inverse_solutions uses when given neither a value nor q_ref:
   //! default_value_count values at the centres of equal parts of [lower, upper] (eq. 40).
   std::vector<double> default_values() const;
+  //! How many values default_values() gives.
   static constexpr int default_value_count = 16;
 };
 
