@@ -38,7 +38,7 @@ inline double geometric_size(const Section& section) {
 }
 
 // How many equal-v sections a curve is cut into where its speed ranges over [low, high]
-// (doc/section-length.md eq. 26): one per `tolerance` of relative variation, so that each
+// (doc/section-length.md eq. 29): one per `tolerance` of relative variation, so that each
 // section's fastest object cruises within about `tolerance` of its bound; at most 10⁵.
 inline int sections_for_speed_range(double low, double high, double tolerance) {
   const double wanted = high > 0.0 ? std::ceil((high - low) / (tolerance * high)) : 1.0;

@@ -137,7 +137,7 @@ struct CurveSection {
   //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
   //! the groups' weights and reaches are per path).
   //! Exact peak to 0.1 %: the bounds of equal pieces of the section, each "the middle speed
-  //! plus half the rate" (doc/section-length.md eqs. 24, 27–29).
+  //! plus half the rate" (doc/section-length.md eqs. 24–27).
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
 
   //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
@@ -230,7 +230,7 @@ inline detail::SectionBounds CurveSection::piece_bounds(const detail::GroupFacto
 }
 
 inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
-  // The whole section bounded by its pieces (doc/section-length.md eq. 27).
+  // The whole section bounded by its pieces (doc/section-length.md eq. 25).
   CurveSection part = *this;
   const double h = span();
   return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {

@@ -172,7 +172,7 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, double r_re
 //! twist plus half its rate, weighted; the largest rate; the motion's |ω| and |ω̇|.
 //! `middle_speed` receives max_g w_g V_g(½), the weighted fastest speed at the middle: a lower
 //! bound of the section's exact peak, so that length − middle_speed bounds the slack
-//! (doc/section-length.md eq. 27).
+//! (doc/section-length.md eq. 26).
 inline SectionBounds bounds_from_middle(const GroupFactors& factors, const Posed& middle, const Twistd& twist_middle,
                                         const Eigen::Vector3d& pivot_middle, const MotionBounds& motion,
                                         double& middle_speed) {

@@ -1,5 +1,5 @@
 //! The bounds of a whole curved section (a cubic pose curve's or a nested-SLERP blend's part)
-//! from the bounds of its equal pieces (doc/section-length.md §5, eqs. 27–29): the section is
+//! from the bounds of its equal pieces (doc/section-length.md §5, eqs. 25–27): the section is
 //! not cut, only its bound is computed finely enough to lie within a set precision of the exact
 //! peak speed.
 #pragma once
@@ -13,7 +13,7 @@ namespace dispkin {
 namespace detail {
 
 //! The relative precision of a refined bound: its length exceeds the exact peak speed of the
-//! section's fastest object by at most this share (doc/section-length.md eq. 29).
+//! section's fastest object by at most this share (doc/section-length.md eq. 27).
 constexpr double refined_bound_precision = 1e-3;
 //! The most pieces a section's bound is refined into; past them the bound stays rigorous, only
 //! looser.
@@ -21,8 +21,8 @@ constexpr int refined_bound_max_pieces = 1 << 14;
 
 //! `piece(t0, t1, middle_speed)` returns the bounds of the part τ ∈ [t0, t1] per unit of that
 //! part's own τ (eq. 24) and its weighted middle speed. The section's bounds are the largest of
-//! N equal pieces', rescaled to the section's τ (eq. 27); N doubles (at least) until the largest
-//! middle speed, a lower bound of the exact peak, lies within the precision of the length (eq. 28).
+//! N equal pieces', rescaled to the section's τ (eq. 25); N doubles (at least) until the largest
+//! middle speed, a lower bound of the exact peak, lies within the precision of the length (eqs. 26–27).
 template <class Piece>
 SectionBounds refined_bounds(const Piece& piece) {
   int n = 1;
@@ -42,7 +42,7 @@ SectionBounds refined_bounds(const Piece& piece) {
     }
     const double gap = whole.length - low;
     if (!(gap > refined_bound_precision * whole.length) || n >= refined_bound_max_pieces) return whole;
-    // The slack of eq. 24 falls as 1/N (eq. 28): aim at the precision in one step, at least doubling.
+    // The slack of eq. 24 falls as 1/N (eq. 27): aim at the precision in one step, at least doubling.
     const double wanted = std::ceil(1.25 * n * gap / (refined_bound_precision * whole.length));
     n = static_cast<int>(std::clamp(std::isfinite(wanted) ? wanted : 2.0 * n, 2.0 * n, double(refined_bound_max_pieces)));
   }

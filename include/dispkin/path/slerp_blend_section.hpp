@@ -218,7 +218,7 @@ struct SlerpBlendSection {
 
   //! length() and acceleration_bound() together; `factors` of the same set, with
   //! use_pivot(pivot) called.
-  //! Exact peak to 0.1 % (doc/section-length.md eqs. 27–29), as CurveSection::bounds.
+  //! Exact peak to 0.1 % (doc/section-length.md eqs. 25–27), as CurveSection::bounds.
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
     SlerpBlendSection part = *this;
     const double h = span();
