@@ -140,6 +140,9 @@ struct CurveSection {
   //! plus half the rate" (doc/section-length.md eqs. 24–27).
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
 
+  //! bounds() with how the speed and the acceleration bound vary along the section.
+  detail::RefinedBounds refined(const detail::GroupFactors& factors) const;
+
   //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
   detail::SectionBounds piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const;
 
@@ -229,7 +232,9 @@ inline detail::SectionBounds CurveSection::piece_bounds(const detail::GroupFacto
   return detail::bounds_from_middle(factors, middle, twist_middle, c.value, motion, middle_speed);
 }
 
-inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
+inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+
+inline detail::RefinedBounds CurveSection::refined(const detail::GroupFactors& factors) const {
   // The whole section bounded by its pieces (doc/section-length.md eq. 25).
   CurveSection part = *this;
   const double h = span();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "dispkin/path/group_factors.hpp"
 
@@ -19,15 +20,24 @@ constexpr double refined_bound_precision = 1e-3;
 //! looser.
 constexpr int refined_bound_max_pieces = 1 << 14;
 
+//! A section's refined bounds, with what its pieces say of how the speed and the acceleration
+//! bound vary along it (for the planner's cut, doc/planning.md §9): the least middle speed
+//! and the least acceleration bound of the pieces, per unit τ of the section.
+struct RefinedBounds {
+  SectionBounds bounds;
+  double least_middle_speed, least_acceleration;
+};
+
 //! `piece(t0, t1, middle_speed)` returns the bounds of the part τ ∈ [t0, t1] per unit of that
 //! part's own τ (eq. 24) and its weighted middle speed. The section's bounds are the largest of
 //! N equal pieces', rescaled to the section's τ (eq. 25); N doubles (at least) until the largest
 //! middle speed, a lower bound of the exact peak, lies within the precision of the length (eqs. 26–27).
 template <class Piece>
-SectionBounds refined_bounds(const Piece& piece) {
+RefinedBounds refined_bounds(const Piece& piece) {
   int n = 1;
   for (;;) {
-    SectionBounds whole{0.0, 0.0, 0.0, 0.0};
+    RefinedBounds r{{0.0, 0.0, 0.0, 0.0}, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    SectionBounds& whole = r.bounds;
     double low = 0.0;
     const double h = 1.0 / n;
     for (int i = 0; i < n; ++i) {
@@ -39,9 +49,11 @@ SectionBounds refined_bounds(const Piece& piece) {
       whole.omega = std::max(whole.omega, b.omega * n);
       whole.omega_dot = std::max(whole.omega_dot, b.omega_dot * n * n);
       low = std::max(low, middle * n);
+      r.least_middle_speed = std::min(r.least_middle_speed, middle * n);
+      r.least_acceleration = std::min(r.least_acceleration, b.acceleration * n * n);
     }
     const double gap = whole.length - low;
-    if (!(gap > refined_bound_precision * whole.length) || n >= refined_bound_max_pieces) return whole;
+    if (!(gap > refined_bound_precision * whole.length) || n >= refined_bound_max_pieces) return r;
     // The slack of eq. 24 falls as 1/N (eq. 27): aim at the precision in one step, at least doubling.
     const double wanted = std::ceil(1.25 * n * gap / (refined_bound_precision * whole.length));
     n = static_cast<int>(std::clamp(std::isfinite(wanted) ? wanted : 2.0 * n, 2.0 * n, double(refined_bound_max_pieces)));

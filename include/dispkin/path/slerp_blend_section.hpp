@@ -219,7 +219,10 @@ struct SlerpBlendSection {
   //! length() and acceleration_bound() together; `factors` of the same set, with
   //! use_pivot(pivot) called.
   //! Exact peak to 0.1 % (doc/section-length.md eqs. 25–27), as CurveSection::bounds.
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+
+  //! bounds() with how the speed and the acceleration bound vary along the section.
+  detail::RefinedBounds refined(const detail::GroupFactors& factors) const {
     SlerpBlendSection part = *this;
     const double h = span();
     return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {
