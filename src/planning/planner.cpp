@@ -140,10 +140,12 @@ void append_curve_cut(const Curve& curve, std::size_t source, const detail::Grou
     const double floor = std::max(minimum * (t1 - t0), b.omega * rotation_scale);
     if (!(b.length > floor)) return 1.0;
     double loss;
-    if (b.acceleration > 0.0 && b.length * std::sqrt(acceleration / b.acceleration) < speed_cap) {
+    const double v_lim = b.acceleration > 0.0 ? b.length * std::sqrt(acceleration / b.acceleration) : speed_cap;
+    if (v_lim < speed_cap) {
       // v_lim = L √(a / A) (eq. 11) binds: the fastest object runs at V √(a / A), lowered by
-      // the part's largest A from what its own piece's A allows.
-      loss = (1.0 - std::sqrt(r.least_acceleration / b.acceleration)) / curvature_ratio_loss;
+      // the part's largest A from what its gentlest piece would allow (at most the cap).
+      const double best = r.least_acceleration > 0.0 ? std::min(speed_cap, b.length * std::sqrt(acceleration / r.least_acceleration)) : speed_cap;
+      loss = (1.0 - v_lim / best) / curvature_ratio_loss;
     } else {
       loss = (b.length - std::max(r.least_middle_speed, floor)) / b.length / cruise_ratio_loss;
     }
