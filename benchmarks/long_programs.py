@@ -122,7 +122,7 @@ def measure(workload, moves, rounds):
     }
 
 
-def compare(before, after, runs=(("cam", 4682), ("five_axis", 2000)), rounds=3):
+def compare(before, after, runs=(("cam", 4682), ("five_axis", 200)), rounds=3):
     rows = []
     for workload, moves in runs:
         results = {"before": [], "after": []}
