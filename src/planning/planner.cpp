@@ -187,9 +187,9 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   constexpr double cruise_ratio_loss = 0.004;
   constexpr std::size_t max_pieces = 4096;
   constexpr double max_split = 64.0;
-  // Only decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are
-  // cut where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE,
-  // blends).
+  // Curves (SPLINE pieces, blends) are cut by their own rule (append_curve_cut) and decoupled
+  // LINs here. Along a screw every point keeps its speed; arcs are cut where they are made, to
+  // their `tolerance` (CIRC).
   if (const auto* curve = std::get_if<CurveSection>(&section)) {
     factors.use_pivot(curve->pivot);
     return append_curve_cut(*curve, source, factors, minimum, rotation_scale, speed_cap, acceleration, out);
