@@ -171,7 +171,7 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
           "A SPLINE move through the key poses (at least three): the pivot on the natural cubic spline "
           "(C2, knots spaced by pivot travel + 0.1 m per radian), the orientation a C1 curve (continuous "
           "angular velocity) through every key orientation. Passes through every key exactly. Cut into "
-          "sections whose velocity strays from its middle value by at most `tolerance` (relative). `velocity`, "
+          "sections within each of which the speed varies by about `tolerance` (relative). `velocity`, "
           "`acceleration` (keywords): this move's own limits, as for lin.")
       .def_static(
           "ptp",

@@ -1,6 +1,8 @@
 // Geometry shared by the path builders (path.cpp, spline.cpp, blend.cpp); internal.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -33,6 +35,14 @@ inline double geometric_size(const Section& section) {
         }
       },
       section);
+}
+
+// How many equal-v sections a curve is cut into where its speed ranges over [low, high]
+// (doc/section-length.md eq. 29): one per `tolerance` of relative variation, so that each
+// section's fastest object cruises within about `tolerance` of its bound; at most 10⁵.
+inline int sections_for_speed_range(double low, double high, double tolerance) {
+  const double wanted = high > 0.0 ? std::ceil((high - low) / (tolerance * high)) : 1.0;
+  return static_cast<int>(std::clamp(std::isfinite(wanted) ? wanted : 1.0, 1.0, 100000.0));
 }
 
 //! The part τ ∈ [t0, t1] of a section, as a section of the same kind run over its own τ.

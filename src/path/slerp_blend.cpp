@@ -11,10 +11,9 @@ namespace dispkin {
 
 void Path::cut_slerp_blend(const SlerpBlendSection& blend, double tolerance) {
   using detail::metres_per_radian;
-  // As cut_curve: the velocity (|ċ| + ρ|ω|) sampled along the blend, its rate of change bounded
-  // by |c̈| + ρ(|ω̇| + |ω|²) from the motion bounds over the whole blend (eqs. 31–33), ρ = 0.1 m.
-  // A section of span h strays by at most rate·h/2 from its middle velocity, so
-  // h = 2 · tolerance · speed / rate.
+  // As cut_curve: the speed |ċ| + ρ|ω| per unit v, ρ = 0.1 m, sampled along the blend; the blend
+  // is cut where that speed varies (doc/section-length.md eq. 29), each section bounded to its
+  // exact peak (SlerpBlendSection::bounds, eqs. 25–27).
   SlerpBlendSection whole = blend;
   whole.v0 = 0.0;
   whole.v1 = 1.0;
@@ -29,13 +28,7 @@ void Path::cut_slerp_blend(const SlerpBlendSection& blend, double tolerance) {
     min_speed = std::min(min_speed, speed);
     max_speed = std::max(max_speed, speed);
   }
-  const detail::MotionBounds bounds = whole.motion_bounds();
-  const double rate = bounds.pivot_acceleration + metres_per_radian * (bounds.omega_dot + bounds.omega * bounds.omega);
-  // A blend that (nearly) stops somewhere (a reversal) still gets finite sections: its bounds
-  // stay rigorous, only looser there.
-  const double speed = std::max(min_speed, 1e-3 * max_speed);
-  const double wanted = speed > 0.0 ? std::ceil(rate / (2.0 * tolerance * speed)) : 1.0;
-  const int count = static_cast<int>(std::clamp(std::isfinite(wanted) ? wanted : 1.0, 1.0, 100000.0));
+  const int count = detail::sections_for_speed_range(min_speed, max_speed, tolerance);
   for (int k = 0; k < count; ++k) {
     SlerpBlendSection section = whole;
     section.v0 = double(k) / count;

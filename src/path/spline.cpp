@@ -3,6 +3,7 @@
 // into sections.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -54,26 +55,18 @@ Eigen::MatrixX3d natural_spline_slopes(const Eigen::MatrixX3d& p, const Eigen::V
 
 void Path::cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
                      const Eigen::Vector3d& pivot, double tolerance) {
-  // Velocity (|ċ| + ρ|φ′|) and its rate of change (|c″| + ρ(|φ″| + (g′ + 1)|φ′|²)) per unit v,
-  // ρ = 0.1 m, sampled along the curve. A section of span h strays by about rate·h/2 from its
-  // middle velocity, so h = 2 · tolerance · speed / rate.
+  // The speed |ċ| + ρ|φ′| per unit v, ρ = 0.1 m, sampled along the curve; the curve is cut where
+  // that speed varies (doc/section-length.md eq. 29). Each section's bound is its exact peak to
+  // 0.1 % however far its velocity turns (CurveSection::bounds, eqs. 25–27).
   constexpr int samples = 64;
-  double min_speed = std::numeric_limits<double>::infinity(), max_speed = 0.0, max_rate = 0.0;
+  double min_speed = std::numeric_limits<double>::infinity(), max_speed = 0.0;
   for (int i = 0; i <= samples; ++i) {
     const double v = double(i) / samples;
-    const double w = rotation.first(v).norm();
-    const double speed = position.first(v).norm() + metres_per_radian * w;
-    const double rate = position.second(v).norm() +
-                        metres_per_radian * (rotation.second(v).norm() + (detail::jacobian_rate_bound(rotation.value(v).norm()) + 1.0) * w * w);
+    const double speed = position.first(v).norm() + metres_per_radian * rotation.first(v).norm();
     min_speed = std::min(min_speed, speed);
     max_speed = std::max(max_speed, speed);
-    max_rate = std::max(max_rate, rate);
   }
-  // A curve that (nearly) stops somewhere still gets finite sections: its bounds stay
-  // rigorous, only looser there.
-  const double speed = std::max(min_speed, 1e-3 * max_speed);
-  const double wanted = std::ceil(max_rate / (2.0 * tolerance * speed));
-  const int count = static_cast<int>(std::clamp(wanted, 1.0, 100000.0));
+  const int count = detail::sections_for_speed_range(min_speed, max_speed, tolerance);
   for (int k = 0; k < count; ++k) {
     CurveSection section;
     section.q0 = q0;

@@ -118,6 +118,62 @@ struct PlannedSections {
   }
 };
 
+// A curved section (a SPLINE piece or a blend) as planned: cut where, for this set, the fastest
+// object's speed or the curvature rule's speed varies along it (doc/planning.md §9, eq. 39). Each
+// part's bound is its exact peak to 0.1 % however far the velocity turns within it
+// (doc/section-length.md eqs. 25–27); a part's pieces tell how far its speed (the least middle
+// speed against the peak) and its acceleration bound vary. A part is cut into as many equal parts
+// as that variation asks for: 0.4 % of speed where the limit v_sys binds (the cruise), one step
+// of the staircase (10 %) where the curvature rule binds (doc/planning.md eq. 11); at most 4096
+// parts a section.
+template <class Curve>
+void append_curve_cut(const Curve& curve, std::size_t source, const detail::GroupFactors& factors, double minimum,
+                      double rotation_scale, double speed_cap, double acceleration, PlannedSections& out) {
+  constexpr double cruise_ratio_loss = 0.004, curvature_ratio_loss = 0.1;
+  constexpr std::size_t max_parts = 4096;
+  constexpr double max_split = 64.0;
+  // How many equal parts the part [t0, t1] with refined bounds r asks to be cut into.
+  const auto parts_wanted = [&](double t0, double t1, const detail::RefinedBounds& r) {
+    const detail::SectionBounds& b = r.bounds;
+    // The floor every part is lengthened to (per unit of its τ): a part at the floor runs at
+    // one speed whatever its fastest object does.
+    const double floor = std::max(minimum * (t1 - t0), b.omega * rotation_scale);
+    if (!(b.length > floor)) return 1.0;
+    double loss;
+    const double v_lim = b.acceleration > 0.0 ? b.length * std::sqrt(acceleration / b.acceleration) : speed_cap;
+    if (v_lim < speed_cap) {
+      // v_lim = L √(a / A) (eq. 11) binds: the fastest object runs at V √(a / A), lowered by
+      // the part's largest A from what its gentlest piece would allow (at most the cap).
+      const double best = r.least_acceleration > 0.0 ? std::min(speed_cap, b.length * std::sqrt(acceleration / r.least_acceleration)) : speed_cap;
+      loss = (1.0 - v_lim / best) / curvature_ratio_loss;
+    } else {
+      loss = (b.length - std::max(r.least_middle_speed, floor)) / b.length / cruise_ratio_loss;
+    }
+    return std::min(max_split, std::ceil(loss));
+  };
+  const auto measure = [&](double t0, double t1) {
+    Curve part = curve;
+    part.v0 = curve.v0 + t0 * curve.span();
+    part.v1 = t1 >= 1.0 ? curve.v1 : curve.v0 + t1 * curve.span();
+    return std::make_pair(part, part.refined(factors));
+  };
+  std::size_t count = 1;  // parts emitted or promised
+  const auto cut = [&](const auto& self, double t0, double t1, const Curve& part, const detail::RefinedBounds& r) -> void {
+    const double parts = parts_wanted(t0, t1, r);
+    if (!(parts > 1.0) || count + static_cast<std::size_t>(parts) - 1 > max_parts) {
+      out.push_back(part, {source, t0, t1}, r.bounds);
+      return;
+    }
+    count += static_cast<std::size_t>(parts) - 1;
+    for (double i = 0; i < parts; ++i) {
+      const double a = t0 + (t1 - t0) * i / parts, b = i + 1.0 >= parts ? t1 : t0 + (t1 - t0) * (i + 1.0) / parts;
+      const auto [sub, bounds] = measure(a, b);
+      self(self, a, b, sub, bounds);
+    }
+  };
+  cut(cut, 0.0, 1.0, curve, curve.refined(factors));
+}
+
 // Appends `section` to `out`; a decoupled LIN cut into pieces until the fastest object's speed
 // varies by at most 0.4 % within each (doc/planning.md §9). The range of that speed over a part
 // is exact (lin_speed_range.hpp, eqs. 34–38), so a LIN is cut only where its speed does vary, as
@@ -131,9 +187,17 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   constexpr double cruise_ratio_loss = 0.004;
   constexpr std::size_t max_pieces = 4096;
   constexpr double max_split = 64.0;
-  // Only decoupled LINs are cut. Along a screw every point keeps its speed; arcs and curves are
-  // cut where they are made, to their `tolerance` of the velocity's variation (CIRC, SPLINE,
-  // blends).
+  // Curves (SPLINE pieces, blends) are cut by their own rule (append_curve_cut) and decoupled
+  // LINs here. Along a screw every point keeps its speed; arcs are cut where they are made, to
+  // their `tolerance` (CIRC).
+  if (const auto* curve = std::get_if<CurveSection>(&section)) {
+    factors.use_pivot(curve->pivot);
+    return append_curve_cut(*curve, source, factors, minimum, rotation_scale, speed_cap, acceleration, out);
+  }
+  if (const auto* blend = std::get_if<SlerpBlendSection>(&section)) {
+    factors.use_pivot(blend->pivot);
+    return append_curve_cut(*blend, source, factors, minimum, rotation_scale, speed_cap, acceleration, out);
+  }
   const detail::SectionBounds whole = detail::section_bounds(section, factors);
   const auto* lin = std::get_if<LinSection>(&section);
   // A minimum length at least the section's own runs the whole section at one speed: its

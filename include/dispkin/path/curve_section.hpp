@@ -22,6 +22,7 @@
 #include "dispkin/disp.hpp"
 #include "dispkin/metric_set.hpp"
 #include "dispkin/path/group_factors.hpp"
+#include "dispkin/path/refined_bounds.hpp"
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
@@ -141,7 +142,15 @@ struct CurveSection {
   //! length() and acceleration_bound() together, sharing the motion bounds and the middle
   //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
   //! the groups' weights and reaches are per path).
+  //! Exact peak to 0.1 %: the bounds of equal pieces of the section, each "the middle speed
+  //! plus half the rate" (doc/section-length.md eqs. 24–27).
   detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
+
+  //! bounds() with how the speed and the acceleration bound vary along the section.
+  detail::RefinedBounds refined(const detail::GroupFactors& factors) const;
+
+  //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
+  detail::SectionBounds piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const;
 
  private:
   // Pose and body twist per unit τ where the curve has c, c′, φ, φ′ (per unit v).
@@ -216,7 +225,7 @@ inline double CurveSection::length(const MetricSetd& set, std::optional<double> 
   return bounds(factors).length;
 }
 
-inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const {
+inline detail::SectionBounds CurveSection::piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const {
   // The polynomials at the middle, once: the motion bounds, the middle pose and twist and the
   // pivot's middle position all come from them.
   const double m = 0.5 * (v0 + v1);
@@ -226,7 +235,20 @@ inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& fa
   Twistd twist_middle;
   pose_and_twist(c.value, c.first, phi.value, phi.first, middle, twist_middle);
   // |ω| = |J_r(φ) φ′| ≤ |φ′| (the right Jacobian's singular values are at most 1).
-  return detail::bounds_from_middle(factors, middle, twist_middle, c.value, motion);
+  return detail::bounds_from_middle(factors, middle, twist_middle, c.value, motion, middle_speed);
+}
+
+inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+
+inline detail::RefinedBounds CurveSection::refined(const detail::GroupFactors& factors) const {
+  // The whole section bounded by its pieces (doc/section-length.md eq. 25).
+  CurveSection part = *this;
+  const double h = span();
+  return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {
+    part.v0 = v0 + t0 * h;
+    part.v1 = t1 >= 1.0 ? v1 : v0 + t1 * h;
+    return part.piece_bounds(factors, middle_speed);
+  });
 }
 
 inline detail::MotionBounds CurveSection::motion_bounds() const {

@@ -170,17 +170,29 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, double r_re
 //! most at the rate of its acceleration bound, so within half a section of the middle it exceeds
 //! its middle speed by at most half that bound. Each group's exact speed at the middle pose and
 //! twist plus half its rate, weighted; the largest rate; the motion's |ω| and |ω̇|.
+//! `middle_speed` receives max_g w_g V_g(½), the weighted fastest speed at the middle: a lower
+//! bound of the section's exact peak, so that length − middle_speed bounds the slack
+//! (doc/section-length.md eq. 26).
 inline SectionBounds bounds_from_middle(const GroupFactors& factors, const Posed& middle, const Twistd& twist_middle,
-                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& motion) {
+                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& motion,
+                                        double& middle_speed) {
   const MetricSetd& set = factors.set();
   double length = 0.0, acceleration = 0.0;
+  middle_speed = 0.0;
   for (std::size_t i = 0; i < set.groups().size(); ++i) {
     const auto& g = set.groups()[i];
     const double rate = group_acceleration_bound(g, factors.reach(i), pivot_middle, motion);
-    length = std::max(length, factors.weight(i) * (group_max_speed(g, middle, twist_middle) + 0.5 * rate));
+    const double speed = group_max_speed(g, middle, twist_middle);
+    length = std::max(length, factors.weight(i) * (speed + 0.5 * rate));
+    middle_speed = std::max(middle_speed, factors.weight(i) * speed);
     acceleration = std::max(acceleration, rate);
   }
   return {length, acceleration, motion.omega, motion.omega_dot};
+}
+inline SectionBounds bounds_from_middle(const GroupFactors& factors, const Posed& middle, const Twistd& twist_middle,
+                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& motion) {
+  double middle_speed = 0.0;
+  return bounds_from_middle(factors, middle, twist_middle, pivot_middle, motion, middle_speed);
 }
 
 }  // namespace detail

@@ -414,14 +414,13 @@ class Path {
   //! Throws unless `next` starts where this path ends (to 1e-9 m and 1e-9 rad).
   void require_joins(const Path& next) const;
   //! Append the cubic pose curve R₀ exp(φ(v)), c(v), v ∈ [0, 1], cut into equal-v sections so
-  //! that within each the velocity per unit τ strays from its middle value by at most
-  //! `tolerance` of the speed (|ċ| + 0.1 m·|ω|, i.e. for objects within 0.1 m of the pivot);
-  //! the length bounds stay rigorous for any set, their slack grows with its radius.
+  //! that within each the speed |ċ| + 0.1 m·|ω| varies by about `tolerance` of its largest
+  //! value (doc/section-length.md eq. 29); each section's length is its exact peak to 0.1 % for
+  //! any set (eqs. 25–27), and the planner cuts further where the set's own speed varies.
   void cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
                  const Eigen::Vector3d& pivot, double tolerance);
-  //! Append a nested-SLERP blend (its section over v ∈ [0, 1]) cut into equal-v sections, so
-  //! that within each the velocity strays from its middle value by at most `tolerance` of the
-  //! speed as for cut_curve, from the blend's rigorous motion bounds (slerp_blend.cpp).
+  //! Append a nested-SLERP blend (its section over v ∈ [0, 1]) cut into equal-v sections where
+  //! its speed varies, as cut_curve.
   void cut_slerp_blend(const SlerpBlendSection& blend, double tolerance);
 
   std::vector<Section> sections_;

@@ -223,12 +223,27 @@ struct SlerpBlendSection {
 
   //! length() and acceleration_bound() together; `factors` of the same set, with
   //! use_pivot(pivot) called.
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
+  //! Exact peak to 0.1 % (doc/section-length.md eqs. 25–27), as CurveSection::bounds.
+  detail::SectionBounds bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+
+  //! bounds() with how the speed and the acceleration bound vary along the section.
+  detail::RefinedBounds refined(const detail::GroupFactors& factors) const {
+    SlerpBlendSection part = *this;
+    const double h = span();
+    return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {
+      part.v0 = v0 + t0 * h;
+      part.v1 = t1 >= 1.0 ? v1 : v0 + t1 * h;
+      return part.piece_bounds(factors, middle_speed);
+    });
+  }
+
+  //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
+  detail::SectionBounds piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const {
     const detail::MotionBounds motion = motion_bounds();
     Posed middle;
     Twistd twist_middle;
     at(0.5, middle, twist_middle);
-    return detail::bounds_from_middle(factors, middle, twist_middle, position.value(0.5 * (v0 + v1)), motion);
+    return detail::bounds_from_middle(factors, middle, twist_middle, position.value(0.5 * (v0 + v1)), motion, middle_speed);
   }
 };
 
