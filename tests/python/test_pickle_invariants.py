@@ -390,9 +390,18 @@ def test_random_poses_and_limits_round_trip_exactly(xyzuvw, limits):
 CORRUPTIONS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 0.0, -1.0, 5e-324]
 
 
-def corrupted(state, data):
-    """`state` (plain) with one of its floats replaced by a hostile or slightly moved value."""
-    paths = list(number_paths(state))
+@functools.lru_cache(maxsize=None)
+def plain_state(name):
+    """The plain state of the object `name` (the planned trajectory, or one of objects()) and the
+    paths of its floats, computed once: every example corrupts a copy of the same state."""
+    obj = trajectory() if name == "Trajectory" else named(name)
+    state = plain(obj.__getstate__())
+    return state, tuple(number_paths(state))
+
+
+def corrupted(name, data):
+    """The plain state of `name` with one of its floats replaced by a hostile or slightly moved value."""
+    state, paths = plain_state(name)
     path = data.draw(st.sampled_from(paths), label="path")
     old = item(state, path)
     value = data.draw(st.sampled_from(CORRUPTIONS + [old * 1000.0, old * (1 + 1e-6), old + 8.6, -old]), label="value")
@@ -409,8 +418,7 @@ def accepted_or_refused(cls, state):
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_a_corrupted_trajectory_is_refused_or_finite_within_its_limits(data):
-    traj = trajectory()
-    copy_ = accepted_or_refused(dispkin.Trajectory, corrupted(plain(traj.__getstate__()), data))
+    copy_ = accepted_or_refused(dispkin.Trajectory, corrupted("Trajectory", data))
     if copy_ is None:
         return
     assert math.isfinite(copy_.duration) and copy_.duration >= 0.0
@@ -425,8 +433,7 @@ def test_a_corrupted_trajectory_is_refused_or_finite_within_its_limits(data):
 @settings(max_examples=200, deadline=None)
 @given(data=st.data())
 def test_a_corrupted_profile_is_refused_or_a_law_within_its_peak(data):
-    law = named("Profile")
-    copy_ = accepted_or_refused(dispkin.Profile, corrupted(plain(law.__getstate__()), data))
+    copy_ = accepted_or_refused(dispkin.Profile, corrupted("Profile", data))
     if copy_ is None:
         return
     x = copy_.sample(np.linspace(-0.1, copy_.duration + 0.1, 501))
@@ -438,8 +445,7 @@ def test_a_corrupted_profile_is_refused_or_a_law_within_its_peak(data):
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_a_corrupted_report_is_refused_or_reads_finite_arrays(data):
-    report = named("JointLimitReport")
-    copy_ = accepted_or_refused(dispkin.JointLimitReport, corrupted(plain(report.__getstate__()), data))
+    copy_ = accepted_or_refused(dispkin.JointLimitReport, corrupted("JointLimitReport", data))
     if copy_ is None:
         return
     for key, value in copy_.samples.items():
