@@ -544,8 +544,10 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
     p.time_[static_cast<std::size_t>(i + 1)] = p.time_[static_cast<std::size_t>(i)] + durations[i];
   }
   p.count_ = count;
-  // Forward over the first half, backward over the second: they meet at phase `middle`.
-  const int middle = count / 2;
+  // Forward over the first half, backward over the second: they meet at phase `middle`. A law of
+  // one phase is carried forward, so that it starts exactly at s = 0 (where it meets its end state,
+  // state_at's end is exactly the distance).
+  const int middle = std::max(1, count / 2);
   ProfileState x{0.0, v_start, a_start, 0.0};
   double scale_v = std::max(v_start, v_end), scale_a = std::max(std::abs(a_start), std::abs(a_end));
   for (int i = 0; i < middle; ++i) {

@@ -670,6 +670,16 @@ TEST(Profile, FromPhasesRebuildsALaw) {
   EXPECT_NEAR(middle.v, expected.v, 1e-13);
   EXPECT_EQ(piece.state_at(t1 - t0 + 1.0).a, b.a);  // the end state holds, with its acceleration
 
+  // Every law starts exactly where it is placed (s = 0), its phases' rounding left at their meeting
+  // point inside or at the end, also when it has one phase whose end the caller rounded (1e-9 of
+  // its distance off here, within the tolerance).
+  const double one_d[] = {0.7}, one_j[] = {3.0};
+  const double one_s = 3.0 * 0.7 * 0.7 * 0.7 / 6.0;
+  const Profile one = Profile::from_phases(one_d, one_j, 1, 0.0, 0.0, one_s * (1.0 + 1e-9), 1.5 * 0.49, 2.1);
+  EXPECT_EQ(one.state_at(0.0).s, 0.0);
+  EXPECT_EQ(one.state_at(0.0).v, 0.0);
+  EXPECT_EQ(one.state_at(one.duration()).s, one.distance());
+
   EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.31, 0.05, 0.0); }).find("do not lead"),
             std::string::npos);
   const double dip_d[] = {2.0}, dip_j[] = {2.0};  // ṡ = (t − 1)² − 0.01: below 0 around t = 1
