@@ -262,10 +262,12 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
 // curvature rule (eq. 11) with each move's own acceleration, its rotational twin for the
 // angular acceleration, each move's own velocity, rounded down to 10 % steps below v_sys; and
 // each segment's acceleration: the move's own, lowered where the angular acceleration needs.
-std::vector<LimitedSegment> speed_limit_segments(const PlannedSections& planned, const std::vector<MoveLimits>& moves,
-                                                 std::size_t first, std::size_t last, const Limits& limits) {
+// Each span also keeps its ceiling, the level before a move's own velocity lowered it (what a
+// speed override above 1 may reach).
+std::vector<SpeedLimit> speed_limit_segments(const PlannedSections& planned, const std::vector<MoveLimits>& moves,
+                                             std::size_t first, std::size_t last, const Limits& limits) {
   constexpr double step = 0.9;
-  std::vector<LimitedSegment> segments;
+  std::vector<SpeedLimit> segments;
   for (std::size_t k = first; k < last; ++k) {
     const detail::SectionBounds& bounds = planned.bounds[k];
     const double length = planned.lengths[k];
@@ -277,6 +279,7 @@ std::vector<LimitedSegment> speed_limit_segments(const PlannedSections& planned,
       v_lim = std::min(v_lim, length * std::sqrt(*limits.angular_acceleration / bounds.omega_dot));
     double level = limits.velocity;
     if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
+    const double ceiling = level;
     if (move.velocity) level = std::min(level, *move.velocity);
     // The angular acceleration from s̈, |ω_τ| |s̈| / L ≤ α_max, caps the section's path
     // acceleration (doc/planning.md eq. 24).
@@ -285,10 +288,11 @@ std::vector<LimitedSegment> speed_limit_segments(const PlannedSections& planned,
       const double angular_cap = *limits.angular_acceleration * length / bounds.omega;
       if (angular_cap < a) own_acceleration = angular_cap;
     }
-    if (!segments.empty() && segments.back().limit == level && segments.back().acceleration == own_acceleration) {
+    if (!segments.empty() && segments.back().limit == level && segments.back().acceleration == own_acceleration &&
+        segments.back().top() == ceiling) {
       segments.back().length += length;
     } else {
-      segments.push_back({length, level, own_acceleration});
+      segments.push_back({0.0, length, level, own_acceleration, ceiling > level ? ceiling : 0.0});
     }
   }
   return segments;
@@ -420,12 +424,20 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   std::size_t first = 0;
   for (std::size_t k = 0; k < count; ++k) {
     if (k + 1 < count && junctions[k]) continue;
-    const std::vector<LimitedSegment> segments = speed_limit_segments(planned, moves, first, k + 1, limits);
+    const std::vector<SpeedLimit> spans = speed_limit_segments(planned, moves, first, k + 1, limits);
     double start_s = sampled.section_start(first);
     double span_s = start_s;
-    for (const LimitedSegment& segment : segments) {
-      speed_limits.push_back({span_s, segment.length, segment.limit});
-      span_s += segment.length;
+    // The law's staircase: spans of the same limit and acceleration are one step (whatever their
+    // ceilings).
+    std::vector<LimitedSegment> segments;
+    for (SpeedLimit span : spans) {
+      span.start_s = span_s;
+      span_s += span.length;
+      speed_limits.push_back(span);
+      if (!segments.empty() && segments.back().limit == span.limit && segments.back().acceleration == span.acceleration)
+        segments.back().length += span.length;
+      else
+        segments.push_back({span.length, span.limit, span.acceleration});
     }
     for (const Profile& piece : velocity_limited_law(segments, limits.acceleration, jerk)) {
       law.append(piece, start_s);
@@ -438,7 +450,7 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
     first = k + 1;
   }
   return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
-                    std::move(planned.sources));
+                    std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
 }
 
 }  // namespace dispkin

@@ -22,12 +22,37 @@ void TimeLaw::append(const Profile& law, double start_s) {
   pieces_.push_back(Piece{law, time, time + law.duration(), start_s});
 }
 
+void TimeLaw::append_cut(const Profile& law, double start_s, double end_time) {
+  const double time = duration();
+  pieces_.push_back(Piece{law, time, end_time, start_s, true});
+}
+
+TimeLaw TimeLaw::before(double t) const {
+  TimeLaw out;
+  for (const Piece& piece : pieces_) {
+    if (piece.end_time <= t) {
+      out.pieces_.push_back(piece);
+      if (!piece.cut && piece.profile.state_at(piece.profile.duration()).v == 0.0) ++out.runs_;
+    } else {
+      if (piece.start_time < t) {
+        out.pieces_.push_back(piece);
+        out.pieces_.back().end_time = t;
+        out.pieces_.back().cut = true;
+      }
+      break;
+    }
+  }
+  return out;
+}
+
 std::vector<double> TimeLaw::characteristic_times() const {
   std::vector<double> times{0.0};
   for (const Piece& piece : pieces_) {
     const Profile& law = piece.profile;
-    for (int i = 0; i < law.phase_count(); ++i) {
-      const double begin = law.phase_start_time(i), end = law.phase_start_time(i + 1);
+    // A cut law runs up to its cut only.
+    const double run = piece.end_time - piece.start_time;
+    for (int i = 0; i < law.phase_count() && law.phase_start_time(i) < run; ++i) {
+      const double begin = law.phase_start_time(i), end = std::min(law.phase_start_time(i + 1), run);
       times.push_back(piece.start_time + 0.5 * (begin + end));
       times.push_back(piece.start_time + end);
     }

@@ -54,6 +54,10 @@ void require_speed_limits(const std::vector<SpeedLimit>& limits, double length, 
     // Curvature lowers a limit below the system velocity (never to 0); above 1e12 m/s durations overflow.
     require_lazily(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name(".limit"), l.limit,
                    [] { return "must be in (0, 1e12] m/s"; });
+    require_lazily(l.acceleration == 0.0 || (l.acceleration >= numeric_range::min_limit && l.acceleration <= numeric_range::max_limit),
+                   name(".acceleration"), l.acceleration, [] { return "must be 0 (none of its own) or in [1e-12, 1e12] m/s²"; });
+    require_lazily(l.ceiling == 0.0 || (l.ceiling >= l.limit && l.ceiling <= numeric_range::max_limit), name(".ceiling"), l.ceiling,
+                   [&] { return "must be 0 (the limit) or in [limit, 1e12] m/s, the limit being " + number(l.limit); });
     last_end = l.start_s + l.length;
   }
 }
@@ -67,7 +71,7 @@ double largest_limit(const std::vector<SpeedLimit>& limits, double s0, double s1
   while (first + 1 < limits.size() && limits[first].start_s + limits[first].length < s0 - tol_s) ++first;
   double out = 0.0;
   for (std::size_t k = first; k < limits.size() && limits[k].start_s <= s1 + tol_s; ++k)
-    if (limits[k].start_s + limits[k].length >= s0 - tol_s) out = std::max(out, limits[k].limit);
+    if (limits[k].start_s + limits[k].length >= s0 - tol_s) out = std::max(out, limits[k].top());
   return out;
 }
 
@@ -87,21 +91,43 @@ void Trajectory::require_consistent() const {
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const TimeLaw::Piece& p = pieces[k];
     const auto name = [k](const char* field) { return [k, field] { return indexed("time_law pieces", k) + field; }; };
-    const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].profile.distance();
+    const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].distance();
     require_lazily(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name(".start_s"), p.start_s,
                    [&] { return "must be where the law before ends, s = " + number(s_before); });
     // Speeds where laws meet are not compared: the optimal re-timing's laws meet with speeds
     // apart by up to a few 0.1 % (one law per grid interval), and end at rest to its solver's
     // precision (1.6e-8 m/s), not to rounding.
     require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
-    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.profile.distance(), tol_s, span);
+    // A law cut where another takes over runs for a part of its own duration.
+    require_lazily(!p.cut || (p.end_time > p.start_time && p.end_time - p.start_time < p.profile.duration()), name(" cut time"),
+                   p.end_time, [&] { return "must lie inside the law's own run, after " + number(p.start_time) + " s"; });
+    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.distance(), tol_s, span);
     require_lazily(p.profile.peak_velocity() <= allowed * (1.0 + 1e-8), name(" peak velocity"), p.profile.peak_velocity(),
                    [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
   }
   const TimeLaw::Piece& last = pieces.back();
-  const double law_end = last.start_s + last.profile.distance();
-  require(std::abs(law_end - length) <= tol_s, "time_law distance", law_end,
-          "must be the path length, the sum of the section lengths, " + number(length) + " m");
+  const double law_end = last.start_s + last.distance();
+  // The law runs to the path's end, or stops before it at rest (stopped_at).
+  require(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, "time_law distance", law_end,
+          "must be the path length, the sum of the section lengths, " + number(length) + " m (or less, stopped at rest)");
+  if (end_s_ < length) {
+    const ProfileState end = last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
+    // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
+    double scale_v = last.profile.peak_velocity();
+    for (const SpeedLimit& l : speed_limits_) scale_v = std::max(scale_v, l.top());
+    const double scale_a = limits_ ? limits_->acceleration : std::abs(end.a);
+    require(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a, "time_law end velocity", end.v,
+            "must be 0 (at rest) where the motion stops before the end of the path, at s = " + number(law_end) + " m");
+  }
+  if (limits_) {
+    require(limits_->acceleration >= numeric_range::min_limit && limits_->acceleration <= numeric_range::max_limit,
+            "limits.acceleration", limits_->acceleration, "must be in [1e-12, 1e12] m/s²");
+    if (limits_->jerk)
+      require(*limits_->jerk >= numeric_range::min_limit && *limits_->jerk <= numeric_range::max_limit, "limits.jerk", *limits_->jerk,
+              "must be in [1e-12, 1e12] m/s³");
+  }
+  require(override_ >= min_override && override_ <= max_override, "override_factor", override_,
+          "must be in [" + number(min_override) + ", " + number(max_override) + "]");
   for (std::size_t k = 0; k < rest_s_.size(); ++k) {
     const double s = rest_s_[k];
     require_lazily(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
@@ -120,6 +146,13 @@ void Trajectory::require_consistent() const {
   }
 }
 
+double Trajectory::law_end() const noexcept {
+  if (law_.size() == 0) return 0.0;
+  const TimeLaw::Piece& last = law_.pieces().back();
+  const double end = last.start_s + last.distance(), length = path_.length();
+  return std::abs(end - length) <= 1e-9 * length ? length : end;
+}
+
 TrajectorySample Trajectory::sample(double t) const noexcept {
   Cursor search{law_.size(), path_.section_count()};  // no hint: binary search
   return sample(t, search);
@@ -132,7 +165,7 @@ TrajectorySample Trajectory::sample(double t, Cursor& cursor) const noexcept {
   const ProfileState law = law_.state_at(t, cursor.piece);
   // At and past the end the path's end exactly (the laws' distances add up to its length only
   // to rounding).
-  out.s = t >= law_.duration() ? path_.length() : law.s;
+  out.s = t >= law_.duration() ? end_s_ : law.s;
   out.s_dot = law.v;
   out.s_ddot = law.a;
   const std::size_t k = cursor.section = path_.section_state(out.s, cursor.section, out.pose, out.body_twist);

@@ -8,25 +8,10 @@
 #include <string>
 
 #include "carried_acceleration.hpp"
+#include "reachable_velocity.hpp"
 #include "dispkin/error.hpp"
 
 namespace dispkin {
-namespace {
-
-// The largest w ≤ cap reachable from u within `distance` (a change up or down): bisection on
-// the monotone velocity_change_distance, shrunk by a relative 1e-9 so that the profile built
-// on it fits with room for rounding.
-double reachable(double u, double cap, double distance, double a, std::optional<double> j) {
-  if (velocity_change_distance(u, cap, a, j) <= distance * (1.0 - 1e-9)) return cap;
-  double lo = std::min(u, cap), hi = cap;
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (velocity_change_distance(u, mid, a, j) <= distance * (1.0 - 1e-9) ? lo : hi) = mid;
-  }
-  return lo;
-}
-
-}  // namespace
 
 double velocity_change_distance(double u, double w, double a, std::optional<double> j) noexcept {
   const double delta = std::abs(w - u);
@@ -66,8 +51,8 @@ std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& s
   u[0] = v_start;
   u[n] = v_end;
   for (std::size_t i = 1; i < n; ++i) u[i] = std::min(segments[i - 1].limit, segments[i].limit);
-  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], reachable(u[i + 1], u[i], segments[i].length, accel(i), j_max));
-  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], reachable(u[i], u[i + 1], segments[i].length, accel(i), j_max));
+  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], detail::reachable_velocity(u[i + 1], u[i], segments[i].length, accel(i), j_max));
+  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], detail::reachable_velocity(u[i], u[i + 1], segments[i].length, accel(i), j_max));
   if (std::abs(u[0] - v_start) > 1e-12 * std::max(1.0, v_start) || std::abs(u[n] - v_end) > 1e-12 * std::max(1.0, v_end)) {
     throw std::invalid_argument(describe("v_end", v_end, "cannot be reached from v_start = " + std::to_string(v_start) +
                                                              " within the segments' length"));

@@ -24,6 +24,13 @@ class TimeLaw {
     double start_time, end_time;  //!< in trajectory time, s
     //!@}
     double start_s;               //!< path position at its start, m
+    //! Whether the law was cut at end_time, before its own end, where another law takes over
+    //! from its state there (a stop or a speed override, Trajectory::stopped_at); the law itself
+    //! stays whole, so that the motion before the cut is the same, bit for bit.
+    bool cut = false;
+
+    //! The distance it covers: the law's own, or up to the cut.
+    double distance() const noexcept { return cut ? profile.state_at(end_time - start_time).s : profile.distance(); }
   };
 
   //! Laws one after another from s = 0, each starting where the one before ended, in `runs`
@@ -32,6 +39,13 @@ class TimeLaw {
 
   //! Appends `law` from path position `start_s`, starting when the last one ends.
   void append(const Profile& law, double start_s);
+  //! Appends `law` from path position `start_s`, starting when the last one ends and cut at
+  //! `end_time` (trajectory time, after its start and before its own end; Piece::cut).
+  void append_cut(const Profile& law, double start_s, double end_time);
+  //! The motion up to t, to which a new law from the state at t is appended: every law that
+  //! ends at or before t as it is, the one running at t cut at t (planning side; allocates).
+  //! Its runs are those that ended at rest before t.
+  TimeLaw before(double t) const;
   //! Ends a rest-to-rest run (the motion is at rest after the last law appended).
   void end_run() noexcept { ++runs_; }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,24 @@ struct SpeedLimit {
   //!@{
   double start_s, length, limit;
   //!@}
+  //! The span's own limit of s̈ (m/s², a move's own acceleration or the angular acceleration's
+  //! share of it); 0: only the trajectory's (TimeLawLimits::acceleration).
+  double acceleration = 0.0;
+  //! What ṡ may reach there under a speed override above 1 (m/s): the limit before a move's own
+  //! velocity lowered it (the system velocity and the curvature rule, doc/planning.md §4); 0: the
+  //! limit itself.
+  double ceiling = 0.0;
+
+  //! The ceiling, or the limit where none was given.
+  double top() const noexcept { return ceiling > limit ? ceiling : limit; }
+};
+
+//! What a trajectory's time law keeps to besides its velocity-limit curve, and so what a new law
+//! from one of its states (a stop, a speed override) keeps to as well: |s̈| ≤ acceleration (m/s²)
+//! and, for the S-curve, |s⃛| ≤ jerk (m/s³; none: the trapezoid).
+struct TimeLawLimits {
+  double acceleration = 0.0;   //!< m/s²
+  std::optional<double> jerk;  //!< m/s³, S-curve only
 };
 
 //! A place inside the path where the trajectory comes to rest, and why.
@@ -54,19 +73,32 @@ struct SectionSource {
 //! (sample(t, cursor)).
 class Trajectory {
  public:
+  //! The range of a speed override factor: 0.1 % to 10× (above 1 each span is capped at its
+  //! ceiling anyway; below 0.1 % a law would outlast dispkin's numeric range).
+  //!@{
+  static constexpr double min_override = 1e-3, max_override = 10.0;
+  //!@}
+
   Trajectory() = default;
   //! `path` run through by `law`, planned under the velocity-limit curve `speed_limits` with rests
   //! at `rest_positions` (0, every corner, path.length()).
   //! `stops`: why it rests at each inner rest position.
   //! `sources`: where each section comes from (empty: the path's own sections, one to one).
+  //! `limits`: what the time law keeps to (what stopped_at(), resumed_at() and with_override()
+  //! need; none for a law made under other limits, e.g. a re-timing under joint limits), and
+  //! `override_factor`: the speed override the law runs at from its last event on (1: as planned).
   Trajectory(SampledPath path, TimeLaw law, std::vector<SpeedLimit> speed_limits, std::vector<double> rest_positions,
-             std::vector<Stop> stops = {}, std::vector<SectionSource> sources = {})
+             std::vector<Stop> stops = {}, std::vector<SectionSource> sources = {},
+             std::optional<TimeLawLimits> limits = std::nullopt, double override_factor = 1.0)
       : path_(std::move(path)),
         law_(std::move(law)),
         speed_limits_(std::move(speed_limits)),
         rest_s_(std::move(rest_positions)),
         stops_(std::move(stops)),
-        sources_(std::move(sources)) {
+        sources_(std::move(sources)),
+        limits_(limits),
+        override_(override_factor),
+        end_s_(law_end()) {
     require_consistent();
   }
 
@@ -76,18 +108,49 @@ class Trajectory {
   //!   inverse is finite (sampling divides by it);
   //! - the time law runs its pieces one after another (each starts where the one before ends, to
   //!   1e-9 of the path length), in at least one and at most one run per piece, from s = 0 to
-  //!   the path's length (to 1e-9 of it);
+  //!   the path's length (to 1e-9 of it) — or, for a stopped trajectory, to a position before
+  //!   it where the last law ends at rest;
   //! - no piece is faster than the velocity-limit curve over its span allows (its peak at most the
-  //!   largest limit of the spans it crosses, to 1e-8), every limit in dispkin's numeric range
+  //!   largest ceiling of the spans it crosses, to 1e-8), every limit in dispkin's numeric range
   //!   and the spans in order along the path;
+  //! - the limits, when given, and the override factor are in dispkin's numeric range;
   //! - the rests lie on the path in order; the section sources each name a part τ ⊂ [0, 1].
   //! The metric set is not part of a trajectory: the lengths themselves are taken as given.
   void require_consistent() const;
 
-  //! The same path, velocity-limit curve and rests under another time law (re-timing).
+  //! The same path, velocity-limit curve and rests under another time law (re-timing), made
+  //! under other limits: the result holds no TimeLawLimits.
   Trajectory with_time_law(TimeLaw law) const {
     return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_);
   }
+
+  //! @name Events in the control loop (doc/events.md)
+  //! Each gives a new trajectory: the same motion up to t (bit for bit), then a new time law from
+  //! the state there (s, ṡ, s̈) along the same path. They need the trajectory's limits() and throw
+  //! std::invalid_argument naming t or the factor when out of range.
+  //!@{
+  //! Stops on the path: from the state at t the fastest stop to rest under the acceleration and
+  //! jerk limits (doc/events.md eq. 2), the velocity-limit curve kept. At and after the end, or
+  //! at rest, the motion is already stopped there. The path stays whole: resumed_at() goes on.
+  Trajectory stopped_at(double t) const;
+  //! Goes on from the state at t (a stopped trajectory at rest, or still braking) to the end of
+  //! the path, at the override factor in force. Throws std::invalid_argument unless stopped().
+  Trajectory resumed_at(double t) const;
+  //! From the state at t the path continues under factor × the velocity-limit curve (each span at
+  //! most its ceiling), the change time-optimal for the first span (doc/events.md §3); factor in
+  //! [min_override, max_override]. Composes: the factor is relative to the curve as planned, not to the last override.
+  //! A stopped trajectory keeps its stop and resumes at the new factor.
+  Trajectory with_override(double t, double factor) const;
+  //!@}
+
+  //! What the time law keeps to, if known (plan() gives them; with_time_law() does not).
+  const std::optional<TimeLawLimits>& limits() const noexcept { return limits_; }
+  //! The speed override in force from the last event on (1 as planned).
+  double override_factor() const noexcept { return override_; }
+  //! Whether the motion ends at rest before the end of its path (stopped_at()).
+  bool stopped() const noexcept { return end_s_ < path_.length(); }
+  //! Where the motion ends (m of DISP arc length): length(), or where it stopped.
+  double end_position() const noexcept { return end_s_; }
 
   const SampledPath& path() const noexcept { return path_; }  //!< the path, with its section lengths
   const TimeLaw& time_law() const noexcept { return law_; }    //!< s(t)
@@ -142,12 +205,17 @@ class Trajectory {
   void sample(const double* times, TrajectorySample* out, std::size_t count) const noexcept;
 
  private:
+  double law_end() const noexcept;  // where the last law ends (the path's length to 1e-9: that length)
+
   SampledPath path_;
   TimeLaw law_;
   std::vector<SpeedLimit> speed_limits_;
   std::vector<double> rest_s_;
   std::vector<Stop> stops_;
   std::vector<SectionSource> sources_;
+  std::optional<TimeLawLimits> limits_;
+  double override_ = 1.0;
+  double end_s_ = 0.0;  // where the last law ends: the path's length, or a stop before it
 };
 
 }  // namespace dispkin

@@ -1,0 +1,162 @@
+// Events on a planned trajectory: a stop on the path, a resumption, a speed override
+// (trajectory.hpp; doc/events.md). Each keeps the motion up to the event as it is and appends a
+// new time law from the state there, along the same path.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dispkin/error.hpp"
+#include "dispkin/planning/trajectory.hpp"
+#include "dispkin/planning/velocity_limit.hpp"
+#include "law_from_state.hpp"
+
+namespace dispkin {
+
+namespace {
+
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(12);
+  out << x;
+  return out.str();
+}
+
+// The staircase over [s0, s1] (doc/events.md eq. 5): the parts of the spans there, each limit
+// scaled by the override and capped at the span's ceiling.
+std::vector<LimitedSegment> staircase(const std::vector<SpeedLimit>& spans, double s0, double s1, double factor) {
+  std::vector<LimitedSegment> out;
+  const double tiny = 1e-12 * std::max(1.0, std::abs(s1));
+  for (const SpeedLimit& span : spans) {
+    const double a = std::max(s0, span.start_s), b = std::min(s1, span.start_s + span.length);
+    if (b - a <= tiny) continue;
+    out.push_back({b - a, std::min(factor * span.limit, span.top()), span.acceleration});
+  }
+  // Rounding of the span ends: the segments cover [s0, s1] exactly.
+  if (!out.empty()) {
+    double covered = 0.0;
+    for (const LimitedSegment& g : out) covered += g.length;
+    out.back().length = std::max(out.back().length + (s1 - s0 - covered), 0.5 * out.back().length);
+  }
+  return out;
+}
+
+// The smallest acceleration limit of the spans over [s0, s1] and of the law itself.
+double smallest_acceleration(const std::vector<SpeedLimit>& spans, double s0, double s1, double a_max) {
+  double a = a_max;
+  for (const SpeedLimit& span : spans)
+    if (span.start_s < s1 && span.start_s + span.length > s0 && span.acceleration > 0.0) a = std::min(a, span.acceleration);
+  return a;
+}
+
+// The state at t (clamped to the motion) of `law`.
+ProfileState state_at(const TimeLaw& law, double t) {
+  std::size_t piece = law.size();
+  return law.state_at(std::clamp(t, 0.0, law.duration()), piece);
+}
+
+const TimeLawLimits& limits_of(const std::optional<TimeLawLimits>& limits, const char* what) {
+  if (!limits)
+    throw std::invalid_argument(std::string(what) +
+                                ": the trajectory holds no time-law limits (a re-timed or older trajectory): plan it again");
+  return *limits;
+}
+
+void require_time(double t) { require(std::isfinite(t), "t", t, "must be finite"); }
+
+}  // namespace
+
+Trajectory Trajectory::stopped_at(double t) const {
+  require_time(t);
+  const TimeLawLimits& limits = limits_of(limits_, "stopped_at");
+  if (t >= duration()) return *this;  // at rest at its end already
+  const double at = std::max(t, 0.0);
+  const ProfileState x = state_at(law_, at);
+  TimeLaw law = law_.before(at);
+  // The fastest stop under the smallest acceleration limit of the spans it crosses (eq. 4): the
+  // spans it crosses under one limit can only be fewer under a smaller one.
+  double a = limits.acceleration;
+  std::optional<Profile> stop = detail::fastest_stop(x.v, x.a, a, limits.jerk);
+  for (int i = 0; i < 8 && stop; ++i) {
+    const double a_spans = smallest_acceleration(speed_limits_, x.s, x.s + stop->distance(), limits.acceleration);
+    if (a_spans >= a) break;
+    a = a_spans;
+    stop = detail::fastest_stop(x.v, x.a, a, limits.jerk);
+  }
+  if (stop) law.append(*stop, x.s);
+  if (law.size() == 0) law.append(Profile::trapezoid(0.0, 1.0, 1.0), 0.0);  // stopped before it started
+  law.end_run();
+  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, override_);
+}
+
+namespace {
+
+// The laws from the state x at `at` to the end of the path at `factor` (doc/events.md §3): the
+// first run from the state to the next rest, the others from rest to rest as planned.
+void append_continuation(TimeLaw& law, const ProfileState& x, const std::vector<SpeedLimit>& spans,
+                         const std::vector<double>& rests, double length, const TimeLawLimits& limits, double factor) {
+  std::vector<double> ends;
+  const double tol = 1e-9 * length;
+  for (double r : rests)
+    if (r > x.s + tol) ends.push_back(r);
+  if (ends.empty() || ends.back() < length - tol) ends.push_back(length);
+  double s0 = x.s;
+  bool first = true;
+  for (double s1 : ends) {
+    const std::vector<LimitedSegment> segments = staircase(spans, s0, s1, factor);
+    if (segments.empty()) continue;
+    const bool moving = first && (x.v != 0.0 || (limits.jerk && x.a != 0.0));
+    const std::vector<Profile> laws =
+        moving ? detail::staircase_law_from_state(segments, limits.acceleration, limits.jerk, x.v, x.a, tol)
+               : velocity_limited_law(segments, limits.acceleration, limits.jerk);
+    double s = s0;
+    for (const Profile& piece : laws) {
+      law.append(piece, s);
+      s += piece.distance();
+    }
+    law.end_run();
+    s0 = s1;
+    first = false;
+  }
+}
+
+}  // namespace
+
+Trajectory Trajectory::resumed_at(double t) const {
+  require_time(t);
+  const TimeLawLimits& limits = limits_of(limits_, "resumed_at");
+  require(stopped(), "t", t, "resumes a stopped trajectory only: this one runs to the end of its path");
+  const double at = std::max(t, 0.0);
+  TimeLaw law = law_.before(at);
+  ProfileState x = state_at(law_, at);
+  if (at > duration()) {
+    // At rest where it stopped until t.
+    const double wait = at - duration(), no_jerk = 0.0;
+    law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
+    x = ProfileState{end_s_, 0.0, 0.0, 0.0};
+  }
+  append_continuation(law, x, speed_limits_, rest_s_, length(), limits, override_);
+  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, override_);
+}
+
+Trajectory Trajectory::with_override(double t, double factor) const {
+  require_time(t);
+  require(factor >= min_override && factor <= max_override, "factor", factor,
+          "must be in [" + number(min_override) + ", " + number(max_override) + "]");
+  const TimeLawLimits& limits = limits_of(limits_, "with_override");
+  // A stop keeps braking as fast as it can; the new factor holds from the resumption on. At the
+  // end nothing is left to run at it.
+  if (stopped() || t >= duration())
+    return Trajectory(path_, law_, speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+  const double at = std::max(t, 0.0);
+  const ProfileState x = state_at(law_, at);
+  // Within rounding of the end nothing is left to run at it.
+  if (x.s >= length() * (1.0 - 1e-9)) return Trajectory(path_, law_, speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+  TimeLaw law = law_.before(at);
+  append_continuation(law, x, speed_limits_, rest_s_, length(), limits, factor);
+  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+}
+
+}  // namespace dispkin
