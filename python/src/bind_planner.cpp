@@ -238,6 +238,30 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
           py::arg("times"),
           "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
           "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
+      .def("stopped_at", &Trajectory::stopped_at, py::arg("t"),
+           "A feed hold that keeps to the path: the same motion up to t (bit for bit), then the fastest stop from the "
+           "state there (path velocity and acceleration) to rest on the same path, under the acceleration and jerk "
+           "limits it was planned with and its velocity-limit curve (doc/events.md). At or after the end, the same "
+           "trajectory. `resumed_at` goes on to the end.")
+      .def("resumed_at", &Trajectory::resumed_at, py::arg("t"),
+           "A stopped trajectory continued at t (at rest where it stopped, or while it still brakes) to the end of "
+           "its path, at the speed override in force. ValueError unless `stopped`.")
+      .def("with_override", &Trajectory::with_override, py::arg("t"), py::arg("factor"),
+           "A speed override from t on: the same motion up to t, then the path continues under factor x the "
+           "velocity-limit curve (each span at most its ceiling: factors above 1 only speed up what a move's own "
+           "velocity slowed down), the change eased in at full jerk from the state at t. factor in [0.001, 10], "
+           "relative to the curve as planned (a second override replaces the first).")
+      .def_property_readonly("override_factor", &Trajectory::override_factor,
+                             "The speed override in force from the last event on (1.0 as planned).")
+      .def_property_readonly("stopped", &Trajectory::stopped,
+                             "Whether the motion ends at rest before the end of its path (stopped_at).")
+      .def_property_readonly("end_position", &Trajectory::end_position,
+                             "Where the motion ends, m of DISP arc length: the length, or where it stopped.")
+      .def_property_readonly("time_law_limits", [](const Trajectory& t) -> py::object {
+        if (!t.limits()) return py::none();
+        return py::make_tuple(t.limits()->acceleration, py::cast(t.limits()->jerk));
+      }, "(acceleration m/s^2, jerk m/s^3 or None) that the time law keeps to, and so every stop or override of it; "
+         "None for a re-timed trajectory (its law keeps to joint limits), which refuses events.")
       .def("__repr__", [](const Trajectory& t) {
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
       });

@@ -232,7 +232,10 @@ Path path_from_state(const py::object& state) {
 
 py::tuple time_law_state(const TimeLaw& law) {
   py::list pieces;
-  for (const TimeLaw::Piece& p : law.pieces()) pieces.append(py::make_tuple(profile_state(p.profile), p.start_s));
+  // A law cut where another took over keeps its cut time as a third item.
+  for (const TimeLaw::Piece& p : law.pieces())
+    pieces.append(p.cut ? py::tuple(py::make_tuple(profile_state(p.profile), p.start_s, p.end_time))
+                        : py::tuple(py::make_tuple(profile_state(p.profile), p.start_s)));
   return py::make_tuple(law.run_count(), py::tuple(pieces));
 }
 
@@ -244,8 +247,12 @@ TimeLaw time_law_from_state(const py::handle& state, const StateField& where) {
   const py::sequence pieces = state_sequence(s[1], pieces_at);
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const StateField at = pieces_at.at(k);
-    const py::tuple p = state_fields(pieces[k], 2, at);
-    law.append(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"));
+    const bool cut = py::isinstance<py::tuple>(pieces[k]) && py::len(pieces[k]) == 3;
+    const py::tuple p = state_fields(pieces[k], cut ? 3 : 2, at);
+    if (cut)
+      law.append_cut(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"), state_number(p[2], at / ".end_time"));
+    else
+      law.append(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"));
   }
   // Runs: at least one, at most one per law (the Trajectory constructor checks it).
   const std::size_t runs = state_count(s[0], where / ".runs", pieces.size());
@@ -255,7 +262,10 @@ TimeLaw time_law_from_state(const py::handle& state, const StateField& where) {
 
 py::tuple trajectory_state(const Trajectory& trajectory) {
   py::list limits;
-  for (const SpeedLimit& l : trajectory.speed_limits()) limits.append(py::make_tuple(l.start_s, l.length, l.limit));
+  for (const SpeedLimit& l : trajectory.speed_limits())
+    limits.append(py::make_tuple(l.start_s, l.length, l.limit, l.acceleration, l.ceiling));
+  const std::optional<TimeLawLimits>& law_limits = trajectory.limits();
+  const py::object limits_of_law = law_limits ? py::object(py::make_tuple(law_limits->acceleration, py::cast(law_limits->jerk))) : py::none();
   const std::vector<double>& lengths = trajectory.section_lengths();
   const std::vector<double>& rests = trajectory.rest_positions();
   py::list stops, sources;
@@ -264,7 +274,7 @@ py::tuple trajectory_state(const Trajectory& trajectory) {
     sources.append(py::make_tuple(source.section, source.tau_start, source.tau_end));
   return py::make_tuple(sections_state(trajectory.path().sections()), py::tuple(py::cast(lengths)),
                         time_law_state(trajectory.time_law()), py::tuple(limits), py::tuple(py::cast(rests)), py::tuple(stops),
-                        py::tuple(sources));
+                        py::tuple(sources), limits_of_law, trajectory.override_factor());
 }
 
 namespace {
@@ -283,8 +293,11 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
     if (!(lengths[k] > 0.0)) throw py::value_error(field(1, "section_lengths").at(k).message(py::float_(lengths[k]), "must be > 0"));
   const std::vector<SpeedLimit> limits =
       each<SpeedLimit>(s[3], field(3, "speed_limits"), [](const py::handle& item, const StateField& at) {
-        const py::tuple l = state_fields(item, 3, at);
-        return SpeedLimit{state_number(l[0], at / ".start_s"), state_number(l[1], at / ".length"), state_number(l[2], at / ".limit")};
+        // (start_s, length, limit), and since the events (acceleration, ceiling).
+        const bool own = py::isinstance<py::tuple>(item) && py::len(item) == 5;
+        const py::tuple l = state_fields(item, own ? 5 : 3, at);
+        return SpeedLimit{state_number(l[0], at / ".start_s"), state_number(l[1], at / ".length"), state_number(l[2], at / ".limit"),
+                          own ? state_number(l[3], at / ".acceleration") : 0.0, own ? state_number(l[4], at / ".ceiling") : 0.0};
       });
   std::vector<Stop> stops = each<Stop>(s[5], field(5, "stops"), [](const py::handle& item, const StateField& at) {
     const py::tuple t = state_fields(item, 2, at);
@@ -297,19 +310,37 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
         return SectionSource{state_count(t[0], at / ".section", std::numeric_limits<std::size_t>::max() >> 1),
                              state_number(t[1], at / ".tau_start"), state_number(t[2], at / ".tau_end")};
       });
+  // Items 7 and 8 (what the law keeps to, the override in force) since the events; a state of 7
+  // items holds neither.
+  std::optional<TimeLawLimits> law_limits;
+  double override_factor = 1.0;
+  if (s.size() == 9) {
+    if (!s[7].is_none()) {
+      const py::tuple l = state_fields(s[7], 2, field(7, "limits"));
+      law_limits = TimeLawLimits{state_number(l[0], field(7, "limits") / ".acceleration"),
+                                 l[1].is_none() ? std::nullopt : std::optional<double>(state_number(l[1], field(7, "limits") / ".jerk"))};
+    }
+    override_factor = state_number(s[8], field(8, "override_factor"));
+  }
   return Trajectory(SampledPath(std::move(sections), std::move(lengths)), time_law_from_state(s[2], field(2, "time_law")),
-                    limits, numbers(s[4], field(4, "rest_positions")), std::move(stops), std::move(sources));
+                    limits, numbers(s[4], field(4, "rest_positions")), std::move(stops), std::move(sources), law_limits,
+                    override_factor);
+}
+
+// The items of a Trajectory state: 9, or 7 from before the events.
+std::size_t trajectory_items(const py::handle& state) {
+  return py::isinstance<py::tuple>(state) && py::len(state) == 7 ? 7 : 9;
 }
 
 }  // namespace
 
 Trajectory trajectory_from_state(const py::object& state) {
-  const py::tuple s = state_tuple(state, 7, "Trajectory");
+  const py::tuple s = state_tuple(state, trajectory_items(state), "Trajectory");
   return trajectory_of_items(s, [](std::size_t k, const char* name) { return StateField("Trajectory", k, name); });
 }
 
 Trajectory trajectory_from_state(const py::handle& state, const StateField& where) {
-  const py::tuple s = state_fields(state, 7, where);
+  const py::tuple s = state_fields(state, trajectory_items(state), where);
   return trajectory_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); });
 }
 

@@ -111,6 +111,13 @@ void Trajectory::require_consistent() const {
   require(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, "time_law distance", law_end,
           "must be the path length, the sum of the section lengths, " + number(length) + " m (or less, stopped at rest)");
   if (end_s_ < length) {
+    // A stop before the end is a rest of the trajectory, with its reason (stopped_at).
+    const auto near = [&](double s) { return std::abs(s - law_end) <= tol_s; };
+    require(std::any_of(stops_.begin(), stops_.end(), [&](const Stop& x) { return near(x.s); }) &&
+                std::any_of(rest_s_.begin(), rest_s_.end(), near),
+            "time_law distance", law_end,
+            "must be the path length, the sum of the section lengths, " + number(length) +
+                " m, unless the motion stopped there: a rest position and a stop at that position");
     const ProfileState end = last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
     // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
     double scale_v = last.profile.peak_velocity();

@@ -66,6 +66,11 @@ const TimeLawLimits& limits_of(const std::optional<TimeLawLimits>& limits, const
 
 void require_time(double t) { require(std::isfinite(t), "t", t, "must be finite"); }
 
+// The reason of the rest a stop adds (stopped_at), by which resumed_at finds it.
+constexpr const char* stopped_reason = "stopped at t = ";
+
+bool is_stop_of_event(const Stop& stop) { return stop.reason.rfind(stopped_reason, 0) == 0; }
+
 }  // namespace
 
 Trajectory Trajectory::stopped_at(double t) const {
@@ -88,7 +93,22 @@ Trajectory Trajectory::stopped_at(double t) const {
   if (stop) law.append(*stop, x.s);
   if (law.size() == 0) law.append(Profile::trapezoid(0.0, 1.0, 1.0), 0.0);  // stopped before it started
   law.end_run();
-  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, override_);
+  // Where it rests is a rest of the trajectory, with its reason (unless it is one already: a
+  // corner, or the start).
+  const TimeLaw::Piece& last = law.pieces().back();
+  const double s_end = last.start_s + last.distance(), tol = 1e-9 * length();
+  std::vector<double> rests = rest_s_;
+  std::vector<Stop> stops = stops_;
+  if (s_end < length() - tol) {
+    const auto near = [&](double s) { return std::abs(s - s_end) <= tol; };
+    if (std::none_of(rests.begin(), rests.end(), near))
+      rests.insert(std::upper_bound(rests.begin(), rests.end(), s_end), s_end);
+    if (std::none_of(stops.begin(), stops.end(), [&](const Stop& x) { return near(x.s); })) {
+      const auto after = std::upper_bound(stops.begin(), stops.end(), s_end, [](double s, const Stop& x) { return s < x.s; });
+      stops.insert(after, Stop{s_end, stopped_reason + number(at) + " s"});
+    }
+  }
+  return Trajectory(path_, std::move(law), speed_limits_, std::move(rests), std::move(stops), sources_, limits_, override_);
 }
 
 namespace {
@@ -128,6 +148,16 @@ Trajectory Trajectory::resumed_at(double t) const {
   require_time(t);
   const TimeLawLimits& limits = limits_of(limits_, "resumed_at");
   require(stopped(), "t", t, "resumes a stopped trajectory only: this one runs to the end of its path");
+  // The rest the stop added goes; a planned one (a corner, the start) stays.
+  const double tol = 1e-9 * length();
+  std::vector<Stop> stops = stops_;
+  std::vector<double> rests = rest_s_;
+  const auto ours = std::find_if(stops.begin(), stops.end(), [&](const Stop& x) { return is_stop_of_event(x) && std::abs(x.s - end_s_) <= tol; });
+  if (ours != stops.end()) {
+    stops.erase(ours);
+    const auto rest = std::find_if(rests.begin(), rests.end(), [&](double r) { return std::abs(r - end_s_) <= tol; });
+    if (rest != rests.end() && *rest > 0.0) rests.erase(rest);
+  }
   const double at = std::max(t, 0.0);
   TimeLaw law = law_.before(at);
   ProfileState x = state_at(law_, at);
@@ -137,8 +167,8 @@ Trajectory Trajectory::resumed_at(double t) const {
     law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
     x = ProfileState{end_s_, 0.0, 0.0, 0.0};
   }
-  append_continuation(law, x, speed_limits_, rest_s_, length(), limits, override_);
-  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, override_);
+  append_continuation(law, x, speed_limits_, rests, length(), limits, override_);
+  return Trajectory(path_, std::move(law), speed_limits_, std::move(rests), std::move(stops), sources_, limits_, override_);
 }
 
 Trajectory Trajectory::with_override(double t, double factor) const {

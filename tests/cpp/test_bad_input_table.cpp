@@ -337,6 +337,15 @@ std::vector<Row> rows() {
         OverlappedTrajectory(t, plan(Path::lin(B, C), good_set(), limits(0.1, 1, 10)), 100.0); }, IA, "overlap = 100: must be between 0 and the shorter move's duration");
   row("OverlappedTrajectory", "moves not joining", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
         OverlappedTrajectory(t, plan(Path::lin(C, B), good_set(), limits(0.1, 1, 10)), 0.1); }, IA, "after = (0.1, 0.1, 0): must start where `before` ends");
+  row("Trajectory::stopped_at", "NaN time", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10)).stopped_at(nan_); }, IA, "t = nan: must be finite");
+  row("Trajectory::with_override", "factor 0", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10)).with_override(0.1, 0.0); }, IA,
+      "factor = 0: must be in [0.001, 10]");
+  row("Trajectory::with_override", "NaN factor", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10)).with_override(0.1, nan_); }, IA,
+      "factor = nan");
+  row("Trajectory::resumed_at", "not stopped", [] { plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10)).resumed_at(0.1); }, IA,
+      "t = 0.1: resumes a stopped trajectory only");
+  row("Trajectory::stopped_at", "a re-timed law (limits unknown)", [] { const Trajectory t = plan(Path::lin(A, B), good_set(), limits(0.1, 1, 10));
+        t.with_time_law(t.time_law()).stopped_at(0.1); }, IA, "stopped_at: the trajectory holds no time-law limits");
   // --- Hexapod ---
   row("Hexapod(...)", "NaN base joint", [] { Hexapod h = hexapod(); Hexapod::Joints b = h.base_joints(); b(0, 0) = nan_;
         Hexapod(b, h.platform_joints(), h.leg_min(), h.leg_max(), h.leg_speed()); }, IA, "base_joints = (nan, -0.02604722665, 0");

@@ -203,6 +203,18 @@ TEST(TrajectoryEvents, RefusedWithAClearMessage) {
   EXPECT_NE(message_of([&] { traj.resumed_at(0.5); }).find("resumes a stopped trajectory only"), std::string::npos);
   const Trajectory retimed = traj.with_time_law(traj.time_law());
   EXPECT_NE(message_of([&] { retimed.stopped_at(0.5); }).find("holds no time-law limits"), std::string::npos);
+  // Where it stopped is a rest with its reason; a law that ends early without one is refused (a
+  // trajectory whose section lengths were stretched would otherwise pass for a stopped one).
+  const Trajectory stopped = traj.stopped_at(0.3);
+  ASSERT_TRUE(stopped.stopped());
+  EXPECT_EQ(stopped.stops().back().reason.rfind("stopped at t = 0.3", 0), 0u);
+  EXPECT_NE(message_of([&] {
+              Trajectory(stopped.path(), stopped.time_law(), stopped.speed_limits(), stopped.rest_positions(), {}, {}, stopped.limits());
+            }).find("unless the motion stopped there"),
+            std::string::npos);
+  const Trajectory resumed = stopped.resumed_at(5.0);
+  EXPECT_EQ(resumed.stops().size(), traj.stops().size());
+  EXPECT_EQ(resumed.rest_positions(), traj.rest_positions());
   // Before the start, it stops where it is; after the end it is the same trajectory.
   EXPECT_EQ(traj.stopped_at(-1.0).duration(), 0.0);
   EXPECT_EQ(traj.stopped_at(traj.duration() + 1.0).duration(), traj.duration());

@@ -302,6 +302,11 @@ row("plan", "collinear set", lambda: dispkin.plan(LINE, collinear_set(), LIMITS)
 row("plan", "unknown profile", lambda: dispkin.plan(LINE, good_set(), LIMITS, profile="sine"), V, "profile = \"sine\"")
 row("plan", "scurve without jerk", lambda: dispkin.plan(LINE, good_set(), dispkin.Limits(0.1, 1.0), profile="scurve"), V, "jerk is missing: the S-curve profile needs a jerk limit")
 row("Trajectory.sample", "NaN time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([NAN]), V, "times = nan: must be finite")
+row("Trajectory.stopped_at", "NaN time", lambda: trajectory().stopped_at(NAN), V, "t = nan: must be finite")
+row("Trajectory.with_override", "factor 0", lambda: trajectory().with_override(0.1, 0.0), V, "factor = 0: must be in [0.001, 10]")
+row("Trajectory.with_override", "factor above 10", lambda: trajectory().with_override(0.1, 11.0), V, "factor = 11: must be in [0.001, 10]")
+row("Trajectory.with_override", "factor not a number", lambda: trajectory().with_override(0.1, "fast"), TypeError, "incompatible function arguments")
+row("Trajectory.resumed_at", "not stopped", lambda: trajectory().resumed_at(0.1), V, "t = 0.1: resumes a stopped trajectory only")
 row("Trajectory.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([INF]), V, "times = inf")
 accepted("Trajectory.sample", "negative time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([-1.0]),
          lambda m: np.allclose(m[0], A.matrix(), atol=0), "clamped to t = 0, the start pose, as t beyond the duration gives the end (documented: times clamped)")
@@ -888,6 +893,14 @@ row("Trajectory.__setstate__", "a section 8.6 m away from the one before (the pa
     jumping_section)), V, "must start where the path ends (gap 8.6")
 row("Trajectory.__setstate__", "section lengths twice the law's distance", lambda: unpickled(dispkin.Trajectory, trajectory_state(
     lambda s: s.__setitem__(1, tuple(2 * L for L in s[1])))), V, "Trajectory.__setstate__: time_law distance = ")
+row("Trajectory.__setstate__", "a stopped motion without its stop", lambda: unpickled(dispkin.Trajectory, tuple(
+    s[:5] + ((),) + s[6:] for s in [trajectory().stopped_at(0.5).__getstate__()])[0]), V,
+    "Trajectory.__setstate__: time_law distance = ")
+row("Trajectory.__setstate__", "override factor 0", lambda: unpickled(dispkin.Trajectory, trajectory_state(
+    lambda s: s.__setitem__(8, 0.0))), V, "Trajectory.__setstate__: override_factor = 0: must be in [0.001, 10]")
+row("Trajectory.__setstate__", "a cut law cut after its end", lambda: unpickled(dispkin.Trajectory, tuple(
+    s[:2] + ((s[2][0], tuple(p if len(p) == 2 else p[:2] + (1e6,) for p in s[2][1])),) + s[3:]
+    for s in [trajectory().with_override(0.5, 0.5).__getstate__()])[0]), V, "cut time = 1000000")
 row("Trajectory.__setstate__", "a law's distance 1e308", lambda: unpickled(dispkin.Trajectory, trajectory_state(
     lambda s: s.__setitem__(2, (s[2][0], ((s[2][1][0][0][:3] + (1e308,) + s[2][1][0][0][4:], 0.0),) + s[2][1][1:])))), V,
     "Trajectory.__setstate__: state[2] (time_law.pieces[0].profile) end.s = ")
