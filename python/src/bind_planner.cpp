@@ -1,4 +1,6 @@
-// Python binding of dispkin/planning/planner.hpp: Limits, plan, Trajectory.
+// Python binding of dispkin/planning/planner.hpp: Limits, plan, Trajectory (with TrajectoryCursor for
+// control loops), OverlappedTrajectory.
+#include <array>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -60,6 +62,11 @@ struct Times {
 };
 
 Times times_of(const py::object& times) {
+  if (PyFloat_Check(times.ptr())) {  // one time, the usual call of a loop: no array to make
+    Times one{{PyFloat_AS_DOUBLE(times.ptr())}, true};
+    require_finite(one.t[0], "times");
+    return one;
+  }
   const Array a = as_array(times, "times", "a number or an array of shape (N,)");
   if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
   Times out{std::vector<double>(a.data(), a.data() + a.size()), a.ndim() == 0};
@@ -69,28 +76,35 @@ Times times_of(const py::object& times) {
 
 // An (N, *shape_tail) array for N times, or for a number one sample shaped shape_tail (a float
 // when that is empty), as numpy does for a scalar; `fill` writes the numbers (C++ only: for many
-// times it runs with the interpreter lock released).
+// times it runs with the interpreter lock released). With `out` (not None) they are written into
+// that preallocated array, of the same shape, and it is returned; for a number where the sample
+// is a float, `out` has shape (1,) or ().
 template <typename Fill>
-py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail, Fill fill) {
+py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail, const py::object& out, Fill fill) {
   std::vector<py::ssize_t> shape;
   if (!times.scalar) shape.push_back(static_cast<py::ssize_t>(times.t.size()));
   shape.insert(shape.end(), shape_tail.begin(), shape_tail.end());
-  py::array_t<double> out(shape);
-  double* data = out.mutable_data();
+  const auto target_array = [&]() -> py::array {
+    if (out.is_none()) return py::array_t<double>(shape);
+    if (shape.empty()) return output_array(out, "out", shape, std::array<py::ssize_t, 1>{1});
+    return output_array(out, "out", shape);
+  };
+  py::array target = target_array();
+  double* data = static_cast<double*>(target.mutable_data());
   {
     const UnlockedIf unlocked(worth_releasing(times.t.size(), trajectory_sample_ns));
     fill(data);
   }
-  if (shape.empty()) return py::float_(*out.data());
-  return std::move(out);
+  if (out.is_none() && shape.empty()) return py::float_(*data);
+  return std::move(target);
 }
 
 // Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
 template <typename Sampled, typename Write>
-py::object sampled(const Sampled& traj, const py::object& times, std::vector<py::ssize_t> shape_tail, py::ssize_t columns,
-                   Write write) {
+py::object sampled(const Sampled& traj, const py::object& times, const py::object& out, std::vector<py::ssize_t> shape_tail,
+                   py::ssize_t columns, Write write) {
   const Times at = times_of(times);
-  return shaped(at, shape_tail, [&](double* data) {
+  return shaped(at, shape_tail, out, [&](double* data) {
     const std::vector<double>& t = at.t;
     if constexpr (std::is_same_v<Sampled, Trajectory>) {
       // A cursor: consecutive times (the usual array) find their section without search.
@@ -102,52 +116,96 @@ py::object sampled(const Sampled& traj, const py::object& times, std::vector<py:
   });
 }
 
+// What each sampling method writes of a sample; TrajectoryCursor writes its state with the same
+// functions, so that its numbers are those of the methods bit for bit.
+void write_matrix(const TrajectorySample& s, double* out) {
+  Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+}
+void write_xyzuvw(const TrajectorySample& s, double* out) { Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw(); }
+void write_body_twist(const TrajectorySample& s, double* out) {
+  Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
+}
+
+// A Trajectory::Cursor with the trajectory it runs along, for Python control loops. It holds
+// the Python Trajectory, so the trajectory lives as long as the cursor; a Trajectory cannot be
+// changed once built, so `trajectory` stays valid. The C++ cursor is only a hint (any value
+// samples the same numbers), so the pair has no other invariant.
+struct TrajectoryCursor {
+  py::object owner;               // the Python Trajectory
+  const Trajectory* trajectory;   // its C++ value
+  Trajectory::Cursor cursor;      // the law and section of the last sample
+  std::optional<double> t;        // the time of the last sample, as given
+};
+
+// One state in TrajectoryCursor's flat layout: the XYZUVW pose [0, 6), the body twist [6, 12),
+// then s, s-dot and s-double-dot.
+constexpr py::ssize_t cursor_state_size = 15;
+constexpr py::ssize_t cursor_s = 12;
+
+void write_cursor_state(const TrajectorySample& s, double* out) {
+  write_xyzuvw(s, out);
+  write_body_twist(s, out + 6);
+  out[cursor_s] = s.s;
+  out[cursor_s + 1] = s.s_dot;
+  out[cursor_s + 2] = s.s_ddot;
+}
+
+// A sampling method's docstring: `doc`, then how it takes `out`.
+std::string with_out(const char* doc) {
+  return std::string(doc) +
+         " `out` (keyword): a preallocated writeable C-contiguous float64 array of exactly the shape returned, written in "
+         "place and returned instead of a new array (ValueError naming `out` and what it is otherwise).";
+}
+
 // The sampling methods shared by Trajectory and OverlappedTrajectory.
 template <typename T>
 void add_sampling(py::class_<T>& cls) {
   cls
       .def(
           "sample",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {4, 4}, 16, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
-            });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {4, 4}, 16, write_matrix);
           },
-          py::arg("times"), "Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.").c_str())
       .def(
           "sample_xyzuvw",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
-            });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {6}, 6, write_xyzuvw);
           },
-          py::arg("times"), "Poses at `times` as (N, 6) XYZUVW (metres, radians); (6,) for a number.")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("Poses at `times` as (N, 6) XYZUVW (metres, radians); (6,) for a number.").c_str())
       .def(
           "body_twist",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {6}, 6, [](const TrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
-            });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {6}, 6, write_body_twist);
           },
-          py::arg("times"), "Body twists (v, omega) at `times`, (N, 6), m/s and rad/s; (6,) for a number.")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("Body twists (v, omega) at `times`, (N, 6), m/s and rad/s; (6,) for a number.").c_str())
       .def(
           "path_position",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s; });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {}, 1, [](const TrajectorySample& s, double* o) { *o = s.s; });
           },
-          py::arg("times"), "s at `times`, (N,), metres of DISP arc length; a float for a number.")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("s at `times`, (N,), metres of DISP arc length; a float for a number (with `out`: an array of shape "
+                   "(1,) or (), returned).").c_str())
       .def(
           "path_velocity",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_dot; });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {}, 1, [](const TrajectorySample& s, double* o) { *o = s.s_dot; });
           },
-          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set; a float for a number.")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("s-dot at `times`, (N,), m/s: the speed bound of every point of the set; a float for a number "
+                   "(with `out`: an array of shape (1,) or (), returned).").c_str())
       .def(
           "path_acceleration",
-          [](const T& traj, const py::object& times) {
-            return sampled(traj, times, {}, 1, [](const TrajectorySample& s, double* out) { *out = s.s_ddot; });
+          [](const T& traj, const py::object& times, const py::object& out) {
+            return sampled(traj, times, out, {}, 1, [](const TrajectorySample& s, double* o) { *o = s.s_ddot; });
           },
-          py::arg("times"), "s-double-dot at `times`, (N,), m/s^2; a float for a number.");
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("s-double-dot at `times`, (N,), m/s^2; a float for a number (with `out`: an array of shape (1,) or "
+                   "(), returned).").c_str());
 }
 
 }  // namespace
@@ -228,16 +286,17 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
          "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
       .def(
           "body_acceleration",
-          [](const Trajectory& traj, const py::object& times) {
+          [](const Trajectory& traj, const py::object& times, const py::object& out) {
             const Times at = times_of(times);
-            return shaped(at, {6}, [&](double* data) {
+            return shaped(at, {6}, out, [&](double* data) {
               for (std::size_t i = 0; i < at.t.size(); ++i)
                 Eigen::Map<Eigen::Matrix<double, 6, 1>>(data + 6 * i) = body_acceleration(traj, at.t[i]).vector();
             });
           },
-          py::arg("times"),
-          "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
-          "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
+          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+          with_out("The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
+                   "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
+              .c_str())
       .def("stopped_at", &Trajectory::stopped_at, py::arg("t"),
            "A feed hold that keeps to the path: the same motion up to t (bit for bit), then the fastest stop from the "
            "state there (path velocity and acceleration) to rest on the same path, under the acceleration and jerk "
@@ -268,6 +327,62 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
 
   def_pickle(trajectory, "Trajectory", &trajectory_state, [](const py::object& state) { return trajectory_from_state(state); });
   add_sampling(trajectory);
+
+  py::class_<TrajectoryCursor> cursor(m, "TrajectoryCursor", R"doc(
+Where a control loop has got to along a Trajectory (Trajectory.cursor()): sample(t, out) finds
+the time law and section of t from those of the sample before (in constant time for the same or
+the next ones, the usual controller cycle; by binary search after a jump) and writes the whole
+state at t into the preallocated array `out`, allocating nothing. It keeps its trajectory alive.
+
+A state is SIZE = 15 float64 numbers, in this order (the class attributes hold the indices):
+
+- [0:6] the XYZUVW pose, metres and radians (XYZUVW; Trajectory.sample_xyzuvw);
+- [6:12] the body twist (v, omega), m/s and rad/s (BODY_TWIST; Trajectory.body_twist);
+- [12] s, metres of DISP arc length (PATH_POSITION; Trajectory.path_position);
+- [13] s-dot, m/s (PATH_VELOCITY; Trajectory.path_velocity);
+- [14] s-double-dot, m/s^2 (PATH_ACCELERATION; Trajectory.path_acceleration).
+
+Each number is that method's at the same time, bit for bit, in whatever order the times come.
+Views made once, e.g. twist = out[TrajectoryCursor.BODY_TWIST], read the state of every cycle.)doc");
+  cursor.attr("SIZE") = cursor_state_size;
+  cursor.attr("XYZUVW") = py::slice(0, 6, std::nullopt);
+  cursor.attr("BODY_TWIST") = py::slice(6, cursor_s, std::nullopt);
+  cursor.attr("PATH_POSITION") = cursor_s;
+  cursor.attr("PATH_VELOCITY") = cursor_s + 1;
+  cursor.attr("PATH_ACCELERATION") = cursor_s + 2;
+  cursor
+      .def(
+          "sample",
+          [](TrajectoryCursor& c, double t, const py::object& out) -> py::object {
+            require_finite(t, "t");
+            py::array target = out.is_none() ? py::array(py::array_t<double>(cursor_state_size))
+                                             : output_array(out, "out", std::array<py::ssize_t, 1>{cursor_state_size});
+            write_cursor_state(c.trajectory->sample(t, c.cursor), static_cast<double*>(target.mutable_data()));
+            c.t = t;
+            return std::move(target);
+          },
+          py::arg("t"), py::arg("out") = py::none(),
+          "Writes the state at time t (seconds, finite; clamped to [0, duration]) into `out`, a writeable C-contiguous "
+          "float64 array of shape (15,) in the layout of the class, and returns `out` (a new array when None). With "
+          "`out` given nothing is allocated: a control loop passes the same array at every cycle.")
+      .def_property_readonly(
+          "t", [](const TrajectoryCursor& c) { return c.t; }, "The time of the last sample, seconds, as given; None before the first.")
+      .def_property_readonly(
+          "section", [](const TrajectoryCursor& c) { return c.cursor.section; },
+          "The index of the section of the last sample (0 before the first), into Trajectory.section_lengths().")
+      .def_property_readonly(
+          "trajectory", [](const TrajectoryCursor& c) { return c.owner; }, "The Trajectory the cursor runs along.")
+      .def("__repr__", [](const TrajectoryCursor& c) {
+        return "TrajectoryCursor(t=" + (c.t ? float_repr(*c.t) : std::string("None")) + ", section=" + std::to_string(c.cursor.section) +
+               ")";
+      });
+  trajectory.def(
+      "cursor",
+      [](const py::object& self) {
+        return TrajectoryCursor{self, &self.cast<const Trajectory&>(), Trajectory::Cursor{}, std::nullopt};
+      },
+      "A TrajectoryCursor at the start of the trajectory, for sampling it in a control loop: one state per call, "
+      "written into a preallocated array without allocating, each found from the one before.");
 
   py::class_<OverlappedTrajectory> overlapped(m, "OverlappedTrajectory", R"doc(
 The Mamezou trajectory article's overlapped velocity method: `after` starts `overlap` seconds before `before` ends and

@@ -12,7 +12,7 @@ void bind_shapes(pybind11::module_& m);      // bind_shapes.cpp: the submodule `
 void bind_disp(pybind11::module_& m);        // bind_disp.cpp: distances, speeds, section lengths
 void bind_profile(pybind11::module_& m);     // bind_profile.cpp: Profile (trapezoid, S-curve)
 void bind_path(pybind11::module_& m);        // bind_path.cpp: Path, Section, JointPath
-void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory
+void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory, TrajectoryCursor
 void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, WorkspaceCheck, LegViolation
 void bind_frames(pybind11::module_& m);      // bind_frames.cpp: WorkToolFrames
 void bind_serial(pybind11::module_& m);      // bind_serial.cpp: SerialArm, JointLimits, InverseResult (if built)

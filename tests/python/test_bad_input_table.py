@@ -76,6 +76,11 @@ def trajectory():
     return dispkin.plan(dispkin.Path.lin(hexapod().home, hexapod().home * B), good_set(), LIMITS)
 
 
+def overlapped():
+    """A LIN to B and one on to C, overlapped by 0.1 s."""
+    return dispkin.OverlappedTrajectory(dispkin.plan(LINE, good_set(), LIMITS), dispkin.plan(dispkin.Path.lin(B, C), good_set(), LIMITS), 0.1)
+
+
 # (entry point, bad input, call, exception, message fragment). The fragment is matched with
 # re.search after re.escape, so write it literally; it contains the argument and the value.
 R = []
@@ -310,6 +315,31 @@ row("Trajectory.resumed_at", "not stopped", lambda: trajectory().resumed_at(0.1)
 row("Trajectory.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([INF]), V, "times = inf")
 accepted("Trajectory.sample", "negative time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([-1.0]),
          lambda m: np.allclose(m[0], A.matrix(), atol=0), "clamped to t = 0, the start pose, as t beyond the duration gives the end (documented: times clamped)")
+
+row("Trajectory.sample", "out of dtype int64", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([0.0, 0.1], out=np.zeros((2, 4, 4), dtype=np.int64)), V,
+    "out: expected a writeable C-contiguous float64 array of shape (2, 4, 4), got dtype int64")
+row("Trajectory.sample", "out of one sample for two times", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([0.0, 0.1], out=np.zeros((4, 4))), V,
+    "out: expected a writeable C-contiguous float64 array of shape (2, 4, 4), got shape (4, 4)")
+row("Trajectory.sample_xyzuvw", "out a list", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample_xyzuvw(0.1, out=[0.0] * 6), V,
+    "out: expected a writeable C-contiguous float64 array of shape (6,), got list")
+row("Trajectory.body_twist", "out not contiguous (every other row)", lambda: dispkin.plan(LINE, good_set(), LIMITS).body_twist([0.0, 0.1], out=np.zeros((4, 6))[::2]), V,
+    "out: expected a writeable C-contiguous float64 array of shape (2, 6), got a non-contiguous array (strides (96, 8))")
+row("Trajectory.path_velocity", "read-only out", lambda: dispkin.plan(LINE, good_set(), LIMITS).path_velocity([0.0, 0.1], out=np.frombuffer(bytes(16))), V,
+    "out: expected a writeable C-contiguous float64 array of shape (2,), got a read-only array")
+row("Trajectory.path_position", "out of shape (2,) for a number", lambda: dispkin.plan(LINE, good_set(), LIMITS).path_position(0.1, out=np.zeros(2)), V,
+    "out: expected a writeable C-contiguous float64 array of shape () or (1,), got shape (2,)")
+row("Trajectory.body_acceleration", "out of dtype float32", lambda: dispkin.plan(LINE, good_set(), LIMITS).body_acceleration(0.1, out=np.zeros(6, dtype=np.float32)), V,
+    "out: expected a writeable C-contiguous float64 array of shape (6,), got dtype float32")
+row("OverlappedTrajectory.sample", "out of dtype float32", lambda: overlapped().sample(0.1, out=np.zeros((4, 4), dtype=np.float32)), V,
+    "out: expected a writeable C-contiguous float64 array of shape (4, 4), got dtype float32")
+row("TrajectoryCursor.sample", "NaN time", lambda: dispkin.plan(LINE, good_set(), LIMITS).cursor().sample(NAN, np.zeros(15)), V, "t = nan: must be finite")
+row("TrajectoryCursor.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).cursor().sample(INF, np.zeros(15)), V, "t = inf: must be finite")
+row("TrajectoryCursor.sample", "out of shape (17,)", lambda: dispkin.plan(LINE, good_set(), LIMITS).cursor().sample(0.1, np.zeros(17)), V,
+    "out: expected a writeable C-contiguous float64 array of shape (15,), got shape (17,)")
+row("TrajectoryCursor.sample", "out of dtype int64", lambda: dispkin.plan(LINE, good_set(), LIMITS).cursor().sample(0.1, np.zeros(15, dtype=np.int64)), V,
+    "out: expected a writeable C-contiguous float64 array of shape (15,), got dtype int64")
+row("TrajectoryCursor.sample", "read-only out", lambda: dispkin.plan(LINE, good_set(), LIMITS).cursor().sample(0.1, np.frombuffer(bytes(120))), V,
+    "out: expected a writeable C-contiguous float64 array of shape (15,), got a read-only array")
 
 row("OverlappedTrajectory", "negative overlap", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), -0.5), V, "overlap = -0.5")
 row("OverlappedTrajectory", "overlap longer than a move", lambda: dispkin.OverlappedTrajectory(trajectory(), trajectory(), 1e3), V, "overlap = 1000: must be between 0 and the shorter move's duration")
