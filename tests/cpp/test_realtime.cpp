@@ -127,7 +127,7 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
   chain.then(Path::lin(b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))));
   Path blended = Path::lin(a, b);
   blended.then(Path::lin(b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))), 0.05);
-  const std::vector<Trajectory> trajectories = {
+  std::vector<Trajectory> trajectories = {
       plan(Path::lin(a, b), set, Limits{0.1, 0.5, 5.0}),
       plan(Path::lin(a, b, Interpolation::screw), set, Limits{0.1, 0.5, std::nullopt}, ProfileKind::trapezoid),
       plan(Path::circ(a, via, b), set, Limits{0.1, 0.5, 5.0}),
@@ -135,6 +135,12 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
       plan(blended, set, Limits{0.1, 0.5, 5.0}),
       plan(Path::spline({a, via, b, Posed(b.quaternion(), V(0.3, 0.4, 0.1))}), set, Limits{0.1, 0.5, 5.0}),
   };
+  // After events (doc/events.md): a stop, an override, a stop resumed; their cut laws included.
+  const Trajectory chained = trajectories[3], blended_traj = trajectories[4], screw = trajectories[1];
+  trajectories.push_back(chained.stopped_at(0.4 * chained.duration()));
+  trajectories.push_back(chained.with_override(0.3 * chained.duration(), 0.5).with_override(0.6 * chained.duration(), 1.0));
+  trajectories.push_back(blended_traj.stopped_at(0.5 * blended_traj.duration()).resumed_at(blended_traj.duration()));
+  trajectories.push_back(screw.stopped_at(0.5 * screw.duration()));
   constexpr int kTimes = 20000;
   std::vector<double> times(kTimes);
   std::vector<TrajectorySample> out(kTimes);
