@@ -12,6 +12,7 @@
 #include "dispkin/path/curve_section.hpp"
 #include "dispkin/path/path.hpp"
 #include "dispkin/profile.hpp"
+#include "dispkin/planning/motion_stream.hpp"
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/planning/overlap.hpp"
 #include "dispkin/planning/retiming.hpp"

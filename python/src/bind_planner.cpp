@@ -1,5 +1,5 @@
 // Python binding of dispkin/planning/planner.hpp: Limits, plan, Trajectory (with TrajectoryCursor for
-// control loops), OverlappedTrajectory.
+// control loops), OverlappedTrajectory, MotionStream.
 #include <array>
 #include <optional>
 #include <string>
@@ -17,6 +17,7 @@
 #include "value_protocol.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/hexapod/hexapod.hpp"
+#include "dispkin/planning/motion_stream.hpp"
 #include "dispkin/planning/overlap.hpp"
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/planning/trajectory_acceleration.hpp"
@@ -157,7 +158,7 @@ std::string with_out(const char* doc) {
          "place and returned instead of a new array (ValueError naming `out` and what it is otherwise).";
 }
 
-// The sampling methods shared by Trajectory and OverlappedTrajectory.
+// The sampling methods shared by Trajectory, OverlappedTrajectory and MotionStream.
 template <typename T>
 void add_sampling(py::class_<T>& cls) {
   cls
@@ -405,6 +406,38 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
         return "OverlappedTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
       });
   add_sampling(overlapped);
+
+  py::class_<MotionStream> stream(m, "MotionStream", R"doc(
+Moves appended while the motion runs (doc/events.md section 5): what is planned always ends at rest
+at the last appended pose; a move appended while the motion still runs ahead of its join is joined
+without a stop (corners blended within `corner_tolerance` as `plan` does), a late one starts from rest.
+`stop`, `resume` and `set_override` act at any time. Every request at time t leaves the motion
+before t as it was, bit for bit; requests come in time order. Sample it at any times (seconds).)doc");
+  stream
+      .def(py::init([](const MetricSetd& set, const Limits& limits, const std::string& profile, double corner_tolerance) {
+             return MotionStream(set, limits, profile_kind(profile), corner_tolerance);
+           }),
+           py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::arg("corner_tolerance") = 0.0,
+           "An empty stream under the metric set and limits, with the \"scurve\" or \"trapezoid\" law; corners blended "
+           "within corner_tolerance (m; 0 stops at every corner).")
+      .def("append", &MotionStream::append, py::arg("path"), py::arg("t"),
+           "Appends `path` (it starts where the last appended move ends) at time t (s, not before the last request).")
+      .def("stop", &MotionStream::stop, py::arg("t"),
+           "Stops on the path from the state at t as fast as the limits allow; moves appended while stopped wait for resume.")
+      .def("resume", &MotionStream::resume, py::arg("t"), "Goes on at t through every move appended. ValueError unless stopped.")
+      .def("set_override", &MotionStream::set_override, py::arg("t"), py::arg("factor"),
+           "The speed override from t on (factor in [0.001, 10], relative to the limits as planned).")
+      .def_property_readonly("duration", &MotionStream::duration, "When what is planned now ends, at rest (s).")
+      .def("done", &MotionStream::done, py::arg("t"), "Whether the motion has run everything planned by t.")
+      .def_property_readonly("stopped", &MotionStream::stopped, "Whether a stop holds the motion until resume.")
+      .def_property_readonly("override_factor", &MotionStream::override_factor, "The override in force.")
+      .def_property_readonly("waiting_moves", &MotionStream::waiting_moves, "Moves appended while stopped.")
+      .def_property_readonly("leg_count", &MotionStream::leg_count,
+                             "Stretches of motion from rest (a move appended too late to be joined starts a new one).")
+      .def("__repr__", [](const MotionStream& s) {
+        return "MotionStream(duration=" + float_repr(s.duration()) + ", legs=" + std::to_string(s.leg_count()) + ")";
+      });
+  add_sampling(stream);
 
   m.def(
       "plan",

@@ -103,8 +103,8 @@ Trajectory Trajectory::stopped_at(double t) const {
     const auto near = [&](double s) { return std::abs(s - s_end) <= tol; };
     if (std::none_of(rests.begin(), rests.end(), near))
       rests.insert(std::upper_bound(rests.begin(), rests.end(), s_end), s_end);
-    if (std::none_of(stops.begin(), stops.end(), [&](const Stop& x) { return near(x.s); })) {
-      const auto after = std::upper_bound(stops.begin(), stops.end(), s_end, [](double s, const Stop& x) { return s < x.s; });
+    if (std::none_of(stops.begin(), stops.end(), [&](const Stop& other) { return near(other.s); })) {
+      const auto after = std::upper_bound(stops.begin(), stops.end(), s_end, [](double s, const Stop& other) { return s < other.s; });
       stops.insert(after, Stop{s_end, stopped_reason + number(at) + " s"});
     }
   }
@@ -187,6 +187,109 @@ Trajectory Trajectory::with_override(double t, double factor) const {
   TimeLaw law = law_.before(at);
   append_continuation(law, x, speed_limits_, rest_s_, length(), limits, factor);
   return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+}
+
+namespace {
+
+// Where `longer` takes over from `path` (doc/events.md §5): the first start of a section as
+// planned (τ = 0 of planned section i, or the end of `path`) at or after s that both hold at the
+// same pose, bit for bit; `here` and `there` index the trajectory sections starting there.
+struct Splice {
+  std::size_t here, there;
+};
+
+SectionSource source_of(const Trajectory& traj, std::size_t k) {
+  return traj.section_sources().empty() ? SectionSource{k, 0.0, 1.0} : traj.section_sources()[k];
+}
+
+std::optional<Splice> splice_point(const Trajectory& path, const Trajectory& longer, double s) {
+  const std::size_t n = path.section_count(), m = longer.section_count();
+  std::size_t there = 0;
+  for (std::size_t here = path.path().section_at(s, n); here <= n; ++here) {
+    const bool end = here == n;
+    if (!end && (path.path().section_start(here) < s || source_of(path, here).tau_start != 0.0)) continue;
+    if (end && source_of(path, n - 1).tau_end != 1.0) break;
+    const std::size_t planned = end ? source_of(path, n - 1).section + 1 : source_of(path, here).section;
+    while (there < m && source_of(longer, there).section < planned) ++there;
+    if (there == m) break;
+    const SectionSource other = source_of(longer, there);
+    if (other.section != planned || other.tau_start != 0.0) continue;
+    Posed a, b;
+    Twistd ta, tb;
+    if (end)
+      path.path().section_state_at(n - 1, 1.0, a, ta);
+    else
+      path.path().section_state_at(here, 0.0, a, ta);
+    longer.path().section_state_at(there, 0.0, b, tb);
+    if (a.matrix() == b.matrix()) return Splice{here, there};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
+  require_time(t);
+  const TimeLawLimits& limits = limits_of(limits_, "continued_on");
+  const double at = std::max(t, 0.0);
+  TimeLaw law = law_.before(at);
+  ProfileState x = state_at(law_, at);
+  if (at > duration()) {
+    const double wait = at - duration(), no_jerk = 0.0;
+    law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
+    x = ProfileState{end_s_, 0.0, 0.0, 0.0};
+  }
+  const std::optional<Splice> splice = splice_point(*this, longer, x.s);
+  if (!splice)
+    throw std::invalid_argument(describe("longer", "Trajectory", "must go on from a section start of this path ahead of s = " +
+                                                                    number(x.s) + " m (the position at t = " + number(at) +
+                                                                    " s), at the same pose: it is no plan of this path extended"));
+  // This path up to the splice, longer's from there on, its positions moved by Δ.
+  const std::size_t here = splice->here, there = splice->there;
+  const double s_here = here == section_count() ? length() : path_.section_start(here);
+  const double shift = s_here - longer.path_.section_start(there), tol = 1e-9 * std::max(length(), longer.length());
+  std::vector<Section> sections(path_.sections().begin(), path_.sections().begin() + static_cast<std::ptrdiff_t>(here));
+  std::vector<double> lengths(path_.section_lengths().begin(), path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(here));
+  sections.insert(sections.end(), longer.path_.sections().begin() + static_cast<std::ptrdiff_t>(there), longer.path_.sections().end());
+  lengths.insert(lengths.end(), longer.path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(there),
+                 longer.path_.section_lengths().end());
+  std::vector<SectionSource> sources;
+  if (!sources_.empty() && !longer.sources_.empty()) {
+    sources.assign(sources_.begin(), sources_.begin() + static_cast<std::ptrdiff_t>(here));
+    sources.insert(sources.end(), longer.sources_.begin() + static_cast<std::ptrdiff_t>(there), longer.sources_.end());
+  }
+  std::vector<SpeedLimit> spans;
+  for (const SpeedLimit& span : speed_limits_) {
+    if (span.start_s >= s_here - tol) break;
+    spans.push_back(span);
+    spans.back().length = std::min(span.length, s_here - span.start_s);
+  }
+  for (const SpeedLimit& span : longer.speed_limits_) {
+    const double from = std::max(span.start_s, s_here - shift);
+    if (span.start_s + span.length <= from + tol) continue;
+    spans.push_back(span);
+    spans.back().start_s = from + shift;
+    spans.back().length = span.start_s + span.length - from;
+  }
+  // The rests and stops of this path before the splice (not a stop of an event: the motion goes
+  // on from it), longer's from it on.
+  const auto event_stop_at = [&](double s) {
+    return std::any_of(stops_.begin(), stops_.end(), [&](const Stop& stop) { return is_stop_of_event(stop) && std::abs(stop.s - s) <= tol; });
+  };
+  std::vector<double> rests;
+  std::vector<Stop> stops;
+  for (double r : rest_s_)
+    if (r < s_here - tol && !(r > 0.0 && event_stop_at(r))) rests.push_back(r);
+  for (double r : longer.rest_s_)
+    if (r >= s_here - shift - tol) rests.push_back(r + shift);
+  for (const Stop& stop : stops_)
+    if (stop.s < s_here - tol && !is_stop_of_event(stop)) stops.push_back(stop);
+  for (const Stop& stop : longer.stops_)
+    if (stop.s >= s_here - shift - tol) stops.push_back(Stop{stop.s + shift, stop.reason});
+  SampledPath spliced(std::move(sections), std::move(lengths));
+  append_continuation(law, x, spans, rests, spliced.length(), limits, override_);
+  return Trajectory(std::move(spliced), std::move(law), std::move(spans), std::move(rests), std::move(stops), std::move(sources),
+                    limits_, override_);
 }
 
 }  // namespace dispkin

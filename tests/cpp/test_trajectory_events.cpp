@@ -52,7 +52,9 @@ void expect_within_limits(const Trajectory& traj, const TimeLawLimits& limits, d
     if (limits.jerk) highest_jerk = std::max(highest_jerk, std::abs(x.s_ddot - before.s_ddot) / dt);
     before = x;
   }
-  if (limits.jerk) EXPECT_LE(highest_jerk, *limits.jerk * (1.0 + 1e-6)) << what;
+  if (limits.jerk) {
+    EXPECT_LE(highest_jerk, *limits.jerk * (1.0 + 1e-6)) << what;
+  }
 }
 
 struct Case {
@@ -178,7 +180,9 @@ TEST(TrajectoryEvents, AnOverrideHoldsTheScaledLimitsAndComposes) {
           if (x.s >= span.start_s - 1e-9 && x.s <= span.start_s + span.length + 1e-9) limit = std::max(limit, factor * span.limit);
         // Above the new limit only while easing down from the state at t.
         ASSERT_LE(x.s_dot, std::max(carried, limit) * (1.0 + 1e-9)) << what << " t " << at;
-        if (at >= eased) ASSERT_LE(x.s_dot, limit * (1.0 + 1e-6)) << what << " t " << at;
+        if (at >= eased) {
+          ASSERT_LE(x.s_dot, limit * (1.0 + 1e-6)) << what << " t " << at;
+        }
       }
       EXPECT_GT(slower.duration(), c.traj.duration() * (1.0 - 1e-9)) << what;
     }

@@ -141,6 +141,13 @@ class Trajectory {
   //! [min_override, max_override]. Composes: the factor is relative to the curve as planned, not to the last override.
   //! A stopped trajectory keeps its stop and resumes at the new factor.
   Trajectory with_override(double t, double factor) const;
+  //! Goes on at t over `longer`, a plan of this path extended (doc/events.md §5): the same motion
+  //! up to t, then from the state there to the end of `longer`: this path up to the first start
+  //! of a section as planned ahead of the state that `longer` holds at the same pose, longer's
+  //! path and velocity-limit curve from there, at the override in force. Throws
+  //! std::invalid_argument naming `longer` where it holds no such start ahead of the state (the
+  //! state is past where the paths part), or this trajectory holds no limits.
+  Trajectory continued_on(double t, const Trajectory& longer) const;
   //!@}
 
   //! What the time law keeps to, if known (plan() gives them; with_time_law() does not).
