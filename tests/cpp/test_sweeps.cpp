@@ -101,6 +101,100 @@ TEST(Sweep, GuaranteeSlerpBlendedChain) {
   record("guarantee_slerp_blended_chain", n, worst);
 }
 
+// Events on random plans (doc/events.md): each case a random path of every family, a random set
+// and limits, then three events at random instants (a stop, a resumption of a stopped motion, an
+// override of 0.1–2); after each the motion before it is the same bit for bit (at 4 random
+// instants), and the result keeps the point-set limit (32 random instants), |s̈| ≤ a_max, ṡ ≥ 0,
+// and ends at rest where it should: the path's end, or its pose where it stopped. A tenth of the
+// count: a case plans once and applies three events.
+TEST(Sweep, GuaranteeWithEvents) {
+  Random rnd(9108);
+  const int n = std::max(50, sweep_count() / 10);
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const Path path = testing::random_path(rnd, i % 6);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    const Limits limits = testing::random_limits(rnd, v, kind);
+    Trajectory traj = plan(path, set, limits, kind);
+    for (int e = 0; e < 3; ++e) {
+      const double t = rnd.uniform(0.0, traj.duration() * 1.05);
+      const Trajectory next = traj.stopped() ? traj.resumed_at(t)
+                              : rnd.integer(0, 1) ? traj.stopped_at(t)
+                                                  : traj.with_override(t, rnd.uniform(0.1, 2.0));
+      for (int k = 0; k < 4; ++k) {
+        const double before = rnd.uniform(0.0, std::min(t, traj.duration()));
+        const TrajectorySample a = traj.sample(before), b = next.sample(before);
+        ASSERT_TRUE(a.s == b.s && a.s_dot == b.s_dot && a.pose.matrix() == b.pose.matrix())
+            << "events, case " << i << " event " << e << " at " << t << ": changed at " << before;
+      }
+      traj = next;
+      const double ratio = testing::worst_speed_ratio_at_random_times(traj, set, v, 32, rnd);
+      worst = std::max(worst, ratio);
+      ASSERT_LE(ratio, 1.0 + 1e-6) << "events, case " << i << " event " << e;
+      for (int k = 0; k < 8; ++k) {
+        const TrajectorySample x = traj.sample(rnd.uniform(0.0, traj.duration()));
+        ASSERT_LE(std::abs(x.s_ddot), limits.acceleration * (1.0 + 1e-9)) << "events, case " << i << " event " << e;
+        ASSERT_GE(x.s_dot, -1e-12 * v) << "events, case " << i << " event " << e;
+      }
+      const TrajectorySample end = traj.sample(traj.duration());
+      Posed expected;
+      Twistd twist;
+      traj.path_state(traj.end_position(), expected, twist);
+      ASSERT_TRUE(end.pose.is_approx(traj.stopped() ? expected : path.end(), 1e-9)) << "events, case " << i << " event " << e;
+      ASSERT_LE(std::abs(end.s_dot), 1e-9 * v) << "events, case " << i << " event " << e;
+    }
+  }
+  record("guarantee_with_events", n, worst);
+}
+
+// Streams (doc/events.md §5): random LIN moves appended at random times — in time or late —
+// with stops, resumptions and overrides between them; after each request the motion before it is
+// the same bit for bit, and the whole stream keeps the point-set limit and ends at rest at the
+// last pose. A twentieth of the count: a case plans its leg again at every append.
+TEST(Sweep, StreamsWithRandomRequests) {
+  Random rnd(9109);
+  const int n = std::max(20, sweep_count() / 20);
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double v = rnd.uniform(0.05, 1.0);
+    const MetricSetd set = testing::random_set(rnd, v);
+    const ProfileKind kind = rnd.integer(0, 1) ? ProfileKind::scurve : ProfileKind::trapezoid;
+    const Limits limits = testing::random_limits(rnd, v, kind);
+    MotionStream stream(set, limits, kind, rnd.integer(0, 2) ? rnd.uniform(1e-4, 1e-2) : 0.0);
+    Posed last = rnd.pose(0.5);
+    double t = 0.0;
+    for (int r = 0; r < 8; ++r) {
+      const bool moving = stream.leg_count() > 0;  // before the first move the samples are defaults
+      const double probe = rnd.uniform(0.0, t);
+      const TrajectorySample at_probe = stream.sample(probe);
+      const int what = stream.stopped() ? 3 : rnd.integer(0, 5);
+      if (what <= 3 && !stream.stopped()) {
+        const Posed next = rnd.nearby(last, rnd.uniform(0.01, 0.3), rnd.uniform(0.0, 0.5));
+        stream.append(Path::lin(last, next), t);
+        last = next;
+      } else if (what == 3) {
+        stream.resume(t);
+      } else if (what == 4 && stream.leg_count() > 0) {
+        stream.stop(t);
+      } else {
+        stream.set_override(t, rnd.uniform(0.2, 1.5));
+      }
+      const TrajectorySample again = stream.sample(probe);
+      ASSERT_TRUE(!moving || (again.s == at_probe.s && again.pose.matrix() == at_probe.pose.matrix()))
+          << "stream " << i << " request " << r << " (" << what << ") at " << t << ": changed at " << probe;
+      t += rnd.uniform(0.0, 1.2) * std::max(stream.duration() - t, 0.05);
+    }
+    if (stream.stopped()) stream.resume(t);
+    const double ratio = testing::worst_speed_ratio_at_random_times(stream, set, v, 64, rnd);
+    worst = std::max(worst, ratio);
+    ASSERT_LE(ratio, 1.0 + 1e-6) << "stream " << i;
+    ASSERT_TRUE(stream.sample(stream.duration()).pose.is_approx(last, 1e-9)) << "stream " << i;
+  }
+  record("streams_with_random_requests", n, worst);
+}
+
 TEST(Sweep, GuaranteeDecoupledLin) { guarantee_sweep(0, 9100); }
 TEST(Sweep, GuaranteeScrewLin) { guarantee_sweep(1, 9101); }
 TEST(Sweep, GuaranteeCirc) { guarantee_sweep(2, 9102); }
