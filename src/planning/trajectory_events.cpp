@@ -52,9 +52,13 @@ double smallest_acceleration(const std::vector<SpeedLimit>& spans, double s0, do
 }
 
 // The state at t (clamped to the motion) of `law`.
+// The state at t (clamped to the motion) of `law`; ṡ at least 0 (a law ending at rest may give
+// −1e-34 by rounding, and no law runs backwards).
 ProfileState state_at(const TimeLaw& law, double t) {
   std::size_t piece = law.size();
-  return law.state_at(std::clamp(t, 0.0, law.duration()), piece);
+  ProfileState x = law.state_at(std::clamp(t, 0.0, law.duration()), piece);
+  x.v = std::max(x.v, 0.0);
+  return x;
 }
 
 const TimeLawLimits& limits_of(const std::optional<TimeLawLimits>& limits, const char* what) {
@@ -90,9 +94,12 @@ Trajectory Trajectory::stopped_at(double t) const {
     a = a_spans;
     stop = detail::fastest_stop(x.v, x.a, a, limits.jerk);
   }
+  // The run ends with the stop; at rest between runs (or where the motion ended) it has ended
+  // already.
+  const bool running = stop || law.size() == 0 || law.pieces().back().cut;
   if (stop) law.append(*stop, x.s);
   if (law.size() == 0) law.append(Profile::trapezoid(0.0, 1.0, 1.0), 0.0);  // stopped before it started
-  law.end_run();
+  if (running || law.run_count() == 0) law.end_run();
   // Where it rests is a rest of the trajectory, with its reason (unless it is one already: a
   // corner, or the start).
   const TimeLaw::Piece& last = law.pieces().back();

@@ -312,6 +312,30 @@ row("Trajectory.with_override", "factor 0", lambda: trajectory().with_override(0
 row("Trajectory.with_override", "factor above 10", lambda: trajectory().with_override(0.1, 11.0), V, "factor = 11: must be in [0.001, 10]")
 row("Trajectory.with_override", "factor not a number", lambda: trajectory().with_override(0.1, "fast"), TypeError, "incompatible function arguments")
 row("Trajectory.resumed_at", "not stopped", lambda: trajectory().resumed_at(0.1), V, "t = 0.1: resumes a stopped trajectory only")
+
+
+def stream(*requests):
+    """A MotionStream of LINE's tool and limits after `requests` (callables on it)."""
+    s = dispkin.MotionStream(good_set(), LIMITS)
+    for request in requests:
+        request(s)
+    return s
+
+
+row("MotionStream", "negative corner tolerance", lambda: dispkin.MotionStream(good_set(), LIMITS, corner_tolerance=-1.0), V,
+    "corner_tolerance = -1: must be finite and not negative")
+row("MotionStream", "S-curve without jerk", lambda: dispkin.MotionStream(good_set(), TRAPEZOID_LIMITS), V, "jerk is missing")
+row("MotionStream.append", "a move that does not start where the last ends", lambda: stream(
+    lambda s: s.append(LINE, 0.0), lambda s: s.append(LINE, 1.0)), V, "path.start")
+row("MotionStream.append", "a request before the last one", lambda: stream(
+    lambda s: s.append(LINE, 2.0), lambda s: s.set_override(1.0, 0.5)), V, "t = 1: must be finite and not before the last request")
+row("MotionStream.append", "NaN time", lambda: stream(lambda s: s.append(LINE, NAN)), V, "t = nan")
+row("MotionStream.stop", "nothing appended", lambda: stream(lambda s: s.stop(0.0)), V, "nothing was appended yet")
+row("MotionStream.stop", "stopped already", lambda: stream(
+    lambda s: s.append(LINE, 0.0), lambda s: s.stop(0.1), lambda s: s.stop(0.2)), V, "it is stopped already")
+row("MotionStream.resume", "not stopped", lambda: stream(lambda s: s.append(LINE, 0.0), lambda s: s.resume(0.1)), V,
+    "resumes a stopped motion only")
+row("MotionStream.set_override", "factor 0", lambda: stream(lambda s: s.set_override(0.0, 0.0)), V, "factor = 0: must be in [0.001, 10]")
 row("Trajectory.sample", "+inf time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([INF]), V, "times = inf")
 accepted("Trajectory.sample", "negative time", lambda: dispkin.plan(LINE, good_set(), LIMITS).sample([-1.0]),
          lambda m: np.allclose(m[0], A.matrix(), atol=0), "clamped to t = 0, the start pose, as t beyond the duration gives the end (documented: times clamped)")
