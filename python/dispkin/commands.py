@@ -15,6 +15,7 @@ from typing import Any, Dict, List, Optional, TextIO, Tuple
 import numpy as np
 
 from . import Trajectory
+from .job.events import events_text
 from .job.violations import Violation
 from .progress import Progress
 
@@ -73,6 +74,8 @@ def run_check(job_file: str, out: TextIO) -> int:
         print(f"  joint accelerations: {np.round(job.joint_acceleration, 6).tolist()} (checked in the output)", file=out)
     if job.retime is not None:
         print(f"  re-timed to the joint limits: method {job.retime.method}", file=out)
+    if job.events:
+        print(f"  events: {events_text(job.events)} (applied in this order to the planned trajectory)", file=out)
     print(f"  output: every {job.sample_period:g} s -> {job.outputs['csv']}, {job.outputs['json']}, {job.outputs['summary']}", file=out)
     return 0
 
@@ -228,9 +231,14 @@ def require_matplotlib() -> None:
                        "(or pip install matplotlib)") from error
 
 
+#: Most points of the path-velocity and point-speed curves of `dispkin plan --plot`.
+PLOT_POINTS = 100_000
+
+
 def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -> List[pathlib.Path]:
-    """PNGs of the job's trajectory: path velocity and point speeds; with a machine also its
-    joints (hexapod legs or arm joints) against their position ranges and velocity limits."""
+    """PNGs of the job's trajectory: path velocity and point speeds, with the times of the job's
+    events as vertical lines; with a machine also its joints (hexapod legs or arm joints)
+    against their position ranges and velocity limits."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -242,8 +250,13 @@ def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -
     machine = job.hexapod is not None or job.arm is not None
     rows = 3 if machine else 1
     figure, axes = plt.subplots(rows, 1, figsize=(7, 3.2 * rows), sharex=True, constrained_layout=True, squeeze=False)
-    plots.point_speed(trajectory, job.metric_set, system_velocity=job.limits.velocity, ax=axes[0][0])
+    # Every millisecond, at most PLOT_POINTS times (a long wait at rest between a stop and its
+    # resumption would otherwise make 10⁸ points).
+    step = max(1e-3, trajectory.duration / PLOT_POINTS)
+    plots.point_speed(trajectory, job.metric_set, system_velocity=job.limits.velocity, step=step, ax=axes[0][0])
     axes[0][0].set_title(f"{job.name}: path velocity and the fastest point (limit dashed)")
+    if job.events:
+        _mark_events(axes[0][0], job.events)
     if job.hexapod is not None:
         h = job.hexapod
         plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
@@ -258,3 +271,21 @@ def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -
     plots.save([axes[0][0]], str(path))
     plt.close(figure)
     return [path]
+
+
+#: Colours of the event lines in the plots, by kind.
+_EVENT_COLOURS = {"stop": "tab:red", "resume": "tab:green", "override": "tab:purple"}
+
+
+def _mark_events(ax, events) -> None:
+    """The times of the events as dotted vertical lines, one legend entry per kind, an
+    override's factor written at the top of its line."""
+    labelled = set()
+    for event in events:
+        label = None if event.kind in labelled else event.kind
+        labelled.add(event.kind)
+        ax.axvline(event.at, color=_EVENT_COLOURS[event.kind], ls=":", lw=1.2, label=label)
+        if event.kind == "override":
+            ax.annotate(f"×{event.factor:g}", (event.at, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10),
+                        textcoords="offset points", fontsize="small", color=_EVENT_COLOURS["override"])
+    ax.legend(loc="lower center", fontsize="small", ncol=2)

@@ -16,7 +16,7 @@ import dispkin
 from dispkin import _core
 
 PYTHON_MODULES = ["dispkin", "dispkin.jobs", "dispkin.job", "dispkin.job.reader", "dispkin.job.schema", "dispkin.job.model",
-                  "dispkin.job.builder", "dispkin.job.planning", "dispkin.job.sampling", "dispkin.job.summary",
+                  "dispkin.job.builder", "dispkin.job.events", "dispkin.job.planning", "dispkin.job.sampling", "dispkin.job.summary",
                   "dispkin.job.export", "dispkin.job.violations", "dispkin.job.machine_limits", "dispkin.cli", "dispkin.progress",
                   "dispkin.commands", "dispkin.demo", "dispkin.limits_files", "dispkin.plots",
                   "dispkin.shapes"]

@@ -150,8 +150,9 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     out = tmp_path / "out"
     header, table = read_csv(out / job.outputs["csv"])
     document = json.loads((out / job.outputs["json"]).read_text())
-    # The same job through the Python API (part by part when it has PTP moves).
-    if job.has_ptp:
+    # The same job through the Python API (part by part when it has PTP moves; with its events
+    # applied when it has some, tests/python/test_job_events.py).
+    if job.has_ptp or job.events:
         traj = jobs.plan_job(job)
     else:
         traj = dispkin.plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=job.hexapod if job.joint_metric else None,

@@ -27,6 +27,7 @@ import numpy as np
 from .. import _core, shapes
 from .._core import Hexapod, Limits, MetricSet, Path, Pose, WorkToolFrames
 from ..limits_files import PilzCartesianLimits
+from .events import read_events
 from .machine_limits import job_limits, read_limits_files, read_retime
 from . import limits as resource_limits
 from .model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, value_at
@@ -583,6 +584,7 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     path_, moves, parts = builder.moves(job, start)
     limits, profile = builder.limits(pilz)
     read_retime(builder, job)
+    read_events(builder, job, parts)
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
     return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,

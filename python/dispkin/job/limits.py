@@ -38,6 +38,10 @@ MAX_SCALAR_CHARS = 4096
 MAX_SAMPLES = 10_000_000
 #: Shortest output.sample_period (s): a microsecond, below any controller's cycle.
 MIN_SAMPLE_PERIOD = 1e-6
+#: Most entries of a job's `events`: each plans the rest of the motion anew from its state (a
+#: few milliseconds on a path of 10² sections), so 10³ events take seconds, where the node limit
+#: alone would allow 10⁵ of them and minutes.
+MAX_EVENTS = 1000
 
 
 #: Bytes read at a time: a file larger than the limit is never read beyond limit + one block.

@@ -92,6 +92,22 @@ class Retime:
 
 
 @dataclasses.dataclass
+class Event:
+    """One entry of the job's `events`: at `at` seconds of the motion, a stop on the path
+    (Trajectory.stopped_at), a resumption of the stopped motion (resumed_at) or a speed
+    override (with_override) of `factor` times the velocity-limit curve as planned."""
+
+    #: Seconds from the start of the motion, on the clock of the events before it.
+    at: float
+    #: "stop", "resume" or "override".
+    kind: str
+    #: The override factor (None for a stop or a resumption).
+    factor: Optional[float]
+    #: Its index in the job's `events` list (the key path of messages is ("events", index)).
+    index: int
+
+
+@dataclasses.dataclass
 class Job:
     """A validated job, built into the library's objects (see :func:`dispkin.jobs.load_job`)."""
 
@@ -140,6 +156,9 @@ class Job:
     source: Optional[Any] = None
     #: The files the job reads besides itself: URDF, hexapod file, limits files (never written).
     inputs: List[pathlib.Path] = dataclasses.field(default_factory=list)
+    #: Stops, resumptions and speed overrides applied, in time order, to the planned
+    #: Cartesian trajectory (doc/events.md); empty: the trajectory as planned.
+    events: List[Event] = dataclasses.field(default_factory=list)
 
     @property
     def has_ptp(self) -> bool:

@@ -12,6 +12,7 @@ import numpy as np
 
 from .. import _core
 from .._core import Path, Trajectory, plan
+from .events import apply_events
 from .model import Job, JobError, Part
 
 
@@ -93,10 +94,12 @@ def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory
 def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     """The job's trajectory: plan(job.path, job.metric_set, job.limits, job.profile), with the
     hexapod as joint metric when the job asks for rule (b), re-timed to the joint limits when
-    it has a `retime` section. A job with PTP moves is planned part by part (a JobTrajectory):
+    it has a `retime` section, and with the job's events (stops, resumptions, speed overrides)
+    applied in time order. A job with PTP moves is planned part by part (a JobTrajectory):
     each Cartesian run as one path, each PTP move on the arm (within its joint velocity limits)."""
     if not job.has_ptp:
-        return _planned(job, job.parts[0] if job.parts else None, lambda: _plan_run(job, job.path, job.q_start))
+        planned = _planned(job, job.parts[0] if job.parts else None, lambda: _plan_run(job, job.path, job.q_start))
+        return apply_events(job, planned)
     planned = []
     for part in job.parts:
         if part.kind == "ptp":

@@ -1,8 +1,9 @@
-"""The summary of a planned job: its duration and length, each metric-set group's peak point
-speed against its limit, the machine's own limits (hexapod legs, serial-arm joint velocities
-and efforts from the URDF or a MoveIt file), the limits the trajectory breaks (see
-:mod:`~dispkin.job.violations`), and which limit binds — never one that is broken;
-:func:`summary_text` is what ``dispkin plan`` prints.
+"""The summary of a planned job: its duration and length, where the motion ends (the end of
+its path, or where a stop among its events left it), each metric-set group's peak point speed
+against its limit, the machine's own limits (hexapod legs, serial-arm joint velocities and
+efforts from the URDF or a MoveIt file), the limits the trajectory breaks (see
+:mod:`~dispkin.job.violations`), the events applied (see :mod:`~dispkin.job.events`), and which
+limit binds — never one that is broken; :func:`summary_text` is what ``dispkin plan`` prints.
 """
 
 import math
@@ -12,6 +13,7 @@ import numpy as np
 
 from .. import _core
 from .._core import Trajectory
+from .events import describe_events, end_of_motion, event_text
 from .model import Job
 from .planning import JobTrajectory
 from .sampling import JobSamples
@@ -26,8 +28,9 @@ _PTP_CHECK_STEP = 1e-3
 
 
 def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: JobSamples) -> Dict[str, Any]:
-    """Duration, per-group peak point speed against its limit, the machine's own limits, and
-    which limit binds (the highest ratio peak / limit, if it reaches BINDING_FRACTION)."""
+    """Duration, where the motion ends, per-group peak point speed against its limit, the
+    machine's own limits, the events applied, and which limit binds (the highest ratio
+    peak / limit, if it reaches BINDING_FRACTION)."""
     v = job.limits.velocity
     ratios: Dict[str, float] = {}
     groups = {}
@@ -37,12 +40,17 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
         groups[str(group)] = {"peak_speed": float(speeds[k]), "time": float(samples.time[k]), "limit": float(limit),
                               "ratio": float(speeds[k] / limit)}
         ratios[f"speed of group {group} ({limit:g} m/s)"] = float(speeds[k] / limit)
+    end_position, completed = end_of_motion(trajectory)
     summary: Dict[str, Any] = {
         "job": job.name,
         "machine": job.machine,
         "moves": [m.kind + (f" ({m.blend_text()})" if m.blend_text() else "") for m in job.moves],
         "duration": float(trajectory.duration),
         "length": float(trajectory.length),
+        # Where the motion ends (m of DISP arc length) and whether that is the end of the path: a
+        # stop among the events may leave it at rest before.
+        "end_position": end_position,
+        "completed": completed,
         "rest_to_rest_pieces": int(trajectory.piece_count),
         "profile": job.profile,
         "limits": {"velocity": v, "acceleration": job.limits.acceleration, "jerk": job.limits.jerk,
@@ -50,7 +58,11 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
                    "angular_acceleration": job.limits.angular_acceleration,
                    "corner_tolerance": job.corner_tolerance},
         # Where a Cartesian run comes to rest inside the path, and why (corners not blended).
-        "stops": [{"s": float(s), "reason": reason} for s, reason in getattr(trajectory, "stops", [])],
+        # (Not those beyond where a stop among the events leaves the motion: it never gets there.)
+        "stops": [{"s": float(s), "reason": reason} for s, reason in getattr(trajectory, "stops", [])
+                  if s <= end_position + 1e-9 * float(trajectory.length)],
+        # The job's stops, resumptions and speed overrides, in the order applied.
+        "events": describe_events(job, trajectory),
         "sample_period": float(job.sample_period),
         "samples": int(len(samples.time)),
         "peak_path_velocity": float(np.max(samples.path_velocity)),
@@ -190,6 +202,8 @@ def _angular_text(lim: Dict[str, Any]) -> str:
 
 #: Moves listed by name in the summary's first line.
 SUMMARY_MOVES = 20
+#: Events described line by line in the summary text (the JSON summary has all of them).
+SUMMARY_EVENTS = 50
 
 
 def summary_text(summary: Dict[str, Any]) -> str:
@@ -203,6 +217,12 @@ def summary_text(summary: Dict[str, Any]) -> str:
     lines = [
         f"job {s['job']}: {len(s['moves'])} move(s) ({moves}), machine: {s['machine']}",
         f"  duration {s['duration']:.4f} s, {s['rest_to_rest_pieces']} rest-to-rest piece(s), path length {s['length']:.6f} m",
+    ]
+    if not s.get("completed", True):
+        share = 100.0 * s["end_position"] / s["length"] if s["length"] > 0.0 else 0.0
+        lines.append(f"  ends STOPPED at s = {s['end_position']:.6f} m of the path's {s['length']:.6f} m ({share:.1f} %): "
+                     "the motion does not reach the end of its path")
+    lines += [
         f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}{_angular_text(lim)}, "
         f"profile {s['profile']}, corner tolerance {lim['corner_tolerance']:g} m",
         f"  peak path velocity {s['peak_path_velocity']:.6f} m/s ({s['samples']} samples, every {s['sample_period']:g} s)",
@@ -223,6 +243,11 @@ def summary_text(summary: Dict[str, Any]) -> str:
                      f"(<= 1 is within the {j.get('limits_from', 'URDF')} limits); within limits: {j['within_limits']}")
     for v in s.get("violations", []):
         lines.append("  LIMIT BROKEN: " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe())
+    events = s.get("events", [])
+    for k, record in enumerate(events[:SUMMARY_EVENTS]):
+        lines.append("  " + event_text(k, record))
+    if len(events) > SUMMARY_EVENTS:
+        lines.append(f"  … {len(events) - SUMMARY_EVENTS} more event(s) (all of them in the JSON summary)")
     for stop in s["stops"]:
         lines.append(f"  stops at s = {stop['s']:.6f} m: {stop['reason']}")
     lines.append(f"  binding limit: {s['binding']}")
