@@ -36,9 +36,12 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
     }
   };
   if (a0 < 0.0 && released <= 0.0) {
-    // Already braking as hard as it may: releasing at once ends at rest, or would run backwards.
-    require(released >= -1e-12 * std::max(v0, a0 * a0 / j), "a0", a0,
-            "brakes too hard for ṡ = " + std::to_string(v0) + ": ṡ reaches 0 before s̈ can return to 0 (it would run backwards)");
+    // Already braking as hard as it may: releasing at once ends at rest. Below the release curve
+    // (released < 0) it would run backwards; the laws of a trajectory reach such states only by
+    // rounding (ṡ within 1e-8 of their speed scale around ṡ = 0), and the stop then starts on the
+    // curve, at ṡ = s̈²/2j: one velocity step of that size, where an exception would leave a feed
+    // hold undone.
+    v0 = std::max(v0, a0 * a0 / (2.0 * j));
     phase(-a0 / j, j);
   } else {
     // Down to the peak deceleration a_p (eq. 2): with no hold, a_p² = (2 j v0 + a0²) / 2; held

@@ -16,8 +16,8 @@ namespace dispkin::detail {
 //! deceleration, held at a_max if it is reached, and back to 0 at full jerk. A state beyond the
 //! limits (|a0| > a_max) eases back onto them at full jerk. Without a jerk limit (the trapezoid)
 //! a0 is not a state: the stop decelerates at a_max. At rest (v0 = 0 and a0 = 0) there is no law.
-//! Throws std::invalid_argument where no stop without running backwards exists (a0 < 0 with
-//! a0² / 2j > v0: ṡ reaches 0 before s̈ can).
+//! A state below the release curve (a0 < 0 with a0² / 2j > v0: ṡ would reach 0 before s̈ can,
+//! which a trajectory's laws reach by rounding only) stops from ṡ = a0² / 2j.
 std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::optional<double> j_max);
 
 //! The law over a run's staircase `segments` (which ends at rest) from the moving state
