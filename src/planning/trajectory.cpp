@@ -92,16 +92,30 @@ double peak_until(const Profile& law, double t) {
 
 }  // namespace
 
-void Trajectory::require_consistent() const {
-  require_sections(path_);
+void Trajectory::require_consistent() const { check(true); }
+
+Trajectory Trajectory::with_events(TimeLaw law, std::vector<double> rests, std::vector<Stop> stops, double factor) const {
+  Trajectory out(*this);  // the copy is not checked again
+  out.law_ = std::move(law);
+  out.rest_s_ = std::move(rests);
+  out.stops_ = std::move(stops);
+  out.override_ = factor;
+  out.end_s_ = out.law_end();
+  out.check(false);
+  return out;
+}
+
+void Trajectory::check(bool sections) const {
+  if (sections) require_sections(path_);
   const double length = path_.length();
   // Positions along the path are sums of lengths: they agree to rounding, 1e-9 of the length.
   const double tol_s = 1e-9 * length;
   require_speed_limits(speed_limits_, length, tol_s);
   const std::vector<TimeLaw::Piece>& pieces = law_.pieces();
   require(!pieces.empty(), "time_law pieces", 0L, "must hold at least one law");
-  require(law_.run_count() >= 1 && law_.run_count() <= pieces.size(), "time_law runs", static_cast<unsigned long>(law_.run_count()),
-          "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()));
+  require_lazily(law_.run_count() >= 1 && law_.run_count() <= pieces.size(), [] { return std::string("time_law runs"); },
+                 static_cast<unsigned long>(law_.run_count()),
+                 [&] { return "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()); });
   std::size_t span = 0;  // the first span the next law may cross
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const TimeLaw::Piece& p = pieces[k];
@@ -125,23 +139,27 @@ void Trajectory::require_consistent() const {
   const TimeLaw::Piece& last = pieces.back();
   const double law_end = last.start_s + last.distance();
   // The law runs to the path's end, or stops before it at rest (stopped_at).
-  require(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, "time_law distance", law_end,
-          "must be the path length, the sum of the section lengths, " + number(length) + " m (or less, stopped at rest)");
+  // (Messages are made on failure only: events check every trajectory they make.)
+  const auto named = [](const char* name) { return [name] { return std::string(name); }; };
+  require_lazily(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, named("time_law distance"), law_end, [&] {
+    return "must be the path length, the sum of the section lengths, " + number(length) + " m (or less, stopped at rest)";
+  });
   if (end_s_ < length) {
     // A stop before the end is a rest of the trajectory, with its reason (stopped_at).
     const auto near = [&](double s) { return std::abs(s - law_end) <= tol_s; };
-    require(std::any_of(stops_.begin(), stops_.end(), [&](const Stop& x) { return near(x.s); }) &&
-                std::any_of(rest_s_.begin(), rest_s_.end(), near),
-            "time_law distance", law_end,
-            "must be the path length, the sum of the section lengths, " + number(length) +
-                " m, unless the motion stopped there: a rest position and a stop at that position");
+    require_lazily(std::any_of(stops_.begin(), stops_.end(), [&](const Stop& x) { return near(x.s); }) &&
+                       std::any_of(rest_s_.begin(), rest_s_.end(), near),
+                   named("time_law distance"), law_end, [&] {
+                     return "must be the path length, the sum of the section lengths, " + number(length) +
+                            " m, unless the motion stopped there: a rest position and a stop at that position";
+                   });
     const ProfileState end = last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
     // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
     double scale_v = last.profile.peak_velocity();
     for (const SpeedLimit& l : speed_limits_) scale_v = std::max(scale_v, l.top());
     const double scale_a = limits_ ? limits_->acceleration : std::abs(end.a);
-    require(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a, "time_law end velocity", end.v,
-            "must be 0 (at rest) where the motion stops before the end of the path, at s = " + number(law_end) + " m");
+    require_lazily(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a, named("time_law end velocity"), end.v,
+                   [&] { return "must be 0 (at rest) where the motion stops before the end of the path, at s = " + number(law_end) + " m"; });
   }
   if (limits_) {
     require(limits_->acceleration >= numeric_range::min_limit && limits_->acceleration <= numeric_range::max_limit,
@@ -150,8 +168,8 @@ void Trajectory::require_consistent() const {
       require(*limits_->jerk >= numeric_range::min_limit && *limits_->jerk <= numeric_range::max_limit, "limits.jerk", *limits_->jerk,
               "must be in [1e-12, 1e12] m/s³");
   }
-  require(override_ >= min_override && override_ <= max_override, "override_factor", override_,
-          "must be in [" + number(min_override) + ", " + number(max_override) + "]");
+  require_lazily(override_ >= min_override && override_ <= max_override, named("override_factor"), override_,
+                 [] { return "must be in [" + number(min_override) + ", " + number(max_override) + "]"; });
   for (std::size_t k = 0; k < rest_s_.size(); ++k) {
     const double s = rest_s_[k];
     require_lazily(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
@@ -160,8 +178,9 @@ void Trajectory::require_consistent() const {
   for (std::size_t k = 0; k < stops_.size(); ++k)
     require_lazily(std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
                    [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
-  require(sources_.empty() || sources_.size() == path_.section_count(), "section_sources size",
-          static_cast<unsigned long>(sources_.size()), "must be 0 or the section count " + std::to_string(path_.section_count()));
+  require_lazily(sources_.empty() || sources_.size() == path_.section_count(), [] { return std::string("section_sources size"); },
+                 static_cast<unsigned long>(sources_.size()),
+                 [&] { return "must be 0 or the section count " + std::to_string(path_.section_count()); });
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const SectionSource& source = sources_[k];
     require_lazily(source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,

@@ -115,7 +115,7 @@ Trajectory Trajectory::stopped_at(double t) const {
       stops.insert(after, Stop{s_end, stopped_reason + number(at) + " s"});
     }
   }
-  return Trajectory(path_, std::move(law), speed_limits_, std::move(rests), std::move(stops), sources_, limits_, override_);
+  return with_events(std::move(law), std::move(rests), std::move(stops), override_);
 }
 
 namespace {
@@ -175,7 +175,7 @@ Trajectory Trajectory::resumed_at(double t) const {
     x = ProfileState{end_s_, 0.0, 0.0, 0.0};
   }
   append_continuation(law, x, speed_limits_, rests, length(), limits, override_);
-  return Trajectory(path_, std::move(law), speed_limits_, std::move(rests), std::move(stops), sources_, limits_, override_);
+  return with_events(std::move(law), std::move(rests), std::move(stops), override_);
 }
 
 Trajectory Trajectory::with_override(double t, double factor) const {
@@ -186,14 +186,14 @@ Trajectory Trajectory::with_override(double t, double factor) const {
   // A stop keeps braking as fast as it can; the new factor holds from the resumption on. At the
   // end nothing is left to run at it.
   if (stopped() || t >= duration())
-    return Trajectory(path_, law_, speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+    return with_events(law_, rest_s_, stops_, factor);
   const double at = std::max(t, 0.0);
   const ProfileState x = state_at(law_, at);
   // Within rounding of the end nothing is left to run at it.
-  if (x.s >= length() * (1.0 - 1e-9)) return Trajectory(path_, law_, speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+  if (x.s >= length() * (1.0 - 1e-9)) return with_events(law_, rest_s_, stops_, factor);
   TimeLaw law = law_.before(at);
   append_continuation(law, x, speed_limits_, rest_s_, length(), limits, factor);
-  return Trajectory(path_, std::move(law), speed_limits_, rest_s_, stops_, sources_, limits_, factor);
+  return with_events(std::move(law), rest_s_, stops_, factor);
 }
 
 namespace {

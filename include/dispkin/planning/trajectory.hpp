@@ -213,6 +213,11 @@ class Trajectory {
 
  private:
   double law_end() const noexcept;  // where the last law ends (the path's length to 1e-9: that length)
+  // This trajectory's path, velocity-limit curve and sources under another law, rests, stops and
+  // override (the events): everything checked as the constructor does but the sections, which
+  // are this trajectory's, checked when it was made.
+  Trajectory with_events(TimeLaw law, std::vector<double> rests, std::vector<Stop> stops, double factor) const;
+  void check(bool sections) const;
 
   SampledPath path_;
   TimeLaw law_;
