@@ -21,6 +21,7 @@ std::atomic<long> eigen_assert_failures{0};
   do {                  \
     if (!(x)) ++eigen_assert_failures; \
   } while (false)
+#include "dispkin/planning/motion_stream.hpp"
 #include "dispkin/planning/overlap.hpp"
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/profile.hpp"
@@ -178,6 +179,36 @@ TEST(Realtime, OverlappedSamplingDoesNotAllocate) {
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum >= 0.0);
 }
+// A MotionStream of two legs (a move joined to the running one, a late one from rest), stopped,
+// resumed and overridden: sampling it, plain or with a cursor, allocates nothing.
+TEST(Realtime, MotionStreamSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  using V = Eigen::Vector3d;
+  const Posed a, b(Eigen::Quaterniond(Eigen::AngleAxisd(0.2, V::UnitZ())), V(0.1, 0.02, 0));
+  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(0.4, V::UnitZ())), V(0.2, 0.0, 0));
+  const Posed d(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V(0.3, 0.03, 0));
+  MotionStream stream(set, Limits{0.1, 0.5, 5.0}, ProfileKind::scurve, 0.002);
+  stream.append(Path::lin(a, b), 0.0);
+  stream.append(Path::lin(b, c), 0.0);
+  stream.stop(0.5);
+  stream.resume(2.0);
+  stream.set_override(2.5, 0.5);
+  stream.append(Path::lin(c, d), stream.duration() + 0.5);
+  ASSERT_EQ(stream.leg_count(), 2u);
+  double checksum = 0.0;
+  const double end = stream.duration();
+  const long allocated = allocations_during([&] {
+    for (int i = 0; i < 20000; ++i) checksum += stream.sample(end * (1.2 * i / 20000 - 0.1)).s_dot;
+    MotionStream::Cursor cursor;
+    for (int i = 0; i < 20000; ++i) checksum += stream.sample(end * (1.2 * i / 20000 - 0.1), cursor).s_dot;
+    for (int i = 20000; i-- > 0;) checksum += stream.sample(end * (1.2 * i / 20000 - 0.1), cursor).s_dot;
+  });
+  EXPECT_EQ(allocated, 0) << "MotionStream::sample allocated";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
+  EXPECT_TRUE(checksum >= 0.0);
+}
+
 // Sampling a path blended by nested SLERP (SlerpBlendSection::at: exp, log and right Jacobians on
 // fixed-size vectors) allocates nothing.
 TEST(Realtime, SlerpBlendSamplingDoesNotAllocate) {
