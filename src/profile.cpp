@@ -16,19 +16,15 @@
 #include <string>
 
 #include "dispkin/error.hpp"
+#include "message_number.hpp"
 
 namespace dispkin {
+
+using detail::number;  // message_number.hpp
 
 namespace {
 
 // --- input checks ----------------------------------------------------------------------------
-
-std::string number(double x) {
-  std::ostringstream out;
-  out.precision(12);
-  out << x;
-  return out.str();
-}
 
 void require_distance(double distance) {
   require(std::isfinite(distance) && distance >= 0.0, "distance", distance, "must be finite and not negative");

@@ -10,15 +10,17 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
 #include "jerk_kernels.hpp"
+#include "message_number.hpp"
 
 namespace dispkin {
+
+using detail::number;  // message_number.hpp
 
 namespace {
 
@@ -289,13 +291,6 @@ double increasing_root(F f, double lo, double hi, double f_lo, double f_hi, doub
 double rounding(double distance) { return 4.0 * std::numeric_limits<double>::epsilon() * distance; }
 
 // --- input checks ------------------------------------------------------------------------------
-
-std::string number(double x) {
-  std::ostringstream out;
-  out.precision(12);
-  out << x;
-  return out.str();
-}
 
 void check_input(double distance, const Limits& lim, double v_start, double a_start, double v_end) {
   require(std::isfinite(distance) && distance >= 0.0, "distance", distance, "must be finite and not negative");

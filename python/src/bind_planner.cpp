@@ -107,9 +107,9 @@ py::object sampled(const Sampled& traj, const py::object& times, const py::objec
   const Times at = times_of(times);
   return shaped(at, shape_tail, out, [&](double* data) {
     const std::vector<double>& t = at.t;
-    if constexpr (std::is_same_v<Sampled, Trajectory>) {
+    if constexpr (std::is_same_v<Sampled, Trajectory> || std::is_same_v<Sampled, MotionStream>) {
       // A cursor: consecutive times (the usual array) find their section without search.
-      Trajectory::Cursor cursor;
+      typename Sampled::Cursor cursor;
       for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
     } else {
       for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);

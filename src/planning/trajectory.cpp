@@ -5,22 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "dispkin/error.hpp"
+#include "../message_number.hpp"
 
 namespace dispkin {
 
-namespace {
+using detail::number;  // message_number.hpp
 
-// A length or speed in a message: 12 digits, as describe() writes values.
-std::string number(double x) {
-  std::ostringstream out;
-  out.precision(12);
-  out << x;
-  return out.str();
-}
+namespace {
 
 std::string indexed(const char* name, std::size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
 

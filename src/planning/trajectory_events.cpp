@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,17 +11,13 @@
 #include "dispkin/planning/trajectory.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
 #include "law_from_state.hpp"
+#include "../message_number.hpp"
 
 namespace dispkin {
 
-namespace {
+using detail::number;  // message_number.hpp
 
-std::string number(double x) {
-  std::ostringstream out;
-  out.precision(12);
-  out << x;
-  return out.str();
-}
+namespace {
 
 // The staircase over [s0, s1] (doc/events.md eq. 5): the parts of the spans there, each limit
 // scaled by the override and capped at the span's ceiling.
@@ -151,6 +146,18 @@ void append_continuation(TimeLaw& law, const ProfileState& x, const std::vector<
 
 }  // namespace
 
+TimeLaw Trajectory::motion_until(double at, ProfileState& x) const {
+  TimeLaw law = law_.before(at);
+  x = state_at(law_, at);
+  if (at > duration()) {
+    // At rest where the motion ended until `at`.
+    const double wait = at - duration(), no_jerk = 0.0;
+    law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
+    x = ProfileState{end_s_, 0.0, 0.0, 0.0};
+  }
+  return law;
+}
+
 Trajectory Trajectory::resumed_at(double t) const {
   require_time(t);
   const TimeLawLimits& limits = limits_of(limits_, "resumed_at");
@@ -166,14 +173,8 @@ Trajectory Trajectory::resumed_at(double t) const {
     if (rest != rests.end() && *rest > 0.0) rests.erase(rest);
   }
   const double at = std::max(t, 0.0);
-  TimeLaw law = law_.before(at);
-  ProfileState x = state_at(law_, at);
-  if (at > duration()) {
-    // At rest where it stopped until t.
-    const double wait = at - duration(), no_jerk = 0.0;
-    law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
-    x = ProfileState{end_s_, 0.0, 0.0, 0.0};
-  }
+  ProfileState x;
+  TimeLaw law = motion_until(at, x);
   append_continuation(law, x, speed_limits_, rests, length(), limits, override_);
   return with_events(std::move(law), std::move(rests), std::move(stops), override_);
 }
@@ -239,13 +240,8 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
   require_time(t);
   const TimeLawLimits& limits = limits_of(limits_, "continued_on");
   const double at = std::max(t, 0.0);
-  TimeLaw law = law_.before(at);
-  ProfileState x = state_at(law_, at);
-  if (at > duration()) {
-    const double wait = at - duration(), no_jerk = 0.0;
-    law.append(Profile::from_phases(&wait, &no_jerk, 1, 0.0, 0.0, 0.0, 0.0, 0.0), end_s_);
-    x = ProfileState{end_s_, 0.0, 0.0, 0.0};
-  }
+  ProfileState x;
+  TimeLaw law = motion_until(at, x);
   const std::optional<Splice> splice = splice_point(*this, longer, x.s);
   if (!splice)
     throw std::invalid_argument(describe("longer", "Trajectory", "must go on from a section start of this path ahead of s = " +

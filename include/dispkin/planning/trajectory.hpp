@@ -218,6 +218,9 @@ class Trajectory {
   // are this trajectory's, checked when it was made.
   Trajectory with_events(TimeLaw law, std::vector<double> rests, std::vector<Stop> stops, double factor) const;
   void check(bool sections) const;
+  // The motion up to `at` (TimeLaw::before), at rest where it ended for the time after its end,
+  // and the state x there, from which a new law goes on.
+  TimeLaw motion_until(double at, ProfileState& x) const;
 
   SampledPath path_;
   TimeLaw law_;
