@@ -3,12 +3,19 @@ keeps its trajectory and its pickle within a fixed number of bytes per move, bec
 blend is a few sections whose bounds are their exact peaks (doc/section-length.md eqs. 25–29),
 not one section per milliradian of the corner's turn (doc/planning.md §9, eq. 39)."""
 
+import os
 import pickle
 import subprocess
 import sys
 import textwrap
 
 MOVES = 20000
+
+# Under AddressSanitizer (`make sanitize-python` preloads it) every allocation carries red zones
+# and freed blocks wait in a quarantine, so the process's resident size measures the sanitizer,
+# not dispkin: there the sections and the pickle are still held to their bounds, the resident
+# size is not.
+SANITIZED = "libasan" in os.environ.get("LD_PRELOAD", "")
 
 # A raster over a smooth freeform surface in 0.5 mm steps, passes 2 mm apart (corners of a few
 # degrees along a pass, two of 90° at each step-over), blended within 0.1 mm; measured in a
@@ -59,5 +66,6 @@ def test_a_long_blended_pose_list_keeps_memory_and_pickle_per_move_bounded():
     # When each blend was cut per milliradian of its turn it was 27 sections, 14 kB resident and
     # 9.6 kB pickled per move (benchmarks/RESULTS.md, "Long blended pose lists").
     assert m["sections"] <= 6 * MOVES, m
-    assert m["resident"] <= 5000 * MOVES, m
+    if not SANITIZED:
+        assert m["resident"] <= 5000 * MOVES, m
     assert m["pickle"] <= 2500 * MOVES, m
