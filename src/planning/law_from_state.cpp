@@ -70,6 +70,32 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
   return Profile::from_phases(durations.data(), jerks.data(), count, v0, a0, std::max(s, 0.0), 0.0, 0.0);
 }
 
+std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max, std::optional<double> j_max,
+                                         double v0, double a0, double tolerance) {
+  require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
+  double distance = 0.0, a = a_max;
+  for (const LimitedSegment& g : segments) {
+    distance += g.length;
+    if (g.acceleration > 0.0) a = std::min(a, g.acceleration);
+  }
+  std::optional<Profile> stop = fastest_stop(v0, a0, a, j_max);
+  const double stop_distance = stop ? stop->distance() : 0.0;
+  require(stop_distance <= distance + tolerance, "v0", v0, "cannot come to rest within the run of " + std::to_string(distance) + " m");
+  std::vector<Profile> laws;
+  if (stop) laws.push_back(std::move(*stop));
+  if (stop_distance < distance - tolerance) {
+    std::vector<LimitedSegment> rest;
+    double s = 0.0;
+    for (const LimitedSegment& g : segments) {
+      const double from = std::max(s, stop_distance);
+      if (s + g.length > from) rest.push_back({s + g.length - from, g.limit, g.acceleration});
+      s += g.length;
+    }
+    for (Profile& law : velocity_limited_law(rest, a_max, j_max)) laws.push_back(std::move(law));
+  }
+  return laws;
+}
+
 std::vector<Profile> staircase_law_from_state(const std::vector<LimitedSegment>& segments, double a_max,
                                               std::optional<double> j_max, double v0, double a0, double tolerance) {
   require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
@@ -104,23 +130,8 @@ std::vector<Profile> staircase_law_from_state(const std::vector<LimitedSegment>&
       if (m + 1 < n) continue;
       // Not even over the whole run: the state brakes onto its end, or releases its braking onto
       // rest before it (ṡ = s̈²/2j, where a law that goes on at once would dip below ṡ = 0 by
-      // rounding). Then the fastest stop, and from rest on the staircase law over what is left.
-      std::optional<Profile> stop = fastest_stop(v0, a0, a, j_max);
-      const double stop_distance = stop ? stop->distance() : 0.0;
-      if (stop_distance > distance + tolerance) throw;
-      std::vector<Profile> laws;
-      if (stop) laws.push_back(std::move(*stop));
-      if (stop_distance < distance - tolerance) {
-        std::vector<LimitedSegment> rest;
-        double s = 0.0;
-        for (const LimitedSegment& g : segments) {
-          const double from = std::max(s, stop_distance);
-          if (s + g.length > from) rest.push_back({s + g.length - from, g.limit, g.acceleration});
-          s += g.length;
-        }
-        for (Profile& law : velocity_limited_law(rest, a_max, j_max)) laws.push_back(std::move(law));
-      }
-      return laws;
+      // rounding).
+      return stop_then_staircase(segments, a_max, j_max, v0, a0, tolerance);
     }
   }
   return {};  // not reached: the last attempt returns or throws

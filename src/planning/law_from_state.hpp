@@ -20,6 +20,14 @@ namespace dispkin::detail {
 //! which a trajectory's laws reach by rounding only) stops from ṡ = a0² / 2j.
 std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::optional<double> j_max);
 
+//! The fastest stop from (v0, a0) under the smallest acceleration limit of `segments` (a run's
+//! staircase, which ends at rest), then from rest the staircase law over what is left: the
+//! law from a state that every other law keeps above (doc/events.md §1), so it keeps under the
+//! curve wherever any law does. Throws std::invalid_argument if the stop overruns the run
+//! (beyond `tolerance`, m).
+std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max, std::optional<double> j_max,
+                                         double v0, double a0, double tolerance);
+
 //! The law over a run's staircase `segments` (which ends at rest) from the moving state
 //! (v0, a0) at its start (doc/events.md §3): on the first segments the time-optimal law from the
 //! state (Profile::from_state), which first eases onto the limits where the state lies above

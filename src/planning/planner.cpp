@@ -338,6 +338,9 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   require(options.corner_tolerance == 0.0 || minimum.empty(), "corner_tolerance", options.corner_tolerance,
           "cannot be combined with min_section_lengths (given per section of the unblended path): plan "
           "Path::blended(corner_tolerance) with the minimum lengths of its sections instead");
+  require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity", options.start_velocity,
+          "must be finite and ≥ 0 (m/s)");
+  require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration, "must be finite (m/s²)");
   // Continuous-path mode: the corners blended first (doc/planning.md §10).
   std::vector<CornerStop> corner_stops;
   std::optional<Path> blended;
@@ -449,8 +452,19 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
     if (k + 1 < count) stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, options.corner_tolerance)});
     first = k + 1;
   }
-  return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
-                    std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
+  Trajectory from_rest(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
+                       std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
+  if (options.start_velocity == 0.0 && options.start_acceleration == 0.0) return from_rest;
+  const double v_start = from_rest.speed_limits().front().limit;
+  require(options.start_velocity <= v_start, "start_velocity", options.start_velocity,
+          "must be at most the velocity limit at the start of the path, " + std::to_string(v_start) + " m/s");
+  // A moving start: the first run's law from that state (doc/events.md §3). The messages name
+  // starting_from's arguments; here they are the options.
+  try {
+    return from_rest.starting_from(options.start_velocity, options.start_acceleration);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("start_" + std::string(e.what()));
+  }
 }
 
 }  // namespace dispkin

@@ -9,6 +9,7 @@
 
 #include "dispkin/error.hpp"
 #include "../message_number.hpp"
+#include "law_under_curve.hpp"
 
 namespace dispkin {
 
@@ -129,6 +130,10 @@ void Trajectory::check(bool sections) const {
     const double peak = p.cut ? peak_until(p.profile, p.end_time - p.start_time) : p.profile.peak_velocity();
     require_lazily(peak <= allowed * (1.0 + 1e-8), name(" peak velocity"), peak,
                    [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
+    require_lazily(speed_limits_.empty() || detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
+                                                                    p.start_s, peak, speed_limits_, span, tol_s),
+                   name(" velocity"), peak,
+                   [&] { return std::string("must keep under the velocity limit of every span it crosses"); });
   }
   const TimeLaw::Piece& last = pieces.back();
   const double law_end = last.start_s + last.distance();

@@ -11,6 +11,7 @@
 #include "dispkin/planning/trajectory.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
 #include "law_from_state.hpp"
+#include "law_under_curve.hpp"
 #include "../message_number.hpp"
 
 namespace dispkin {
@@ -115,10 +116,29 @@ Trajectory Trajectory::stopped_at(double t) const {
 
 namespace {
 
+// Whether `laws`, run one after another from s, keep under the curve as planned (the tops of
+// `spans`) at every position.
+bool keep_under_curve(const std::vector<Profile>& laws, double s, const std::vector<SpeedLimit>& spans, double tol) {
+  std::size_t first = 0;
+  for (const Profile& piece : laws) {
+    while (first + 1 < spans.size() && spans[first].start_s + spans[first].length < s - tol) ++first;
+    if (!detail::keeps_under_tops(piece, piece.duration(), s, piece.peak_velocity(), spans, first, tol)) return false;
+    s += piece.distance();
+  }
+  return true;
+}
+
+// What a law from a moving state does where it cannot keep under the curve ahead (the state
+// carries acceleration into a lower limit that a law ending at s̈ = 0 cannot meet in time).
+enum class AboveCurve { stop_first, refuse };
+
 // The laws from the state x at `at` to the end of the path at `factor` (doc/events.md §3): the
-// first run from the state to the next rest, the others from rest to rest as planned.
+// first run from the state to the next rest, the others from rest to rest as planned. Where
+// the law of §3 from the state would cross the curve, the fastest stop and a restart
+// (AboveCurve::stop_first), or std::invalid_argument (AboveCurve::refuse).
 void append_continuation(TimeLaw& law, const ProfileState& x, const std::vector<SpeedLimit>& spans,
-                         const std::vector<double>& rests, double length, const TimeLawLimits& limits, double factor) {
+                         const std::vector<double>& rests, double length, const TimeLawLimits& limits, double factor,
+                         AboveCurve above = AboveCurve::stop_first) {
   std::vector<double> ends;
   const double tol = 1e-9 * length;
   for (double r : rests)
@@ -130,9 +150,14 @@ void append_continuation(TimeLaw& law, const ProfileState& x, const std::vector<
     const std::vector<LimitedSegment> segments = staircase(spans, s0, s1, factor);
     if (segments.empty()) continue;
     const bool moving = first && (x.v != 0.0 || (limits.jerk && x.a != 0.0));
-    const std::vector<Profile> laws =
-        moving ? detail::staircase_law_from_state(segments, limits.acceleration, limits.jerk, x.v, x.a, tol)
-               : velocity_limited_law(segments, limits.acceleration, limits.jerk);
+    std::vector<Profile> laws = moving ? detail::staircase_law_from_state(segments, limits.acceleration, limits.jerk, x.v, x.a, tol)
+                                       : velocity_limited_law(segments, limits.acceleration, limits.jerk);
+    if (moving && !keep_under_curve(laws, s0, spans, tol)) {
+      if (above == AboveCurve::refuse)
+        throw std::invalid_argument(describe("state", Eigen::Vector2d(x.v, x.a),
+                                             "lies above the velocity-limit curve ahead: no law from it keeps to the curve"));
+      laws = detail::stop_then_staircase(segments, limits.acceleration, limits.jerk, x.v, x.a, tol);
+    }
     double s = s0;
     for (const Profile& piece : laws) {
       law.append(piece, s);
@@ -195,6 +220,46 @@ Trajectory Trajectory::with_override(double t, double factor) const {
   TimeLaw law = law_.before(at);
   append_continuation(law, x, speed_limits_, rest_s_, length(), limits, factor);
   return with_events(std::move(law), rest_s_, stops_, factor);
+}
+
+Trajectory Trajectory::starting_from(double velocity, double acceleration) const {
+  const TimeLawLimits& limits = limits_of(limits_, "starting_from");
+  require(std::isfinite(velocity) && velocity >= 0.0, "velocity", velocity, "must be finite and ≥ 0 (m/s)");
+  require(std::isfinite(acceleration), "acceleration", acceleration, "must be finite (m/s²)");
+  require(!stopped(), "velocity", velocity, "starts a trajectory that runs to the end of its path: this one was stopped");
+  if (!limits.jerk)
+    require(acceleration == 0.0, "acceleration", acceleration, "is not a state of the trapezoid law (s̈ jumps there): it must be 0");
+  require(std::abs(acceleration) <= limits.acceleration * (1.0 + 1e-12), "acceleration", acceleration,
+          "must be within the acceleration limit, ±" + number(limits.acceleration) + " m/s²");
+  // Above the limit at the start (scaled by the override, eq. 5) the law eases down onto it as
+  // after an override (§3); never above what the path allows there at all, its ceiling.
+  const double top = speed_limits_.empty() ? 0.0 : speed_limits_.front().top();
+  require(velocity <= top * (1.0 + 1e-12), "velocity", velocity,
+          "must be at most the highest velocity limit at the start of the path, " + number(top) + " m/s");
+  // Braking so hard that ṡ would reach 0 before the jerk limit brings s̈ back to 0 (v_r < 0 in
+  // doc/events.md eq. 1): no law from that state keeps to the limits without running backwards.
+  if (limits.jerk && acceleration < 0.0) {
+    const double release = acceleration * acceleration / (2.0 * *limits.jerk);
+    require(release <= velocity * (1.0 + 1e-9), "acceleration", acceleration,
+            "brakes harder than the jerk limit " + number(*limits.jerk) + " m/s³ can end before the velocity " + number(velocity) +
+                " m/s reaches 0 (it needs at least " + number(release) + " m/s)");
+  }
+  if (velocity == 0.0 && acceleration == 0.0) return *this;
+  // Moving at s = 0: no rest there; the other rests stay.
+  std::vector<double> rests;
+  for (double r : rest_s_)
+    if (r > 1e-9 * length()) rests.push_back(r);
+  TimeLaw law;
+  try {
+    append_continuation(law, ProfileState{0.0, velocity, acceleration, 0.0}, speed_limits_, rests, length(), limits, override_,
+                        AboveCurve::refuse);
+  } catch (const std::invalid_argument&) {
+    const double run = rests.empty() ? length() : rests.front();
+    throw std::invalid_argument(describe("velocity", velocity, "with acceleration " + number(acceleration) +
+                                                                   " m/s² cannot keep to the velocity-limit curve of the first run of "
+                                                                   "the path, " + number(run) + " m, and come to rest within it"));
+  }
+  return with_events(std::move(law), std::move(rests), stops_, override_);
 }
 
 namespace {

@@ -149,6 +149,26 @@ TEST(Sweep, GuaranteeWithEvents) {
   record("guarantee_with_events", n, worst);
 }
 
+// Where the request that made `after` from `before` takes over (changed_from): the motion before
+// it is the same, bit for bit, at `probes`; there both give the same pose and body twist, to
+// rounding (a join plans the path ahead afresh, its s in other units, doc/events.md eq. 7).
+void expect_continuous_handover(const MotionStream& before, const MotionStream& after, const std::vector<double>& probes,
+                                const std::string& what) {
+  const double from = after.changed_from();
+  for (const double t : probes) {
+    if (t >= from) continue;
+    const TrajectorySample a = before.sample(t), b = after.sample(t);
+    ASSERT_TRUE(a.s == b.s && a.pose.matrix() == b.pose.matrix() && a.body_twist.vector() == b.body_twist.vector())
+        << what << ": changed at " << t << ", before " << from;
+  }
+  if (!std::isfinite(from)) return;
+  const TrajectorySample a = before.sample(from), b = after.sample(from);
+  ASSERT_TRUE(b.pose.is_approx(a.pose, 1e-9)) << what << ": the pose jumps at " << from;
+  ASSERT_LE((b.body_twist.vector() - a.body_twist.vector()).norm(), 1e-6 * std::max(1.0, a.body_twist.vector().norm()))
+      << what << ": the velocity jumps at " << from << " (" << a.body_twist.vector().transpose() << " → "
+      << b.body_twist.vector().transpose() << ")";
+}
+
 // Streams (doc/events.md §5): random LIN moves appended at random times — in time or late —
 // with stops, resumptions and overrides between them; after each request the motion before it is
 // the same bit for bit, and the whole stream keeps the point-set limit and ends at rest at the
@@ -169,6 +189,7 @@ TEST(Sweep, StreamsWithRandomRequests) {
       const bool moving = stream.leg_count() > 0;  // before the first move the samples are defaults
       const double probe = rnd.uniform(0.0, t);
       const TrajectorySample at_probe = stream.sample(probe);
+      const MotionStream before = stream;  // a value: copying shares its trajectories
       const int what = stream.stopped() ? 3 : rnd.integer(0, 5);
       if (what <= 3 && !stream.stopped()) {
         const Posed next = rnd.nearby(last, rnd.uniform(0.01, 0.3), rnd.uniform(0.0, 0.5));
@@ -184,6 +205,13 @@ TEST(Sweep, StreamsWithRandomRequests) {
       const TrajectorySample again = stream.sample(probe);
       ASSERT_TRUE(!moving || (again.s == at_probe.s && again.pose.matrix() == at_probe.pose.matrix()))
           << "stream " << i << " request " << r << " (" << what << ") at " << t << ": changed at " << probe;
+      // Where the request takes over, the pose and its velocity go on (to rounding: a join
+      // plans the path ahead afresh, its s in other units, doc/events.md eq. 7).
+      if (moving) {
+        std::vector<double> probes{t};
+        for (int k = 0; k < 16; ++k) probes.push_back(rnd.uniform(0.0, before.duration()));
+        expect_continuous_handover(before, stream, probes, "stream " + std::to_string(i) + " request " + std::to_string(r));
+      }
       t += rnd.uniform(0.0, 1.2) * std::max(stream.duration() - t, 0.05);
     }
     if (stream.stopped()) stream.resume(t);

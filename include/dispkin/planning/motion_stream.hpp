@@ -7,6 +7,9 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "dispkin/metric_set.hpp"
@@ -25,8 +28,8 @@ class MotionStream {
  public:
   //! Where a sequence of samples has got to (sample(t, cursor)); any value is valid.
   struct Cursor {
-    std::size_t leg = 0;             //!< the leg of the last sample
-    Trajectory::Cursor trajectory;  //!< where in that leg's trajectory
+    std::size_t leg = 0;             //!< the stretch of motion of the last sample
+    Trajectory::Cursor trajectory;  //!< where in that stretch's trajectory
   };
 
   //! An empty stream under `set` and `limits` (validated as plan() does), with the `profile`
@@ -34,10 +37,12 @@ class MotionStream {
   MotionStream(MetricSetd set, Limits limits, ProfileKind profile = ProfileKind::scurve, double corner_tolerance = 0.0);
 
   //! Appends `path` at time t: it starts where the last appended move ends (the first: anywhere).
-  //! While the motion runs and the join lies ahead of it, the motion from t on is planned again
-  //! over the longer path (the look-ahead); otherwise `path` runs from rest after what is planned.
-  //! While stopped, the move waits for resume(). Throws std::invalid_argument naming `path` or
-  //! t (finite, not before the last request).
+  //! While the motion runs, what lies ahead of it from t on — the rest of what is planned, then
+  //! `path`, its corner blended from where the motion is — is planned again from the state at t
+  //! (PlanOptions::start_velocity): the cost is that of the look-ahead, not of the moves run.
+  //! When the motion has ended, `path` runs from rest. While stopped, the move waits for
+  //! resume(). Throws std::invalid_argument naming `path` or t (finite, not before the last
+  //! request).
   void append(const Path& path, double t);
   //! Stops on the path from the state at t, as fast as the limits allow (Trajectory::stopped_at);
   //! moves appended while stopped wait for resume().
@@ -64,22 +69,47 @@ class MotionStream {
   double override_factor() const noexcept { return override_; }
   //! Moves appended while stopped, waiting for resume().
   std::size_t waiting_moves() const noexcept { return waiting_.size(); }
+  //! From when the last request changed the motion (s): samples before it are as they were, bit
+  //! for bit (a controller that samples ahead keeps what it sampled before this time). A stop,
+  //! a resumption and an override change it from their t; an append from where the joined plan
+  //! takes over (t, or later while the motion brakes for its end) or where its leg from rest
+  //! starts; +∞ where nothing changed (a move that waits for resume()).
+  double changed_from() const noexcept { return changed_from_; }
   //! Legs: stretches of motion that start from rest (a move that came late starts a new one).
-  std::size_t leg_count() const noexcept { return legs_.size(); }
+  std::size_t leg_count() const noexcept { return rest_starts_; }
 
  private:
-  struct Leg {
-    Trajectory trajectory;  // over `path`, in leg time t − start
-    Path path;              // the moves of the leg
-    double start = 0.0;     // stream time of the leg's t = 0
+  // A stretch of the motion: its trajectory runs in stream time t − start, from `start` until
+  // the next stretch starts. A join starts a new stretch from the state where it takes over; the
+  // trajectories are immutable and shared, so copying a stream copies pointers.
+  struct Stretch {
+    std::shared_ptr<const Trajectory> trajectory;
+    double start = 0.0;
+    double s = 0.0;          // the stream's arc length where it starts (its trajectory's s = 0)
+    bool from_rest = false;  // a leg (leg_count)
+    // The move limits and the move of each section of the trajectory (what planning the path
+    // ahead again needs).
+    std::vector<MoveLimits> limits;
+    std::vector<std::size_t> moves;
+    // The moves appended while it had not started yet: a stop before its start puts them back
+    // in the queue.
+    std::vector<Path> unstarted;
   };
 
-  Trajectory planned(const Path& path) const;  // a leg's plan at the override in force
+  Path blended_path(const Path& path) const;  // its corners blended as plan() does
+  // A blended path from rest, at the override in force.
+  Trajectory planned(const Path& path) const;
   void require_time(double t);
-  std::size_t leg_at(double t, std::size_t hint) const noexcept;
-  // Runs `extra` after the current leg: joined to it at t when the join lies ahead, else as a new
-  // leg from rest at its end.
+  std::size_t stretch_at(double t, std::size_t hint) const noexcept;
+  // Runs `extra` after what is planned: joined to the motion ahead of t where it can be, else
+  // from rest at the end.
   void continue_with(const Path& extra, double t);
+  // The last stretch with `extra` joined from its state at time `at` (≥ its start), or none
+  // where the state does not keep to the path ahead planned afresh.
+  std::optional<Stretch> joined(const Path& extra, double at) const;
+  // A stretch of `trajectory` planned over `path`.
+  static Stretch stretch(Trajectory trajectory, const Path& path, double start, double s, bool from_rest);
+  void push(Stretch next);
 
   MetricSetd set_;
   Limits limits_;
@@ -88,8 +118,11 @@ class MotionStream {
   double override_ = 1.0;
   bool stopped_ = false;
   double last_request_ = 0.0;
-  std::vector<Leg> legs_;
+  double changed_from_ = std::numeric_limits<double>::infinity();
+  std::size_t rest_starts_ = 0;
+  std::vector<Stretch> stretches_;
   std::vector<Path> waiting_;
+  std::optional<Posed> last_end_;  // where the last appended move ends
 };
 
 }  // namespace dispkin

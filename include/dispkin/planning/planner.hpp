@@ -64,6 +64,13 @@ struct PlanOptions {
   //! How finely the corner blends are cut into sections (Path::blended's `tolerance`, in
   //! (0, 0.1]): coarser plans faster, at a slightly lower speed through the blends.
   double blend_tolerance = 1e-3;
+  //! The state the motion starts in (doc/events.md §3): path velocity ṡ (m/s, ≥ 0, at most the
+  //! velocity limit at the start) and, under the S-curve, path acceleration s̈ (m/s², within the
+  //! acceleration limit; the trapezoid has no acceleration state: 0). Both 0 (the default): from
+  //! rest. A moving start has no rest at s = 0, and the first run's law is the time-optimal one
+  //! from that state (Trajectory::starting_from).
+  double start_velocity = 0.0;
+  double start_acceleration = 0.0;
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest

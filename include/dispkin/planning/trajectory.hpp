@@ -148,6 +148,17 @@ class Trajectory {
   //! std::invalid_argument naming `longer` where it holds no such start ahead of the state (the
   //! state is past where the paths part), or this trajectory holds no limits.
   Trajectory continued_on(double t, const Trajectory& longer) const;
+  //! The same path and velocity-limit curve run from the moving state ṡ = velocity (m/s, ≥ 0),
+  //! s̈ = acceleration (m/s²) at its start instead of from rest, at the override in force
+  //! (doc/events.md §3): over the first run the time-optimal law from that state — easing down
+  //! first where it lies above the limit at the start, as after an override — then the laws of
+  //! the other runs as planned. plan() starts so from PlanOptions::start_velocity, and
+  //! MotionStream joins a move to a running motion so. Throws std::invalid_argument naming the
+  //! velocity or the acceleration when not finite, above the highest limit at the start (its
+  //! ceiling) or the acceleration limit (the trapezoid has no acceleration state: 0 only), or
+  //! when the motion cannot come to rest within the first run; and when the trajectory was
+  //! stopped or holds no limits.
+  Trajectory starting_from(double velocity, double acceleration) const;
   //!@}
 
   //! What the time law keeps to, if known (plan() gives them; with_time_law() does not).
