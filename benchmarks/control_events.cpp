@@ -12,6 +12,9 @@
 //   append    MotionStream::append at a random instant of a leg of n zig-zag LINs of 5–15 cm,
 //             corner tolerance 1 mm, n = 2, 5, 10, 20, 50 (the move joined to the running leg),
 //             with plan() of the longer path alone beside it.
+//   stream    a program of 1000 LINs streamed as a controller feeds it (each move appended when
+//             under 1.5 s is planned ahead, 1 kHz cycles): the cost of each append by how many
+//             moves were appended before it — flat, since a join plans only the path ahead.
 //   sample    10^6 consecutive 1 kHz cycles (t = k ms) of Trajectory::sample(t, cursor) and
 //             MotionStream::sample(t, cursor) on the chain overridden to 2 % at 1 s, stopped at
 //             600 s and resumed at 620 s (1434 s of motion), in a tight loop, three rounds
@@ -19,7 +22,7 @@
 //             (wall time: what a control loop sees, preemption included). Then 10^4 cycles paced
 //             by sleeping until each next 1 ms deadline, as a real loop runs.
 //
-// Usage: dispkin_control_events [all|requests|append|sample] [scale=1] [name]
+// Usage: dispkin_control_events [all|requests|append|stream|sample] [scale=1] [name]
 //   scale multiplies the numbers of requests, appends and paced cycles (the tight sampling runs
 //   are always 10^6 cycles); name keeps only the trajectories whose name holds it, e.g.
 //   "chain, S-curve" (for a profiler: valgrind --tool=callgrind --toggle-collect=...).
@@ -164,6 +167,46 @@ void run_append(double scale) {
   std::printf("load average after: %s\n\n", load_average().c_str());
 }
 
+// A program streamed as a controller feeds it: 1000 zig-zag LINs, each appended when less than
+// `ahead` seconds of motion are planned beyond the current cycle (1 kHz), so the look-ahead stays
+// the same while the moves run grow. The cost of each append, by how many moves ran before it.
+void run_stream(double scale) {
+  const double overhead = thread_clock_overhead();
+  const std::size_t count = scaled(1000, scale);
+  std::printf("== MotionStream fed just in time: %zu LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), each appended "
+              "when under 1.5 s is planned ahead; thread CPU us per append by moves appended before; load average %s
+",
+              count, load_average().c_str());
+  std::mt19937_64 rng(9500);
+  const std::vector<Path> moves = zigzag(rng, count);
+  MotionStream stream(tool_set(), limits_for(ProfileKind::scurve), ProfileKind::scurve, kCornerTolerance);
+  stream.append(moves[0], 0.0);
+  const std::size_t buckets = 5, per_bucket = (count + buckets - 1) / buckets;
+  std::vector<std::vector<double>> ns(buckets);
+  std::size_t next = 1;
+  double t = 0.0;
+  while (next < moves.size()) {
+    if (stream.duration() - t < 1.5) {
+      MotionStream copy = stream;  // the worker's copy, made and freed outside the timing
+      ns[next / per_bucket].push_back(time_call([&] { copy.append(moves[next], t); }, overhead));
+      stream = std::move(copy);
+      ++next;
+    }
+    t += 1e-3;
+  }
+  std::printf("%-22s %8s %9s %9s %9s
+", "moves appended before", "appends", "median", "p99", "max");
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const Spread a = spread(ns[b]);
+    std::printf("%8zu – %-11zu %8zu %9.1f %9.1f %9.1f
+", b * per_bucket, std::min(count, (b + 1) * per_bucket) - 1, ns[b].size(),
+                a.median * 1e-3, a.p99 * 1e-3, a.max * 1e-3);
+  }
+  std::printf("legs from rest: %zu (1: it never stopped); duration %.1f s
+", stream.leg_count(), stream.duration());
+  std::printf("load average after: %s\n\n", load_average().c_str());
+}
+
 struct Tail {
   double median, p99, p9999, max;
   std::size_t over_10us;
@@ -247,12 +290,13 @@ int main(int argc, char** argv) {
   const std::string part = argc > 1 ? argv[1] : "all";
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   const std::string only = argc > 3 ? argv[3] : "";
-  if (part != "all" && part != "requests" && part != "append" && part != "sample") {
-    std::fprintf(stderr, "usage: %s [all|requests|append|sample] [scale=1] [trajectories named with this]\n", argv[0]);
+  if (part != "all" && part != "requests" && part != "append" && part != "stream" && part != "sample") {
+    std::fprintf(stderr, "usage: %s [all|requests|append|stream|sample] [scale=1] [trajectories named with this]\n", argv[0]);
     return 2;
   }
   if (part == "all" || part == "requests") run_requests(scale, only);
   if (part == "all" || part == "append") run_append(scale);
+  if (part == "all" || part == "stream") run_stream(scale);
   if (part == "all" || part == "sample") run_sample(scaled(10000, scale));
   return 0;
 }

@@ -311,6 +311,11 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
            "velocity-limit curve (each span at most its ceiling: factors above 1 only speed up what a move's own "
            "velocity slowed down), the change eased in at full jerk from the state at t. factor in [0.001, 10], "
            "relative to the curve as planned (a second override replaces the first).")
+      .def("starting_from", &Trajectory::starting_from, py::arg("velocity"), py::arg("acceleration") = 0.0,
+           "The same path and velocity-limit curve run from the moving state (path velocity m/s, path acceleration "
+           "m/s^2; S-curve only) at its start instead of from rest: the first run's law is the time-optimal one from "
+           "that state (doc/events.md section 3). ValueError when the state is above the limits at the start, below "
+           "the jerk limit's release curve, or cannot keep to the velocity-limit curve of the first run.")
       .def_property_readonly("override_factor", &Trajectory::override_factor,
                              "The speed override in force from the last event on (1.0 as planned).")
       .def_property_readonly("stopped", &Trajectory::stopped,
@@ -409,8 +414,9 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
 
   py::class_<MotionStream> stream(m, "MotionStream", R"doc(
 Moves appended while the motion runs (doc/events.md section 5): what is planned always ends at rest
-at the last appended pose; a move appended while the motion still runs ahead of its join is joined
-without a stop (corners blended within `corner_tolerance` as `plan` does), a late one starts from rest.
+at the last appended pose; a move appended while the motion runs is joined to it from its state (the
+path ahead planned again with the move, corners blended within `corner_tolerance` as `plan` does; the
+cost is that of the look-ahead), one appended after the motion ended starts from rest.
 `stop`, `resume` and `set_override` act at any time. Every request at time t leaves the motion
 before t as it was, bit for bit; requests come in time order. Sample it at any times (seconds).)doc");
   stream
@@ -432,6 +438,9 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       .def_property_readonly("stopped", &MotionStream::stopped, "Whether a stop holds the motion until resume.")
       .def_property_readonly("override_factor", &MotionStream::override_factor, "The override in force.")
       .def_property_readonly("waiting_moves", &MotionStream::waiting_moves, "Moves appended while stopped.")
+      .def_property_readonly("changed_from", &MotionStream::changed_from,
+                             "From when the last request changed the motion (s): samples before it are as they were; "
+                             "inf where nothing changed (a move waiting for resume).")
       .def_property_readonly("leg_count", &MotionStream::leg_count,
                              "Stretches of motion from rest (a move appended too late to be joined starts a new one).")
       .def("__repr__", [](const MotionStream& s) {
@@ -442,10 +451,12 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
   m.def(
       "plan",
       [](const Path& given_path, const MetricSetd& set, const Limits& limits, const std::string& profile,
-         const py::object& joint_metric, double corner_tolerance) {
+         const py::object& joint_metric, double corner_tolerance, double start_velocity, double start_acceleration) {
         const ProfileKind kind = profile_kind(profile);
         PlanOptions blending;
         blending.corner_tolerance = corner_tolerance;
+        blending.start_velocity = start_velocity;
+        blending.start_acceleration = start_acceleration;
         if (joint_metric.is_none()) {
           const UnlockedIf unlocked(true, given_path, set);
           return plan(given_path, set, limits, kind, blending);
@@ -462,7 +473,10 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
         if (py::isinstance<Hexapod>(joint_metric)) {
           const Hexapod& hexapod = joint_metric.cast<const Hexapod&>();
           const UnlockedIf unlocked(true, path, set);
-          return plan(path, set, limits, kind, hexapod.joint_metric(path, limits));
+          PlanOptions options = hexapod.joint_metric(path, limits);
+          options.start_velocity = start_velocity;
+          options.start_acceleration = start_acceleration;
+          return plan(path, set, limits, kind, options);
         }
         if (!py::hasattr(joint_metric, "leg_section_lengths")) {
           throw std::invalid_argument(describe("joint_metric", std::string(py::repr(joint_metric)),
@@ -474,11 +488,14 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
         if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
         PlanOptions options;
         options.min_section_lengths.assign(a.data(), a.data() + a.size());
+        options.start_velocity = start_velocity;
+        options.start_acceleration = start_acceleration;
         const UnlockedIf unlocked(true, path, set);
         return plan(path, set, limits, kind, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",
-      py::kw_only(), py::arg("joint_metric") = py::none(), py::arg("corner_tolerance") = 0.0,
+      py::kw_only(), py::arg("joint_metric") = py::none(), py::arg("corner_tolerance") = 0.0, py::arg("start_velocity") = 0.0,
+      py::arg("start_acceleration") = 0.0,
       "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
       "or \"trapezoid\" law. The trajectory stops at corners of the path unless `corner_tolerance` (m, keyword) is "
       "positive: then every corner is blended with the largest blend whose pivot stays within that distance of the "
@@ -487,7 +504,10 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       "acceleration (Path.lin(..., velocity=, acceleration=)), capped by `limits`. `joint_metric` (keyword): an "
       "object with leg_section_lengths(path, system_velocity); each section is then at least that long. For a "
       "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
-      "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions.");
+      "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions. "
+      "`start_velocity` (m/s) and `start_acceleration` (m/s², S-curve only; keywords): the state the motion starts in "
+      "instead of rest, within the limits at the start (doc/events.md section 3); its first run is the time-optimal law "
+      "from that state.");
 }
 
 }  // namespace python

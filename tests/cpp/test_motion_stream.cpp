@@ -4,6 +4,7 @@
 // stream; the point-set limit held throughout (oracle of doc/planning.md eq. 18).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,38 @@ TEST(MotionStream, StopResumeAndOverrideInsideTheStream) {
     EXPECT_TRUE(stream.sample(stream.duration()).pose.is_approx(path[3].end(), 1e-9));
     EXPECT_LE(worst_speed_ratio(stream, set, limits.velocity, 20000), 1.0 + 1e-6);
   }
+}
+
+// changed_from: where each request takes over; before it nothing changed, there the pose and its
+// velocity go on (a join plans the path ahead afresh from the state, doc/events.md §5).
+TEST(MotionStream, SaysFromWhenARequestChangedTheMotion) {
+  Random rnd(4005);
+  const MetricSetd set = tool_set();
+  MotionStream stream(set, Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, 0.002);
+  const std::vector<Path> path = moves(rnd, 5);
+  stream.append(path[0], 0.0);
+  EXPECT_EQ(stream.changed_from(), 0.0);
+  for (std::size_t k = 1; k < 3; ++k) {
+    const MotionStream before = stream;
+    const double t = 0.5 * stream.duration();
+    stream.append(path[k], t);
+    EXPECT_GE(stream.changed_from(), t);
+    EXPECT_LT(stream.changed_from(), before.duration());
+    const TrajectorySample a = before.sample(stream.changed_from()), b = stream.sample(stream.changed_from());
+    EXPECT_TRUE(b.pose.is_approx(a.pose, 1e-12));
+    EXPECT_LE((b.body_twist.vector() - a.body_twist.vector()).norm(), 1e-9);
+    EXPECT_EQ(stream.leg_count(), 1u);
+  }
+  stream.stop(1.0);
+  EXPECT_EQ(stream.changed_from(), 1.0);
+  stream.append(path[3], 1.1);
+  EXPECT_EQ(stream.changed_from(), std::numeric_limits<double>::infinity());  // it waits
+  stream.resume(stream.duration() + 1.0);
+  EXPECT_EQ(stream.changed_from(), stream.duration() > 0.0 ? stream.changed_from() : 0.0);
+  const double late = stream.duration() + 0.5;
+  stream.append(path[4], late);
+  EXPECT_EQ(stream.changed_from(), late);  // a leg from rest
+  EXPECT_EQ(stream.leg_count(), 2u);
 }
 
 TEST(MotionStream, RefusesWithAClearMessage) {

@@ -224,5 +224,90 @@ TEST(TrajectoryEvents, RefusedWithAClearMessage) {
   EXPECT_EQ(traj.stopped_at(traj.duration() + 1.0).duration(), traj.duration());
 }
 
+// A tool of three points: under a translation each moves as the tool does.
+MetricSetd three_points() {
+  MetricSetd set;
+  set.add_relative(V(0, 0, 0));
+  set.add_relative(V(0.1, 0, 0));
+  set.add_relative(V(0, 0.1, 0));
+  return set;
+}
+
+// A plan from a moving state (PlanOptions::start_velocity, start_acceleration; doc/events.md §3)
+// starts in that state and, along a straight move under one limit, is the 1-DoF time-optimal law
+// from it (Profile::from_state: its durations are Ruckig's, tests/python/test_trajectory_events.py).
+TEST(TrajectoryEvents, APlanFromAMovingState) {
+  const MetricSetd set = three_points();
+  const Path path = Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(0.8, 0, 0)));
+  const Limits limits{0.5, 2.0, 20.0};
+  for (const auto& [v0, a0] : {std::pair{0.3, 1.5}, std::pair{0.5, 0.0}, std::pair{0.45, -1.8}, std::pair{0.1, 2.0}}) {
+    PlanOptions options;
+    options.start_velocity = v0;
+    options.start_acceleration = a0;
+    const Trajectory traj = plan(path, set, limits, ProfileKind::scurve, options);
+    const TrajectorySample start = traj.sample(0.0);
+    EXPECT_NEAR(start.s_dot, v0, 1e-12);
+    EXPECT_NEAR(start.s_ddot, a0, 1e-12);
+    EXPECT_NEAR(traj.duration(), Profile::from_state(traj.length(), 0.5, 2.0, 20.0, v0, a0, 0.0).duration(), 1e-12);
+    EXPECT_TRUE(traj.rest_positions().empty() || traj.rest_positions().front() > 0.0);
+    EXPECT_TRUE(traj.sample(traj.duration()).pose.is_approx(path.end(), 1e-12));
+    expect_within_limits(traj, *traj.limits(), 0.0, "from (" + std::to_string(v0) + ", " + std::to_string(a0) + ")");
+    // What it was planned with at rest, run from the same state.
+    const Trajectory same = plan(path, set, limits).starting_from(v0, a0);
+    EXPECT_EQ(same.duration(), traj.duration());
+  }
+  // The trapezoid starts from a velocity only.
+  PlanOptions moving;
+  moving.start_velocity = 0.2;
+  const Trajectory trapezoid = plan(path, set, Limits{0.5, 2.0, std::nullopt}, ProfileKind::trapezoid, moving);
+  EXPECT_NEAR(trapezoid.sample(0.0).s_dot, 0.2, 1e-12);
+  EXPECT_NEAR(trapezoid.duration(), Profile::trapezoid_from_state(trapezoid.length(), 0.5, 2.0, 0.2, 0.0).duration(), 1e-12);
+}
+
+TEST(TrajectoryEvents, AMovingStartIsRefusedWithAClearMessage) {
+  const MetricSetd set = three_points();
+  const Path path = Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(0.1, 0, 0)));
+  const auto refused = [&](double v0, double a0, ProfileKind kind = ProfileKind::scurve) {
+    PlanOptions options;
+    options.start_velocity = v0;
+    options.start_acceleration = a0;
+    return message_of([&] {
+      plan(path, set, kind == ProfileKind::scurve ? Limits{0.5, 2.0, 20.0} : Limits{0.5, 2.0, std::nullopt}, kind, options);
+    });
+  };
+  EXPECT_NE(refused(-0.1, 0.0).find("start_velocity = -0.1"), std::string::npos);
+  EXPECT_NE(refused(std::nan(""), 0.0).find("start_velocity = nan"), std::string::npos);
+  EXPECT_NE(refused(0.6, 0.0).find("start_velocity = 0.6: must be at most the velocity limit at the start"), std::string::npos);
+  EXPECT_NE(refused(0.3, 2.5).find("start_acceleration = 2.5: must be within the acceleration limit"), std::string::npos);
+  EXPECT_NE(refused(0.2, 1.0, ProfileKind::trapezoid).find("start_acceleration = 1: is not a state of the trapezoid"), std::string::npos);
+  // Braking at 2 m/s² with jerk 20 m/s³ needs 0.1 m/s to end before ṡ = 0.
+  EXPECT_NE(refused(0.05, -2.0).find("start_acceleration = -2: brakes harder than the jerk limit"), std::string::npos);
+  // 0.5 m/s does not come to rest within 3 cm at 2 m/s² (it needs over 6 cm).
+  PlanOptions fast;
+  fast.start_velocity = 0.5;
+  const std::string short_path = message_of([&] {
+    plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(0.03, 0, 0))), set, Limits{0.5, 2.0, 20.0}, ProfileKind::scurve, fast);
+  });
+  EXPECT_NE(short_path.find("start_velocity = 0.5"), std::string::npos) << short_path;
+  EXPECT_NE(short_path.find("first run of the path"), std::string::npos) << short_path;
+}
+
+// A law is checked against every span it crosses, not only against the highest: a law that runs
+// at 0.9 m/s into a span of 0.5 m/s is refused, though its peak is under the first span's 1 m/s.
+TEST(TrajectoryEvents, ALawAboveALowerSpanItCrossesIsRefused) {
+  const MetricSetd set = three_points();
+  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(2.0, 0, 0))), set, Limits{1.0, 2.0, std::nullopt},
+                               ProfileKind::trapezoid);
+  TimeLaw law;
+  law.append(Profile::trapezoid(2.0, 0.9, 2.0), 0.0);
+  law.end_run();
+  const std::vector<SpeedLimit> spans{{0.0, 1.0, 1.0}, {1.0, 1.0, 0.5}};
+  EXPECT_NE(message_of([&] { Trajectory(traj.path(), law, spans, {0.0, 2.0}); }).find("must keep under the velocity limit of every span"),
+            std::string::npos);
+  // Under the lower span's limit throughout, the same law is accepted.
+  const std::vector<SpeedLimit> higher{{0.0, 1.0, 1.0}, {1.0, 1.0, 0.9}};
+  EXPECT_NO_THROW(Trajectory(traj.path(), law, higher, {0.0, 2.0}));
+}
+
 }  // namespace
 }  // namespace dispkin

@@ -51,6 +51,7 @@ def test_a_loop_that_appends_in_time_never_stops_and_keeps_what_it_sampled():
         sampled.append((t, stream.sample(t)))
         t += dt
     assert stream.leg_count == 1 and not queue
+    assert stream.changed_from < stream.duration  # the last append took over while moving
     times = np.array([x[0] for x in sampled])
     assert np.array_equal(stream.sample(times), np.array([x[1] for x in sampled]))
     speeds = stream.path_velocity(times[(times > 0.05) & (times < stream.duration - 0.05)])

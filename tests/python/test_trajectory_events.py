@@ -169,3 +169,49 @@ def test_an_older_state_loads_without_limits_and_refuses_events():
 def test_bad_events_are_refused_naming_the_argument(call, message):
     with pytest.raises(ValueError, match=message):
         call(PLANS[0][3])
+
+
+def ruckig_position_time(distance, v0, a0, v_max, a_max, j_max):
+    """Ruckig's time-optimal 1-DoF motion from (0, v0, a0) to rest at `distance` (position interface)."""
+    otg = ruckig.Ruckig(1)
+    inp = ruckig.InputParameter(1)
+    inp.current_position = [0.0]
+    inp.current_velocity = [v0]
+    inp.current_acceleration = [a0]
+    inp.target_position = [distance]
+    inp.target_velocity = [0.0]
+    inp.target_acceleration = [0.0]
+    inp.max_velocity = [v_max]
+    inp.max_acceleration = [a_max]
+    inp.max_jerk = [j_max]
+    trajectory = ruckig.Trajectory(1)
+    assert otg.calculate(inp, trajectory) == ruckig.Result.Working
+    return trajectory.duration
+
+
+def test_a_plan_from_a_moving_state_is_ruckigs_law_along_a_straight_move():
+    """plan(..., start_velocity=, start_acceleration=) along a translation under one limit: the
+    1-DoF time-optimal law from that state, as long as Ruckig's to 1e-9 (doc/events.md section 3)."""
+    points = dispkin.MetricSet()
+    for p in ([0.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.0, 0.1, 0.0]):
+        points.add_relative(p)
+    path = dispkin.Path.lin(pose(0, 0, 0), pose(0.6, 0.3, 0.0))
+    limits = dispkin.Limits(0.4, 2.0, 15.0)
+    rng = rng_for("plan from a moving state")
+    for _ in range(40):
+        v0 = rng.uniform(0.0, 0.4)
+        a0 = rng.uniform(-2.0, 2.0)
+        if a0 < 0 and a0 * a0 / (2 * 15.0) > v0:
+            continue  # below the release curve: refused (tested below)
+        traj = dispkin.plan(path, points, limits, start_velocity=v0, start_acceleration=a0)
+        assert traj.path_velocity(0.0) == pytest.approx(v0, abs=1e-12)
+        assert traj.path_acceleration(0.0) == pytest.approx(a0, abs=1e-12)
+        expected = ruckig_position_time(traj.length, v0, a0, 0.4, 2.0, 15.0)
+        assert traj.duration == pytest.approx(expected, rel=1e-9), (v0, a0)
+    with pytest.raises(ValueError, match="start_velocity = 0.5: must be at most the velocity limit"):
+        dispkin.plan(path, points, limits, start_velocity=0.5)
+    with pytest.raises(ValueError, match="start_acceleration = -2: brakes harder than the jerk limit"):
+        dispkin.plan(path, points, limits, start_velocity=0.01, start_acceleration=-2.0)
+    rest = dispkin.plan(path, points, limits)
+    assert rest.starting_from(0.2, 1.0).duration == dispkin.plan(path, points, limits, start_velocity=0.2,
+                                                                 start_acceleration=1.0).duration
