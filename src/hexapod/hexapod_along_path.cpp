@@ -11,7 +11,7 @@
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/path/path.hpp"
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 namespace {
 
@@ -168,4 +168,4 @@ PlanOptions Hexapod::joint_metric(const Path& path, const Limits& limits) const 
   return options;
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

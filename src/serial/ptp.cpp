@@ -10,7 +10,7 @@
 #include "dispkin/planning/velocity_limit.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 namespace {
 
 constexpr int initial_sections = 8;
@@ -21,10 +21,10 @@ constexpr double staircase_step = 0.95;   // velocity-limit levels v_sys · 0.95
 constexpr double rate_share = 0.9;        // of a joint acceleration limit for Δq r s̈; the rest for Δq m r ṡ²
 
 struct Cutter {
-  const serial::RevoluteChain& chain;
+  const RevoluteChain& chain;
   const Eigen::VectorXd& q_a;
   const Eigen::VectorXd& delta;
-  const detail::GroupFactors& factors;
+  const dispkin::detail::GroupFactors& factors;
   double tolerance;
   double floor_pace = 0.0;  // V_floor per unit u: a section of span h compares with floor_pace · h
 
@@ -49,7 +49,7 @@ int depth_of(const JointSection& s) { return static_cast<int>(std::lround(-std::
 }  // namespace
 
 JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                     const serial::SerialArm& arm, const PtpOptions& options) {
+                     const SerialArm& arm, const PtpOptions& options) {
   limits.validate(profile);
   set.require_well_formed();
   const int n = arm.dof();
@@ -86,7 +86,7 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   out.delta_ = q_b - q_a;
 
   // Sections: a uniform start, then halving by the cutting rule (ptp.hpp).
-  detail::GroupFactors factors(set, limits.velocity);
+  dispkin::detail::GroupFactors factors(set, limits.velocity);
   factors.use_pivot(Eigen::Vector3d::Zero());
   Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
   std::vector<JointSection> initial;
@@ -256,7 +256,7 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
   // q̇ = Δq (du/ds) ṡ, q̈ = Δq ((du/ds) s̈ + m (du/ds) ṡ²).
   out.qd = delta_ * (rate * out.s_dot);
   out.qdd = delta_ * (rate * (out.s_ddot + r.slope * out.s_dot * out.s_dot));
-  serial::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
+  chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
   return out;
 }
 
@@ -264,4 +264,4 @@ void JointTrajectory::sample(const double* times, JointTrajectorySample* out, st
   for (std::size_t i = 0; i < count; ++i) out[i] = sample(times[i]);
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

@@ -17,6 +17,10 @@ namespace dispkin {
 namespace {
 
 using serial::SerialArm;
+using serial::JointSection;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::PtpOptions;
 using testing::Random;
 using testing::random_set;
 using testing::worst_speed_ratio;
@@ -96,7 +100,7 @@ TEST(Ptp, AccelerationBoundHoldsForEveryPoint) {
       const double u0 = rnd.uniform(0.0, 0.9), u1 = u0 + rnd.uniform(0.01, 0.1);
       detail::GroupFactors factors(set, 1.0);
       factors.use_pivot(Eigen::Vector3d::Zero());
-      const JointSection s = detail::joint_section_bounds(arm.chain(), move.start(), delta, u0, u1, factors);
+      const JointSection s = serial::detail::joint_section_bounds(arm.chain(), move.start(), delta, u0, u1, factors);
       const double h = u1 - u0, dt = 1e-3;
       double worst = 0.0;
       for (int i = 1; i < 1000; ++i) {
