@@ -9,6 +9,7 @@
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "ptp_section.hpp"
 
 namespace dispkin::serial {
 namespace {
@@ -24,7 +25,7 @@ struct Cutter {
   const RevoluteChain& chain;
   const Eigen::VectorXd& q_a;
   const Eigen::VectorXd& delta;
-  const dispkin::detail::GroupFactors& factors;
+  const GroupFactors& factors;
   double tolerance;
   double floor_pace = 0.0;  // V_floor per unit u: a section of span h compares with floor_pace · h
 
@@ -86,7 +87,7 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   out.delta_ = q_b - q_a;
 
   // Sections: a uniform start, then halving by the cutting rule (ptp.hpp).
-  dispkin::detail::GroupFactors factors(set, limits.velocity);
+  GroupFactors factors(set, limits.velocity);
   factors.use_pivot(Eigen::Vector3d::Zero());
   Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
   std::vector<JointSection> initial;

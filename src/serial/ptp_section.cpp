@@ -1,4 +1,4 @@
-// The DISP bound of a joint section of a PTP move (ptp.hpp; derivation also in doc/ptp.md).
+// The DISP bound of a joint section of a PTP move (ptp_section.hpp; derivation also in doc/ptp.md).
 //
 // Notation, all in world (base) coordinates at the joint positions of the moment: joint i has
 // the unit axis ωᵢ through the point pᵢ (revolute) or the direction eᵢ (prismatic); the joint
@@ -27,6 +27,8 @@
 //
 // The arm of dispkin::serial has revolute joints only (the URDF loader refuses prismatic ones),
 // so the code below is the revolute case; doc/ptp.md states the prismatic terms.
+#include "ptp_section.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -39,7 +41,7 @@ namespace dispkin::serial {
 namespace detail {
 
 JointSection joint_section_bounds(const RevoluteChain& chain, const Eigen::VectorXd& q_a,
-                                  const Eigen::VectorXd& delta, double u0, double u1, const dispkin::detail::GroupFactors& factors) {
+                                  const Eigen::VectorXd& delta, double u0, double u1, const GroupFactors& factors) {
   const int n = chain.dof();
   const auto un = static_cast<std::size_t>(n);
   const double h = u1 - u0, um = 0.5 * (u0 + u1);

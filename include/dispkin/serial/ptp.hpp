@@ -10,7 +10,7 @@
 //! with V_g(½) the exact fastest speed of the group at the section's middle (doc/disp-metric.md §6: points,
 //! absolute points seen from the tool, spheres by the exact sphere formula) and A_g a bound of
 //! the acceleration per τ² of every object of the group over the section (a Lipschitz bound of
-//! its velocity, derived from the chain geometry — see joint_section_bounds and
+//! its velocity, derived from the chain geometry — see src/serial/ptp_section.cpp and
 //! doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
 //! faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same construction
 //! as CurveSection (speed at the middle + half the acceleration bound).
@@ -155,13 +155,4 @@ class JointTrajectory {
 JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                      const SerialArm& arm, const PtpOptions& options = {});
 
-namespace detail {
-
-//! The bounds of the joint section u ∈ [u0, u1] of the line q_a + u Δq on `chain`, with the
-//! groups' weights and relative reaches (from the tool origin) in `factors`. See the file comment
-//! and src/ptp_section.cpp for the derivation of the acceleration bound.
-JointSection joint_section_bounds(const RevoluteChain& chain, const Eigen::VectorXd& q_a,
-                                  const Eigen::VectorXd& delta, double u0, double u1, const dispkin::detail::GroupFactors& factors);
-
-}  // namespace detail
 }  // namespace dispkin::serial
