@@ -35,15 +35,6 @@ constexpr double duplicate_tolerance = ik_duplicate_tolerance;
 // The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
 constexpr int lma_run_length = 25;
 constexpr int lma_runs = 20;
-// q into (−π, π]: exact for any q (std::remainder), at once for one already there (what the
-// analytic families return; std::remainder would give it back unchanged, slower).
-double wrap(double q) {
-  if (q > -pi && q <= pi) return q;
-  double r = std::remainder(q, two_pi);  // in [−π, π]
-  if (r <= -pi) r += two_pi;
-  return r;
-}
-
 // The same solution up to 2π in any joint.
 template <typename Vector>
 bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::MatrixBase<Vector>& q) {
@@ -83,7 +74,7 @@ bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pos
 bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexcept {
   bool inside = true;
   for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const double w = wrap(q(i));
+    const double w = detail::wrap_angle(q(i));  // exact: ±1e16 rad keeps every digit below
     const double lo = limits.lower(i);
     const double hi = limits.upper(i);
     if (!std::isfinite(lo) || !std::isfinite(hi) || (lo - limit_slack <= w && w <= hi + limit_slack)) {
