@@ -23,7 +23,7 @@ namespace dispkin {
 //! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
 //! |ω| and angular acceleration |ω̇|.
 struct MotionBounds {
-  //! |ċ|, |c̈|, |ω|, |ω̇| (m, m, rad, rad per unit τ, τ²)
+  //! |ċ| and |c̈| (m per unit τ and τ²), |ω| and |ω̇| (rad per unit τ and τ²)
   //!@{
   double pivot_speed, pivot_acceleration, omega, omega_dot;
   //!@}
