@@ -5,7 +5,7 @@
 
 namespace {
 
-using dispkin::Hexapod;
+using dispkin::hexapod::Hexapod;
 using dispkin::Posed;
 using dispkin::Twistd;
 

@@ -38,7 +38,7 @@ void BM_PtpPlanUr5e(benchmark::State& state) {
   const dispkin::Limits limits{0.5, 2.0, 20.0};
   std::size_t sections = 0;
   for (auto _ : state) {
-    const dispkin::JointTrajectory traj = dispkin::plan(move, set, limits, dispkin::ProfileKind::scurve, ur5e());
+    const dispkin::serial::JointTrajectory traj = dispkin::serial::plan(move, set, limits, dispkin::ProfileKind::scurve, ur5e());
     sections = traj.sections().size();
     benchmark::DoNotOptimize(traj.duration());
   }
@@ -47,8 +47,8 @@ void BM_PtpPlanUr5e(benchmark::State& state) {
 BENCHMARK(BM_PtpPlanUr5e)->Unit(benchmark::kMicrosecond);
 
 void BM_PtpSampleUr5e(benchmark::State& state) {
-  const dispkin::JointTrajectory traj =
-      dispkin::plan(bench_move(), tool_set(), dispkin::Limits{0.5, 2.0, 20.0}, dispkin::ProfileKind::scurve, ur5e());
+  const dispkin::serial::JointTrajectory traj =
+      dispkin::serial::plan(bench_move(), tool_set(), dispkin::Limits{0.5, 2.0, 20.0}, dispkin::ProfileKind::scurve, ur5e());
   double t = 0.0;
   const double dt = traj.duration() / 997.0;
   for (auto _ : state) {

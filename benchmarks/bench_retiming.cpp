@@ -42,7 +42,7 @@ const dispkin::Limits fast{3.0, 400.0, std::nullopt};
 void BM_RetimeCheckJointLimits(benchmark::State& state) {
   const Move& m = move();
   const dispkin::Trajectory t = dispkin::plan(m.path, m.tool, fast, dispkin::ProfileKind::trapezoid);
-  for (auto _ : state) benchmark::DoNotOptimize(dispkin::check_joint_limits(t, m.arm, m.q_start));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::check_joint_limits(t, m.arm, m.q_start));
 }
 BENCHMARK(BM_RetimeCheckJointLimits)->Unit(benchmark::kMillisecond);
 
@@ -50,7 +50,7 @@ void BM_RetimeScaling(benchmark::State& state) {
   const Move& m = move();
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        dispkin::retime_by_scaling(m.path, m.tool, fast, dispkin::ProfileKind::trapezoid, m.arm, m.q_start));
+        dispkin::serial::retime_by_scaling(m.path, m.tool, fast, dispkin::ProfileKind::trapezoid, m.arm, m.q_start));
   }
 }
 BENCHMARK(BM_RetimeScaling)->Unit(benchmark::kMillisecond);
@@ -61,7 +61,7 @@ void BM_RetimeOptimal(benchmark::State& state) {
   dispkin::OptimalRetimeOptions options;
   options.grid_intervals = 100;
   options.check_samples_between = static_cast<int>(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(dispkin::retime_optimal(m.path, m.tool, fast, m.arm, m.q_start, options));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, fast, m.arm, m.q_start, options));
 }
 BENCHMARK(BM_RetimeOptimal)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 
@@ -74,7 +74,7 @@ void BM_RetimeOptimalJerkLimited(benchmark::State& state) {
   dispkin::OptimalRetimeOptions options;
   options.grid_intervals = 100;
   options.check_samples_between = static_cast<int>(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(dispkin::retime_optimal(m.path, m.tool, limits, m.arm, m.q_start, options));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, limits, m.arm, m.q_start, options));
 }
 BENCHMARK(BM_RetimeOptimalJerkLimited)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 

@@ -11,7 +11,7 @@
 
 int main() {
   const double deg = 3.14159265358979323846 / 180.0;
-  const dispkin::Hexapod hexapod = dispkin::Hexapod::symmetric(0.12, 20 * deg, 0.08, 20 * deg, 0.15, 0.13, 0.20, 0.01);
+  const dispkin::hexapod::Hexapod hexapod = dispkin::hexapod::Hexapod::symmetric(0.12, 20 * deg, 0.08, 20 * deg, 0.15, 0.13, 0.20, 0.01);
   const Eigen::Vector3d fibre_end(0.0, 0.0, 0.05);  // platform coordinates
   const dispkin::WorkToolFrames frames(dispkin::Posed(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0, 0.20)),
                                        dispkin::Posed(Eigen::Quaterniond::Identity(), fibre_end));
@@ -36,7 +36,7 @@ int main() {
       dispkin::plan(path, shell, limits, dispkin::ProfileKind::scurve, hexapod.joint_metric(path, limits));
   bool ok = true;
   for (const auto* traj : {&rule_a, &rule_b}) {
-    const dispkin::TrajectoryCheck check = hexapod.check_trajectory(*traj, 1e-3);
+    const dispkin::hexapod::TrajectoryCheck check = hexapod.check_trajectory(*traj, 1e-3);
     std::printf("scan (leg rule %s): %.2f s, legs %.2f .. %.2f mm, fastest leg %.3f mm/s (limit 10 mm/s): %s\n",
                 traj == &rule_a ? "(a)" : "(b)", traj->duration(), check.min_length.minCoeff() * 1e3,
                 check.max_length.maxCoeff() * 1e3, check.max_speed.maxCoeff() * 1e3,

@@ -27,22 +27,22 @@ int main() {
   const dispkin::Limits fast{3.0, 400.0, std::nullopt};
 
   const dispkin::Trajectory requested = dispkin::plan(path, tool, fast, dispkin::ProfileKind::trapezoid);
-  const dispkin::JointLimitReport before = dispkin::check_joint_limits(requested, arm, q_start);
+  const dispkin::JointLimitReport before = dispkin::serial::check_joint_limits(requested, arm, q_start);
   std::printf("requested: %.3f s, FVEL %.2f, FACC %.2f\n", requested.duration(), before.velocity_factor,
               before.acceleration_factor);
 
   const dispkin::RetimeResult scaled =
-      dispkin::retime_by_scaling(path, tool, fast, dispkin::ProfileKind::trapezoid, arm, q_start);
+      dispkin::serial::retime_by_scaling(path, tool, fast, dispkin::ProfileKind::trapezoid, arm, q_start);
   std::printf("scaling:   %.3f s after %d plans (velocity %.3f m/s, acceleration %.1f m/s²)\n",
               scaled.trajectory.duration(), scaled.iterations, scaled.limits.velocity, scaled.limits.acceleration);
-  const dispkin::OptimalRetimeResult optimal = dispkin::retime_optimal(path, tool, fast, arm, q_start);
+  const dispkin::OptimalRetimeResult optimal = dispkin::serial::retime_optimal(path, tool, fast, arm, q_start);
   std::printf("optimal:   %.3f s; largest joint speed / limit %.3f, torque / limit %.3f (checked at %zu samples)\n",
               optimal.trajectory.duration(), optimal.velocity_ratio, optimal.torque_ratio, optimal.report.samples.size());
   // The same with a jerk limit on the tool points (2000 m/s³): each rest-to-rest run is averaged
   // over a window T so that |s⃛| ≤ j; it costs about T.
   dispkin::Limits smooth = fast;
   smooth.jerk = 2000.0;
-  const dispkin::OptimalRetimeResult jerked = dispkin::retime_optimal(path, tool, smooth, arm, q_start);
+  const dispkin::OptimalRetimeResult jerked = dispkin::serial::retime_optimal(path, tool, smooth, arm, q_start);
   std::printf("optimal, jerk ≤ %.0f m/s³: %.3f s (window %.1f ms); joint speed / limit %.3f, torque / limit %.3f\n",
               *smooth.jerk, jerked.trajectory.duration(), jerked.jerk_window * 1e3, jerked.velocity_ratio,
               jerked.torque_ratio);

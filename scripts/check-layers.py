@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Keeps dispkin's layers pointing down (doc/architecture.md).
+"""Keeps dispkin's layers pointing down and its namespaces following its folders
+(doc/architecture.md).
 
 Every header under include/dispkin/ and every source under src/ belongs to a layer by its
 folder: the core (include/dispkin/*.hpp, src/*.cpp), path/, planning/, and the plugins hexapod/
@@ -7,9 +8,14 @@ and serial/. A file may include its own layer and the layers below it, never a l
 and one plugin never includes the other. The umbrella header dispkin/dispkin.hpp, which gathers
 the whole API, is the one exception.
 
+A file of a plugin opens dispkin's namespace only as the plugin's own, dispkin::hexapod or
+dispkin::serial (or one inside it, such as dispkin::serial::detail); a file of the core, path or
+planning layers opens dispkin or one inside it that is not a plugin's.
+
     scripts/check-layers.py [ROOT]      (ROOT: the repository, by default this script's parent)
 
-Prints each offending #include as FILE:LINE: and exits 1 if there is any, 0 otherwise.
+Prints each offending #include or namespace as FILE:LINE: and exits 1 if there is any, 0
+otherwise.
 """
 import pathlib
 import re
@@ -19,6 +25,11 @@ import sys
 RANKS = {"core": 0, "path": 1, "planning": 2, "hexapod": 3, "serial": 3}
 UMBRELLA = "dispkin/dispkin.hpp"
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]')
+PLUGINS = ("hexapod", "serial")
+# What can hide a brace or the word namespace: comments, string and character literals.
+NOT_CODE = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', re.S)
+NAMESPACE = re.compile(r'\bnamespace\s+([A-Za-z_][\w:]*)?\s*\{|[{}]')
+NAMED_NAMESPACE_NEXT = re.compile(r'\s*namespace\s+[A-Za-z_]')
 
 
 def layer_of_include(target):
@@ -36,6 +47,36 @@ def layer_of_file(root, path):
     return inner[0] if len(inner) > 1 and inner[0] in RANKS else "core"
 
 
+def opened_namespaces(text):
+    """(line, full name) of every named namespace the text opens, e.g. (12, "dispkin::serial"); one
+    that opens another named one at once (`namespace dispkin {` `namespace serial {`) is a step
+    towards that one and not reported by itself."""
+    code = NOT_CODE.sub(lambda m: "\n" * m.group(0).count("\n"), text)
+    stack = []  # one entry per open brace: the namespace's name, "" for anything else
+    for match in NAMESPACE.finditer(code):
+        if match.group(0) == "}":
+            if stack:
+                stack.pop()
+            continue
+        name = match.group(1) or ""
+        stack.append(name)
+        if name and not NAMED_NAMESPACE_NEXT.match(code, match.end()):
+            yield code.count("\n", 0, match.start()) + 1, "::".join(part for part in stack if part)
+
+
+def namespace_of_layer(layer):
+    """The namespace a layer's files open: a plugin's own, dispkin for the core layers."""
+    return f"dispkin::{layer}" if layer in PLUGINS else "dispkin"
+
+
+def namespace_fits(layer, name):
+    expected = namespace_of_layer(layer)
+    if not (name == expected or name.startswith(expected + "::")):
+        return False
+    parts = name.split("::")
+    return layer in PLUGINS or len(parts) < 2 or parts[1] not in PLUGINS
+
+
 def violations(root):
     root = pathlib.Path(root)
     files = sorted((root / "include" / "dispkin").rglob("*.hpp")) + sorted((root / "src").rglob("*.[ch]pp"))
@@ -43,7 +84,12 @@ def violations(root):
         if path == root / "include" / UMBRELLA:
             continue
         layer = layer_of_file(root, path)
-        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        text = path.read_text(encoding="utf-8")
+        for number, name in opened_namespaces(text):
+            if name.split("::")[0] == "dispkin" and not namespace_fits(layer, name):
+                yield (f"{path.relative_to(root)}:{number}: the {layer} layer opens namespace {name}, "
+                       f"not one inside {namespace_of_layer(layer)}")
+        for number, line in enumerate(text.splitlines(), 1):
             match = INCLUDE.match(line)
             if not match:
                 continue
@@ -61,9 +107,10 @@ def main(argv):
     for message in found:
         print(message)
     if found:
-        print(f"check-layers: {len(found)} include(s) point up or across (doc/architecture.md)")
+        print(f"check-layers: {len(found)} include(s) point up or across or namespace(s) differ from their "
+              "folder (doc/architecture.md)")
         return 1
-    print("check-layers: every include points down")
+    print("check-layers: every include points down and every namespace follows its folder")
     return 0
 
 

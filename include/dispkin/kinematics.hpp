@@ -1,6 +1,6 @@
 //! The kinematics plugin interface: what a planner needs to know about a machine.
 //!
-//! Implemented by dispkin::hexapod (Hexapod) and, later, dispkin::serial. Planning side: the
+//! Implemented by dispkin::hexapod::Hexapod and dispkin::serial::SerialArm. Planning side: the
 //! functions may allocate and throw std::invalid_argument / std::runtime_error.
 #pragma once
 

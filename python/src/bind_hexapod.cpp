@@ -19,6 +19,12 @@ namespace python {
 
 namespace {
 
+using hexapod::Hexapod;
+using hexapod::LegExcursion;
+using hexapod::LegViolation;
+using hexapod::TrajectoryCheck;
+using hexapod::WorkspaceCheck;
+using hexapod::xyzuvw_for_new_pivot;
 using Legs = Hexapod::Legs;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 

@@ -27,6 +27,8 @@ namespace python {
 
 namespace {
 
+using hexapod::Hexapod;
+
 
 Limits make_limits(double velocity, double acceleration, std::optional<double> jerk, std::optional<double> angular_velocity,
                    std::optional<double> angular_acceleration) {

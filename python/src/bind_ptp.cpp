@@ -21,6 +21,14 @@ namespace python {
 
 namespace {
 
+using serial::FollowedTrajectory;
+using serial::JointSection;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::OverlappedJointTrajectory;
+using serial::OverlappedMixedTrajectory;
+using serial::PtpOptions;
+
 
 // Samples at `times` (a number or (N,)), `columns` numbers per sample, shaped (N, *tail); for a
 // number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar. An

@@ -21,6 +21,8 @@ namespace python {
 
 namespace {
 
+using hexapod::Hexapod;
+
 // Per-sample arrays of a report: (N,) times and s, (N, dof) for the joint quantities.
 py::dict report_arrays(const JointLimitReport& r) {
   const auto n = static_cast<Eigen::Index>(r.samples.size());

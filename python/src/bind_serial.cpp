@@ -25,6 +25,8 @@ namespace {
 using serial::InverseOptions;
 using serial::InverseResult;
 using serial::SerialArm;
+using serial::FollowedJoints;
+using serial::JointTrajectory;
 
 // A Pose or a (4, 4) matrix. A Pose is read as it is, and so is a contiguous float64 array, C
 // or Fortran order (Pose.matrix() gives the latter), without a converted copy; anything else

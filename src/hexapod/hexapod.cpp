@@ -18,7 +18,7 @@
 #include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 namespace {
 
@@ -407,4 +407,4 @@ void Hexapod::save(const std::string& path) const {
   require(static_cast<bool>(out), "path", path, "write failed");
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

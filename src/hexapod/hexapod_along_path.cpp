@@ -11,7 +11,7 @@
 #include "dispkin/hexapod/hexapod.hpp"
 #include "dispkin/path/path.hpp"
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 namespace {
 
@@ -45,7 +45,7 @@ double joint_acceleration_bound(const Section& section, const Hexapod::Joints& p
           return s.angle * s.angle * radius + s.rotation_angle * s.rotation_angle * reach(s.pivot);
         } else {
           // A curved section (SPLINE, blend): ‖p̈‖ ≤ |c̈| + (|ω̇| + |ω|²) ρ from its motion bounds.
-          const detail::MotionBounds b = s.motion_bounds();
+          const MotionBounds b = s.motion_bounds();
           return b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * reach(s.pivot);
         }
       },
@@ -168,4 +168,4 @@ PlanOptions Hexapod::joint_metric(const Path& path, const Limits& limits) const 
   return options;
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod& hexapod,
                                     const JointCheckOptions& options) {
@@ -89,4 +89,4 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   return retime_optimal(path, set, limits, HexapodModel(hexapod), hexapod.leg_lengths(hexapod.home()), options);
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

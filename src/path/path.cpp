@@ -8,6 +8,7 @@
 #include <string>
 
 #include "path_geometry.hpp"
+#include "section_bounds.hpp"
 
 namespace dispkin {
 namespace {
@@ -313,7 +314,7 @@ std::vector<double> Path::section_lengths(const MetricSetd& set, std::optional<d
   set.require_well_formed();
   detail::require_system_velocity(system_velocity);
   // The groups' weights and reaches are per path: once, not once per section.
-  detail::GroupFactors factors(set, system_velocity);
+  GroupFactors factors(set, system_velocity);
   std::vector<double> lengths;
   lengths.reserve(sections_.size());
   for (const Section& s : sections_) lengths.push_back(detail::section_bounds(s, factors).length);
@@ -336,7 +337,7 @@ Posed Path::sample(double u) const noexcept {
 namespace {
 
 double set_acceleration_bound(const MetricSetd& set, const Eigen::Vector3d& pivot, const Eigen::Vector3d& pivot_middle,
-                              const detail::MotionBounds& bounds) {
+                              const MotionBounds& bounds) {
   double best = 0.0;
   for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, bounds));
   return best;
@@ -348,7 +349,7 @@ namespace {
 
 // The motion bounds of a LIN section (see LinSection::acceleration_bound) and its screw twist
 // (only for a screw).
-detail::MotionBounds lin_motion_bounds(const LinSection& lin, Twistd& screw) {
+MotionBounds lin_motion_bounds(const LinSection& lin, Twistd& screw) {
   if (lin.interpolation == Interpolation::screw) {
     screw = lin.twist(0.0);
     const double speed = (screw.linear + screw.angular.cross(lin.pivot)).norm(), omega = screw.angular.norm();
@@ -365,12 +366,12 @@ double LinSection::acceleration_bound(const MetricSetd& set) const {
   return set_acceleration_bound(set, pivot, pose(0.5) * pivot, lin_motion_bounds(*this, screw));
 }
 
-detail::SectionBounds LinSection::bounds(const detail::GroupFactors& factors) const {
+SectionBounds LinSection::bounds(const GroupFactors& factors) const {
   // As length() (section_length) and acceleration_bound(), with the groups' weights and reaches
   // at hand.
   const MetricSetd& set = factors.set();
   Twistd screw;
-  const detail::MotionBounds motion = lin_motion_bounds(*this, screw);
+  const MotionBounds motion = lin_motion_bounds(*this, screw);
   const Eigen::Vector3d pivot_middle = pose(0.5) * pivot;
   double length = 0.0, acceleration = 0.0;
   if (interpolation == Interpolation::screw) {
@@ -388,7 +389,7 @@ detail::SectionBounds LinSection::bounds(const detail::GroupFactors& factors) co
 
 Section section_part(const Section& section, double t0, double t1) { return detail::section_part(section, t0, t1); }
 
-detail::SectionBounds detail::section_bounds(const Section& section, GroupFactors& factors) {
+SectionBounds detail::section_bounds(const Section& section, GroupFactors& factors) {
   return std::visit(
       [&](const auto& s) {
         factors.use_pivot(s.pivot);
@@ -416,7 +417,7 @@ Eigen::VectorXd JointPath::sample(double u) const {
   return q_start_ + t * (q_end_ - q_start_);
 }
 
-detail::SectionBounds detail::section_bounds_from_middle(const Section& section, GroupFactors& factors) {
+SectionBounds detail::section_bounds_from_middle(const Section& section, GroupFactors& factors) {
   const auto* lin = std::get_if<LinSection>(&section);
   if (!lin) return section_bounds(section, factors);
   // The LIN's exact speed at its middle plus half the rate bound (doc/planning.md eq. 19).

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "../path/section_bounds.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
 #include "lin_speed_range.hpp"
@@ -94,7 +95,7 @@ std::optional<JunctionSpeeds> direction_continuous(const Section& before, const 
 struct PlannedSections {
   std::vector<Section> sections;
   std::vector<SectionSource> sources;
-  std::vector<detail::SectionBounds> bounds;
+  std::vector<SectionBounds> bounds;
   std::vector<double> lengths;
 
   std::size_t size() const noexcept { return sections.size(); }
@@ -104,7 +105,7 @@ struct PlannedSections {
     bounds.reserve(n);
     lengths.reserve(n);
   }
-  void push_back(const Section& section, const SectionSource& source, const detail::SectionBounds& b) {
+  void push_back(const Section& section, const SectionSource& source, const SectionBounds& b) {
     sections.push_back(section);
     sources.push_back(source);
     bounds.push_back(b);
@@ -127,14 +128,14 @@ struct PlannedSections {
 // of the staircase (10 %) where the curvature rule binds (doc/planning.md eq. 11); at most 4096
 // parts a section.
 template <class Curve>
-void append_curve_cut(const Curve& curve, std::size_t source, const detail::GroupFactors& factors, double minimum,
+void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors& factors, double minimum,
                       double rotation_scale, double speed_cap, double acceleration, PlannedSections& out) {
   constexpr double cruise_ratio_loss = 0.004, curvature_ratio_loss = 0.1;
   constexpr std::size_t max_parts = 4096;
   constexpr double max_split = 64.0;
   // How many equal parts the part [t0, t1] with refined bounds r asks to be cut into.
-  const auto parts_wanted = [&](double t0, double t1, const detail::RefinedBounds& r) {
-    const detail::SectionBounds& b = r.bounds;
+  const auto parts_wanted = [&](double t0, double t1, const RefinedBounds& r) {
+    const SectionBounds& b = r.bounds;
     // The floor every part is lengthened to (per unit of its τ): a part at the floor runs at
     // one speed whatever its fastest object does.
     const double floor = std::max(minimum * (t1 - t0), b.omega * rotation_scale);
@@ -158,7 +159,7 @@ void append_curve_cut(const Curve& curve, std::size_t source, const detail::Grou
     return std::make_pair(part, part.refined(factors));
   };
   std::size_t count = 1;  // parts emitted or promised
-  const auto cut = [&](const auto& self, double t0, double t1, const Curve& part, const detail::RefinedBounds& r) -> void {
+  const auto cut = [&](const auto& self, double t0, double t1, const Curve& part, const RefinedBounds& r) -> void {
     const double parts = parts_wanted(t0, t1, r);
     if (!(parts > 1.0) || count + static_cast<std::size_t>(parts) - 1 > max_parts) {
       out.push_back(part, {source, t0, t1}, r.bounds);
@@ -180,7 +181,7 @@ void append_curve_cut(const Curve& curve, std::size_t source, const detail::Grou
 // finely as it varies: a part whose range is too wide is cut into as many equal parts as its
 // relative width asks for at 0.4 % each, and those are checked again (at most 4096 pieces per
 // section; a piece's length is its exact peak, so a coarser piece is only slower, never unsafe).
-void append_cut(const Section& section, std::size_t source, detail::GroupFactors& factors, double rotation_scale,
+void append_cut(const Section& section, std::size_t source, GroupFactors& factors, double rotation_scale,
                 double minimum, double speed_cap, double acceleration, PlannedSections& out) {
   // 0.4 %: the cruise keeps ≥ 99.5 %, and neighbouring pieces stay within the junction rule's
   // 1 % (eq. 21) without lengthening.
@@ -198,7 +199,7 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
     factors.use_pivot(blend->pivot);
     return append_curve_cut(*blend, source, factors, minimum, rotation_scale, speed_cap, acceleration, out);
   }
-  const detail::SectionBounds whole = detail::section_bounds(section, factors);
+  const SectionBounds whole = detail::section_bounds(section, factors);
   const auto* lin = std::get_if<LinSection>(&section);
   // A minimum length at least the section's own runs the whole section at one speed: its
   // fastest object is not what binds. Nor where the curvature rule (eq. 11) holds the speed
@@ -234,7 +235,7 @@ void append_cut(const Section& section, std::size_t source, detail::GroupFactors
   const auto emit = [&](double t0, double t1, const detail::SpeedRange& r) {
     const double h = t1 - t0;
     const Posed piece_end = t1 >= 1.0 ? lin->end : speeds.pose(t1);
-    const detail::MotionBounds motion{travel * h, 0.0, whole.omega * h, 0.0};
+    const MotionBounds motion{travel * h, 0.0, whole.omega * h, 0.0};
     const Eigen::Vector3d pivot_middle = pivot_start + (0.5 * (t0 + t1)) * pivot_travel;
     double rate = 0.0;
     for (std::size_t i = 0; i < set.groups().size(); ++i)
@@ -269,7 +270,7 @@ std::vector<SpeedLimit> speed_limit_segments(const PlannedSections& planned, con
   constexpr double step = 0.9;
   std::vector<SpeedLimit> segments;
   for (std::size_t k = first; k < last; ++k) {
-    const detail::SectionBounds& bounds = planned.bounds[k];
+    const SectionBounds& bounds = planned.bounds[k];
     const double length = planned.lengths[k];
     const MoveLimits& move = moves[planned.sources[k].section];
     const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
@@ -361,7 +362,7 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   // under its own limit. Lengths and acceleration bounds come from one evaluation per section
   // (the same as Path::section_lengths and section_acceleration_bound give); sections whose
   // fastest point's speed varies are cut into pieces.
-  detail::GroupFactors factors(set, limits.velocity);
+  GroupFactors factors(set, limits.velocity);
   const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
   PlannedSections planned;
   planned.reserve(n);

@@ -44,6 +44,11 @@ void chain_torques(const ChainPassRecord& record, const std::vector<ChainBody>& 
 void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
                       const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding);
 
+//! KDL's ChainIdSolver_RNE on the arm's KDL chain: the reference SerialArm::torques is tested
+//! against (not on any hot path: it copies the chain per call).
+Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                               const Eigen::VectorXd& qdd);
+
 }  // namespace detail
 }  // namespace serial
 }  // namespace dispkin

@@ -13,7 +13,7 @@
 #include "dispkin/serial/chain_kinematics.hpp"
 #include "joint_following.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 namespace {
 
@@ -55,7 +55,7 @@ struct SectionNodes {
 
 class SectionFollower {
  public:
-  SectionFollower(const Trajectory& trajectory, const serial::SerialArm& arm)
+  SectionFollower(const Trajectory& trajectory, const SerialArm& arm)
       : path_(trajectory.path()), arm_(arm), limits_(arm.joint_limits()) {}
 
   SectionNodes follow(std::size_t k, int n, const Eigen::VectorXd& q_in, bool backwards) const {
@@ -125,23 +125,23 @@ class SectionFollower {
   }
 
   const SampledPath& path_;
-  const serial::SerialArm& arm_;
+  const SerialArm& arm_;
   JointLimits limits_;
 };
 
 }  // namespace
 
-FollowedTrajectory FollowedTrajectory::from_start(Trajectory trajectory, const serial::SerialArm& arm,
+FollowedTrajectory FollowedTrajectory::from_start(Trajectory trajectory, const SerialArm& arm,
                                                   const Eigen::VectorXd& q_start, double spacing) {
   return FollowedTrajectory(std::move(trajectory), arm, q_start, false, spacing);
 }
 
-FollowedTrajectory FollowedTrajectory::to_end(Trajectory trajectory, const serial::SerialArm& arm,
+FollowedTrajectory FollowedTrajectory::to_end(Trajectory trajectory, const SerialArm& arm,
                                               const Eigen::VectorXd& q_end, double spacing) {
   return FollowedTrajectory(std::move(trajectory), arm, q_end, true, spacing);
 }
 
-FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_given,
+FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_given,
                                        bool backwards, double spacing)
     : trajectory_(std::move(trajectory)), chain_(arm.chain()) {
   const char* given = backwards ? "q_end" : "q_start";
@@ -156,7 +156,7 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const serial::Seri
   require(trajectory_.section_count() > 0, "trajectory", static_cast<long>(trajectory_.section_count()),
           "sections: must have at least one");
   const Posed wanted = trajectory_.sample(backwards ? trajectory_.duration() : 0.0).pose;
-  const Posed reached = serial::chain_pose(chain_, q_given.data());
+  const Posed reached = chain_pose(chain_, q_given.data());
   require(reached.is_approx(wanted, 1e-9), given, q_given,
           std::string("its forward kinematics must be the trajectory's ") + (backwards ? "end" : "start") +
               " pose to 1e-9 (translation off by " + std::to_string((reached.translation() - wanted.translation()).norm()) +
@@ -236,8 +236,8 @@ JointTrajectorySample FollowedTrajectory::sample(double t) const noexcept {
   out.s_dot = state.v;
   out.s_ddot = state.a;
   out.u = trajectory_.length() > 0.0 ? state.s / trajectory_.length() : 0.0;
-  serial::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
+  chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
   return out;
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

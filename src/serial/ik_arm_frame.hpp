@@ -26,6 +26,11 @@ namespace detail {
 //! general subproblem path, with its measured and polished candidates, decides.
 enum class FastStep { exact, none, general };
 
+//! Lines that meet or are parallel to this (m, rad) do so to rounding: chains written from DH
+//! tables or from URDF origins with exact angles are, those with rounded angles (1.5708 for π/2)
+//! are not. Only then are the fast paths' solutions exact without a check.
+constexpr double exact_fit_tolerance = 1e-14;
+
 //! A point or vector of the arm plane in coordinates (ξ, η) = (z, x) of link 1's arm frame: a
 //! turn by θ about +y is the plane rotation by θ (doc/inverse-kinematics.md (eq. 29)).
 struct PlaneVector {
@@ -116,7 +121,7 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
     out.reach[l] = u;
   }
   out.angle[1] = out.q1[1].angle();
-  out.angle[0] = lateral == 0.0 ? out.angle[1] - std::copysign(pi, out.angle[1]) : out.q1[0].angle();
+  out.angle[0] = lateral == 0.0 ? half_turn(out.angle[1]) : out.q1[0].angle();
   return out;
 }
 

@@ -30,9 +30,6 @@ void keep_exact(const RevoluteChain& chain, const Posed& pose, Vector6d q, bool 
   out.push(q, 0.0);
 }
 
-// θ + π in (−π, π] for θ in (−π, π] (the wrist flip, eq. 27).
-double half_turn(double angle) noexcept { return angle > 0.0 ? angle - pi : angle + pi; }
-
 // The measured path of the spherical wrist for one arm branch: every candidate's full pose error
 // by the motions composed in link 3's frame, polished by offer() above 4e-15.
 void spherical_wrist_measured(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,

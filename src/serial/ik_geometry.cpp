@@ -141,11 +141,6 @@ Eigen::Vector3d normal_to(const Eigen::Vector3d& k) {
   return k.cross(seed).normalized();
 }
 
-// Lines that meet or are parallel to this (m, rad) do so to rounding: chains written from DH
-// tables or from URDF origins with exact angles are, those with rounded angles (1.5708 for π/2)
-// are not.
-constexpr double exact_fit_tolerance = 1e-14;
-
 }  // namespace
 
 ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {

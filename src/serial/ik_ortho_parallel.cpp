@@ -16,12 +16,6 @@ namespace {
 // The positioning residual ‖e₁e₂e₃ c − G c‖ (m) of eq. 26 below which a branch counts as exact.
 constexpr double exact_position = 4e-15;
 
-// The wrist basis (ω₄, ω₅, ω₄ × ω₅) is orthonormal to rounding only if the axes are.
-constexpr double exact_fit_tolerance = 1e-14;
-
-// θ ± π, in [−π, π] for θ in [−π, π] (the wrist flip, eq. 27; wrapped to (−π, π] when kept).
-double half_turn(double angle) noexcept { return angle - std::copysign(pi, angle); }
-
 // R_z(−q₁) v: a vector of arm coordinates into link 1's frame.
 EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn1(const CosSin& q1, const Eigen::Vector3d& v) noexcept {
   return {q1.c * v.x() + q1.s * v.y(), q1.c * v.y() - q1.s * v.x(), v.z()};
@@ -37,6 +31,7 @@ EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn_y(const CosSin& t, const Eigen::Vecto
 }  // namespace
 
 bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& centre, OrthoParallel& out) {
+  // Axis 1 ⊥ axis 2 to rounding: only then are the arm frame's solutions exact (eq. 26).
   if (std::abs(chain.axes[0].dot(chain.axes[1])) > exact_fit_tolerance) return false;
   out.frame = arm_frame(chain);
   out.elbow = plane_elbow(chain, out.frame, centre);

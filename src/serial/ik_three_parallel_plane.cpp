@@ -11,8 +11,6 @@ namespace detail {
 
 namespace {
 
-constexpr double exact_fit_tolerance = 1e-14;
-
 // The wrist singularity test of the general path (ik_closed_form.cpp): R₅ᵀ ω₂ within this of ω₆.
 constexpr double singular_wrist = 1e-6;
 

@@ -18,16 +18,18 @@
 #include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/ptp.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 namespace detail {
 
-Eigen::VectorXd branch_solution(const serial::SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
+using dispkin::detail::where;
+
+Eigen::VectorXd branch_solution(const SerialArm& arm, const Posed& pose, const Eigen::VectorXd& q_ref, double t,
                                 double s, const Eigen::VectorXd* guess) {
-  serial::detail::BranchRule rule;
+  detail::BranchRule rule;
   rule.options.offer_equivalents = false;
   rule.options.keep_outside_limits = true;  // reported as a position excursion, not hidden
-  rule.turns = serial::detail::Turns::nearest;
-  std::optional<Eigen::VectorXd> q = serial::detail::solution_on_branch(arm, pose, q_ref, rule, guess);
+  rule.turns = detail::Turns::nearest;
+  std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, pose, q_ref, rule, guess);
   if (!q) throw std::runtime_error("the pose at " + where(t, s) + " has no inverse-kinematics solution");
   return std::move(*q);
 }
@@ -90,8 +92,8 @@ bool clears_singularity(const BodyJacobian& j, const Eigen::PartialPivLU<BodyJac
 // The square body Jacobian of the joints that move into `j` (a redundant arm: the full J_b(q), 6 × dof,
 // into `full` first): all six of a 6R arm; a redundant arm's but the locked one, whose rate is 0 on a path
 // at one parameter value (doc/inverse-kinematics.md (eq. 42)).
-void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, FullJacobian& full, BodyJacobian& j,
-                     serial::detail::ChainPassRecord* record) {
+void moving_jacobian(const SerialArm& arm, const Eigen::VectorXd& q, FullJacobian& full, BodyJacobian& j,
+                     detail::ChainPassRecord* record) {
   const int locked = arm.redundancy().joint;
   if (arm.dof() != 6 && locked < 0)
     throw std::invalid_argument(describe("arm dof", static_cast<long>(arm.dof()),
@@ -99,17 +101,17 @@ void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, Ful
   if (locked < 0) {
     // A 6R arm: J_b itself, computed in place (bit for bit the rates of tests/data/plan_fingerprint.txt).
     if (record) {
-      serial::detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
+      detail::chain_body_jacobian(arm.chain(), q.data(), j, *record);
     } else {
-      serial::chain_body_jacobian(arm.chain(), q.data(), j);
+      chain_body_jacobian(arm.chain(), q.data(), j);
     }
     return;
   }
   full.resize(6, arm.dof());
   if (record) {
-    serial::detail::chain_body_jacobian(arm.chain(), q.data(), full, *record);
+    detail::chain_body_jacobian(arm.chain(), q.data(), full, *record);
   } else {
-    serial::chain_body_jacobian(arm.chain(), q.data(), full);
+    chain_body_jacobian(arm.chain(), q.data(), full);
   }
   for (int c = 0, k = 0; c < arm.dof(); ++c)
     if (c != locked) j.col(k++) = full.col(c);
@@ -117,7 +119,7 @@ void moving_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q, Ful
 
 // The rates of the moving joints (`moving`, 6) as rates of all joints into `out`, 0 at the locked
 // one (no allocation when `out` has the size already).
-void all_joints(const serial::SerialArm& arm, const Eigen::Matrix<double, 6, 1>& moving, Eigen::VectorXd& out) {
+void all_joints(const SerialArm& arm, const Eigen::Matrix<double, 6, 1>& moving, Eigen::VectorXd& out) {
   const int locked = arm.redundancy().joint;
   out.resize(arm.dof());
   for (int c = 0, k = 0; c < arm.dof(); ++c) out(c) = c == locked ? 0.0 : moving(k++);
@@ -126,9 +128,9 @@ void all_joints(const serial::SerialArm& arm, const Eigen::Matrix<double, 6, 1>&
 // J_b(q) of the moving joints and its LU (partial pivoting: it is square and, where it is used,
 // well conditioned), recording the pass if `record` is not null; throws naming the place near a
 // singularity.
-Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& arm, const Eigen::VectorXd& q,
+Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const SerialArm& arm, const Eigen::VectorXd& q,
                                                       FullJacobian& full, BodyJacobian& j, double t, double s,
-                                                      serial::detail::ChainPassRecord* record = nullptr) {
+                                                      detail::ChainPassRecord* record = nullptr) {
   moving_jacobian(arm, q, full, j, record);
   Eigen::PartialPivLU<BodyJacobian> lu(j);
   double rcond = 0.0;
@@ -140,7 +142,7 @@ Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const serial::SerialArm& a
 
 }  // namespace
 
-Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                                double t, double s) {
   BodyJacobian j;
   FullJacobian full;
@@ -153,37 +155,37 @@ Eigen::VectorXd joint_velocity(const serial::SerialArm& arm, const Eigen::Vector
 
 namespace {
 
-void rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
-           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, serial::detail::ChainPassRecord* record) {
+void rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
+           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, detail::ChainPassRecord* record) {
   BodyJacobian j;
   FullJacobian full;
   const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s, record);
   if (arm.dof() == 6) {
     qd = lu.solve(body.vector());
-    const Twistd product = serial::chain_velocity_product(j, qd.data());
+    const Twistd product = chain_velocity_product(j, qd.data());
     qdd = lu.solve(body_rate.vector() - product.vector());
     return;
   }
   all_joints(arm, lu.solve(body.vector()), qd);
-  const Twistd product = serial::chain_velocity_product(full, qd.data());
+  const Twistd product = chain_velocity_product(full, qd.data());
   all_joints(arm, lu.solve(body_rate.vector() - product.vector()), qdd);
 }
 
 }  // namespace
 
-void joint_rates(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
+void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
                  double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
   rates(arm, q, body, body_rate, t, s, qd, qdd, nullptr);
 }
 
-void joint_rates_and_torques(const serial::SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
+void joint_rates_and_torques(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                              const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
                              Eigen::VectorXd& torque, Eigen::VectorXd& static_torque) {
-  serial::detail::ChainPassRecord record;
+  detail::ChainPassRecord record;
   rates(arm, q, body, body_rate, t, s, qd, qdd, &record);
-  serial::detail::recorded_torques(arm, record, qd, qdd, torque, static_torque);
+  detail::recorded_torques(arm, record, qd, qdd, torque, static_torque);
 }
 
 }  // namespace detail
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

@@ -10,13 +10,13 @@
 #include "overlapped_joint_sample.hpp"
 #include "same_chain.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 OverlappedJointTrajectory::OverlappedJointTrajectory(JointTrajectory before, JointTrajectory after, double overlap)
     : before_(std::move(before)), after_(std::move(after)), overlap_(overlap) {
   require(before_.dof() == after_.dof(), "after", static_cast<long>(after_.dof()),
           "joints: must move as many joints as `before` (" + std::to_string(before_.dof()) + ")");
-  require(serial::detail::same_chain(before_.chain(), after_.chain()), "after", static_cast<long>(after_.dof()),
+  require(detail::same_chain(before_.chain(), after_.chain()), "after", static_cast<long>(after_.dof()),
           "joints: must be planned on the same arm as `before`");
   const double shorter = std::min(before_.duration(), after_.duration());
   require(std::isfinite(overlap) && overlap >= 0.0 && overlap <= shorter, "overlap", overlap,
@@ -29,9 +29,9 @@ OverlappedJointTrajectory::OverlappedJointTrajectory(JointTrajectory before, Joi
 
 JointTrajectorySample OverlappedJointTrajectory::sample(double t) const noexcept {
   // eq. 16
-  return serial::detail::overlapped_joint_sample(
+  return detail::overlapped_joint_sample(
       t, overlap_, before_.duration(), before_.length(), after_.duration(), duration(), via_, after_.chain(),
       [this](double u) { return before_.sample(u); }, [this](double u) { return after_.sample(u); });
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

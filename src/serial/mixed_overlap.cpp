@@ -12,7 +12,7 @@
 #include "overlapped_joint_sample.hpp"
 #include "same_chain.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 OverlappedMixedTrajectory::OverlappedMixedTrajectory(JointTrajectory before, FollowedTrajectory after, double overlap)
     : ptp_(std::move(before)), cartesian_(std::move(after)), ptp_first_(true), overlap_(overlap) {
@@ -31,7 +31,7 @@ void OverlappedMixedTrajectory::check(double overlap) const {
   const char* cartesian = ptp_first_ ? "after" : "before";
   require(ptp_.dof() == cartesian_.dof(), cartesian, static_cast<long>(cartesian_.dof()),
           "joints: must move as many joints as the PTP move (" + std::to_string(ptp_.dof()) + ")");
-  require(serial::detail::same_chain(ptp_.chain(), cartesian_.chain()), cartesian, static_cast<long>(cartesian_.dof()),
+  require(detail::same_chain(ptp_.chain(), cartesian_.chain()), cartesian, static_cast<long>(cartesian_.dof()),
           "joints: must be followed on the arm the PTP move was planned on");
   const double shorter = std::min(ptp_.duration(), cartesian_.duration());
   require(std::isfinite(overlap) && overlap >= 0.0 && overlap <= shorter, "overlap", overlap,
@@ -45,9 +45,9 @@ void OverlappedMixedTrajectory::check(double overlap) const {
 
 JointTrajectorySample OverlappedMixedTrajectory::sample(double t) const noexcept {
   // eq. 21
-  return serial::detail::overlapped_joint_sample(
+  return detail::overlapped_joint_sample(
       t, overlap_, before_duration(), before_length(), after_duration(), duration(), via_, ptp_.chain(),
       [this](double u) { return before_at(u); }, [this](double u) { return after_at(u); });
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

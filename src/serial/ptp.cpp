@@ -9,8 +9,9 @@
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "ptp_section.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 namespace {
 
 constexpr int initial_sections = 8;
@@ -21,10 +22,10 @@ constexpr double staircase_step = 0.95;   // velocity-limit levels v_sys · 0.95
 constexpr double rate_share = 0.9;        // of a joint acceleration limit for Δq r s̈; the rest for Δq m r ṡ²
 
 struct Cutter {
-  const serial::RevoluteChain& chain;
+  const RevoluteChain& chain;
   const Eigen::VectorXd& q_a;
   const Eigen::VectorXd& delta;
-  const detail::GroupFactors& factors;
+  const GroupFactors& factors;
   double tolerance;
   double floor_pace = 0.0;  // V_floor per unit u: a section of span h compares with floor_pace · h
 
@@ -46,12 +47,9 @@ struct Cutter {
 
 int depth_of(const JointSection& s) { return static_cast<int>(std::lround(-std::log2(s.u1 - s.u0))); }
 
-}  // namespace
-
-JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                     const serial::SerialArm& arm, const PtpOptions& options) {
-  limits.validate(profile);
-  set.require_well_formed();
+// The move's checks (ptp.hpp): joint vectors of the arm's size, finite, distinct and inside its
+// position limits; the options' tolerance and joint acceleration limits.
+void require_move(const JointPath& path, const SerialArm& arm, const PtpOptions& options) {
   const int n = arm.dof();
   require(n <= max_ptp_joints, "arm dof", n, "exceeds max_ptp_joints = " + std::to_string(max_ptp_joints));
   const Eigen::VectorXd& q_a = path.start();
@@ -65,7 +63,6 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   const std::vector<std::string> names = arm.joint_names();
   for (int i = 0; i < n; ++i) {
     const std::string name = "joint \"" + names[static_cast<std::size_t>(i)] + "\"";
-    const Eigen::Vector2d range(joint.lower(i), joint.upper(i));
     require(q_a(i) >= joint.lower(i) && q_a(i) <= joint.upper(i), "q_a[" + std::to_string(i) + "]", q_a(i),
             "is outside the position limits [lower, upper] of " + name);
     require(q_b(i) >= joint.lower(i) && q_b(i) <= joint.upper(i), "q_b[" + std::to_string(i) + "]", q_b(i),
@@ -78,17 +75,10 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
           "must be 0 (none) or the arm's dof " + std::to_string(n));
   for (Eigen::Index i = 0; i < qdd_max.size(); ++i)
     require(qdd_max(i) > 0.0, "joint_acceleration[" + std::to_string(i) + "]", qdd_max(i), "must be > 0 (+inf: none)");
+}
 
-  JointTrajectory out;
-  out.chain_ = arm.chain();
-  out.q_start_ = q_a;
-  out.q_end_ = q_b;
-  out.delta_ = q_b - q_a;
-
-  // Sections: a uniform start, then halving by the cutting rule (ptp.hpp).
-  detail::GroupFactors factors(set, limits.velocity);
-  factors.use_pivot(Eigen::Vector3d::Zero());
-  Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
+// Sections: a uniform start, then halving by the cutting rule (ptp.hpp); sets the cutter's floor.
+std::vector<JointSection> cut_sections(Cutter& cutter) {
   std::vector<JointSection> initial;
   double fastest = 0.0, fastest_bound = 0.0;  // the largest exact middle pace, and bound pace
   for (int k = 0; k < initial_sections; ++k) {
@@ -99,17 +89,22 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   cutter.floor_pace = floor_fraction * (fastest > 0.0 ? fastest : fastest_bound);
   std::vector<JointSection> sections;
   for (const JointSection& s : initial) cutter.cut(s, 3, sections);
+  return sections;
+}
 
-  // The least pace L/h: a section where (almost) no point moves is lengthened to 1 % of the
-  // fastest pace, so u never runs more than 100 times faster there (lengthening only slows).
+// The least pace L/h: a section where (almost) no point moves is lengthened to 1 % of the
+// fastest pace, so u never runs more than 100 times faster there (lengthening only slows).
+double least_pace_of(const std::vector<JointSection>& sections, const Eigen::VectorXd& q_b) {
   double pace = 0.0;
   for (const JointSection& s : sections) pace = std::max(pace, s.length / (s.u1 - s.u0));
   require(pace > 0.0, "path", q_b, "moves no point of the metric set: nothing bounds the DISP speed of this move");
-  const double least_pace = floor_fraction * pace;
-  const auto lengthen = [least_pace](JointSection& s) { s.length = std::max(s.length, least_pace * (s.u1 - s.u0)); };
-  for (JointSection& s : sections) lengthen(s);
+  return floor_fraction * pace;
+}
 
-  // The junction rule: neighbours' h/L within 1 %; halve both where not (a few passes).
+void lengthen(JointSection& s, double least_pace) { s.length = std::max(s.length, least_pace * (s.u1 - s.u0)); }
+
+// The junction rule: neighbours' h/L within 1 %; halve both where not (a few passes).
+void keep_junctions(std::vector<JointSection>& sections, const Cutter& cutter, double least_pace) {
   for (int pass = 0; pass < 2 * max_depth; ++pass) {
     std::vector<bool> split(sections.size(), false);
     bool any = false;
@@ -132,22 +127,111 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
       const double um = 0.5 * (sections[k].u0 + sections[k].u1);
       next.push_back(cutter.bounds(sections[k].u0, um));
       next.push_back(cutter.bounds(um, sections[k].u1));
-      lengthen(next[next.size() - 2]);
-      lengthen(next.back());
+      lengthen(next[next.size() - 2], least_pace);
+      lengthen(next.back(), least_pace);
     }
     sections.swap(next);
   }
-  out.sections_ = sections;
+}
 
-  // The rate u per unit s (ptp.hpp): at each junction the smaller of the two sections' h/L, linear
-  // in u inside a section, so never above its own h/L. Inside section k, with r₀, r₁ its end rates
-  // and m = (r₁ − r₀)/h: du/ds = r₀ + m (u − u_k), hence s-length ∫ du / r = h ln(r₁/r₀) / (r₁ − r₀).
+// The rate du/ds at each junction (ptp.hpp): the smaller of the two sections' h/L, at the ends
+// their own; count + 1 of them.
+std::vector<double> junction_rates(const std::vector<JointSection>& sections) {
   const std::size_t count = sections.size();
   std::vector<double> ratio(count), rate(count + 1);
   for (std::size_t k = 0; k < count; ++k) ratio[k] = (sections[k].u1 - sections[k].u0) / sections[k].length;
   rate[0] = ratio[0];
   rate[count] = ratio[count - 1];
   for (std::size_t k = 1; k < count; ++k) rate[k] = std::min(ratio[k - 1], ratio[k]);
+  return rate;
+}
+
+// A section with the slope m of its rate du/ds and the larger of its end rates.
+struct SectionPace {
+  const JointSection& section;
+  double slope, r_max;
+};
+
+// The speed limit of a section on the staircase (ptp.hpp): system velocity, joint velocities,
+// curvature rule, and with joint acceleration limits the share of q̈ that the changing rate
+// takes; lowers `a_law` to what the joint acceleration limits leave the time law.
+double speed_level(const SectionPace& pace, const std::vector<double>& dq, const JointLimits& joint,
+                   const Eigen::VectorXd& qdd_max, const Limits& limits, double& a_law) {
+  const JointSection& section = pace.section;
+  const double r_max = pace.r_max;
+  // A point accelerates at most at ṡ² (A/L² + |m|) (ptp.hpp).
+  const double bend =
+      (section.acceleration > 0.0 ? section.acceleration / (section.length * section.length) : 0.0) + std::abs(pace.slope);
+  double v = limits.velocity;
+  if (bend > 0.0) v = std::min(v, std::sqrt(limits.acceleration / bend));
+  for (std::size_t i = 0; i < dq.size(); ++i) {
+    const double d = dq[i];
+    if (d == 0.0) continue;
+    const auto e = static_cast<Eigen::Index>(i);
+    v = std::min(v, joint.velocity(e) / (d * r_max));
+    if (qdd_max.size()) {
+      a_law = std::min(a_law, rate_share * qdd_max(e) / (d * r_max));
+      if (pace.slope != 0.0)
+        v = std::min(v, std::sqrt((1.0 - rate_share) * qdd_max(e) / (d * std::abs(pace.slope) * r_max)));
+    }
+  }
+  double level = limits.velocity;
+  if (v < limits.velocity) {
+    level = limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
+    if (level > v) level = v;  // rounding of pow / log: never above the limit
+  }
+  return level;
+}
+
+// The time law over the staircase, rest to rest (velocity_limited_law), and the staircase as
+// speed limits along s.
+void law_over(const std::vector<LimitedSegment>& segments, double acceleration, std::optional<double> jerk,
+              std::vector<SpeedLimit>& speed_limits, TimeLaw& law) {
+  double start_s = 0.0, span_s = 0.0;
+  for (const LimitedSegment& segment : segments) {
+    speed_limits.push_back({span_s, segment.length, segment.limit});
+    span_s += segment.length;
+  }
+  for (const Profile& piece : velocity_limited_law(segments, acceleration, jerk)) {
+    law.append(piece, start_s);
+    start_s += piece.distance();
+  }
+  law.end_run();
+}
+
+}  // namespace
+
+JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+                     const SerialArm& arm, const PtpOptions& options) {
+  limits.validate(profile);
+  set.require_well_formed();
+  require_move(path, arm, options);
+  const int n = arm.dof();
+  const Eigen::VectorXd& q_a = path.start();
+  const Eigen::VectorXd& q_b = path.end();
+  const JointLimits joint = arm.joint_limits();
+  const Eigen::VectorXd& qdd_max = options.joint_acceleration;
+
+  JointTrajectory out;
+  out.chain_ = arm.chain();
+  out.q_start_ = q_a;
+  out.q_end_ = q_b;
+  out.delta_ = q_b - q_a;
+
+  GroupFactors factors(set, limits.velocity);
+  factors.use_pivot(Eigen::Vector3d::Zero());
+  Cutter cutter{out.chain_, q_a, out.delta_, factors, options.tolerance};
+  std::vector<JointSection> sections = cut_sections(cutter);
+  const double least_pace = least_pace_of(sections, q_b);
+  for (JointSection& s : sections) lengthen(s, least_pace);
+  keep_junctions(sections, cutter, least_pace);
+  out.sections_ = sections;
+
+  // The rate u per unit s (ptp.hpp): at each junction the smaller of the two sections' h/L, linear
+  // in u inside a section, so never above its own h/L. Inside section k, with r₀, r₁ its end rates
+  // and m = (r₁ − r₀)/h: du/ds = r₀ + m (u − u_k), hence s-length ∫ du / r = h ln(r₁/r₀) / (r₁ − r₀).
+  const std::size_t count = sections.size();
+  const std::vector<double> rate = junction_rates(sections);
   out.rates_.resize(count);
   double s = 0.0;
   for (std::size_t k = 0; k < count; ++k) {
@@ -160,34 +244,15 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   }
   out.length_ = s;
 
-  // The velocity-limit curve (ptp.hpp): system velocity, joint velocities, curvature rule, and
-  // with joint acceleration limits the share of q̈ that the changing rate takes.
+  // The velocity-limit curve (ptp.hpp), a level per section, one segment per run of a level.
   std::vector<double> dq(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) dq[static_cast<std::size_t>(i)] = std::abs(out.delta_(i));
   double a_law = limits.acceleration;
   std::vector<LimitedSegment> segments;
   for (std::size_t k = 0; k < count; ++k) {
-    const JointSection& section = sections[k];
     const JointTrajectory::SectionRate& r = out.rates_[k];
-    const double r_max = std::max(rate[k], rate[k + 1]);
-    // A point accelerates at most at ṡ² (A/L² + |m|) (ptp.hpp).
-    const double bend = (section.acceleration > 0.0 ? section.acceleration / (section.length * section.length) : 0.0) + std::abs(r.slope);
-    double v = limits.velocity;
-    if (bend > 0.0) v = std::min(v, std::sqrt(limits.acceleration / bend));
-    for (int i = 0; i < n; ++i) {
-      const double d = dq[static_cast<std::size_t>(i)];
-      if (d == 0.0) continue;
-      v = std::min(v, joint.velocity(i) / (d * r_max));
-      if (qdd_max.size()) {
-        a_law = std::min(a_law, rate_share * qdd_max(i) / (d * r_max));
-        if (r.slope != 0.0) v = std::min(v, std::sqrt((1.0 - rate_share) * qdd_max(i) / (d * std::abs(r.slope) * r_max)));
-      }
-    }
-    double level = limits.velocity;
-    if (v < limits.velocity) {
-      level = limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
-      if (level > v) level = v;  // rounding of pow / log: never above the limit
-    }
+    const SectionPace pace{sections[k], r.slope, std::max(rate[k], rate[k + 1])};
+    const double level = speed_level(pace, dq, joint, qdd_max, limits, a_law);
     if (!segments.empty() && segments.back().limit == level) {
       segments.back().length += r.span;
     } else {
@@ -196,16 +261,7 @@ JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits&
   }
   out.law_acceleration_ = a_law;
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
-  double start_s = 0.0, span_s = 0.0;
-  for (const LimitedSegment& segment : segments) {
-    out.speed_limits_.push_back({span_s, segment.length, segment.limit});
-    span_s += segment.length;
-  }
-  for (const Profile& law : velocity_limited_law(segments, a_law, jerk)) {
-    out.law_.append(law, start_s);
-    start_s += law.distance();
-  }
-  out.law_.end_run();
+  law_over(segments, a_law, jerk, out.speed_limits_, out.law_);
   return out;
 }
 
@@ -256,7 +312,7 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
   // q̇ = Δq (du/ds) ṡ, q̈ = Δq ((du/ds) s̈ + m (du/ds) ṡ²).
   out.qd = delta_ * (rate * out.s_dot);
   out.qdd = delta_ * (rate * (out.s_ddot + r.slope * out.s_dot * out.s_dot));
-  serial::chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
+  chain_pose_and_twist(chain_, out.q.data(), out.qd.data(), out.pose, out.body_twist);
   return out;
 }
 
@@ -264,4 +320,4 @@ void JointTrajectory::sample(const double* times, JointTrajectorySample* out, st
   for (std::size_t i = 0; i < count; ++i) out[i] = sample(times[i]);
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

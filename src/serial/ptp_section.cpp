@@ -1,4 +1,4 @@
-// The DISP bound of a joint section of a PTP move (ptp.hpp; derivation also in doc/ptp.md).
+// The DISP bound of a joint section of a PTP move (ptp_section.hpp; derivation also in doc/ptp.md).
 //
 // Notation, all in world (base) coordinates at the joint positions of the moment: joint i has
 // the unit axis ωᵢ through the point pᵢ (revolute) or the direction eᵢ (prismatic); the joint
@@ -27,6 +27,8 @@
 //
 // The arm of dispkin::serial has revolute joints only (the URDF loader refuses prismatic ones),
 // so the code below is the revolute case; doc/ptp.md states the prismatic terms.
+#include "ptp_section.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -35,10 +37,10 @@
 #include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/ptp.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 namespace detail {
 
-JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eigen::VectorXd& q_a,
+JointSection joint_section_bounds(const RevoluteChain& chain, const Eigen::VectorXd& q_a,
                                   const Eigen::VectorXd& delta, double u0, double u1, const GroupFactors& factors) {
   const int n = chain.dof();
   const auto un = static_cast<std::size_t>(n);
@@ -54,7 +56,7 @@ JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eige
   std::vector<Eigen::Vector3d> p(un);
   Posed pose;
   Twistd twist;
-  serial::chain_pose_and_twist(chain, q.data(), rate.data(), pose, twist, p.data());
+  chain_pose_and_twist(chain, q.data(), rate.data(), pose, twist, p.data());
   const Eigen::Vector3d o = pose.translation();
 
   // Chain constants: ℓᵢ = ‖pᵢ₊₁ − pᵢ‖ and the tool origin's distance from the last axis point.
@@ -109,7 +111,7 @@ JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eige
     for (const Eigen::Vector3d c : group.absolute_points) absolute(c, 0.0);
     for (const auto& s : group.absolute_spheres) absolute(s.center, s.radius);
 
-    const double speed = group_max_speed(group, pose, twist);
+    const double speed = dispkin::detail::group_max_speed(group, pose, twist);
     const double w = factors.weight(g);
     out.length = std::max(out.length, w * (speed + 0.5 * a_group));
     out.middle_speed = std::max(out.middle_speed, w * speed);
@@ -119,4 +121,4 @@ JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eige
 }
 
 }  // namespace detail
-}  // namespace dispkin
+}  // namespace dispkin::serial

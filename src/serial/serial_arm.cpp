@@ -206,19 +206,19 @@ namespace detail {
 
 void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
                       const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding) {
-  arm.require_joint_vector(qd, "qd");
-  arm.require_joint_vector(qdd, "qdd");
-  arm.require_dynamics();
+  ArmAccess::require_joint_vector(arm, qd, "qd");
+  ArmAccess::require_joint_vector(arm, qdd, "qdd");
+  ArmAccess::require_dynamics(arm);
   tau.resize(arm.dof());
   holding.resize(arm.dof());
-  chain_torques(record, arm.model_->bodies, arm.gravity(), qd.data(), qdd.data(), tau.data(), holding.data());
+  chain_torques(record, ArmAccess::model(arm).bodies, arm.gravity(), qd.data(), qdd.data(), tau.data(), holding.data());
 }
 
 Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                const Eigen::VectorXd& qdd) {
   // KDL's joints keep their last pose in mutable members (KDL::Joint::pose): a copy of the chain
   // per call keeps this thread-safe (it is a reference for tests, not on any hot path).
-  KDL::Chain chain = arm.model_->chain;
+  KDL::Chain chain = ArmAccess::model(arm).chain;
   const Eigen::Vector3d& g = arm.gravity();
   KDL::ChainIdSolver_RNE solver(chain, KDL::Vector(g.x(), g.y(), g.z()));
   const KDL::Wrenches no_external(chain.getNrOfSegments(), KDL::Wrench::Zero());

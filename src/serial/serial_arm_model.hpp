@@ -46,6 +46,21 @@ struct SerialArm::Model {
   Eigen::Vector3d shoulder_point = Eigen::Vector3d::Zero();
 };
 
+namespace detail {
+
+// SerialArm's one friend: the model and the checks of an arm for the plugin's kernels that are
+// not its members (recorded_torques, torques_by_kdl; chain_dynamics.hpp), so that the public
+// header names none of them.
+struct ArmAccess {
+  static const SerialArm::Model& model(const SerialArm& arm) noexcept { return *arm.model_; }
+  static void require_joint_vector(const SerialArm& arm, const Eigen::VectorXd& q, const char* name) {
+    arm.require_joint_vector(q, name);
+  }
+  static void require_dynamics(const SerialArm& arm) { arm.require_dynamics(); }
+};
+
+}  // namespace detail
+
 // KDL ↔ dispkin conversions.
 inline Posed to_pose(const KDL::Frame& f) {
   Eigen::Matrix3d r;

@@ -35,15 +35,6 @@ constexpr double duplicate_tolerance = ik_duplicate_tolerance;
 // The numeric search's Levenberg–Marquardt iterations per start: lma_runs runs of lma_run_length.
 constexpr int lma_run_length = 25;
 constexpr int lma_runs = 20;
-// q into (−π, π]: exact for any q (std::remainder), at once for one already there (what the
-// analytic families return; std::remainder would give it back unchanged, slower).
-double wrap(double q) {
-  if (q > -pi && q <= pi) return q;
-  double r = std::remainder(q, two_pi);  // in [−π, π]
-  if (r <= -pi) r += two_pi;
-  return r;
-}
-
 // The same solution up to 2π in any joint.
 template <typename Vector>
 bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::MatrixBase<Vector>& q) {
@@ -83,7 +74,7 @@ bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pos
 bool into_limits(Eigen::Ref<Eigen::VectorXd> q, const JointLimits& limits) noexcept {
   bool inside = true;
   for (Eigen::Index i = 0; i < q.size(); ++i) {
-    const double w = wrap(q(i));
+    const double w = detail::wrap_angle(q(i));  // exact: ±1e16 rad keeps every digit below
     const double lo = limits.lower(i);
     const double hi = limits.upper(i);
     if (!std::isfinite(lo) || !std::isfinite(hi) || (lo - limit_slack <= w && w <= hi + limit_slack)) {
@@ -183,6 +174,148 @@ void nearest_first(InverseResult& result, const Eigen::VectorXd& q_ref) {
   result.within_limits = std::move(sorted.within_limits);
 }
 
+// The distinct solutions kept so far (representatives of their 2π copies) and whether each is
+// inside the joint limits.
+struct Representatives {
+  std::vector<Eigen::VectorXd> q;
+  std::vector<bool> inside;
+};
+
+// The closed forms (spherical wrist, three parallel axes): no allocation but the result's, and
+// no second check of what the solver has checked; their solutions are distinct modulo 2π
+// (ik_duplicate_tolerance), and whole turns keep them so. The limits are applied to the
+// fixed-size vectors; only a kept solution is copied to the heap (its one allocation).
+void closed_form_solutions(const SerialArm& arm, const RevoluteChain& chain, IkFamily family, const JointLimits& limits,
+                           const Posed& pose, const InverseOptions& options, Representatives& kept) {
+  const int n = arm.dof();
+  IkSolutionSet set;
+  analytic_inverse(chain, family, pose, set);
+  kept.q.reserve(static_cast<std::size_t>(set.count));
+  kept.inside.reserve(static_cast<std::size_t>(set.count));
+  // Limits that hold all of (−π, π] (with the slack) leave the solver's joints as they are
+  // (IkSolutionSet holds them in (−π, π]).
+  bool whole_turns = true;
+  for (int i = 0; i < n && whole_turns; ++i)
+    whole_turns = !(limits.lower(i) - limit_slack > -pi) && !(limits.upper(i) + limit_slack < pi);
+  bool polished = false;
+  for (int k = 0; k < set.count; ++k) {
+    const Eigen::Matrix<double, 6, 1>& solved = set[k];
+    Eigen::Matrix<double, 6, 1> fixed = solved;
+    bool inside = true, as_solved = true;
+    if (!whole_turns) {
+      inside = into_limits(fixed, limits);
+      as_solved = fixed == solved;
+    }
+    if (!inside && !options.keep_outside_limits) continue;
+    if (as_solved && set.error[static_cast<std::size_t>(k)] <= checked_by_solver) {
+      if (polished && is_duplicate(kept.q, fixed)) continue;
+      kept.q.emplace_back(fixed);
+      kept.inside.push_back(inside);
+      continue;
+    }
+    Eigen::VectorXd q = fixed;
+    if (!reproduces(arm, q, pose)) {
+      if (!polish(arm, pose, q)) continue;
+      polished = true;
+    }
+    if (polished && is_duplicate(kept.q, q)) continue;
+    kept.q.push_back(std::move(q));
+    kept.inside.push_back(inside);
+  }
+}
+
+// Numeric fallback: restarts drawn uniformly inside the limits within one turn, until the
+// attempts or the time budget run out; each root polished by Newton on the full pose.
+std::vector<Eigen::VectorXd> numeric_solutions(const SerialArm& arm, const KDL::Chain& arm_chain,
+                                               const JointLimits& limits, const Posed& pose,
+                                               const InverseOptions& options) {
+  const int n = arm.dof();
+  std::vector<Eigen::VectorXd> raw;
+  // A copy of the KDL chain: its joints keep their last pose in mutable members, so the arm's
+  // own chain must not be used by two threads at once.
+  const KDL::Chain chain = arm_chain;
+  KDL::ChainIkSolverPos_LMA solver(chain, 1e-12, lma_run_length, 1e-15);
+  std::mt19937_64 generator(options.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const KDL::Frame goal = to_frame(pose);
+  // A budget beyond a million seconds is no budget; capped so that it converts to the clock's
+  // integer ticks without overflow.
+  const auto budget = std::chrono::duration<double>(std::min(options.time_budget, 1e6));
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget);
+  KDL::JntArray q_init(static_cast<unsigned>(n));
+  KDL::JntArray q_out(static_cast<unsigned>(n));
+  for (int attempt = 0; attempt < options.max_attempts; ++attempt) {
+    if (std::chrono::steady_clock::now() > deadline) break;
+    for (int i = 0; i < n; ++i) {
+      // One turn is enough to start from: inside the limits and [−π, π] where they meet,
+      // else the limits' first turn (±1e16 rad limits would otherwise start at 1e15 rad).
+      double lo = std::isfinite(limits.lower(i)) ? std::max(limits.lower(i), -pi) : -pi;
+      double hi = std::isfinite(limits.upper(i)) ? std::min(limits.upper(i), pi) : pi;
+      if (!(lo < hi)) {
+        lo = limits.lower(i);
+        hi = std::min(limits.upper(i), lo + two_pi);
+      }
+      q_init(static_cast<unsigned>(i)) = lo + (hi - lo) * unit(generator);
+    }
+    // The return code says little; forward kinematics below decides.
+    if (!solve_before(solver, goal, q_init, q_out, deadline)) break;
+    Eigen::VectorXd q = q_out.data;
+    if (!q.allFinite()) continue;
+    if (!polish(arm, pose, q)) continue;
+    raw.push_back(q);
+  }
+  return raw;
+}
+
+// The solutions of the other families (`raw`) brought into the limits, checked and kept unless
+// one kept already is the same up to 2π per joint.
+void keep_solutions(const SerialArm& arm, const std::vector<Eigen::VectorXd>& raw, const JointLimits& limits,
+                    const Posed& pose, const InverseOptions& options, Representatives& kept) {
+  const int n = arm.dof();
+  for (Eigen::VectorXd q : raw) {
+    if (q.size() != n || !q.allFinite()) continue;
+    const bool inside = into_limits(q, limits);
+    if (!inside && !options.keep_outside_limits) continue;
+    // Every solution is checked by forward kinematics (reproduces); one that misses by a little
+    // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
+    if (!reproduces(arm, q, pose) && !polish(arm, pose, q)) continue;
+    // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
+    // the copies of different representatives are then different too.
+    if (is_duplicate(kept.q, q)) continue;
+    kept.q.push_back(q);
+    kept.inside.push_back(inside);
+  }
+}
+
+// The 2π copies inside the limits of every representative into `result`: counted first, refused
+// beyond the cap, then made.
+void add_copies(const SerialArm& arm, const Representatives& kept, const JointLimits& limits, const Posed& pose,
+                InverseResult& result) {
+  const double count = copy_count(kept.q, kept.inside, limits);
+  if (count > static_cast<double>(input_limits::max_ik_solutions)) {
+    std::ostringstream why;
+    why << "asks for the 2π copies of the " << kept.q.size() << " solutions inside the joint limits, "
+        << count << " in all, more than " << input_limits::max_ik_solutions
+        << " (doc/resource-limits.md); leave it false for the distinct solutions, or narrow the limits";
+    throw std::invalid_argument(describe("offer_equivalents", std::string("true"), why.str()));
+  }
+  for (std::size_t r = 0; r < kept.q.size(); ++r) {
+    if (!kept.inside[r]) {  // kept outside the limits: no copies of it are inside
+      result.solutions.push_back(kept.q[r]);
+      result.within_limits.push_back(false);
+      continue;
+    }
+    std::vector<Eigen::VectorXd> variants = copies_within(kept.q[r], limits);
+    for (Eigen::VectorXd& candidate : variants) {
+      if (&candidate != &variants.front() && !reproduces(arm, candidate, pose) && !polish(arm, pose, candidate))
+        continue;
+      result.solutions.push_back(candidate);
+      result.within_limits.push_back(true);
+    }
+  }
+}
+
 }  // namespace
 
 InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptions& options) const {
@@ -204,54 +337,14 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
   if (options.q_ref) require_joint_vector(*options.q_ref, "q_ref");
 
   const JointLimits& limits = model_->limits;
-  const int n = dof();
   InverseResult result;
   result.family = model_->family;
 
-  std::vector<Eigen::VectorXd> representatives;
-  std::vector<bool> inside_limits;
+  Representatives kept;
   std::vector<Eigen::VectorXd> raw;
   if (model_->family == IkFamily::spherical_wrist || model_->family == IkFamily::three_parallel) {
-    // The closed forms: no allocation but the result's, and no second check of what the solver
-    // has checked; their solutions are distinct modulo 2π (ik_duplicate_tolerance), and whole
-    // turns keep them so.
-    // The limits are applied to the fixed-size vectors; only a kept solution is copied to the
-    // heap (its one allocation).
-    IkSolutionSet set;
-    analytic_inverse(model_->revolute, model_->family, pose, set);
+    closed_form_solutions(*this, model_->revolute, model_->family, limits, pose, options, kept);
     result.complete = true;
-    representatives.reserve(static_cast<std::size_t>(set.count));
-    inside_limits.reserve(static_cast<std::size_t>(set.count));
-    // Limits that hold all of (−π, π] (with the slack) leave the solver's joints as they are
-    // (IkSolutionSet holds them in (−π, π]).
-    bool whole_turns = true;
-    for (int i = 0; i < n && whole_turns; ++i)
-      whole_turns = !(limits.lower(i) - limit_slack > -pi) && !(limits.upper(i) + limit_slack < pi);
-    bool polished = false;
-    for (int k = 0; k < set.count; ++k) {
-      const Eigen::Matrix<double, 6, 1>& solved = set[k];
-      Eigen::Matrix<double, 6, 1> fixed = solved;
-      bool inside = true, as_solved = true;
-      if (!whole_turns) {
-        inside = into_limits(fixed, limits);
-        as_solved = fixed == solved;
-      }
-      if (!inside && !options.keep_outside_limits) continue;
-      if (as_solved && set.error[static_cast<std::size_t>(k)] <= checked_by_solver) {
-        if (polished && is_duplicate(representatives, fixed)) continue;
-        representatives.emplace_back(fixed);
-        inside_limits.push_back(inside);
-        continue;
-      }
-      Eigen::VectorXd q = fixed;
-      if (!reproduces(*this, q, pose)) {
-        if (!polish(*this, pose, q)) continue;
-        polished = true;
-      }
-      if (polished && is_duplicate(representatives, q)) continue;
-      representatives.push_back(std::move(q));
-      inside_limits.push_back(inside);
-    }
   } else if (model_->family == IkFamily::locked_joint) {
     // Every solution at each parameter value (doc/inverse-kinematics.md (eq. 40)): one asked for,
     // q_ref's, or the default set spread over the range.
@@ -269,86 +362,16 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
   } else {
-    // Numeric fallback: restarts drawn uniformly inside the limits within one turn, until the
-    // attempts or the time budget run out.
-    // A copy of the KDL chain: its joints keep their last pose in mutable members, so the arm's
-    // own chain must not be used by two threads at once.
-    const KDL::Chain chain = model_->chain;
-    KDL::ChainIkSolverPos_LMA solver(chain, 1e-12, lma_run_length, 1e-15);
-    std::mt19937_64 generator(options.seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const KDL::Frame goal = to_frame(pose);
-    // A budget beyond a million seconds is no budget; capped so that it converts to the clock's
-    // integer ticks without overflow.
-    const auto budget = std::chrono::duration<double>(std::min(options.time_budget, 1e6));
-    const auto deadline =
-        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(budget);
-    KDL::JntArray q_init(static_cast<unsigned>(n));
-    KDL::JntArray q_out(static_cast<unsigned>(n));
-    for (int attempt = 0; attempt < options.max_attempts; ++attempt) {
-      if (std::chrono::steady_clock::now() > deadline) break;
-      for (int i = 0; i < n; ++i) {
-        // One turn is enough to start from: inside the limits and [−π, π] where they meet,
-        // else the limits' first turn (±1e16 rad limits would otherwise start at 1e15 rad).
-        double lo = std::isfinite(limits.lower(i)) ? std::max(limits.lower(i), -pi) : -pi;
-        double hi = std::isfinite(limits.upper(i)) ? std::min(limits.upper(i), pi) : pi;
-        if (!(lo < hi)) {
-          lo = limits.lower(i);
-          hi = std::min(limits.upper(i), lo + two_pi);
-        }
-        q_init(static_cast<unsigned>(i)) = lo + (hi - lo) * unit(generator);
-      }
-      // The return code says little; forward kinematics below decides.
-      if (!solve_before(solver, goal, q_init, q_out, deadline)) break;
-      Eigen::VectorXd q = q_out.data;
-      if (!q.allFinite()) continue;
-      if (!polish(*this, pose, q)) continue;
-      raw.push_back(q);
-    }
+    raw = numeric_solutions(*this, model_->chain, limits, pose, options);
     result.complete = false;
   }
+  keep_solutions(*this, raw, limits, pose, options, kept);
 
-  for (Eigen::VectorXd q : raw) {
-    if (q.size() != n || !q.allFinite()) continue;
-    const bool inside = into_limits(q, limits);
-    if (!inside && !options.keep_outside_limits) continue;
-    // Every solution is checked by forward kinematics (reproduces); one that misses by a little
-    // (an analytic root rounded, a 2π shift) gets Newton steps, one that misses by more is not a solution.
-    if (!reproduces(*this, q, pose) && !polish(*this, pose, q)) continue;
-    // Duplicates (equal up to 2π per joint) are looked for among these representatives only:
-    // the copies of different representatives are then different too.
-    if (is_duplicate(representatives, q)) continue;
-    representatives.push_back(q);
-    inside_limits.push_back(inside);
-  }
   if (!options.offer_equivalents) {
-    result.solutions = std::move(representatives);
-    result.within_limits = std::move(inside_limits);
-    if (options.q_ref) nearest_first(result, *options.q_ref);
-    return result;
-  }
-  // The 2π copies inside the limits: counted first, refused beyond the cap, then made.
-  const double count = copy_count(representatives, inside_limits, limits);
-  if (count > static_cast<double>(input_limits::max_ik_solutions)) {
-    std::ostringstream why;
-    why << "asks for the 2π copies of the " << representatives.size() << " solutions inside the joint limits, "
-        << count << " in all, more than " << input_limits::max_ik_solutions
-        << " (doc/resource-limits.md); leave it false for the distinct solutions, or narrow the limits";
-    throw std::invalid_argument(describe("offer_equivalents", std::string("true"), why.str()));
-  }
-  for (std::size_t r = 0; r < representatives.size(); ++r) {
-    if (!inside_limits[r]) {  // kept outside the limits: no copies of it are inside
-      result.solutions.push_back(representatives[r]);
-      result.within_limits.push_back(false);
-      continue;
-    }
-    std::vector<Eigen::VectorXd> variants = copies_within(representatives[r], limits);
-    for (Eigen::VectorXd& candidate : variants) {
-      if (&candidate != &variants.front() && !reproduces(*this, candidate, pose) && !polish(*this, pose, candidate))
-        continue;
-      result.solutions.push_back(candidate);
-      result.within_limits.push_back(true);
-    }
+    result.solutions = std::move(kept.q);
+    result.within_limits = std::move(kept.inside);
+  } else {
+    add_copies(*this, kept, limits, pose, result);
   }
   if (options.q_ref) nearest_first(result, *options.q_ref);
   return result;

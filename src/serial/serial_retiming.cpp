@@ -17,17 +17,17 @@
 #include "dispkin/planning/trajectory_acceleration.hpp"
 #include "joint_following.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 using detail::branch_solution;
 using detail::joint_velocity;
-using detail::where;
+using dispkin::detail::where;
 
 namespace {
 
 // Adds a sample (q, q̇, q̈ and the torques) to the report: its position excess and its share of
 // FVEL and FACC (doc/retiming.md (eq. 4) and (eq. 5)). Throws std::runtime_error where the static
 // torque alone reaches an effort limit (eq. 6).
-void add_sample(JointLimitReport& report, JointSample sample, const serial::SerialArm& arm, const JointLimits& limits,
+void add_sample(JointLimitReport& report, JointSample sample, const SerialArm& arm, const JointLimits& limits,
                 double s) {
   const std::size_t index = report.samples.size();
   for (Eigen::Index i = 0; i < sample.q.size(); ++i) {
@@ -90,7 +90,7 @@ bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1)
 
 }  // namespace
 
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
   const std::vector<double> times = checked_times(trajectory, options);
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
@@ -152,7 +152,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
   return report;
 }
 
-JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const serial::SerialArm& arm,
+JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const SerialArm& arm,
                                     const std::vector<double>& times) {
   require(trajectory.dof() == arm.dof(), "trajectory dof", static_cast<long>(trajectory.dof()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
@@ -176,7 +176,7 @@ JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const ser
   return report;
 }
 
-FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
                              const std::vector<double>& times, double difference_step) {
   require_positive(difference_step, "difference_step");
   const auto count = static_cast<Eigen::Index>(times.size());
@@ -185,14 +185,14 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialA
   std::vector<Posed> poses;
   poses.reserve(times.size());
   for (const double t : times) poses.push_back(trajectory.sample(t).pose);
-  const std::vector<Eigen::VectorXd> q = serial::follow(arm, poses, q_start);
+  const std::vector<Eigen::VectorXd> q = follow(arm, poses, q_start);
   FollowedJoints out{Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n)};
   const double duration = trajectory.duration();
   for (Eigen::Index k = 0; k < count; ++k) {
     const double t = times[static_cast<std::size_t>(k)];
     const Eigen::VectorXd& q_k = q[static_cast<std::size_t>(k)];
     out.q.row(k) = q_k.transpose();
-    out.qd.row(k) = serial::joint_velocity(arm, q_k, trajectory.sample(t).body_twist).transpose();
+    out.qd.row(k) = joint_velocity(arm, q_k, trajectory.sample(t).body_twist).transpose();
     // q̈ by central differences of the Jacobian velocities (one-sided at the ends), each neighbour
     // on the branch of q_k (doc/retiming.md (eq. 2)).
     const double t_before = std::max(t - difference_step, 0.0), t_after = std::min(t + difference_step, duration);
@@ -204,8 +204,8 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialA
     const double at[2] = {t_before, t_after};
     for (int side = 0; side < 2; ++side) {
       const TrajectorySample neighbour = trajectory.sample(at[side]);
-      const Eigen::VectorXd q_side = serial::follow(arm, {neighbour.pose}, q_k).front();
-      rate[side] = serial::joint_velocity(arm, q_side, neighbour.body_twist);
+      const Eigen::VectorXd q_side = follow(arm, {neighbour.pose}, q_k).front();
+      rate[side] = joint_velocity(arm, q_side, neighbour.body_twist);
     }
     out.qdd.row(k) = ((rate[1] - rate[0]) / (t_after - t_before)).transpose();
   }
@@ -213,7 +213,7 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialA
 }
 
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                               const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                               const SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options, int max_iterations) {
   require(max_iterations >= 1, "max_iterations", static_cast<long>(max_iterations), "must be ≥ 1");
   Limits scaled = limits;
@@ -248,7 +248,7 @@ namespace {
 
 class SerialModel final : public JointModel {
  public:
-  explicit SerialModel(const serial::SerialArm& arm) : arm_(arm) {}
+  explicit SerialModel(const SerialArm& arm) : arm_(arm) {}
   int dof() const override { return arm_.dof(); }
   std::string joint_name(int k) const override { return arm_.joint_names()[static_cast<std::size_t>(k)]; }
   const char* position_unit() const override { return "rad"; }
@@ -305,15 +305,15 @@ class SerialModel final : public JointModel {
   }
 
  private:
-  const serial::SerialArm& arm_;
+  const SerialArm& arm_;
 };
 
 }  // namespace
 
-std::unique_ptr<JointModel> joint_model(const serial::SerialArm& arm) { return std::make_unique<SerialModel>(arm); }
+std::unique_ptr<JointModel> joint_model(const SerialArm& arm) { return std::make_unique<SerialModel>(arm); }
 
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const SerialArm& arm, const Eigen::VectorXd& q_start,
                                    const OptimalRetimeOptions& options) {
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
@@ -321,4 +321,4 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   return retime_optimal(path, set, limits, SerialModel(arm), q_start, options);
 }
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

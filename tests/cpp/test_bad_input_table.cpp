@@ -44,6 +44,8 @@
 namespace {
 
 using namespace dispkin;
+using hexapod::ForwardOptions;
+using hexapod::Hexapod;
 using Eigen::Matrix4d;
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
@@ -460,6 +462,7 @@ std::vector<Row> rows() {
   row("WorkToolFrames::platform_pose_xyzuvw", "NaN U", [] { WorkToolFrames().platform_pose_xyzuvw(v6(0, 0, 0, nan_, 0, 0)); }, IA, "xyzuvw = (0, 0, 0, nan, 0, 0)");
 #if defined(DISPKIN_HAS_SERIAL)
   // --- SerialArm (tests/data/urdf/arm_*.urdf) ---
+  using serial::PtpOptions;
   using serial::SerialArm;
   static const std::string urdf = std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/";
   const auto arm = [] { return SerialArm::from_urdf_file(urdf + "arm_planar_two_link.urdf", "base", "link2"); };

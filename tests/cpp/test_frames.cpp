@@ -13,6 +13,7 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
 using testing::message_of;
 using testing::Random;
 using V = Eigen::Vector3d;

@@ -17,6 +17,11 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
+using hexapod::LegExcursion;
+using hexapod::TrajectoryCheck;
+using hexapod::WorkspaceCheck;
+using hexapod::xyzuvw_for_new_pivot;
 using testing::message_of;
 using testing::runtime_message_of;
 using testing::Random;

@@ -10,6 +10,8 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
+
 TEST(HexapodPluginAlone, KinematicsAndJsonWithoutTheUmbrella) {
   const Hexapod hexapod = Hexapod::symmetric(0.15, 0.35, 0.10, 0.35, 0.20, 0.15, 0.32, 0.01);
   Eigen::Matrix<double, 6, 1> xyzuvw;

@@ -15,6 +15,9 @@ namespace dispkin {
 namespace {
 
 using serial::SerialArm;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::OverlappedJointTrajectory;
 using testing::message_of;
 using testing::Random;
 

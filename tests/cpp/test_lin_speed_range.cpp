@@ -35,7 +35,7 @@ TEST(LinSpeedRange, PeakIsThePartsLengthAndBoundsHoldDensely) {
     const MetricSetd set = testing::random_set(rnd, v);
     const Posed a = rnd.pose(0.5);
     const LinSection lin{a, rnd.nearby(a, 0.4, i % 4 == 0 ? 3.1 : 2.0), Interpolation::decoupled, rnd.vector(0.1)};
-    detail::GroupFactors factors(set, v);
+    GroupFactors factors(set, v);
     factors.use_pivot(lin.pivot);
     const detail::DecoupledSpeeds speeds(lin, factors);
     double t0 = rnd.uniform(0.0, 1.0), t1 = rnd.uniform(0.0, 1.0);
@@ -73,7 +73,7 @@ TEST(LinSpeedRange, LowerBoundIsExactForOneObject) {
     }
     const Posed a = rnd.pose(0.5);
     const LinSection lin{a, rnd.nearby(a, 0.4, 2.5), Interpolation::decoupled, rnd.vector(0.1)};
-    detail::GroupFactors factors(set, std::nullopt);
+    GroupFactors factors(set, std::nullopt);
     factors.use_pivot(lin.pivot);
     const detail::DecoupledSpeeds speeds(lin, factors);
     double t0 = rnd.uniform(0.0, 1.0), t1 = rnd.uniform(0.0, 1.0);

@@ -21,6 +21,11 @@ namespace dispkin {
 namespace {
 
 using serial::SerialArm;
+using serial::FollowedTrajectory;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::JointVector;
+using serial::OverlappedMixedTrajectory;
 using testing::message_of;
 using testing::Random;
 

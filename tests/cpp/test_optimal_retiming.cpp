@@ -17,6 +17,7 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
 using testing::message_of;
 using testing::runtime_message_of;
 using V = Eigen::Vector3d;

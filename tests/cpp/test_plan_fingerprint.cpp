@@ -33,6 +33,10 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+
 constexpr double sampled_fractions[] = {0.0, 0.013, 0.25, 0.5, 0.618, 0.9, 1.0};
 
 void put(std::ostringstream& out, double x) {

@@ -11,12 +11,17 @@
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "ptp_moves.hpp"
+#include "ptp_section.hpp"
 #include "random_paths.hpp"
 
 namespace dispkin {
 namespace {
 
 using serial::SerialArm;
+using serial::JointSection;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::PtpOptions;
 using testing::Random;
 using testing::random_set;
 using testing::worst_speed_ratio;
@@ -94,9 +99,9 @@ TEST(Ptp, AccelerationBoundHoldsForEveryPoint) {
       const JointPath move = testing::random_ptp(rnd, arm);
       const Eigen::VectorXd delta = move.end() - move.start();
       const double u0 = rnd.uniform(0.0, 0.9), u1 = u0 + rnd.uniform(0.01, 0.1);
-      detail::GroupFactors factors(set, 1.0);
+      GroupFactors factors(set, 1.0);
       factors.use_pivot(Eigen::Vector3d::Zero());
-      const JointSection s = detail::joint_section_bounds(arm.chain(), move.start(), delta, u0, u1, factors);
+      const JointSection s = serial::detail::joint_section_bounds(arm.chain(), move.start(), delta, u0, u1, factors);
       const double h = u1 - u0, dt = 1e-3;
       double worst = 0.0;
       for (int i = 1; i < 1000; ++i) {

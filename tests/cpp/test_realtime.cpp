@@ -229,6 +229,12 @@ TEST(Realtime, SlerpBlendSamplingDoesNotAllocate) {
   EXPECT_TRUE(checksum > 0.0);
 }
 #ifdef DISPKIN_HAS_SERIAL
+using serial::FollowedTrajectory;
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+using serial::OverlappedJointTrajectory;
+using serial::OverlappedMixedTrajectory;
+
 // The closed-form IK families write into a fixed IkSolutionSet: no allocation at all (checks,
 // subproblems, Newton polish, de-duplication), over random poses of every closed-form robot
 // including wrist-singular ones (q5 = 0 exactly).

@@ -17,6 +17,7 @@
 #include <dispkin/serial/chain_kinematics.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 
+#include "chain_dynamics.hpp"  // torques_by_kdl
 #include "random_cases.hpp"
 
 namespace dispkin::serial {

@@ -155,7 +155,7 @@ TEST(SlerpBlend, NoRotationGivesZeroAngularVelocity) {
     ASSERT_EQ(rate.angular, V::Zero());
     ASSERT_TRUE(s.pose(j / 10.0).quaternion().isApprox(s.q_start, 1e-15));
   }
-  const detail::MotionBounds b = s.motion_bounds();
+  const MotionBounds b = s.motion_bounds();
   EXPECT_EQ(b.omega, 0.0);
   EXPECT_EQ(b.omega_dot, 0.0);
   for (const double tiny : {1e-12, 1e-8, 1e-4}) {
@@ -179,7 +179,7 @@ TEST(SlerpBlend, MotionBoundsAreRigorousAndTight) {
     const bool whole = i % 2 == 0;
     s.v0 = whole ? 0.0 : rnd.uniform(0.0, 0.9);
     s.v1 = whole ? 1.0 : std::min(1.0, s.v0 + rnd.uniform(0.01, 0.1));
-    const detail::MotionBounds b = s.motion_bounds();
+    const MotionBounds b = s.motion_bounds();
     double omega = 0.0, rate = 0.0, c_dot = 0.0, c_ddot = 0.0;
     constexpr int n = 1000;
     for (int j = 0; j <= n; ++j) {

@@ -24,6 +24,7 @@
 namespace dispkin {
 namespace {
 
+using hexapod::Hexapod;
 using testing::Random;
 
 int sweep_count() { return static_cast<int>(testing::env_or("DISPKIN_SWEEP_COUNT", 1000)); }
@@ -284,6 +285,9 @@ TEST(Sweep, HexapodInverseThenForward) {
 }
 
 #ifdef DISPKIN_HAS_SERIAL
+using serial::JointTrajectory;
+using serial::JointTrajectorySample;
+
 // The guarantee for PTP moves (ptp.hpp) of one serial test arm: random joint lines inside its
 // ranges, random sets and limits, both profiles, 32 random instants per case; the joint velocity
 // limits and the exact end too. A PTP plan cuts about 10³ joint sections (each a forward

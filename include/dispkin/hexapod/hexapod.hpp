@@ -29,7 +29,7 @@
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/pose.hpp"
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 //! One leg out of its length range in a workspace check.
 struct LegViolation {
@@ -331,4 +331,4 @@ TrajectoryCheck Hexapod::check_trajectory(const TrajectoryLike& trajectory, doub
 Eigen::Matrix<double, 6, 1> xyzuvw_for_new_pivot(const Eigen::Matrix<double, 6, 1>& xyzuvw,
                                                  const Eigen::Vector3d& old_pivot, const Eigen::Vector3d& new_pivot);
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

@@ -12,7 +12,7 @@
 #include "dispkin/planning/planner.hpp"
 #include "dispkin/planning/retiming.hpp"
 
-namespace dispkin {
+namespace dispkin::hexapod {
 
 //! Follows `trajectory` with the hexapod's legs as its joints: q = the leg lengths (its inverse kinematics,
 //! unique), q̇ = J_leg ξ_b, q̈ by central differences; velocity_factor against leg_speed(),
@@ -31,4 +31,4 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
 //! which must outlive it.
 std::unique_ptr<JointModel> joint_model(const Hexapod& hexapod);
 
-}  // namespace dispkin
+}  // namespace dispkin::hexapod

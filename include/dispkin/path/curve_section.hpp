@@ -137,20 +137,20 @@ struct CurveSection {
   double acceleration_bound(const MetricSetd& set) const;
 
   //! Bounds over the section of |ċ|, |c̈|, |ω| ≤ |φ̇| and |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², per unit τ.
-  detail::MotionBounds motion_bounds() const;
+  MotionBounds motion_bounds() const;
 
   //! length() and acceleration_bound() together, sharing the motion bounds and the middle
   //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
   //! the groups' weights and reaches are per path).
   //! Exact peak to 0.1 %: the bounds of equal pieces of the section, each "the middle speed
   //! plus half the rate" (doc/section-length.md eqs. 24–27).
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
+  SectionBounds bounds(const GroupFactors& factors) const;
 
   //! bounds() with how the speed and the acceleration bound vary along the section.
-  detail::RefinedBounds refined(const detail::GroupFactors& factors) const;
+  RefinedBounds refined(const GroupFactors& factors) const;
 
   //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
-  detail::SectionBounds piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const;
+  SectionBounds piece_bounds(const GroupFactors& factors, double& middle_speed) const;
 
  private:
   // Pose and body twist per unit τ where the curve has c, c′, φ, φ′ (per unit v).
@@ -220,17 +220,17 @@ inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept {
 
 inline double CurveSection::length(const MetricSetd& set, std::optional<double> system_velocity) const {
   set.require_well_formed();
-  detail::GroupFactors factors(set, system_velocity);
+  GroupFactors factors(set, system_velocity);
   factors.use_pivot(pivot);
   return bounds(factors).length;
 }
 
-inline detail::SectionBounds CurveSection::piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const {
+inline SectionBounds CurveSection::piece_bounds(const GroupFactors& factors, double& middle_speed) const {
   // The polynomials at the middle, once: the motion bounds, the middle pose and twist and the
   // pivot's middle position all come from them.
   const double m = 0.5 * (v0 + v1);
   const detail::CubicAt c = detail::cubic_at(position, m), phi = detail::cubic_at(rotation, m);
-  const detail::MotionBounds motion = detail::motion_bounds_at_middle(c, phi, span());
+  const MotionBounds motion = detail::motion_bounds_at_middle(c, phi, span());
   Posed middle;
   Twistd twist_middle;
   pose_and_twist(c.value, c.first, phi.value, phi.first, middle, twist_middle);
@@ -238,9 +238,9 @@ inline detail::SectionBounds CurveSection::piece_bounds(const detail::GroupFacto
   return detail::bounds_from_middle(factors, middle, twist_middle, c.value, motion, middle_speed);
 }
 
-inline detail::SectionBounds CurveSection::bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+inline SectionBounds CurveSection::bounds(const GroupFactors& factors) const { return refined(factors).bounds; }
 
-inline detail::RefinedBounds CurveSection::refined(const detail::GroupFactors& factors) const {
+inline RefinedBounds CurveSection::refined(const GroupFactors& factors) const {
   // The whole section bounded by its pieces (doc/section-length.md eq. 25).
   CurveSection part = *this;
   const double h = span();
@@ -251,13 +251,13 @@ inline detail::RefinedBounds CurveSection::refined(const detail::GroupFactors& f
   });
 }
 
-inline detail::MotionBounds CurveSection::motion_bounds() const {
+inline MotionBounds CurveSection::motion_bounds() const {
   const double m = 0.5 * (v0 + v1);
   return detail::motion_bounds_at_middle(detail::cubic_at(position, m), detail::cubic_at(rotation, m), span());
 }
 
 inline double CurveSection::acceleration_bound(const MetricSetd& set) const {
-  const detail::MotionBounds motion = motion_bounds();
+  const MotionBounds motion = motion_bounds();
   const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
   double best = 0.0;
   for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));

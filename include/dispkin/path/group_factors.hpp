@@ -19,6 +19,16 @@
 #include "dispkin/pose.hpp"
 
 namespace dispkin {
+
+//! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
+//! |ω| and angular acceleration |ω̇|.
+struct MotionBounds {
+  //! |ċ| and |c̈| (m per unit τ and τ²), |ω| and |ω̇| (rad per unit τ and τ²)
+  //!@{
+  double pivot_speed, pivot_acceleration, omega, omega_dot;
+  //!@}
+};
+
 namespace detail {
 
 //! Whether n doubles are equal bit for bit (+0 and −0 differ, so a remembered result is exactly
@@ -26,12 +36,6 @@ namespace detail {
 inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept {
   return std::memcmp(a, b, n * sizeof(double)) == 0;
 }
-
-//! Bounds over a section, per unit τ: pivot speed |ċ| and acceleration |c̈|, angular velocity
-//! |ω| and angular acceleration |ω̇|.
-struct MotionBounds {
-  double pivot_speed, pivot_acceleration, omega, omega_dot;
-};
 
 //! A bound of the acceleration (per unit τ²) of every object of the group under motions within
 //! `bounds`: a body point at distance r from the pivot accelerates at most |c̈| + (|ω̇| + |ω|²) r;
@@ -48,6 +52,8 @@ inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d
 //! group_acceleration_bound with the group's relative_reach from the pivot already known.
 inline double group_acceleration_bound(const MetricGroup<double>& g, double reach, const Eigen::Vector3d& pivot_middle,
                                        const MotionBounds& bounds) noexcept;
+
+}  // namespace detail
 
 //! What the section bounds need of each group of a set, once per path instead of once per
 //! section: its weight v_sys / v_g and its relative_reach from the pivot (recomputed only
@@ -67,12 +73,13 @@ class GroupFactors {
   //! Makes reach() refer to `pivot` (body coordinates).
   void use_pivot(const Eigen::Vector3d& pivot) noexcept {
     if (has_pivot_ && pivot == pivot_) return;
-    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = relative_reach(set_->groups()[i], pivot);
+    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = detail::relative_reach(set_->groups()[i], pivot);
     pivot_ = pivot;
     has_pivot_ = true;
   }
 
-  const MetricSetd& set() const noexcept { return *set_; }
+  const MetricSetd& set() const noexcept { return *set_; }  //!< the set, which must outlive this
+  //! The system velocity the weights are taken for.
   std::optional<double> system_velocity() const noexcept { return system_velocity_; }
 
   //! axis_turn(axis, angle), the same quaternion bit for bit, remembered for the last two pairs
@@ -80,25 +87,26 @@ class GroupFactors {
   //! the orientation's turn), so a path evaluates them once per CIRC, not once per section.
   Eigen::Quaterniond turn(const Eigen::Vector3d& axis, double angle) const noexcept {
     for (const TurnMemo& m : turns_) {
-      if (m.known && same_bits(m.axis.data(), axis.data(), 3) && same_bits(&m.angle, &angle, 1)) return m.turn;
+      if (m.known && detail::same_bits(m.axis.data(), axis.data(), 3) && detail::same_bits(&m.angle, &angle, 1)) return m.turn;
     }
     TurnMemo& m = turns_[next_turn_];
     next_turn_ = 1 - next_turn_;
-    m = {axis, angle, axis_turn(axis, angle), true};
+    m = {axis, angle, detail::axis_turn(axis, angle), true};
     return m.turn;
   }
   //! std::sin(x), remembered for the last x asked (an arc's deviation bound, the same for all
   //! the sections of one CIRC).
   double sine(double x) const noexcept {
-    if (!sine_known_ || !same_bits(&sine_of_, &x, 1)) {
+    if (!sine_known_ || !detail::same_bits(&sine_of_, &x, 1)) {
       sine_of_ = x;
       sine_ = std::sin(x);
       sine_known_ = true;
     }
     return sine_;
   }
-  double weight(std::size_t group) const noexcept { return groups_[group].weight; }
-  double max_weight() const noexcept { return max_weight_; }
+  double weight(std::size_t group) const noexcept { return groups_[group].weight; }  //!< w_g = v_sys / v_g
+  double max_weight() const noexcept { return max_weight_; }  //!< the largest w_g
+  //! The group's relative_reach from the pivot of the last use_pivot (m).
   double reach(std::size_t group) const noexcept { return groups_[group].reach; }
 
  private:
@@ -130,9 +138,15 @@ class GroupFactors {
 //! tool's angular velocity |ω| and its rate |ω̇| per unit τ (the rotational limit's terms,
 //! doc/planning.md §11).
 struct SectionBounds {
-  double length, acceleration;
+  double length;        //!< the weighted speed bound per unit τ (m)
+  double acceleration;  //!< the unweighted acceleration bound per unit τ² (m)
+  //! |ω| and |ω̇| per unit τ and τ² (rad)
+  //!@{
   double omega = 0.0, omega_dot = 0.0;
+  //!@}
 };
+
+namespace detail {
 
 inline double relative_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot) noexcept {
   double r = 0.0;

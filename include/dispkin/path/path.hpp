@@ -65,7 +65,7 @@ struct LinSection {
   double acceleration_bound(const MetricSetd& set) const;
 
   //! length() and acceleration_bound() together (see CurveSection::bounds).
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const;
+  SectionBounds bounds(const GroupFactors& factors) const;
 };
 
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
@@ -108,7 +108,7 @@ struct ArcSection {
     set.require_well_formed();
     detail::require_system_velocity(system_velocity);
     require_translation(pivot, "pivot");
-    detail::GroupFactors factors(set, system_velocity);
+    GroupFactors factors(set, system_velocity);
     factors.use_pivot(pivot);
     return bounds(factors).length;
   }
@@ -130,7 +130,7 @@ struct ArcSection {
   //! length() and acceleration_bound() together (see CurveSection::bounds), sharing the
   //! pivot's positions: its middle gives both the reference velocity and the absolute
   //! objects' distances.
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const {
+  SectionBounds bounds(const GroupFactors& factors) const {
     const MetricSetd& set = factors.set();
     const Eigen::Vector3d c0 = start * pivot;
     // The turns (and the sine of the deviation bound) are those of every section of the CIRC:
@@ -145,7 +145,7 @@ struct ArcSection {
     const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation, pivot);
     const double radius = (c0 - center).norm();
     const double phi = std::abs(angle);
-    const detail::MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
+    const MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
     double length = 0.0, acceleration = 0.0;
     for (std::size_t i = 0; i < set.groups().size(); ++i) {
       const auto& g = set.groups()[i];
@@ -224,15 +224,6 @@ inline double section_acceleration_bound(const Section& section, const MetricSet
 //! The part τ ∈ [t0, t1] of a section, as a section of the same kind run over its own τ (the
 //! same motion between the same poses).
 Section section_part(const Section& section, double t0, double t1);
-
-namespace detail {
-//! Length and acceleration bound of any section from `factors` (whose pivot it sets).
-SectionBounds section_bounds(const Section& section, GroupFactors& factors);
-//! The same with a LIN's length bounded from its middle instead of solved exactly: the
-//! fastest object's speed at the middle plus half the weighted acceleration bound. Tight on
-//! short pieces of a LIN (the planner's cut, doc/planning.md §9), and cheaper.
-SectionBounds section_bounds_from_middle(const Section& section, GroupFactors& factors);
-}  // namespace detail
 
 //! Geometry of a circle through three points (doc/section-length.md §4: circumcentre), with the arc
 //! from the first to the last point passing through the middle one.

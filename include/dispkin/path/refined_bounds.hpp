@@ -11,6 +11,16 @@
 #include "dispkin/path/group_factors.hpp"
 
 namespace dispkin {
+
+//! A section's refined bounds, with what its pieces say of how the speed and the acceleration
+//! bound vary along it (for the planner's cut, doc/planning.md §9): the least middle speed
+//! and the least acceleration bound of the pieces, per unit τ of the section.
+struct RefinedBounds {
+  SectionBounds bounds;       //!< the whole section's bounds
+  double least_middle_speed;  //!< the least weighted middle speed of the pieces (m)
+  double least_acceleration;  //!< the least acceleration bound of the pieces (m)
+};
+
 namespace detail {
 
 //! The relative precision of a refined bound: its length exceeds the exact peak speed of the
@@ -19,14 +29,6 @@ constexpr double refined_bound_precision = 1e-3;
 //! The most pieces a section's bound is refined into; past them the bound stays rigorous, only
 //! looser.
 constexpr int refined_bound_max_pieces = 1 << 14;
-
-//! A section's refined bounds, with what its pieces say of how the speed and the acceleration
-//! bound vary along it (for the planner's cut, doc/planning.md §9): the least middle speed
-//! and the least acceleration bound of the pieces, per unit τ of the section.
-struct RefinedBounds {
-  SectionBounds bounds;
-  double least_middle_speed, least_acceleration;
-};
 
 //! `piece(t0, t1, middle_speed)` returns the bounds of the part τ ∈ [t0, t1] per unit of that
 //! part's own τ (eq. 24) and its weighted middle speed. The section's bounds are the largest of

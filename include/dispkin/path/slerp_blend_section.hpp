@@ -190,7 +190,7 @@ struct SlerpBlendSection {
   //! Bounds over the section of |ċ|, |c̈|, |ω| and |ω̇| per unit τ: the pivot's from the
   //! polynomial (as CurveSection), the orientation's from eqs. 31–33, |ω| also at most its
   //! value at the middle plus half a section at the rate bound.
-  detail::MotionBounds motion_bounds() const noexcept {
+  MotionBounds motion_bounds() const noexcept {
     const double h = span(), m = 0.5 * (v0 + v1);
     const detail::DerivativeBounds dc = detail::derivative_bounds(position, m, 0.5 * h);
     double omega = 0.0, omega_rate = 0.0;
@@ -207,14 +207,14 @@ struct SlerpBlendSection {
   //! CurveSection::length, doc/planning.md eq. 19).
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     set.require_well_formed();
-    detail::GroupFactors factors(set, system_velocity);
+    GroupFactors factors(set, system_velocity);
     factors.use_pivot(pivot);
     return bounds(factors).length;
   }
 
   //! A bound of the acceleration of every object of the set per unit τ² (unweighted).
   double acceleration_bound(const MetricSetd& set) const {
-    const detail::MotionBounds motion = motion_bounds();
+    const MotionBounds motion = motion_bounds();
     const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
     double best = 0.0;
     for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
@@ -224,10 +224,10 @@ struct SlerpBlendSection {
   //! length() and acceleration_bound() together; `factors` of the same set, with
   //! use_pivot(pivot) called.
   //! Exact peak to 0.1 % (doc/section-length.md eqs. 25–27), as CurveSection::bounds.
-  detail::SectionBounds bounds(const detail::GroupFactors& factors) const { return refined(factors).bounds; }
+  SectionBounds bounds(const GroupFactors& factors) const { return refined(factors).bounds; }
 
   //! bounds() with how the speed and the acceleration bound vary along the section.
-  detail::RefinedBounds refined(const detail::GroupFactors& factors) const {
+  RefinedBounds refined(const GroupFactors& factors) const {
     SlerpBlendSection part = *this;
     const double h = span();
     return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {
@@ -238,8 +238,8 @@ struct SlerpBlendSection {
   }
 
   //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
-  detail::SectionBounds piece_bounds(const detail::GroupFactors& factors, double& middle_speed) const {
-    const detail::MotionBounds motion = motion_bounds();
+  SectionBounds piece_bounds(const GroupFactors& factors, double& middle_speed) const {
+    const MotionBounds motion = motion_bounds();
     Posed middle;
     Twistd twist_middle;
     at(0.5, middle, twist_middle);

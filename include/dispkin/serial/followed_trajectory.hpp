@@ -30,7 +30,7 @@
 #include "dispkin/serial/revolute_chain.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 //! A Cartesian trajectory followed by a serial arm's joints on one inverse-kinematics branch,
 //! precomputed along the path (doc/ptp.md §4, eqs. 17–20; see the file's comment).
@@ -48,11 +48,11 @@ class FollowedTrajectory {
   //! redundancy parameter (its Jacobian must be inverted; a 7R arm keeps the parameter at its value
   //! in q_start, doc/inverse-kinematics.md (eq. 41), (eq. 42)); a trajectory whose poses leave the arm's
   //! reach, pass a singular pose, change the branch, or take a joint out of its position range.
-  static FollowedTrajectory from_start(Trajectory trajectory, const serial::SerialArm& arm,
+  static FollowedTrajectory from_start(Trajectory trajectory, const SerialArm& arm,
                                        const Eigen::VectorXd& q_start, double spacing = default_spacing);
   //! The same on the branch that ends at q_end (followed backwards from the trajectory's end pose,
   //! which FK(q_end) must be): for a Cartesian move that a PTP move starting at q_end follows.
-  static FollowedTrajectory to_end(Trajectory trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_end,
+  static FollowedTrajectory to_end(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_end,
                                    double spacing = default_spacing);
 
   double duration() const noexcept { return trajectory_.duration(); }  //!< the trajectory's duration (s)
@@ -66,7 +66,7 @@ class FollowedTrajectory {
   //!@}
   const Trajectory& trajectory() const noexcept { return trajectory_; }  //!< the Cartesian trajectory followed
   //! The arm's joint chain (forward kinematics and Jacobian of the samples).
-  const serial::RevoluteChain& chain() const noexcept { return chain_; }
+  const RevoluteChain& chain() const noexcept { return chain_; }
   //! Number of grid nodes (sections' junction nodes counted once per section).
   std::size_t node_count() const noexcept { return static_cast<std::size_t>(nodes_q_.cols()); }
   //! The largest joint error found at an interval's middle (rad, ≤ midpoint_tolerance).
@@ -83,15 +83,15 @@ class FollowedTrajectory {
     Eigen::Index first;
     int intervals;
   };
-  FollowedTrajectory(Trajectory trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_given, bool backwards,
+  FollowedTrajectory(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_given, bool backwards,
                      double spacing);
 
   Trajectory trajectory_;
-  serial::RevoluteChain chain_;
+  RevoluteChain chain_;
   std::vector<SectionGrid> grids_;
   Eigen::MatrixXd nodes_q_, nodes_rate_;  // one column per node: q_i and q′_i = dq/dτ
   Eigen::VectorXd start_, end_;
   double midpoint_error_ = 0.0;
 };
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

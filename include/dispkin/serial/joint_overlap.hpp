@@ -14,7 +14,7 @@
 
 #include "dispkin/serial/ptp.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 //! Two PTP moves run with an overlap t_ov, their joint displacements added during it (doc/ptp.md
 //! §4, eq. 16). No speed guarantee of its own: see the file's comment.
@@ -45,4 +45,4 @@ class OverlappedJointTrajectory {
   JointVector via_;  // θ₂ = θ_f(0)
 };
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

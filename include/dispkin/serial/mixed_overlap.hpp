@@ -16,7 +16,7 @@
 #include "dispkin/serial/followed_trajectory.hpp"
 #include "dispkin/serial/ptp.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 //! A PTP move and a Cartesian move, in either order, run with an overlap t_ov in joint space
 //! (doc/ptp.md §4, eq. 21). No speed guarantee of its own: see the file's comment.
@@ -63,4 +63,4 @@ class OverlappedMixedTrajectory {
   JointVector via_;  // θ₂: the joints where the first move ends and the next starts
 };
 
-}  // namespace dispkin
+}  // namespace dispkin::serial

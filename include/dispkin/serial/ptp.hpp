@@ -10,7 +10,7 @@
 //! with V_g(½) the exact fastest speed of the group at the section's middle (doc/disp-metric.md §6: points,
 //! absolute points seen from the tool, spheres by the exact sphere formula) and A_g a bound of
 //! the acceleration per τ² of every object of the group over the section (a Lipschitz bound of
-//! its velocity, derived from the chain geometry — see joint_section_bounds and
+//! its velocity, derived from the chain geometry — see src/serial/ptp_section.cpp and
 //! doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
 //! faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same construction
 //! as CurveSection (speed at the middle + half the acceleration bound).
@@ -58,7 +58,7 @@
 #include "dispkin/serial/revolute_chain.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 //! The largest number of joints a JointTrajectory samples without allocating.
 constexpr int max_ptp_joints = 12;
@@ -118,7 +118,7 @@ class JointTrajectory {
   //! The acceleration limit the time law kept to (the DISP one, lowered by joint acceleration limits).
   double law_acceleration() const noexcept { return law_acceleration_; }
   //! The arm's chain the move was planned on (its forward kinematics gives sample().pose).
-  const serial::RevoluteChain& chain() const noexcept { return chain_; }
+  const RevoluteChain& chain() const noexcept { return chain_; }
 
   //! The state at time t (clamped to [0, duration]); exactly q_a at t ≤ 0 and q_b at t ≥ duration.
   JointTrajectorySample sample(double t) const noexcept;
@@ -126,7 +126,7 @@ class JointTrajectory {
   void sample(const double* times, JointTrajectorySample* out, std::size_t count) const noexcept;
 
  private:
-  friend JointTrajectory plan(const JointPath&, const MetricSetd&, const Limits&, ProfileKind, const serial::SerialArm&,
+  friend JointTrajectory plan(const JointPath&, const MetricSetd&, const Limits&, ProfileKind, const SerialArm&,
                               const PtpOptions&);
   // q at u without rounding at the ends: q_a at u = 0 and q_b at u = 1 exactly.
   template <typename Out>
@@ -137,7 +137,7 @@ class JointTrajectory {
     double s, span, rate, slope;
   };
 
-  serial::RevoluteChain chain_;
+  RevoluteChain chain_;
   Eigen::VectorXd q_start_, q_end_, delta_;
   std::vector<JointSection> sections_;
   std::vector<SectionRate> rates_;
@@ -153,15 +153,6 @@ class JointTrajectory {
 //! that is not well-formed, more than max_ptp_joints joints, or a move that moves no point of the
 //! set while the arm states no joint velocity limit (nothing would bound its speed).
 JointTrajectory plan(const JointPath& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                     const serial::SerialArm& arm, const PtpOptions& options = {});
+                     const SerialArm& arm, const PtpOptions& options = {});
 
-namespace detail {
-
-//! The bounds of the joint section u ∈ [u0, u1] of the line q_a + u Δq on `chain`, with the
-//! groups' weights and relative reaches (from the tool origin) in `factors`. See the file comment
-//! and src/ptp_section.cpp for the derivation of the acceleration bound.
-JointSection joint_section_bounds(const serial::RevoluteChain& chain, const Eigen::VectorXd& q_a,
-                                  const Eigen::VectorXd& delta, double u0, double u1, const GroupFactors& factors);
-
-}  // namespace detail
-}  // namespace dispkin
+}  // namespace dispkin::serial

@@ -108,13 +108,7 @@ constexpr double inverse_tolerance = 1e-10;
 class SerialArm;
 
 namespace detail {
-struct ChainPassRecord;
-void recorded_torques(const SerialArm& arm, const ChainPassRecord& record, const Eigen::VectorXd& qd,
-                      const Eigen::VectorXd& qdd, Eigen::VectorXd& tau, Eigen::VectorXd& holding);
-//! KDL's ChainIdSolver_RNE on the arm's KDL chain: the reference SerialArm::torques is tested
-//! against (not on any hot path: it copies the chain per call).
-Eigen::VectorXd torques_by_kdl(const SerialArm& arm, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                               const Eigen::VectorXd& qdd);
+struct ArmAccess;  // the plugin's own kernels' way to the model (src/serial/serial_arm_model.hpp)
 }  // namespace detail
 
 //! A serial arm of revolute joints between a base link and a tip link of a URDF.
@@ -220,10 +214,7 @@ class SerialArm : public Kinematics {
   explicit SerialArm(std::shared_ptr<const Model> model);
   void require_joint_vector(const Eigen::VectorXd& q, const char* name) const;
   void require_dynamics() const;
-  friend void detail::recorded_torques(const SerialArm&, const detail::ChainPassRecord&, const Eigen::VectorXd&,
-                                       const Eigen::VectorXd&, Eigen::VectorXd&, Eigen::VectorXd&);
-  friend Eigen::VectorXd detail::torques_by_kdl(const SerialArm&, const Eigen::VectorXd&, const Eigen::VectorXd&,
-                                                const Eigen::VectorXd&);
+  friend struct detail::ArmAccess;
 
   std::shared_ptr<const Model> model_;
   Eigen::Vector3d gravity_{0.0, 0.0, -9.81};

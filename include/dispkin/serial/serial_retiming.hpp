@@ -19,14 +19,14 @@
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 
-namespace dispkin {
+namespace dispkin::serial {
 
 //! Follows `trajectory` with `arm` from the configuration `q_start` (the IK solution nearest to
 //! it at t = 0, then nearest to the previous sample). Throws std::invalid_argument for bad
 //! options or a q_start of the wrong size, std::runtime_error naming the time and path position
 //! where a pose has no IK solution, where the Jacobian is singular, or where the static torque
 //! alone exceeds a joint's effort limit (the KUKA re-timing patent's "cannot be reached by slowing down").
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::SerialArm& arm,
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm,
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
 
 //! The joint-limit factors of a PTP move at `times` (s): FVEL and FACC (doc/retiming.md (eq. 4)
@@ -34,7 +34,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const serial::
 //! model (its position excess is 0: both ends are inside the limits, and the range is a box).
 //! Throws std::invalid_argument for a trajectory of another dof or a time that is not finite,
 //! std::runtime_error where the static torque alone reaches an effort limit (eq. 6).
-JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const serial::SerialArm& arm,
+JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const SerialArm& arm,
                                     const std::vector<double>& times);
 
 //! Joint positions, velocities and accelerations along a trajectory; row k at times[k].
@@ -45,13 +45,13 @@ struct FollowedJoints {
   //!@}
 };
 
-//! `arm` following `trajectory` at `times` (s) as a job's samples give it: q by serial::follow
+//! `arm` following `trajectory` at `times` (s) as a job's samples give it: q by follow
 //! from q_start (the solutions within the limits, each nearest to the previous sample), q̇ by
-//! serial::joint_velocity of the trajectory's body twist, q̈ by central differences of q̇ over
+//! joint_velocity of the trajectory's body twist, q̈ by central differences of q̇ over
 //! ±difference_step (one-sided at the ends, doc/retiming.md (eq. 2)), each neighbour followed
-//! from the sample's q. Throws what serial::follow throws, std::invalid_argument for a
+//! from the sample's q. Throws what follow throws, std::invalid_argument for a
 //! difference_step ≤ 0 or a time that is not finite.
-FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
                              const std::vector<double>& times, double difference_step = 1e-4);
 
 //! Plans `path`, checks it, scales the limits by 1/FVEL and 1/FACC and re-plans until both
@@ -59,7 +59,7 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const serial::SerialA
 //! violated (slowing down cannot help), if the static torque exceeds a limit, or if
 //! `max_iterations` plans do not converge.
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                               const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                               const SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options = {}, int max_iterations = 20);
 
 //! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
@@ -79,13 +79,13 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
 //! path has no IK solution or is singular, where the static torque reaches a limit, where a
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const serial::SerialArm& arm, const Eigen::VectorXd& q_start,
+                                   const SerialArm& arm, const Eigen::VectorXd& q_start,
                                    const OptimalRetimeOptions& options = {});
 
 //! The arm as a JointModel: joints by the continuous inverse-kinematics branch (Newton from the
 //! previous solution, all analytic solutions where that fails), q′ by the body Jacobian, torque
 //! coefficients by recursive Newton–Euler, and the scaling loop as a candidate. Holds a reference
 //! to `arm`, which must outlive it.
-std::unique_ptr<JointModel> joint_model(const serial::SerialArm& arm);
+std::unique_ptr<JointModel> joint_model(const SerialArm& arm);
 
-}  // namespace dispkin
+}  // namespace dispkin::serial
