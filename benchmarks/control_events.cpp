@@ -168,14 +168,13 @@ void run_append(double scale) {
 }
 
 // A program streamed as a controller feeds it: 1000 zig-zag LINs, each appended when less than
-// `ahead` seconds of motion are planned beyond the current cycle (1 kHz), so the look-ahead stays
-// the same while the moves run grow. The cost of each append, by how many moves ran before it.
+// 1.5 s of motion is planned beyond the current cycle (1 kHz), so the look-ahead stays the same
+// while the moves run grow. The cost of each append, by how many moves were appended before it.
 void run_stream(double scale) {
   const double overhead = thread_clock_overhead();
   const std::size_t count = scaled(1000, scale);
   std::printf("== MotionStream fed just in time: %zu LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), each appended "
-              "when under 1.5 s is planned ahead; thread CPU us per append by moves appended before; load average %s
-",
+              "when under 1.5 s is planned ahead; thread CPU us per append by moves appended before; load average %s\n",
               count, load_average().c_str());
   std::mt19937_64 rng(9500);
   const std::vector<Path> moves = zigzag(rng, count);
@@ -194,16 +193,13 @@ void run_stream(double scale) {
     }
     t += 1e-3;
   }
-  std::printf("%-22s %8s %9s %9s %9s
-", "moves appended before", "appends", "median", "p99", "max");
+  std::printf("%-22s %8s %9s %9s %9s\n", "moves appended before", "appends", "median", "p99", "max");
   for (std::size_t b = 0; b < buckets; ++b) {
     const Spread a = spread(ns[b]);
-    std::printf("%8zu – %-11zu %8zu %9.1f %9.1f %9.1f
-", b * per_bucket, std::min(count, (b + 1) * per_bucket) - 1, ns[b].size(),
+    std::printf("%8zu – %-11zu %8zu %9.1f %9.1f %9.1f\n", b * per_bucket, std::min(count, (b + 1) * per_bucket) - 1, ns[b].size(),
                 a.median * 1e-3, a.p99 * 1e-3, a.max * 1e-3);
   }
-  std::printf("legs from rest: %zu (1: it never stopped); duration %.1f s
-", stream.leg_count(), stream.duration());
+  std::printf("legs from rest: %zu (1: it never stopped); duration %.1f s\n", stream.leg_count(), stream.duration());
   std::printf("load average after: %s\n\n", load_average().c_str());
 }
 

@@ -143,8 +143,8 @@ int main() {
     last_pose = x.pose;
     fastest = std::max(fastest, x.s_dot);
 
-    // Requests. A move is streamed in while about two moves are planned ahead (the planner joins
-    // a move that comes before the motion enters the last one).
+    // Requests. A move is streamed in while about two moves are planned ahead (the stream joins
+    // a move that comes while the motion runs, planning only the path ahead of it).
     const double planned_ahead = stream->duration() - t;
     if (!moves.empty() && planned_ahead < 1.0 && worker.idle()) {
       const Path move = moves.front();

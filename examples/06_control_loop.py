@@ -2,8 +2,8 @@
 stops on the path, a resumption and a speed override of 50 %, sampled at 1 kHz.
 
 A MotionStream always plans its tail to rest at the last pose it was given, so the motion is safe
-whenever the next move is late; a move that comes before the motion enters the last one is
-joined without a stop (corners blended within 2 mm). Every request at time t leaves what was
+whenever the next move is late; a move that comes while the motion runs is joined to it from its
+state without a stop (corners blended within 2 mm). Every request at time t leaves what was
 sampled before t as it was. The loop samples into one preallocated array (out=), so it does not
 allocate per cycle. The plot shows the path speed through the stop and the override. (The C++
 twin, with a worker thread that plans while the cycle samples, is 06_control_loop.cpp.)

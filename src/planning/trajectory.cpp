@@ -130,6 +130,17 @@ void Trajectory::check(bool sections) const {
     const double peak = p.cut ? peak_until(p.profile, p.end_time - p.start_time) : p.profile.peak_velocity();
     require_lazily(peak <= allowed * (1.0 + 1e-8), name(" peak velocity"), peak,
                    [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
+    // A law planned under TimeLawLimits keeps to them in every phase (a pickle cannot bring a
+    // law that accelerates beyond them, which the profile's own checks scale their tolerance by).
+    if (limits_) {
+      for (int i = 0; i < p.profile.phase_count(); ++i) {
+        const ProfilePhase& phase = p.profile.phase(i);
+        const double a = std::max(std::abs(phase.start.a), std::abs(phase.end.a));
+        require_lazily(a <= limits_->acceleration * (1.0 + 1e-6), name(" acceleration"), a, [&] {
+          return "must be within the trajectory's acceleration limit " + number(limits_->acceleration) + " m/s² in every phase";
+        });
+      }
+    }
     require_lazily(speed_limits_.empty() || detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
                                                                     p.start_s, peak, speed_limits_, span, tol_s),
                    name(" velocity"), peak,

@@ -312,6 +312,10 @@ row("Trajectory.with_override", "factor 0", lambda: trajectory().with_override(0
 row("Trajectory.with_override", "factor above 10", lambda: trajectory().with_override(0.1, 11.0), V, "factor = 11: must be in [0.001, 10]")
 row("Trajectory.with_override", "factor not a number", lambda: trajectory().with_override(0.1, "fast"), TypeError, "incompatible function arguments")
 row("Trajectory.resumed_at", "not stopped", lambda: trajectory().resumed_at(0.1), V, "t = 0.1: resumes a stopped trajectory only")
+row("plan", "negative start velocity", lambda: dispkin.plan(LINE, good_set(), LIMITS, start_velocity=-1.0), V, "start_velocity = -1: must be finite and ≥ 0")
+row("plan", "start velocity above the limit", lambda: dispkin.plan(LINE, good_set(), LIMITS, start_velocity=1e3), V, "start_velocity = 1000: must be at most the velocity limit at the start")
+row("plan", "NaN start acceleration", lambda: dispkin.plan(LINE, good_set(), LIMITS, start_acceleration=NAN), V, "start_acceleration = nan: must be finite")
+row("Trajectory.starting_from", "acceleration beyond the limit", lambda: trajectory().starting_from(0.0, 1e3), V, "acceleration = 1000: must be within the acceleration limit")
 
 
 def stream(*requests):
