@@ -69,8 +69,10 @@ struct PlanOptions {
   //! acceleration limit; the trapezoid has no acceleration state: 0). Both 0 (the default): from
   //! rest. A moving start has no rest at s = 0, and the first run's law is the time-optimal one
   //! from that state (Trajectory::starting_from).
+  //!@{
   double start_velocity = 0.0;
   double start_acceleration = 0.0;
+  //!@}
 };
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
