@@ -440,6 +440,9 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       .def_property_readonly("stopped", &MotionStream::stopped, "Whether a stop holds the motion until resume.")
       .def_property_readonly("override_factor", &MotionStream::override_factor, "The override in force.")
       .def_property_readonly("waiting_moves", &MotionStream::waiting_moves, "Moves appended while stopped.")
+      .def("forget_before", &MotionStream::forget_before, py::arg("t"),
+           "Lets go of the stretches of motion that ended before t (to keep a long stream's memory to its look-ahead); "
+           "samples before t then give the state where the first stretch kept starts.")
       .def_property_readonly("changed_from", &MotionStream::changed_from,
                              "From when the last request changed the motion (s): samples before it are as they were; "
                              "inf where nothing changed (a move waiting for resume).")

@@ -230,6 +230,12 @@ void MotionStream::set_override(double t, double factor) {
   }
 }
 
+void MotionStream::forget_before(double t) noexcept {
+  if (stretches_.empty() || !(t > stretches_.front().start)) return;
+  const std::size_t active = stretch_at(t, stretches_.size());
+  stretches_.erase(stretches_.begin(), stretches_.begin() + static_cast<std::ptrdiff_t>(active));
+}
+
 TrajectorySample MotionStream::sample(double t) const noexcept {
   Cursor cursor{stretches_.size(), {}};
   return sample(t, cursor);

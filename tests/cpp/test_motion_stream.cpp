@@ -187,6 +187,37 @@ TEST(MotionStream, SaysFromWhenARequestChangedTheMotion) {
   EXPECT_EQ(stream.leg_count(), 2u);
 }
 
+// A long stream keeps what it ran until told to let go: forget_before(t) keeps the stretch
+// running at t and every later one, and the motion from t on the same, bit for bit.
+TEST(MotionStream, ForgetsWhatItRanBeforeATime) {
+  Random rnd(4006);
+  MotionStream stream(tool_set(), Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, 0.002);
+  const std::vector<Path> path = moves(rnd, 12);
+  stream.append(path[0], 0.0);
+  double t = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    t = 0.5 * (t + stream.duration());
+    stream.append(path[k], t);
+  }
+  MotionStream kept = stream;
+  const double cut = 0.5 * stream.duration();
+  MotionStream::Cursor cursor;
+  kept.sample(0.1, cursor);  // a cursor from before
+  kept.forget_before(cut);
+  for (int i = 0; i <= 200; ++i) {
+    const double at = cut + (stream.duration() - cut) * i / 200;
+    const TrajectorySample a = stream.sample(at), b = kept.sample(at, cursor);
+    ASSERT_TRUE(a.pose.matrix() == b.pose.matrix() && a.s == b.s) << at;
+  }
+  EXPECT_EQ(kept.duration(), stream.duration());
+  EXPECT_EQ(kept.leg_count(), stream.leg_count());
+  // Before the cut: the state where the first stretch kept starts, at most the cut.
+  EXPECT_LE(kept.sample(0.0).s, kept.sample(cut).s);
+  kept.append(Path::lin(path.back().end(), Posed(Eigen::Matrix3d::Identity(), path.back().end().translation() + V(0.1, 0, 0))),
+              stream.duration() - 0.5);
+  EXPECT_GT(kept.duration(), stream.duration());
+}
+
 TEST(MotionStream, RefusesWithAClearMessage) {
   Random rnd(4004);
   MotionStream stream(tool_set(), Limits{0.2, 1.0, 10.0});

@@ -103,3 +103,20 @@ def test_bad_construction():
         dispkin.MotionStream(tool()[0], dispkin.Limits(0.2, 1.0, 10.0), corner_tolerance=-1.0)
     with pytest.raises(ValueError, match='profile = "sine"'):
         dispkin.MotionStream(tool()[0], dispkin.Limits(0.2, 1.0, 10.0), profile="sine")
+
+
+def test_a_long_stream_forgets_what_it_ran_and_goes_on_the_same():
+    set_, _ = tool()
+    stream = dispkin.MotionStream(set_, dispkin.Limits(0.2, 1.0, 10.0), corner_tolerance=0.002)
+    queue = moves(8)
+    stream.append(queue.pop(0), 0.0)
+    t = 0.0
+    while queue:
+        t = 0.5 * (t + stream.duration)
+        stream.append(queue.pop(0), t)
+    cut = 0.5 * stream.duration
+    times = np.linspace(cut, stream.duration, 501)
+    before = stream.sample(times)
+    stream.forget_before(cut)
+    assert np.array_equal(stream.sample(times), before)
+    assert stream.leg_count == 1

@@ -54,6 +54,13 @@ class MotionStream {
   //! appended later run at it too.
   void set_override(double t, double factor);
 
+  //! Lets go of the stretches of motion that ended before t (a stream keeps all it ran, so that
+  //! any past time can be sampled; a controller streaming for hours calls this now and then to
+  //! keep its memory to the look-ahead). Samples before t are not kept: there the stream gives
+  //! the state where the first stretch kept starts. Nothing at or after t changes; sampling with
+  //! a cursor made before goes on (the cursor finds its stretch again).
+  void forget_before(double t) noexcept;
+
   //! The state at t: before the first move, a default sample; after the end, at rest at the end.
   TrajectorySample sample(double t) const noexcept;
   //! The same, found from `cursor` (constant time for consecutive cycles).
