@@ -10,6 +10,7 @@
 #include "../path/section_bounds.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
+#include "../message_number.hpp"
 #include "lin_speed_range.hpp"
 
 namespace dispkin {
@@ -458,7 +459,7 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   if (options.start_velocity == 0.0 && options.start_acceleration == 0.0) return from_rest;
   const double v_start = from_rest.speed_limits().front().limit;
   require(options.start_velocity <= v_start, "start_velocity", options.start_velocity,
-          "must be at most the velocity limit at the start of the path, " + std::to_string(v_start) + " m/s");
+          "must be at most the velocity limit at the start of the path, " + detail::number(v_start) + " m/s");
   // A moving start: the first run's law from that state (doc/events.md §3). The messages name
   // starting_from's arguments; here they are the options.
   try {
