@@ -121,6 +121,20 @@ def test_control_character_is_a_job_error(tmp_path):
     assert info.value.line == 2
 
 
+def test_libyaml_reads_what_pyyaml_reads_with_the_same_places(monkeypatch):
+    # Job files are parsed by libyaml's C parser (PyYAML's wheels carry it); the pure-Python
+    # parser, kept for the messages of files that are no valid YAML, gives the same data and the
+    # same line and column for every key of every example job.
+    import yaml
+    from dispkin.job import reader
+    assert yaml.__with_libyaml__ and reader._FastLoader is not None and issubclass(reader._FastLoader, yaml.CSafeLoader)
+    fast = [reader.Source(job) for job in EXAMPLE_JOBS]
+    monkeypatch.setattr(reader, "_FastLoader", None)
+    pure = [reader.Source(job) for job in EXAMPLE_JOBS]
+    for a, b in zip(fast, pure):
+        assert a.data == b.data and a.marks == b.marks, a.path
+
+
 def test_unknown_numeric_key_is_a_job_error(tmp_path):
     # Found by tests/fuzz/fuzz_jobs.py: unknown keys were sorted for the message, and a YAML key
     # that is a number cannot be compared with the names (TypeError).
