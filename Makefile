@@ -24,7 +24,7 @@ build: deps $(BUILD)/CMakeCache.txt
 # The Python package, built by scikit-build-core exactly as `pip install .` does (the build
 # requirements are already in the venv, so no isolated build environment is downloaded).
 python: deps
-	$(VENV)/bin/python -m pip install -q --no-build-isolation .
+	$(VENV)/bin/python -m pip install -q --no-build-isolation $(PIP_BUILD_FLAGS) .
 
 # A self-contained binary wheel in WHEEL_DIR: built like `make python` (same build tree, so
 # incremental), then repaired by auditwheel (with patchelf), which copies the shared libraries it
@@ -33,7 +33,7 @@ python: deps
 WHEEL_DIR ?= build/wheel
 wheel: deps
 	rm -rf $(WHEEL_DIR)
-	$(VENV)/bin/python -m pip wheel -q --no-build-isolation --no-deps -w $(WHEEL_DIR)/unrepaired .
+	$(VENV)/bin/python -m pip wheel -q --no-build-isolation --no-deps -w $(WHEEL_DIR)/unrepaired $(PIP_BUILD_FLAGS) .
 	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel repair -w $(WHEEL_DIR) $(WHEEL_DIR)/unrepaired/dispkin-*.whl
 
 # The wheel installed into a fresh venv and run where the system's copies of the bundled
@@ -71,6 +71,13 @@ layers:
 	python3 scripts/check-layers.py
 
 test: layers test-cpp test-python wheel-test docs
+
+# Under `make test` the package and the wheel are built in the C++ build tree: scikit-build-core
+# configures $(BUILD) with the package's options and the tests', benchmarks' and examples' kept on,
+# so the library is compiled once for the C++ suites, the package and the wheel (alone, `make
+# python` keeps its own tree under build/python and compiles only what the package needs).
+test: PIP_BUILD_FLAGS = --config-settings=build-dir=$(BUILD) --config-settings=cmake.define.DISPKIN_BUILD_TESTS=ON \
+  --config-settings=cmake.define.DISPKIN_BUILD_EXAMPLES=ON --config-settings=cmake.define.DISPKIN_BUILD_BENCHMARKS=ON
 
 # The demo job lives in DEMO_DIR/job.yaml (written from the built-in one the first time): edit it
 # and run `make demo` again.
