@@ -112,8 +112,8 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
 
 namespace {
 
-// The pose's index and translation, as follow() names a pose in its errors.
-std::string pose_named(const std::vector<Posed>& poses, std::size_t k) {
+// The argument follow() names in its errors: the translation of pose k.
+std::string pose_named(std::size_t k) {
   return "poses[" + std::to_string(k) + "] translation";
 }
 
@@ -148,7 +148,7 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   for (std::size_t k = 0; k < poses.size(); ++k) {
     std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, poses[k], previous, rule);
     if (!q)
-      throw std::runtime_error(describe(pose_named(poses, k), poses[k].translation(),
+      throw std::runtime_error(describe(pose_named(k), poses[k].translation(),
                                         "has no inverse-kinematics solution within the joint limits" +
                                             std::string(redundancy.has_parameter() ? " at the redundancy value reached" : "")));
     if (redundancy.has_parameter()) {
@@ -169,7 +169,7 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
       const double step = (*q - previous).lpNorm<Eigen::Infinity>();
       if (!(step <= max_redundant_step))
         throw std::runtime_error(describe(
-            pose_named(poses, k), poses[k].translation(),
+            pose_named(k), poses[k].translation(),
             "is reached at the redundancy value reached only by a joint step of " + std::to_string(step) +
                 " rad, more than " + std::to_string(max_redundant_step) +
                 " (the branch ends there, or the poses are too far apart: sample the path more densely)"));
