@@ -386,20 +386,23 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
            "The tip pose in base coordinates for joint positions q (n,).")
       .def("inverse",
            [](const SerialArm& a, const py::handle& pose, bool equivalents, const py::object& redundancy,
-              const py::object& q_ref) {
+              const py::object& q_ref, bool wide_search) {
              InverseOptions options;
              options.offer_equivalents = equivalents;
+             options.wide_search = wide_search;
              choose_redundancy(options, redundancy, q_ref);
              return solution_rows(solve(a, pose_of(pose, "pose"), options).solutions, a.dof());
            },
            py::arg("pose"), py::arg("offer_equivalents") = false, py::kw_only(), py::arg("redundancy") = py::none(),
-           py::arg("q_ref") = py::none(),
+           py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
            "The distinct joint vectors inside the limits whose forward() is `pose` (a Pose or (4, 4)) to 1e-10, "
            "as the rows of a (k, n) array, one per solution, each angle the 2pi-equivalent nearest to 0 inside "
            "the limits; with offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else "
            "ValueError); (0, n) when unreachable. A redundant arm with a parameter (arm.redundancy): every "
            "solution at redundancy=value, or at q_ref's value with q_ref=q (nearest to q_ref first; on any arm "
-           "q_ref orders the solutions so), or with neither at each of arm.redundancy.default_values.")
+           "q_ref orders the solutions so), or with neither at each of arm.redundancy.default_values. An arm of "
+           "family 'general' given q_ref: Newton's method from q_ref first, its solution alone when it converges "
+           "inside the limits; wide_search=True adds the search from random starts.")
       .def(
           "inverse_many",
           [](const SerialArm& a, const py::handle& poses, bool equivalents) {
@@ -421,14 +424,15 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "ValueError naming poses[i] for a pose that is not finite or not rigid.")
       .def("inverse_solutions",
            [](const SerialArm& a, const py::handle& pose, bool keep, bool equivalents, int attempts, double budget,
-              unsigned seed, const py::object& redundancy, const py::object& q_ref) {
+              unsigned seed, const py::object& redundancy, const py::object& q_ref, bool wide_search) {
              InverseOptions options = options_of(keep, equivalents, attempts, budget, seed);
+             options.wide_search = wide_search;
              choose_redundancy(options, redundancy, q_ref);
              return solve(a, pose_of(pose, "pose"), options);
            },
            py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
            py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u, py::kw_only(),
-           py::arg("redundancy") = py::none(), py::arg("q_ref") = py::none(),
+           py::arg("redundancy") = py::none(), py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
            "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
            "2pi copies on request (at most 10000, else ValueError); for the numeric fallback the restarts, time budget (s, "
            "bounding the search's time) and seed.")
@@ -466,21 +470,33 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
                   },
                   py::arg("solutions"), py::arg("q_ref"), "The solution closest to q_ref (Euclidean, no wrapping).")
       .def("follow",
-           [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start) {
+           [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start, bool move_redundancy,
+              double gain, double max_rate, double singularity_weight) {
              const Eigen::VectorXd start = joint_vector(q_start, "q_start");
+             serial::RedundancyRule rule;
+             rule.move = move_redundancy;
+             rule.gain = gain;
+             rule.max_rate = max_rate;
+             rule.singularity_weight = singularity_weight;
              std::vector<Eigen::VectorXd> path;
              {
                py::gil_scoped_release unlocked;
-               path = serial::follow(a, poses, start);
+               path = serial::follow(a, poses, start, {}, rule);
              }
              py::array_t<double> out({static_cast<py::ssize_t>(path.size()), static_cast<py::ssize_t>(a.dof())});
              for (std::size_t k = 0; k < path.size(); ++k)
                Eigen::Map<Eigen::VectorXd>(out.mutable_data() + k * static_cast<std::size_t>(a.dof()), a.dof()) = path[k];
              return out;
            },
-           py::arg("poses"), py::arg("q_start"),
+           py::arg("poses"), py::arg("q_start"), py::kw_only(),
+           py::arg("move_redundancy") = serial::RedundancyRule{}.move, py::arg("gain") = serial::RedundancyRule{}.gain,
+           py::arg("max_rate") = serial::RedundancyRule{}.max_rate,
+           py::arg("singularity_weight") = serial::RedundancyRule{}.singularity_weight,
            "(N, n) joint path: for each pose the solution nearest to the previous one, from q_start. "
-           "RuntimeError naming the first pose without a solution.")
+           "RuntimeError naming the first pose without a solution. A seven-joint arm with a redundancy parameter "
+           "starts at q_start's value and, with move_redundancy, moves it away from joint limits and singular poses "
+           "by at most max_rate rad per radian the other joints travel (doc/inverse-kinematics.md eq. 45); no joint "
+           "steps more than 0.3 rad from one pose to the next (RuntimeError naming the pose instead).")
       .def(
           "joint_velocities",
           [](const SerialArm& a, const py::object& q, const py::object& body_twists) {

@@ -2,6 +2,7 @@
 // tracking first, the nearest of all solutions where tracking is not trusted; and serial::follow.
 #include "branch_following.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "angles.hpp"
 #include "dispkin/error.hpp"
 #include "ik_newton.hpp"
+#include "redundancy_rule.hpp"
 #include "serial_arm_model.hpp"
 
 namespace dispkin {
@@ -87,6 +89,9 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
   // A redundant arm with a parameter stays at q_ref's value unless the rule fixes one
   // (doc/inverse-kinematics.md (eq. 41)): all its solutions there, in closed form.
   if (arm.redundancy().has_parameter() && !options.redundancy) options.redundancy = q_ref(arm.redundancy().joint);
+  // Without one (family general), Newton's method from q_ref first, the search where it fails
+  // (doc/inverse-kinematics.md (eq. 46)).
+  if (arm.family() == IkFamily::general && !options.redundancy) options.q_ref = q_ref;
   const std::vector<Eigen::VectorXd> solutions = arm.inverse_solutions(pose, options).solutions;
   if (solutions.empty()) return std::nullopt;
   const JointLimits limits = arm.joint_limits();
@@ -105,8 +110,17 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
 
 }  // namespace detail
 
+namespace {
+
+// The argument follow() names in its errors: the translation of pose k.
+std::string pose_named(std::size_t k) {
+  return "poses[" + std::to_string(k) + "] translation";
+}
+
+}  // namespace
+
 std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
-                                    const InverseOptions& options) {
+                                    const InverseOptions& options, const RedundancyRule& redundancy_rule) {
   if (q_start.size() != arm.dof())
     throw std::invalid_argument(describe("q_start", q_start, "expected " + std::to_string(arm.dof()) +
                                                                   " joint values, got " + std::to_string(q_start.size())));
@@ -114,11 +128,18 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   // inverse_solutions' own checks, which tracking would skip.
   require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
   require_positive(options.time_budget, "time_budget");
+  require(std::isfinite(redundancy_rule.gain) && redundancy_rule.gain >= 0.0, "redundancy_rule.gain",
+          redundancy_rule.gain, "must be finite and at least 0");
+  require(std::isfinite(redundancy_rule.max_rate) && redundancy_rule.max_rate >= 0.0, "redundancy_rule.max_rate",
+          redundancy_rule.max_rate, "must be finite and at least 0");
+  require(std::isfinite(redundancy_rule.singularity_weight) && redundancy_rule.singularity_weight >= 0.0,
+          "redundancy_rule.singularity_weight", redundancy_rule.singularity_weight, "must be finite and at least 0");
   // A branch turns on through the joints' whole range: the 2π copies inside the limits are
   // candidates whatever offer_equivalents says (found in closed form, not enumerated).
   detail::BranchRule rule{options, detail::Turns::listed};
   rule.options.offer_equivalents = true;
-  // A redundant arm keeps q_start's parameter value and never jumps (doc/inverse-kinematics.md (eq. 41)).
+  // A redundant arm starts at q_start's parameter value, moves it by the rule of
+  // doc/inverse-kinematics.md (eq. 45) and never jumps (eq. 41).
   const Redundancy& redundancy = arm.redundancy();
   if (redundancy.has_parameter()) rule.options.redundancy = q_start(redundancy.joint);
   std::vector<Eigen::VectorXd> path;
@@ -127,15 +148,29 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   for (std::size_t k = 0; k < poses.size(); ++k) {
     std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, poses[k], previous, rule);
     if (!q)
-      throw std::runtime_error(describe("poses[" + std::to_string(k) + "] translation", poses[k].translation(),
+      throw std::runtime_error(describe(pose_named(k), poses[k].translation(),
                                         "has no inverse-kinematics solution within the joint limits" +
-                                            std::string(redundancy.has_parameter() ? " at the redundancy value of q_start" : "")));
+                                            std::string(redundancy.has_parameter() ? " at the redundancy value reached" : "")));
     if (redundancy.has_parameter()) {
+      // The step of eq. 45 from the solution at the previous value; kept only where the branch
+      // goes on at the new value within the joint limits (else the value stays: eq. 41).
+      const double delta = detail::parameter_step(arm, *q, (*q - previous).norm(), redundancy_rule);
+      const double moved = std::clamp(*rule.options.redundancy + delta, redundancy.lower, redundancy.upper);
+      if (moved != *rule.options.redundancy) {
+        detail::BranchRule there = rule;
+        there.options.redundancy = moved;
+        if (std::optional<Eigen::VectorXd> q_moved = detail::solution_on_branch(arm, poses[k], *q, there)) {
+          if ((*q_moved - previous).lpNorm<Eigen::Infinity>() <= max_redundant_step) {
+            q = std::move(q_moved);
+            rule.options.redundancy = moved;
+          }
+        }
+      }
       const double step = (*q - previous).lpNorm<Eigen::Infinity>();
       if (!(step <= max_redundant_step))
         throw std::runtime_error(describe(
-            "poses[" + std::to_string(k) + "] translation", poses[k].translation(),
-            "is reached at the redundancy value of q_start only by a joint step of " + std::to_string(step) +
+            pose_named(k), poses[k].translation(),
+            "is reached at the redundancy value reached only by a joint step of " + std::to_string(step) +
                 " rad, more than " + std::to_string(max_redundant_step) +
                 " (the branch ends there, or the poses are too far apart: sample the path more densely)"));
     }

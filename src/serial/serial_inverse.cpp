@@ -64,6 +64,20 @@ bool polish(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
   return q.allFinite() && arm.forward(q).is_approx(target, inverse_tolerance);
 }
 
+// Newton's method on the full pose error from a start q near a solution (eq. 46): minimum-norm
+// steps, so a redundant arm lands on the solution of its continuum nearest the start (to first
+// order), none longer than half a radian in any joint (a start farther away is not "near").
+// Whether q then reproduces the pose to inverse_tolerance.
+bool polish_from(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
+  detail::NewtonSettings settings;
+  settings.tolerance = 0.1 * inverse_tolerance;
+  settings.max_iterations = 20;
+  settings.largest_step = 0.5;
+  settings.well_conditioned = 1.0;  // every step minimum-norm: square or not, singular or not
+  detail::refine_pose(arm.chain(), target, q.data(), settings);
+  return q.allFinite() && arm.forward(q).is_approx(target, inverse_tolerance);
+}
+
 // Whether q reproduces the pose to inverse_tolerance by forward(), the promise of inverse_solutions.
 bool reproduces(const SerialArm& arm, const Eigen::VectorXd& q, const Posed& pose) {
   return arm.forward(q).is_approx(pose, inverse_tolerance);
@@ -362,7 +376,14 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     raw = analytic_inverse(model_->revolute, model_->family, pose);
     result.complete = true;
   } else {
-    raw = numeric_solutions(*this, model_->chain, limits, pose, options);
+    // A start known (q_ref): Newton's method from it first (doc/inverse-kinematics.md (eq. 46)),
+    // the search from random starts only when asked, or when Newton lands on no solution inside
+    // the limits.
+    if (options.q_ref) {
+      Eigen::VectorXd q = *options.q_ref;
+      if (polish_from(*this, pose, q)) keep_solutions(*this, std::vector<Eigen::VectorXd>{q}, limits, pose, options, kept);
+    }
+    if (kept.q.empty() || options.wide_search) raw = numeric_solutions(*this, model_->chain, limits, pose, options);
     result.complete = false;
   }
   keep_solutions(*this, raw, limits, pose, options, kept);

@@ -185,7 +185,11 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
   std::vector<Posed> poses;
   poses.reserve(times.size());
   for (const double t : times) poses.push_back(trajectory.sample(t).pose);
-  const std::vector<Eigen::VectorXd> q = follow(arm, poses, q_start);
+  // A redundant arm's parameter stays at q_start's value: the Jacobian velocities below keep it
+  // still (doc/inverse-kinematics.md (eq. 42)).
+  RedundancyRule kept;
+  kept.move = false;
+  const std::vector<Eigen::VectorXd> q = follow(arm, poses, q_start, {}, kept);
   FollowedJoints out{Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n)};
   const double duration = trajectory.duration();
   for (Eigen::Index k = 0; k < count; ++k) {
@@ -204,7 +208,7 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
     const double at[2] = {t_before, t_after};
     for (int side = 0; side < 2; ++side) {
       const TrajectorySample neighbour = trajectory.sample(at[side]);
-      const Eigen::VectorXd q_side = follow(arm, {neighbour.pose}, q_k).front();
+      const Eigen::VectorXd q_side = follow(arm, {neighbour.pose}, q_k, {}, kept).front();
       rate[side] = joint_velocity(arm, q_side, neighbour.body_twist);
     }
     out.qdd.row(k) = ((rate[1] - rate[0]) / (t_after - t_before)).transpose();

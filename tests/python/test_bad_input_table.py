@@ -505,6 +505,9 @@ row("SerialArm.configuration", "not a 6R arm", lambda: arm().configuration([0, 0
 row("SerialArm.nearest", "no solutions", lambda: dispkin.SerialArm.nearest([], [0, 0]), V, "solutions = 0: must not be empty")
 row("SerialArm.nearest", "wrong size q_ref", lambda: dispkin.SerialArm.nearest([np.zeros(6)], [0, 0]), V, "q_ref = (0, 0): expected 6 joint values like the solutions, got 2")
 row("SerialArm.follow", "unreachable pose", lambda: arm().follow([dispkin.Pose((1, 0, 0, 0), (5, 0, 0))], [0, 0]), RuntimeError, "poses[0] translation = (5, 0, 0): has no inverse-kinematics solution")
+row("SerialArm.follow", "negative gain", lambda: arm().follow([dispkin.Pose()], [0, 0], gain=-1.0), V, "redundancy_rule.gain = -1: must be finite and at least 0")
+row("SerialArm.follow", "NaN max_rate", lambda: arm().follow([dispkin.Pose()], [0, 0], max_rate=NAN), V, "redundancy_rule.max_rate = nan: must be finite and at least 0")
+row("SerialArm.follow", "+inf singularity_weight", lambda: arm().follow([dispkin.Pose()], [0, 0], singularity_weight=INF), V, "redundancy_rule.singularity_weight = inf: must be finite and at least 0")
 
 # --- check_joint_limits / retime (UR5e) ---------------------------------------------------
 def ur5e():

@@ -183,11 +183,80 @@ def test_follow_starts_at_q_start_and_never_jumps(arm):
             continue
         followed += 1
         assert np.abs(path[0] - q).max() <= 1e-9
-        assert np.all(path[:, 6] == q[6])  # the parameter stays at q_start's value
         assert np.abs(np.diff(path, axis=0)).max() <= 0.3
         for pose, x in zip(poses, path):
             assert np.abs(arm.forward(x).matrix() - pose.matrix()).max() <= 1e-10
+        try:
+            kept = arm.follow(poses, q, move_redundancy=False)
+        except RuntimeError:
+            continue  # the branch at q_start's value ends where the moved one goes on
+        assert np.all(kept[:, 6] == q[6])  # without the rule the parameter stays at q_start's value
+        assert np.array_equal(arm.follow(poses, q, max_rate=0.0), kept)
     assert followed >= 10
+
+
+def test_the_parameter_moves_at_most_at_the_rule_s_rate(arm):
+    """doc/inverse-kinematics.md (eq. 45): from pose k − 1 to pose k the parameter moves by at
+    most ρ times the joints' travel at the previous value (the nearest solution there), and it
+    does move on a path whose joints near their limits."""
+    rng = np.random.default_rng(SEED + 6)
+    rate, moved = 0.2, 0.0
+    for q in random_q(rng, arm, 6):
+        poses = lin_poses(arm, q, rng.uniform(-0.05, 0.05, 3), 21)
+        try:
+            path = arm.follow(poses, q, max_rate=rate)
+        except RuntimeError:
+            continue
+        for k in range(1, len(path)):
+            at_previous = arm.inverse(poses[k], q_ref=path[k - 1])[0]  # nearest first, at θ_{k−1}
+            travel = np.linalg.norm(at_previous - path[k - 1])
+            assert abs(path[k, 6] - path[k - 1, 6]) <= rate * travel + 1e-12
+        moved = max(moved, np.abs(path[:, 6] - q[6]).max())
+    assert moved > 1e-3
+
+
+def barrier_margin(arm, path):
+    """The smallest distance of any joint to its nearer limit, as a fraction of its half range."""
+    limits = arm.joint_limits
+    half = 0.5 * (limits.upper - limits.lower)
+    return np.min(np.minimum(limits.upper - path, path - limits.lower) / half)
+
+
+def test_the_rule_keeps_the_arm_away_from_the_limits_a_fixed_parameter_runs_into(arm):
+    """LIN moves of 0.15 m per axis from the inner 60 % of the ranges: the rule follows every path
+    the fixed parameter follows, and some on which the branch at q_start's value ends (at a joint
+    limit); on the paths both follow its joints keep farther from the limits on average."""
+    rng = np.random.default_rng(SEED + 8)
+    limits = arm.joint_limits
+    middle = 0.5 * (limits.lower + limits.upper)
+    rescued, margins = 0, []
+    for q in middle + 0.6 * (random_q(rng, arm, 40) - middle):
+        poses = lin_poses(arm, q, rng.uniform(-0.15, 0.15, 3), 61)
+        try:
+            kept = arm.follow(poses, q, move_redundancy=False)
+        except RuntimeError:
+            kept = None
+        try:
+            moved = arm.follow(poses, q)
+        except RuntimeError:
+            assert kept is None, "the rule lost a path the fixed parameter follows"
+            continue
+        assert np.abs(moved[0] - q).max() <= 1e-9 and np.abs(np.diff(moved, axis=0)).max() <= 0.3
+        if kept is None:
+            rescued += 1
+        else:
+            margins.append((barrier_margin(arm, moved), barrier_margin(arm, kept)))
+    margins = np.array(margins)
+    assert rescued >= 1 and len(margins) >= 10
+    assert margins[:, 0].mean() > margins[:, 1].mean()
+
+
+def test_bad_rule_values_are_named():
+    arm = panda()
+    q = np.array([0.1, -0.4, 0.2, -2.0, 0.1, 1.8, 0.7])
+    for name, value in [("gain", -1.0), ("max_rate", float("nan")), ("singularity_weight", float("inf"))]:
+        with pytest.raises(ValueError, match=f"redundancy_rule.{name}"):
+            arm.follow([arm.forward(q)], q, **{name: value})
 
 
 def panda_lin():
@@ -306,12 +375,12 @@ def test_follow_refuses_a_jump_where_the_branch_ends():
     for q in random_q(rng, arm, 20):
         poses = lin_poses(arm, q, rng.uniform(-0.05, 0.05, 3), 26)
         try:
-            arm.follow(poses, q)
+            arm.follow(poses, q, move_redundancy=False)
         except RuntimeError as e:
             if "joint step" not in str(e):
                 continue
             k = int(str(e).split("poses[")[1].split("]")[0])
-            before = arm.follow(poses[:k], q)[-1]
+            before = arm.follow(poses[:k], q, move_redundancy=False)[-1]
             solutions = arm.inverse(poses[k], redundancy=q[6])
             assert len(solutions) and np.abs(solutions - before).max(axis=1).min() > 0.3
             refused += 1
@@ -324,9 +393,50 @@ def test_the_seven_joint_example_job_plans_from_q_start(tmp_path):
 
     job = pathlib.Path(__file__).resolve().parents[2] / "examples" / "jobs" / "iiwa14_lin_move.yaml"
     assert cli.main(["check", str(job)]) == 0
-    assert cli.main(["plan", str(job), "-o", str(tmp_path)]) == 0
+    assert cli.main(["plan", str(job), "-o", str(tmp_path), "--plot"]) == 0
+    pngs = sorted(tmp_path.glob("*.png"))
+    assert pngs and all(p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" for p in pngs)
     rows = list(csv.reader((tmp_path / "iiwa14_lin_move.csv").open()))
     table = np.array(rows[1:], dtype=float)
     q = table[:, [rows[0].index(f"joint_a{k}.position") for k in range(1, 8)]]
     np.testing.assert_allclose(q[0], [0.3, 0.5, 0.2, -1.6, -0.3, 1.0, 0.4], atol=1e-9)
     assert np.abs(q[:, 6] - 0.4).max() <= 1e-9 and np.abs(np.diff(q, axis=0)).max() <= 0.3
+
+
+def random_7r_urdf(rng):
+    """A 7R arm of random link offsets and axis directions (no closed form: family general)."""
+    links = "".join(f'<link name="l{k}"/>' for k in range(8))
+    joints = ""
+    for k in range(7):
+        xyz = " ".join(f"{v:.6f}" for v in rng.uniform(-0.2, 0.2, 3) + np.array([0.0, 0.0, 0.15]))
+        rpy = " ".join(f"{v:.6f}" for v in rng.uniform(-np.pi, np.pi, 3))
+        joints += (f'<joint name="j{k + 1}" type="revolute"><parent link="l{k}"/><child link="l{k + 1}"/>'
+                   f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="0 0 1"/>'
+                   f'<limit lower="-2.9" upper="2.9" effort="100" velocity="2"/></joint>')
+    return f'<robot name="random_7r">{links}{joints}</robot>'
+
+
+def test_a_random_7r_arm_solves_from_a_near_start_by_newton_first():
+    """doc/inverse-kinematics.md (eq. 46): given q_ref near a solution, the general family answers
+    with the one solution Newton's method reaches from it (no search: a single solution), near the
+    generating joints; wide_search adds the search's samples; following a path from q_start
+    starts at q_start and reproduces every pose."""
+    rng = np.random.default_rng(SEED + 7)
+    arm = dispkin.SerialArm.from_urdf(random_7r_urdf(rng), "l0", "l7")
+    assert arm.family == "general" and arm.redundancy.kind == "none"
+    for q in 0.7 * random_q(rng, arm, 30):
+        pose = arm.forward(q)
+        near = q + rng.uniform(-0.05, 0.05, 7)
+        result = arm.inverse_solutions(pose, q_ref=near)
+        assert not result.complete and len(result.solutions) == 1
+        s = result.solutions[0]
+        assert np.abs(arm.forward(s).matrix() - pose.matrix()).max() <= 1e-10
+        d = np.linalg.norm(q - near)
+        assert np.linalg.norm(s - near) <= d + d * d  # the nearest, to first order
+    wide = arm.inverse_solutions(pose, q_ref=near, wide_search=True, max_attempts=8)
+    assert len(wide.solutions) > 1 and np.allclose(wide.solutions[0], s, atol=1e-9)
+    poses = lin_poses(arm, q, np.array([0.02, -0.01, 0.01]), 21)
+    path = arm.follow(poses, q)
+    assert np.abs(path[0] - q).max() <= 1e-9 and np.abs(np.diff(path, axis=0)).max() <= 0.05
+    for pose, x in zip(poses, path):
+        assert np.abs(arm.forward(x).matrix() - pose.matrix()).max() <= 1e-10

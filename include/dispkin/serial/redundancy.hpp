@@ -68,5 +68,20 @@ struct Redundancy {
   static constexpr int default_value_count = 16;
 };
 
+//! How follow() moves a redundant arm's parameter along a path (doc/inverse-kinematics.md §12):
+//! from q_start's value, down the gradient of a cost that grows towards the joint limits and
+//! the singular poses (eq. 44), at a rate bounded per radian the other joints travel (eq. 45).
+struct RedundancyRule {
+  //! false: the parameter stays at q_start's value (eq. 41).
+  bool move = true;
+  //! g of eq. 45: the parameter's rate per unit of the cost's slope (rad² per unit of cost), ≥ 0.
+  double gain = 0.05;
+  //! ρ of eq. 45: the largest change of the parameter (rad) per radian the joints travel at a
+  //! fixed parameter from one pose to the next, ≥ 0; it keeps the parameter from jumping.
+  double max_rate = 0.5;
+  //! μ of eq. 44: the weight of the singularity term against the joint-limit term, ≥ 0.
+  double singularity_weight = 0.01;
+};
+
 }  // namespace serial
 }  // namespace dispkin

@@ -85,6 +85,9 @@ struct InverseOptions {
   //! The solutions at q_ref's parameter value (redundant arms with a parameter; any arm: all of
   //! them), nearest to q_ref first (Euclidean distance in joint space). Not with redundancy.
   std::optional<Eigen::VectorXd> q_ref;
+  //! Family general with q_ref: also search from random starts when Newton's method from q_ref
+  //! converges (without it the search runs only where Newton lands on no solution inside the limits).
+  bool wide_search = false;
   // Numeric fallback (family general) only:
   int max_attempts = 64;             //!< random restarts of the KDL solver, > 0
   double time_budget = 0.05;         //!< s of wall-clock time for the restarts, > 0
@@ -157,7 +160,10 @@ class SerialArm : public Kinematics {
   //! redundant arm (dof() > 6) the solutions form a continuum: with a parameter (redundancy(),
   //! family locked_joint) every solution at options.redundancy, at q_ref's value (options.q_ref),
   //! or with neither at each of redundancy().default_values() (doc/inverse-kinematics.md (eq. 40));
-  //! without one the search returns samples. options.redundancy on an arm without a parameter,
+  //! without one the search returns samples. Family general with options.q_ref: Newton's method
+  //! from q_ref first (minimum-norm steps, doc/inverse-kinematics.md (eq. 46)), its solution alone
+  //! when it converges inside the limits, the search as well only with options.wide_search.
+  //! options.redundancy on an arm without a parameter,
   //! or together with q_ref, throws std::invalid_argument.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
   //! a closed-form one as the solver measured it (eq. 25, which implies it: doc/inverse-kinematics.md
@@ -236,13 +242,16 @@ constexpr double max_redundant_step = 0.3;
 //! among all solutions and their 2π copies inside the limits (found in closed form, never
 //! enumerated; options.offer_equivalents is not needed for them), starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
 //! first, where that converges close by). Throws std::runtime_error naming the index of a pose
-//! without a solution. A redundant arm with a parameter (redundancy()) keeps the parameter at
-//! q_start's value (options.redundancy is ignored), so the first joint vector of a path that
-//! starts at forward(q_start) is q_start to rounding; a step of more than max_redundant_step
-//! in any joint from one pose to the next throws std::runtime_error naming the pose instead of
-//! jumping (doc/inverse-kinematics.md (eq. 41)).
+//! without a solution. A redundant arm with a parameter (redundancy()) starts at q_start's
+//! parameter value (options.redundancy is ignored) and moves it by `redundancy_rule` away from
+//! the joint limits and singular poses, at most redundancy_rule.max_rate rad per radian the other
+//! joints travel (doc/inverse-kinematics.md (eq. 45); with redundancy_rule.move false it stays);
+//! the first joint vector of a path that starts at forward(q_start) is q_start to rounding
+//! (no travel, no move); a step of more than max_redundant_step in any joint from one pose to the
+//! next throws std::runtime_error naming the pose instead of jumping (eq. 41). Throws
+//! std::invalid_argument for a negative or non-finite value of the rule.
 std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
-                                    const InverseOptions& options = {});
+                                    const InverseOptions& options = {}, const RedundancyRule& redundancy_rule = {});
 
 //! The joint velocities q̇ that give the body twist ξ_b = J_b(q) q̇ (the (v, ω) of dispkin::Twist):
 //! the minimum-norm least-squares solution, singular values below 6 ε of the largest taken as

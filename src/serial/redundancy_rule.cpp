@@ -1,0 +1,83 @@
+// The parameter of a redundant arm moved along a followed path (redundancy_rule.hpp): down the
+// slope of a joint-limit and singularity cost along the self-motion, rate-limited
+// (doc/inverse-kinematics.md (eq. 43)–(eq. 45)).
+#include "redundancy_rule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
+
+namespace dispkin::serial::detail {
+namespace {
+
+using Square = Eigen::Matrix<double, 6, 6>;
+
+// Below this reciprocal condition number of J_b without the parameter's column the self-motion
+// is not taken (the threshold of the followers' Jacobian, joint_following.cpp).
+constexpr double singular_rcond = 1e-10;
+// The step of the central difference of ln det(J_b J_bᵀ) along n (eq. 44's second term): its
+// error is O(ε²) relative, its rounding O(1e-16 / ε).
+constexpr double slope_step = 1e-6;
+
+// ln det(J_b J_bᵀ) (−∞ at a singular pose): the manipulability's logarithm, twice over.
+double log_manipulability(const SerialArm& arm, const Eigen::VectorXd& q) {
+  const Eigen::MatrixXd j = arm.body_jacobian(q);
+  const double det = (j * j.transpose()).determinant();
+  return det > 0.0 ? std::log(det) : -std::numeric_limits<double>::infinity();
+}
+
+// The joint-limit term of eq. 44 and its slope along n, analytically: each joint with a finite
+// range [l, u] adds h² / ((u − q)(q − l)), h = (u − l)/2: 1 at the range's centre, → ∞ at either end.
+void limit_term(const JointLimits& limits, const Eigen::VectorXd& q, const Eigen::VectorXd* n, double& value,
+                double& slope) {
+  value = slope = 0.0;
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const double l = limits.lower(i), u = limits.upper(i);
+    if (!std::isfinite(l) || !std::isfinite(u)) continue;
+    const double h = 0.5 * (u - l), f = (u - q(i)) * (q(i) - l);
+    if (!(f > 0.0)) {
+      value = std::numeric_limits<double>::infinity();
+      slope = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    value += h * h / f;
+    if (n) slope -= h * h * (u + l - 2.0 * q(i)) / (f * f) * (*n)(i);  // d(1/f) = −f′/f²
+  }
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> self_motion(const SerialArm& arm, const Eigen::VectorXd& q) {
+  const int locked = arm.redundancy().joint;
+  if (locked < 0) return std::nullopt;
+  const Eigen::MatrixXd full = arm.body_jacobian(q);
+  Square j;
+  for (int c = 0, k = 0; c < arm.dof(); ++c)
+    if (c != locked) j.col(k++) = full.col(c);
+  const Eigen::PartialPivLU<Square> lu(j);
+  if (!(lu.rcond() >= singular_rcond)) return std::nullopt;
+  const Eigen::Matrix<double, 6, 1> moving = lu.solve(-full.col(locked));
+  Eigen::VectorXd n(arm.dof());
+  for (int c = 0, k = 0; c < arm.dof(); ++c) n(c) = c == locked ? 1.0 : moving(k++);
+  return n;
+}
+
+double parameter_step(const SerialArm& arm, const Eigen::VectorXd& q, double travel, const RedundancyRule& rule) {
+  if (!rule.move || !(travel > 0.0)) return 0.0;
+  const std::optional<Eigen::VectorXd> n = self_motion(arm, q);
+  if (!n) return 0.0;
+  double value = 0.0, slope = 0.0;
+  limit_term(arm.joint_limits(), q, &*n, value, slope);
+  if (rule.singularity_weight > 0.0) {
+    const double ahead = log_manipulability(arm, q + slope_step * *n);
+    const double behind = log_manipulability(arm, q - slope_step * *n);
+    slope -= rule.singularity_weight * (ahead - behind) / (2.0 * slope_step);
+  }
+  if (!std::isfinite(slope)) return 0.0;
+  const double rate = std::clamp(-rule.gain * slope, -rule.max_rate, rule.max_rate);
+  return rate * travel;
+}
+
+}  // namespace dispkin::serial::detail
