@@ -40,6 +40,17 @@ def wrapped(q):
     return np.remainder(np.asarray(q) + np.pi, 2.0 * np.pi) - np.pi
 
 
+def test_the_iiwa14_ships_with_the_package():
+    # dispkin.data.path("iiwa14.urdf") is the model these tests load from tests/data, byte for byte.
+    shipped = pathlib.Path(dispkin.data.path("iiwa14.urdf"))
+    assert "iiwa14.urdf" in dispkin.data.names() and shipped.read_bytes() == IIWA.read_bytes()
+    arm = dispkin.SerialArm.from_urdf(str(shipped), "link_0", "tool0")
+    assert arm.dof == 7 and arm.family == "locked_joint" and arm.redundancy.kind == "locked_joint"
+    q = np.array([0.3, -0.5, 0.4, 1.1, -0.2, 0.7, 0.25])
+    first = arm.inverse(arm.forward(q), q_ref=q)[0]
+    assert np.max(np.abs(wrapped(first - q))) < 1e-9
+
+
 def test_the_last_joint_is_the_parameter(arm):
     assert arm.dof == 7 and arm.family == "locked_joint"
     r = arm.redundancy

@@ -6,10 +6,20 @@ installed package.
     inertias, joint speeds and torques of the datasheet); base link ``base_link``, tip link
     ``tool0``.
 
+``iiwa14.urdf``
+    A seven-joint SRS arm with the published kinematics of the KUKA LBR iiwa 14 R820 (its DH
+    table, joint limits, speeds and torques); the masses and inertias are round figures, not
+    KUKA's. Family ``locked_joint``: its redundancy is the seventh joint (``arm.redundancy``).
+    Base link ``link_0``, tip link ``tool0``.
+
+Both are written by the dispkin authors from the manufacturers' published figures and ship under
+dispkin's own licence (BSD-3-Clause).
+
 Example::
 
     import dispkin
     arm = dispkin.SerialArm.from_urdf(dispkin.data.path("ur5e.urdf"), "base_link", "tool0")
+    iiwa = dispkin.SerialArm.from_urdf(dispkin.data.path("iiwa14.urdf"), "link_0", "tool0")
 """
 
 from __future__ import annotations
