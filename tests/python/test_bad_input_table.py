@@ -448,9 +448,9 @@ row("Hexapod.leg_section_lengths", "zero tolerance", lambda: HJ.leg_section_leng
 row("Hexapod.leg_rate_bounds", "NaN tolerance", lambda: HJ.leg_rate_bounds(HEX_LINE, NAN), V, "tolerance = nan")
 row("Hexapod.leg_rate_bounds", "tolerance above 1", lambda: HJ.leg_rate_bounds(HEX_LINE, 2.0), V, "tolerance = 2")
 row("plan", "joint_metric without the method", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=42), V, "joint_metric = \"42\": must have a method leg_section_lengths")
-row("plan", "joint_metric wrong count", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([0.1, 0.2])), V, "min_section_lengths size = 2: must be 0 or the path's section count 1")
-row("plan", "joint_metric negative length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([-0.5])), V, "min_section_lengths[0] = -0.5")
-row("plan", "joint_metric NaN length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([NAN])), V, "min_section_lengths[0] = nan")
+row("plan", "joint_metric wrong count", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([0.1, 0.2])), V, "joint_metric(path, limits) size = 2: must be 0 or the path's section count 1")
+row("plan", "joint_metric negative length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([-0.5])), V, "joint_metric(path, limits)[0] = -0.5")
+row("plan", "joint_metric NaN length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([NAN])), V, "joint_metric(path, limits)[0] = nan")
 row("plan", "joint_metric wrong shape (1, 1)", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([[0.1]])), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,), got shape (1, 1)")
 row("plan", "joint_metric not numbers", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths("long")), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,)")
 
