@@ -66,9 +66,13 @@ test-cpp: build
 test-python: python
 	$(VENV)/bin/python -m pytest -q -n $(JOBS) tests/python
 
-# Every #include points down the layers of doc/architecture.md (core, path, planning, plugins).
+# Every #include points down the layers of doc/architecture.md (core, path, planning, plugins);
+# every equation citation names its doc/ file and resolves there (scripts/check-citations.py);
+# benchmarks/RESULTS.md is the table benchmarks/results_table.py writes from the dated entries.
 layers:
 	python3 scripts/check-layers.py
+	python3 scripts/check-citations.py
+	python3 benchmarks/results_table.py --check
 
 test: layers test-cpp test-python wheel-test docs
 

@@ -1,5 +1,5 @@
-"""Long blended pose lists: sections, memory and planning time per move (benchmarks/RESULTS.md,
-"Long programs").
+"""Long blended pose lists: sections, memory and planning time per move (benchmarks/history/
+2026-12-04-long-blended-pose-lists-sections-in-proportion.md).
 
 Two workloads, each planned in continuous-path mode (plan(..., corner_tolerance=d)):
 - cam: a generated 3-axis finishing program in the manner of a CAM post-processor's G64 P0.1

@@ -160,8 +160,8 @@ class SerialArm : public Kinematics {
   //! without one the search returns samples. options.redundancy on an arm without a parameter,
   //! or together with q_ref, throws std::invalid_argument.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
-  //! a closed-form one as the solver measured it (eq. 25, which implies it: doc/inverse-kinematics.md
-  //! eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
+  //! a closed-form one as the solver measured it (doc/inverse-kinematics.md eq. 25, which implies it: doc/inverse-kinematics.md
+  //! doc/inverse-kinematics.md eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
   //! safety: const and without shared mutable state (the KDL solvers are made per call on a
   //! copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain
   //! analysis per thread), so one arm may be used from several threads at once.
