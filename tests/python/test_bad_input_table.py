@@ -679,7 +679,7 @@ row("cli.main", "check of malformed YAML", lambda: run_cli("check", pathlib.Path
 row("cli.main", "plan of a job with a NaN limit", lambda: run_cli("plan", pathlib.Path(job_file("nan_plan.yaml", data=[("jerk: 5.0", "jerk: .nan")])).name, "-o", "out"),
     ExitStatus, "exit status 1: dispkin plan: nan_plan.yaml:8:44: limits.jerk: nan: must be finite")
 
-# --- hostile inputs (doc/resource-limits.md) -----------------------------------------------
+# --- hostile inputs (doc/input-budget.md) -----------------------------------------------
 PLANAR_URDF = (URDF / "arm_planar_two_link.urdf").read_text()
 
 
@@ -1098,7 +1098,7 @@ def markdown():
         "non-zero exit status and its stderr (without the usage lines) are the `ExitStatus` message.",
         "Rows **accepted by design** give no error on purpose (the reason is given) and assert the",
         "documented result instead. The sections after the first hold hostile inputs: nesting, sizes",
-        "and counts, wide joint limits, impossible numbers (doc/resource-limits.md).",
+        "and counts, wide joint limits, impossible numbers (doc/input-budget.md).",
     ]
     header = ["", "| # | Entry point | Bad input | Expected error | Message fragment | Status |", "|---|---|---|---|---|---|"]
     current = object()
