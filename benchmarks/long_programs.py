@@ -138,7 +138,7 @@ def compare(before, after, runs=(("cam", 4682), ("five_axis", 200)), rounds=3):
     for workload, moves, results in rows:
         for label in ("before", "after"):
             rs = results[label]
-            med = lambda key: statistics.median(r[key] for r in rs)
+            med = lambda key: statistics.median(r[key] for r in rs)  # noqa: E731
             print(f"| {workload} | {moves} | {label} | {rs[0]['sections']} | {med('resident_per_move'):.0f} | "
                   f"{rs[0]['pickle_per_move']:.0f} | {med('peak_growth_mb'):.1f} | {med('ms_per_1000_moves'):.1f} | "
                   f"{rs[0]['duration']:.4f} |")

@@ -50,7 +50,7 @@ def rows(root):
         path = root / "history" / entry
         if not path.is_file():
             raise ValueError(f"{index}:{n}: history entry {entry!r} does not exist")
-        if not any(benchmark in l and figure in l for l in path.read_text(encoding="utf-8").splitlines()):
+        if not any(benchmark in line and figure in line for line in path.read_text(encoding="utf-8").splitlines()):
             raise ValueError(f"{index}:{n}: no line of {entry} holds both {benchmark!r} and {figure!r}")
         out.append((area, benchmark, figure, entry))
     return out

@@ -908,7 +908,7 @@ def trajectory_state(change):
 
 def faster_law(s, factor=1000.0):
     """Every law of a Trajectory state run `factor` times faster (v × f, a × f², j × f³)."""
-    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)
+    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)  # noqa: E731
     runs, pieces = s[2]
     s[2] = (runs, tuple(((k, tuple((d / factor, j * factor ** 3, scale(a), scale(b)) for d, j, a, b in ph),
                            tuple(t / factor for t in ts), S, peak * factor, scale(x0), scale(x1)), s0)

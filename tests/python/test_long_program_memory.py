@@ -4,7 +4,6 @@ blend is a few sections whose bounds are their exact peaks (doc/section-length.m
 not one section per milliradian of the corner's turn (doc/planning.md §9, eq. 33)."""
 
 import os
-import pickle
 import subprocess
 import sys
 import textwrap
