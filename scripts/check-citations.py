@@ -5,7 +5,7 @@ The maths lives in doc/*.md, each equation numbered at the end of its line, afte
 more: ``s_k = Σ_{i<k} L_i        (1)``. Code, tests and documents cite them as
 ``doc/planning.md eq. 21``, ``doc/section-length.md eqs. 25–27`` or ``doc/retiming.md (eq. 28)``.
 A citation names its file on its own line: ``(doc/section-length.md eq. 1; screw eq. 4)`` cites
-eq. 4 of doc/section-length.md too (or at the very end of the line before, where the text wraps). Inside doc/X.md an ``eq. N`` with no file on its line is
+eq. 4 of doc/section-length.md too; so does a citation on the next line, where the text wraps. Inside doc/X.md an ``eq. N`` with no file on its line is
 X.md's own.
 
 Checked: every ``eq. N`` / ``eqs. N–M, K`` in include/, src/, python/, doc/, tests/, README.md and
@@ -27,7 +27,6 @@ SUFFIXES = {".hpp", ".cpp", ".h", ".py", ".pyi", ".md", ".txt"}
 SKIPPED = {"build", ".venv", "__pycache__", "_build"}
 LABEL = re.compile(r"\s{2,}\((\d+)\)\s*$")
 DOC = re.compile(r"\bdoc/([\w.-]+\.md)\b")
-DOC_AT_END = re.compile(r"\bdoc/([\w.-]+\.md)\s*$")
 NUMBER = r"\d+(?:\s*[–-]\s*\d+)?"
 CITATION = re.compile(r"\beqs?\.\s*(\()?(" + NUMBER + r"(?:\s*(?:,|and)\s*" + NUMBER + r")*)(?(1)\))")
 
@@ -73,9 +72,9 @@ def check(root):
         lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
         for n, line in enumerate(lines, 1):
             files = [(m.start(), m.group(1)) for m in DOC.finditer(line)]
-            wrapped = DOC_AT_END.search(lines[n - 2]) if n > 1 else None
-            if wrapped:  # "(doc/X.md" ending the line before, its numbers on this one
-                files.insert(0, (-1, wrapped.group(1)))
+            before = list(DOC.finditer(lines[n - 2])) if n > 1 else []
+            if before:  # a sentence wrapped after naming its file
+                files.insert(0, (-1, before[-1].group(1)))
             for m in CITATION.finditer(line):
                 named = [name for start, name in files if start < m.start()]
                 name = named[-1] if named else own
