@@ -138,3 +138,20 @@ def test_with_blended_corners_the_joint_metric_is_that_of_the_blended_path():
     assert len(traj.stops) == 1
     assert "reverses" in traj.stops[0][1]
     assert h.check(traj, dt=traj.duration / 20000).ok
+
+
+def test_retime_blends_the_corners_as_plan_does():
+    # retime(..., corner_tolerance=d) re-times the path plan() would run along: the blended one.
+    h = desktop()
+    shifted = lambda x, y: h.home * dispkin.Pose.exp([x, y, 0.0, 0.0, 0.0, 0.0])  # noqa: E731
+    path = dispkin.Path.lin(shifted(0.0, 0.0), shifted(0.02, 0.0))
+    path.then(dispkin.Path.lin(shifted(0.02, 0.0), shifted(0.02, 0.02)))
+    limits = dispkin.Limits(0.1, 1.0)
+    blended, _ = path.blended(0.005)
+    once = dispkin.retime(path, tool_points(), limits, h, corner_tolerance=0.005, grid_intervals=20)
+    reference = dispkin.retime(blended, tool_points(), limits, h, grid_intervals=20)
+    assert once.trajectory.duration == reference.trajectory.duration
+    assert once.trajectory.piece_count == 1
+    assert np.array_equal(once.trajectory.section_lengths(), reference.trajectory.section_lengths())
+    with pytest.raises(ValueError, match="corner_tolerance = -1"):
+        dispkin.retime(path, tool_points(), limits, h, corner_tolerance=-1.0)
