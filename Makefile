@@ -7,7 +7,7 @@ JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
 export CMAKE_BUILD_PARALLEL_LEVEL ?= $(JOBS)
 
-.PHONY: all deps build python wheel wheel-test docs docs-cpp stubs layers test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz fuzz-ci clean
+.PHONY: all deps build python wheel wheel-test docs docs-cpp stubs layers format lint test test-cpp test-python demo bench sanitize sanitize-python check-full sweep fuzz fuzz-ci clean
 
 all: build
 
@@ -66,11 +66,30 @@ test-cpp: build
 test-python: python
 	$(VENV)/bin/python -m pytest -q -n $(JOBS) tests/python
 
-# Every #include points down the layers of doc/architecture.md (core, path, planning, plugins).
+# Every #include points down the layers of doc/architecture.md (core, path, planning, plugins);
+# every equation citation names its doc/ file and resolves there (scripts/check-citations.py);
+# benchmarks/RESULTS.md is the table benchmarks/results_table.py writes from the dated entries.
 layers:
 	python3 scripts/check-layers.py
+	python3 scripts/check-citations.py
+	python3 benchmarks/results_table.py --check
 
-test: layers test-cpp test-python wheel-test docs
+# The style: every C++ file as clang-format writes it (.clang-format), the Python as ruff formats it
+# with no finding of ruff check (pyproject.toml, [tool.ruff]). `make format` rewrites the tree;
+# `make lint` changes nothing and fails on any file either would change or any lint finding.
+CXX_SOURCES = $(shell git ls-files '*.cpp' '*.hpp' '*.h' 2>/dev/null || find include src python tests benchmarks examples -name '*.[ch]pp')
+
+format: deps
+	clang-format -i $(CXX_SOURCES)
+	$(VENV)/bin/ruff format --quiet .
+	$(VENV)/bin/ruff check --quiet --fix .
+
+lint: deps
+	clang-format --dry-run --Werror $(CXX_SOURCES)
+	$(VENV)/bin/ruff format --check --quiet .
+	$(VENV)/bin/ruff check --quiet .
+
+test: lint layers test-cpp test-python wheel-test docs
 
 # Under `make test` the package and the wheel are built in the C++ build tree: scikit-build-core
 # configures $(BUILD) with the package's options and the tests', benchmarks' and examples' kept on,

@@ -1,6 +1,6 @@
 // Google Benchmark programs for the time-optimal profiles (dispkin/profile.hpp): planning a
 // trapezoid or an S-curve, rest to rest and with boundary velocities, and evaluating state_at.
-// Results: benchmarks/RESULTS.md, section "Profiles".
+// Results: benchmarks/history/2026-11-22-profiles.md.
 //
 // Every benchmark cycles through kCases seeded random cases (distances 1e-6 … 10, limits over
 // decades, as the tests), so that neither the branch predictor nor the compiler sees one case.

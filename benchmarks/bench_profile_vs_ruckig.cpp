@@ -1,7 +1,7 @@
 // Google Benchmark: Profile::from_state against Ruckig's calculate (1 DoF, position interface),
 // on the same seeded states. Built only when DISPKIN_RUCKIG_DIR names a Ruckig source tree
 // (benchmarks/CMakeLists.txt); Ruckig is measured, nothing of it is part of dispkin.
-// Results: benchmarks/RESULTS.md, "Laws from a state against Ruckig".
+// Results: benchmarks/history/2026-12-04-profiles-laws-from-a-state-against-ruckig.md.
 //
 // Cases: 1024 states inside the limits (v_start, a_start, v_end random within them, 1 in 6 at
 // a_start = ±a_max, v_end = v_max or v_end = 0; distance raised tenfold until a law exists), and

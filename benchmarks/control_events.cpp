@@ -1,7 +1,7 @@
 // The cost of the control-loop requests (doc/events.md) and of sampling after them. Not a Google
 // Benchmark program: the figures wanted are per request (median, 99th percentile and largest over
 // requests at seeded random instants), per append, and the worst of 10^6 consecutive samples.
-// Results: benchmarks/RESULTS.md, "Control-loop requests".
+// Results: benchmarks/history/2026-12-04-control-loop-requests-stop-speed-override-append.md.
 //
 //   requests  Trajectory::stopped_at(t) and with_override(t, factor) on a single LIN and a
 //             50-move blended chain, S-curve and trapezoid (control_events.hpp): thread CPU time

@@ -1,7 +1,7 @@
 // Workloads and timing helpers of the control-loop request benchmarks (control_events.cpp and,
 // with Ruckig, control_events_vs_ruckig.cpp): the trajectories a stop or a speed override is
 // requested on, the seeded request instants, and per-call and per-pass timing by the thread's
-// CPU time. Results: benchmarks/RESULTS.md, "Control-loop requests".
+// CPU time. Results: benchmarks/history/2026-12-04-control-loop-requests-stop-speed-override-append.md.
 #pragma once
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // one process, the same seeded requests (control_events.hpp: a single LIN and a 50-move blended
 // chain, S-curve and trapezoid). Built only when DISPKIN_RUCKIG_DIR names a Ruckig source tree
 // (benchmarks/CMakeLists.txt); Ruckig is measured, nothing of it is part of dispkin.
-// Results: benchmarks/RESULTS.md, "Control-loop requests".
+// Results: benchmarks/history/2026-12-04-control-loop-requests-stop-speed-override-append.md.
 //
 // The state of each request is (ṡ, s̈) = sample(t) of the trajectory (s̈ = 0 for the trapezoid,
 // where it is no state). Ruckig is given it as input; dispkin finds it in the trajectory itself.

@@ -15,7 +15,7 @@ spherical-wrist arm (the KR6-like arm of tests/data/urdf). Both are timed from P
 
 `empty call` times a binding call that does no work (`arm.dof`), the Python overhead every
 per-call figure contains. The C++ figures of dispkin's analytic IK alone are those of
-benchmarks/bench_ik.cpp (benchmarks/RESULTS.md, "Analytic IK").
+benchmarks/bench_ik.cpp (benchmarks/history/2026-11-22-analytic-ik.md).
 
 Timing: thread CPU time (time.thread_time_ns) around a block of calls over all poses, the
 contenders' blocks alternating within each round (the first contender changes from round to

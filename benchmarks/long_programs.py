@@ -1,5 +1,5 @@
-"""Long blended pose lists: sections, memory and planning time per move (benchmarks/RESULTS.md,
-"Long programs").
+"""Long blended pose lists: sections, memory and planning time per move (benchmarks/history/
+2026-12-04-long-blended-pose-lists-sections-in-proportion.md).
 
 Two workloads, each planned in continuous-path mode (plan(..., corner_tolerance=d)):
 - cam: a generated 3-axis finishing program in the manner of a CAM post-processor's G64 P0.1
@@ -138,7 +138,7 @@ def compare(before, after, runs=(("cam", 4682), ("five_axis", 200)), rounds=3):
     for workload, moves, results in rows:
         for label in ("before", "after"):
             rs = results[label]
-            med = lambda key: statistics.median(r[key] for r in rs)
+            med = lambda key: statistics.median(r[key] for r in rs)  # noqa: E731
             print(f"| {workload} | {moves} | {label} | {rs[0]['sections']} | {med('resident_per_move'):.0f} | "
                   f"{rs[0]['pickle_per_move']:.0f} | {med('peak_growth_mb'):.1f} | {med('ms_per_1000_moves'):.1f} | "
                   f"{rs[0]['duration']:.4f} |")

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Turn Google Benchmark JSON files (each run with --benchmark_repetitions=N) into the Markdown
-table of benchmarks/RESULTS.md. Per benchmark: the median wall time per call (with several
+table of a dated entry of benchmarks/history/. Per benchmark: the median wall time per call (with several
 files, the median of the runs' medians and the range of those medians), items/s and GB/s
 (10^9 bytes/s) derived from it. Standard library only.
 

@@ -16,6 +16,7 @@ debian_packages=(
   libgtest-dev           # C++ tests
   libbenchmark-dev       # C++ benchmarks
   doxygen                # `make docs`: the C++ API reference (doc/api/Doxyfile)
+  clang-format           # `make format` / `make lint`: the C++ style of .clang-format
   python3-venv
 )
 missing=()

@@ -1,6 +1,6 @@
 // Kernels of jerk-limited laws shared by Profile::from_state and the staircase law that carries
 // acceleration (internal): one constant-jerk piece (doc/profiles.md eq. 12), the natural velocity
-// change (eq. 16) and the fastest change of velocity to zero acceleration, the pulse (eq. 17).
+// change (doc/profiles.md eq. 16) and the fastest change of velocity to zero acceleration, the pulse (eq. 17).
 #pragma once
 
 #include <algorithm>

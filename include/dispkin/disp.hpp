@@ -375,7 +375,8 @@ struct DecoupledSection {
     Scalar ends2(0);
     Scalar inside_q2(-1);  // the peak grows with ‖q‖: keep the largest ‖q‖² with the peak inside
     // A plain loop in blocks: GCC vectorises a floating max reduction only under -ffast-math
-    // (and an Eigen array expression with select measured 2.5× slower, benchmarks/RESULTS.md),
+    // (and an Eigen array expression with select measured 2.5× slower in bench_disp's
+    // section_length_cloud/decoupled),
     // so each block writes its points' values to buffers in a loop it vectorises and the maxima
     // are taken after, in the same order as one loop would.
     constexpr std::size_t block = 16;

@@ -3,7 +3,7 @@
 
 #include "dispkin/version.hpp"
 #include "dispkin/error.hpp"
-#include "dispkin/input_limits.hpp"
+#include "dispkin/input_budget.hpp"
 #include "dispkin/pose.hpp"
 #include "dispkin/metric_set.hpp"
 #include "dispkin/shapes.hpp"

@@ -809,6 +809,7 @@ def retime(
     grid_intervals: int = 100,
     joint_acceleration: Optional[_ArrayLike] = None,
     torque_limits: bool = True,
+    corner_tolerance: float = 0.0,
 ) -> Union[RetimeResult, OptimalRetimeResult]: ...
 @overload
 def retime(
@@ -823,4 +824,5 @@ def retime(
     max_iterations: int = 6,
     grid_intervals: int = 100,
     joint_acceleration: Optional[_ArrayLike] = None,
+    corner_tolerance: float = 0.0,
 ) -> OptimalRetimeResult: ...

@@ -19,8 +19,8 @@ max_trans_vel (its fastest point moves at least at |ω| r); it under-uses both l
 combined moves, so use it with ``limits(angular=False)``.
 
 Every mistake raises :class:`LimitsFileError` (a ValueError) naming the file, the line and
-column, and the key. The files are read under the resource limits of job files (size,
-nesting, aliases, scalar length, UTF-8; doc/resource-limits.md).
+column, and the key. The files are read under the input budget of job files (size,
+nesting, aliases, scalar length, UTF-8; doc/input-budget.md).
 """
 
 import dataclasses
@@ -39,7 +39,7 @@ LIMIT_RANGE = (1e-12, 1e12)
 _PathLike = Union[str, pathlib.Path]
 
 #: Largest magnitude of a number in a limits file: every integer within it is a double, as for
-#: job files (doc/resource-limits.md).
+#: job files (doc/input-budget.md).
 MAX_INTEGER = 2**53
 
 
@@ -53,7 +53,7 @@ def _error(message: str, line: Optional[int] = None) -> LimitsFileError:
 
 
 class LimitsDocument:
-    """A limits file read under the resource limits of job files (size, nesting, aliases,
+    """A limits file read under the input budget of job files (size, nesting, aliases,
     scalar length; :mod:`dispkin.job.limits`): its data and where each key is."""
 
     def __init__(self, path: _PathLike):
@@ -75,7 +75,7 @@ class LimitsDocument:
 
 
 def load_limits_file(path: Union[_PathLike, LimitsDocument]) -> LimitsDocument:
-    """The limits file at `path` read under the resource limits of job files (a
+    """The limits file at `path` read under the input budget of job files (a
     LimitsDocument is returned as it is)."""
     return path if isinstance(path, LimitsDocument) else LimitsDocument(path)
 

@@ -211,6 +211,26 @@ void add_sampling(py::class_<T>& cls) {
                    "(), returned).").c_str());
 }
 
+// PlanOptions::joint_metric of plan()'s `joint_metric` argument: a Hexapod's own (C++, run with
+// the interpreter lock released), or an object's leg_section_lengths(path, system_velocity),
+// called with the lock taken back and its result converted to lengths.
+JointMetric joint_metric_of(const py::object& joint_metric) {
+  if (joint_metric.is_none()) return {};
+  if (py::isinstance<Hexapod>(joint_metric)) return joint_metric.cast<const Hexapod&>().joint_metric();
+  if (!py::hasattr(joint_metric, "leg_section_lengths")) {
+    throw std::invalid_argument(describe("joint_metric", std::string(py::repr(joint_metric)),
+                                         "must have a method leg_section_lengths(path, system_velocity) (a Hexapod)"));
+  }
+  return [joint_metric](const Path& path, const Limits& limits) {
+    const py::gil_scoped_acquire locked;
+    const py::object lengths = joint_metric.attr("leg_section_lengths")(path, limits.velocity);
+    const std::string expected = "an array of shape (" + std::to_string(path.size()) + ",)";
+    const Array a = as_array(lengths, "joint_metric.leg_section_lengths(path, velocity)", expected);
+    if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
+    return std::vector<double>(a.data(), a.data() + a.size());
+  };
+}
+
 }  // namespace
 
 void bind_planner(py::module_& m) {
@@ -298,7 +318,7 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
           },
           py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
           with_out("The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
-                   "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 9).")
+                   "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 12).")
               .c_str())
       .def("stopped_at", &Trajectory::stopped_at, py::arg("t"),
            "A feed hold that keeps to the path: the same motion up to t (bit for bit), then the fastest stop from the "
@@ -455,46 +475,14 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
 
   m.def(
       "plan",
-      [](const Path& given_path, const MetricSetd& set, const Limits& limits, const std::string& profile,
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
          const py::object& joint_metric, double corner_tolerance, double start_velocity, double start_acceleration) {
         const ProfileKind kind = profile_kind(profile);
-        PlanOptions blending;
-        blending.corner_tolerance = corner_tolerance;
-        blending.start_velocity = start_velocity;
-        blending.start_acceleration = start_acceleration;
-        if (joint_metric.is_none()) {
-          const UnlockedIf unlocked(true, given_path, set);
-          return plan(given_path, set, limits, kind, blending);
-        }
-        require(std::isfinite(corner_tolerance) && corner_tolerance >= 0.0, "corner_tolerance", corner_tolerance,
-                "must be a finite distance >= 0 (m)");
-        // A joint metric is per section: of the blended path when corners are blended.
-        std::optional<Path> blended;
-        if (corner_tolerance > 0.0) {
-          const UnlockedIf unlocked(true, given_path);
-          blended = given_path.blended(corner_tolerance);
-        }
-        const Path& path = blended ? *blended : given_path;
-        if (py::isinstance<Hexapod>(joint_metric)) {
-          const Hexapod& hexapod = joint_metric.cast<const Hexapod&>();
-          const UnlockedIf unlocked(true, path, set);
-          PlanOptions options = hexapod.joint_metric(path, limits);
-          options.start_velocity = start_velocity;
-          options.start_acceleration = start_acceleration;
-          return plan(path, set, limits, kind, options);
-        }
-        if (!py::hasattr(joint_metric, "leg_section_lengths")) {
-          throw std::invalid_argument(describe("joint_metric", std::string(py::repr(joint_metric)),
-                                               "must have a method leg_section_lengths(path, system_velocity) (a Hexapod)"));
-        }
-        const py::object lengths = joint_metric.attr("leg_section_lengths")(path, limits.velocity);
-        const std::string expected = "an array of shape (" + std::to_string(path.size()) + ",)";
-        const Array a = as_array(lengths, "joint_metric.leg_section_lengths(path, velocity)", expected);
-        if (a.ndim() != 1) wrong_shape("joint_metric.leg_section_lengths(path, velocity)", expected, a);
         PlanOptions options;
-        options.min_section_lengths.assign(a.data(), a.data() + a.size());
+        options.corner_tolerance = corner_tolerance;
         options.start_velocity = start_velocity;
         options.start_acceleration = start_acceleration;
+        options.joint_metric = joint_metric_of(joint_metric);
         const UnlockedIf unlocked(true, path, set);
         return plan(path, set, limits, kind, options);
       },
@@ -507,7 +495,8 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       "corner and that takes at most half of each neighbouring move, and the motion runs through at speed "
       "(corners that cannot be blended stop: see Trajectory.stops). Each move runs under its own velocity and "
       "acceleration (Path.lin(..., velocity=, acceleration=)), capped by `limits`. `joint_metric` (keyword): an "
-      "object with leg_section_lengths(path, system_velocity); each section is then at least that long. For a "
+      "object with leg_section_lengths(path, system_velocity); each section of the path as planned (blended when "
+      "corner_tolerance is positive) is then at least that long. For a "
       "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
       "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions. "
       "`start_velocity` (m/s) and `start_acceleration` (m/s², S-curve only; keywords): the state the motion starts in "

@@ -254,7 +254,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& robot,
          const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
          int max_iterations, int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration,
-         bool torque_limits) -> py::object {
+         bool torque_limits, double corner_tolerance) -> py::object {
         const ProfileKind kind = profile_kind(profile);
         const serial::SerialArm arm = robot;  // its gravity as at the call, whatever another thread sets meanwhile
         if (method == "scaling") {
@@ -267,7 +267,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
           {
             const UnlockedIf unlocked(true, path, set);
             result = retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
-                                       max_iterations);
+                                       max_iterations, corner_tolerance);
           }
           return py::cast(std::move(result));
         }
@@ -279,6 +279,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         options.torque_limits = torque_limits;
         options.check_samples_between = samples_between;
         options.max_refinements = max_iterations;
+        options.corner_tolerance = corner_tolerance;
         OptimalRetimeResult result;
         {
           const UnlockedIf unlocked(true, path, set);
@@ -289,8 +290,9 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::arg("q_start"),
       py::arg("profile") = "scurve", py::arg("method") = "scaling", py::arg("samples_between") = 10,
       py::arg("max_iterations") = 20, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
-      py::arg("torque_limits") = true,
-      "Re-time `path` so that the robot keeps its joint limits.\n\n"
+      py::arg("torque_limits") = true, py::arg("corner_tolerance") = 0.0,
+      "Re-time `path` so that the robot keeps its joint limits. `corner_tolerance` (m): the path's corners blended "
+      "first, as plan(..., corner_tolerance=) does (0: the path as given).\n\n"
       "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
       "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
       "method=\"optimal\": the fastest parameterisation under the DISP limits and the joint velocity limits, "
@@ -307,7 +309,7 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       "retime",
       [](const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod, const std::string& profile,
          const std::string& method, int samples_between, int max_iterations, int grid_intervals,
-         const std::optional<Eigen::VectorXd>& joint_acceleration) {
+         const std::optional<Eigen::VectorXd>& joint_acceleration, double corner_tolerance) {
         if (method != "optimal") {
           throw std::invalid_argument(describe("method", method, "must be \"optimal\" for a Hexapod (its leg speeds enter "
                                                                  "plan() through Hexapod.joint_metric; no scaling loop)"));
@@ -318,16 +320,19 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         if (joint_acceleration) options.joint_acceleration = *joint_acceleration;
         options.check_samples_between = samples_between;
         options.max_refinements = max_iterations;
+        options.corner_tolerance = corner_tolerance;
         const UnlockedIf unlocked(true, path, set);
         return retime_optimal(path, set, limits, hexapod, options);
       },
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::kw_only(),
       py::arg("profile") = "trapezoid", py::arg("method") = "optimal", py::arg("samples_between") = 3,
       py::arg("max_iterations") = 6, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
+      py::arg("corner_tolerance") = 0.0,
       "The optimal re-timing for a Hexapod: the fastest timing that keeps the DISP limits, every leg within its "
       "speed (leg_speed) and, if given, `joint_acceleration` ((6,) leg accelerations, m/s^2); returns an "
-      "OptimalRetimeResult. profile=\"scurve\" (limits with jerk) limits the jerk as for an arm. RuntimeError if a "
-      "leg leaves its length range on the way.");
+      "OptimalRetimeResult. profile=\"scurve\" (limits with jerk) limits the jerk as for an arm. `corner_tolerance` "
+      "(m): the path's corners blended first, as plan(..., corner_tolerance=) does (0: the path as given). "
+      "RuntimeError if a leg leaves its length range on the way.");
 }
 
 }  // namespace python

@@ -5,7 +5,7 @@
 // (nlohmann-json3-dev) linked only at build time, so the installed library gains no runtime
 // dependency, and Python reads the same file with the standard library.
 #include "dispkin/hexapod/hexapod.hpp"
-#include "dispkin/input_limits.hpp"
+#include "dispkin/input_budget.hpp"
 #include "dispkin/numbers.hpp"
 
 #include <algorithm>
@@ -289,11 +289,11 @@ struct TooDeep {
 };
 
 json parse_bounded(const std::string& text) {
-  require(text.size() <= input_limits::max_hexapod_json_bytes, "description size", static_cast<unsigned long>(text.size()),
-          "more than " + std::to_string(input_limits::max_hexapod_json_bytes) +
-              " bytes, the limit of a hexapod description (doc/resource-limits.md)");
+  require(text.size() <= input_budget::max_hexapod_json_bytes, "description size", static_cast<unsigned long>(text.size()),
+          "more than " + std::to_string(input_budget::max_hexapod_json_bytes) +
+              " bytes, the limit of a hexapod description (doc/input-budget.md)");
   const json::parser_callback_t depth_check = [](int depth, json::parse_event_t event, json&) {
-    if (depth >= input_limits::max_nesting_depth &&
+    if (depth >= input_budget::max_nesting_depth &&
         (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start))
       throw TooDeep{static_cast<std::size_t>(depth) + 1};
     return true;
@@ -303,8 +303,8 @@ json parse_bounded(const std::string& text) {
   } catch (const TooDeep& deep) {
     throw std::invalid_argument(describe("description nesting depth", static_cast<long>(deep.position),
                                          "arrays and objects nest at most " +
-                                             std::to_string(input_limits::max_nesting_depth) +
-                                             " deep (doc/resource-limits.md)"));
+                                             std::to_string(input_budget::max_nesting_depth) +
+                                             " deep (doc/input-budget.md)"));
   } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
     throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
   }
@@ -391,8 +391,8 @@ Hexapod Hexapod::load(const std::string& path) {
   require(static_cast<bool>(in), "path", path, "cannot be opened for reading");
   // Read in blocks up to the limit: a larger file is refused without being read to its end.
   std::string text;
-  require(input_limits::read_at_most(in, input_limits::max_hexapod_json_bytes, text), "path", path,
-          "is larger than " + std::to_string(input_limits::max_hexapod_json_bytes) + " bytes, the limit of a hexapod description (doc/resource-limits.md)");
+  require(input_budget::read_at_most(in, input_budget::max_hexapod_json_bytes, text), "path", path,
+          "is larger than " + std::to_string(input_budget::max_hexapod_json_bytes) + " bytes, the limit of a hexapod description (doc/input-budget.md)");
   try {
     return from_json(text);
   } catch (const std::invalid_argument& e) {

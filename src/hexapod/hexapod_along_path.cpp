@@ -168,4 +168,10 @@ PlanOptions Hexapod::joint_metric(const Path& path, const Limits& limits) const 
   return options;
 }
 
+JointMetric Hexapod::joint_metric() const {
+  return [hexapod = *this](const Path& path, const Limits& limits) {
+    return hexapod.joint_metric(path, limits).min_section_lengths;
+  };
+}
+
 }  // namespace dispkin::hexapod

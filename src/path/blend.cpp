@@ -127,7 +127,7 @@ const LinSection* decoupled_lin(const Section& section) {
 // The nested-SLERP blend (doc/planning.md §6.1) of sizes `before` and `after` between the last
 // section of `sections` and the first of `next_sections`, both decoupled LINs with one pivot:
 // straight pivot lines and one-axis turns whose tangents point at the corner, so that the blend's
-// end slopes 2(c_m − c₁), 2a and 2(c₂ − c_m), 2b are the neighbours' twists scaled alike (eq. 28).
+// end slopes 2(c_m − c₁), 2a and 2(c₂ − c_m), 2b are the neighbours' twists scaled alike (doc/planning.md eq. 18).
 void plan_slerp_blend(const std::vector<Section>& sections, const std::vector<double>& cumulative,
                       const std::vector<Section>& next_sections, const std::vector<double>& next_cumulative, double before,
                       double after, detail::BlendPlan& plan) {
@@ -162,7 +162,7 @@ void plan_slerp_blend(const std::vector<Section>& sections, const std::vector<do
   plan.tau_out = tau_out;
   plan.outgoing = detail::section_part(next_sections.front(), tau_out, 1.0);
 
-  // q₁, c₁ at the first sub-point; q_m, c_m at the corner; q₂, c₂ at the second (eq. 27).
+  // q₁, c₁ at the first sub-point; q_m, c_m at the corner; q₂, c₂ at the second (doc/planning.md eq. 17).
   const Posed first = in->pose(tau_in), corner = in->end, second = out->pose(tau_out);
   const Eigen::Vector3d& p = in->pivot;
   const Eigen::Vector3d c1 = first * p, cm = corner * p, c2 = second * p;

@@ -420,7 +420,7 @@ Eigen::VectorXd JointPath::sample(double u) const {
 SectionBounds detail::section_bounds_from_middle(const Section& section, GroupFactors& factors) {
   const auto* lin = std::get_if<LinSection>(&section);
   if (!lin) return section_bounds(section, factors);
-  // The LIN's exact speed at its middle plus half the rate bound (doc/planning.md eq. 19).
+  // The LIN's exact speed at its middle plus half the rate bound (doc/section-length.md eqs. 23–24).
   factors.use_pivot(lin->pivot);
   Twistd screw;
   const MotionBounds motion = lin_motion_bounds(*lin, screw);

@@ -13,7 +13,7 @@ void Path::cut_slerp_blend(const SlerpBlendSection& blend, double tolerance) {
   using detail::metres_per_radian;
   // As cut_curve: the speed |ċ| + ρ|ω| per unit v, ρ = 0.1 m, sampled along the blend; the blend
   // is cut where that speed varies (doc/section-length.md eq. 29), each section bounded to its
-  // exact peak (SlerpBlendSection::bounds, eqs. 25–27).
+  // exact peak (SlerpBlendSection::bounds, doc/section-length.md eqs. 25–27).
   SlerpBlendSection whole = blend;
   whole.v0 = 0.0;
   whole.v1 = 1.0;

@@ -57,7 +57,7 @@ void Path::cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const
                      const Eigen::Vector3d& pivot, double tolerance) {
   // The speed |ċ| + ρ|φ′| per unit v, ρ = 0.1 m, sampled along the curve; the curve is cut where
   // that speed varies (doc/section-length.md eq. 29). Each section's bound is its exact peak to
-  // 0.1 % however far its velocity turns (CurveSection::bounds, eqs. 25–27).
+  // 0.1 % however far its velocity turns (CurveSection::bounds, doc/section-length.md eqs. 25–27).
   constexpr int samples = 64;
   double min_speed = std::numeric_limits<double>::infinity(), max_speed = 0.0;
   for (int i = 0; i <= samples; ++i) {

@@ -21,7 +21,7 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
   GridPoint p;
   p.sigma = sigma;
   const double before = std::max(lo, sigma - h), after = std::min(hi, sigma + h);
-  // The pose's second derivative is continuous inside a section: there q″ comes with q′ (eq. 28).
+  // The pose's second derivative is continuous inside a section: there q″ comes with q′ (doc/retiming.md eq. 28).
   if (sigma - h >= lo && sigma + h <= hi && path.section_at(sigma - h) == path.section_at(sigma + h)) {
     Posed pose;
     Twistd per_sigma;

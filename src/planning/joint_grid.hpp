@@ -26,7 +26,7 @@ struct GridPoint {
 //! not null), q″ in closed form (JointModel::joints_with_rate, doc/retiming.md (eq. 28)) where
 //! [σ − h, σ + h] lies inside [lo, hi] and one section, else (or where the machine has no closed
 //! form) by central differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's
-//! ends are rests, where the path may turn a corner), and the torque coefficients (eq. 12).
+//! ends are rests, where the path may turn a corner), and the torque coefficients (doc/retiming.md eq. 12).
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
                      const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr);
 

@@ -25,7 +25,7 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
   }
   if (v0 == 0.0 && a0 == 0.0) return std::nullopt;
   const double j = *j_max;
-  // Where ṡ ends up if s̈ went back to 0 at once, at full jerk (eq. 1).
+  // Where ṡ ends up if s̈ went back to 0 at once, at full jerk (doc/events.md eq. 1).
   const double released = v0 + a0 * std::abs(a0) / (2.0 * j);
   std::array<double, 3> durations{}, jerks{};
   int count = 0;
@@ -44,8 +44,8 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
     v0 = std::max(v0, a0 * a0 / (2.0 * j));
     phase(-a0 / j, j);
   } else {
-    // Down to the peak deceleration a_p (eq. 2): with no hold, a_p² = (2 j v0 + a0²) / 2; held
-    // at a_max for T = (v0 + (a0² − 2 a_max²) / 2j) / a_max (eq. 3) where that a_p exceeds it. A
+    // Down to the peak deceleration a_p (doc/events.md eq. 2): with no hold, a_p² = (2 j v0 + a0²) / 2; held
+    // at a_max for T = (v0 + (a0² − 2 a_max²) / 2j) / a_max (doc/events.md eq. 3) where that a_p exceeds it. A
     // state below −a_max first rises to it at full jerk.
     const double peak = std::sqrt(0.5 * (2.0 * j * v0 + a0 * a0));
     if (peak <= a_max && a0 >= -peak) {
@@ -110,7 +110,7 @@ std::vector<Profile> staircase_law_from_state(const std::vector<LimitedSegment>&
   for (std::size_t i = n; i-- > 1;)
     u[i] = reachable_velocity(u[i + 1], std::min(segments[i - 1].limit, segments[i].limit), segments[i].length, accel(i), j_max);
   // The first law takes segments [0, m] as one, under their lowest limits, to u[m + 1]: the
-  // fewest segments in which it fits (eq. 6).
+  // fewest segments in which it fits (doc/profiles.md eq. 6).
   double distance = 0.0, v_max = segments[0].limit, a = accel(0);
   for (std::size_t m = 0; m < n; ++m) {
     distance += segments[m].length;

@@ -1,5 +1,5 @@
 // The exact speed range of a decoupled LIN's objects over a part of it (lin_speed_range.hpp,
-// doc/planning.md §9, eqs. 34–38).
+// doc/planning.md §9, eqs. 27–31).
 #include "lin_speed_range.hpp"
 
 #include <algorithm>
@@ -12,7 +12,7 @@ namespace detail {
 
 namespace {
 
-// Smallest ‖e − t u‖² over t ∈ [t0, t1]: the distance of the origin from a segment (eq. 37).
+// Smallest ‖e − t u‖² over t ∈ [t0, t1]: the distance of the origin from a segment (doc/planning.md eq. 30).
 double segment_min2(const Eigen::Vector3d& e, const Eigen::Vector3d& u, double t0, double t1) noexcept {
   const double uu = u.squaredNorm();
   const double t = uu > 0.0 ? std::clamp(e.dot(u) / uu, t0, t1) : t0;
@@ -62,7 +62,7 @@ Eigen::Vector3d DecoupledSpeeds::across_at(double t) const noexcept {
 }
 
 SpeedRange DecoupledSpeeds::range(double t0, double t1) const noexcept {
-  // Δc⊥ seen from the body at both ends, turned back by θτ about k (eq. 34), and the normals
+  // Δc⊥ seen from the body at both ends, turned back by θτ about k (doc/planning.md eq. 27), and the normals
   // m₀ = d₀ × Ω, m₁ = Ω × d₁ of the arc it sweeps: a direction u lies on that arc when u·m₀ ≥ 0
   // and u·m₁ ≥ 0 (the arc spans θ(t₁ − t₀) ≤ π).
   const Eigen::Vector3d d0 = across_at(t0), d1 = across_at(t1);
@@ -72,7 +72,7 @@ SpeedRange DecoupledSpeeds::range(double t0, double t1) const noexcept {
   SpeedRange best;
   for (std::size_t g = 0; g < set.groups().size(); ++g) {
     const MetricGroup<double>& group = set.groups()[g];
-    // Body objects: |d(τ) + q|² with q = Ω × (r − p) fixed (eq. 35). Peak where d⊥ points
+    // Body objects: |d(τ) + q|² with q = Ω × (r − p) fixed (doc/planning.md eq. 28). Peak where d⊥ points
     // along q, trough where it points against q, else at an end.
     auto across_range = [&](const Eigen::Vector3d& q, double& low, double& high) {
       const double a = (d0 + q).norm(), b = (d1 + q).norm(), q_size = q.norm();
@@ -109,7 +109,7 @@ SpeedRange DecoupledSpeeds::range(double t0, double t1) const noexcept {
       high2 += along2;
       low2 += along2;
     }
-    // A sphere's fastest point adds θρ across k to its centre's speed (eq. 36).
+    // A sphere's fastest point adds θρ across k to its centre's speed (doc/planning.md eq. 29).
     for (const Sphere<double>& s : group.relative_spheres) {
       double l, h;
       across_range(omega_.cross(s.center - pivot_), l, h);
@@ -117,7 +117,7 @@ SpeedRange DecoupledSpeeds::range(double t0, double t1) const noexcept {
       low = std::max(low, std::hypot(along_, l + theta_ * s.radius));
     }
     // Absolute objects: g(τ) = e − τ u, convex in τ: the peak at an end, the trough at the
-    // point of the segment nearest the origin (eq. 37); spheres as body ones (eq. 38).
+    // point of the segment nearest the origin (doc/planning.md eq. 30); spheres as body ones (eq. 31).
     const PointColumns<double>& fixed = group.absolute_points;
     for (std::size_t i = 0; i < fixed.size(); ++i) {
       const Eigen::Vector3d x(fixed.x()[i], fixed.y()[i], fixed.z()[i]);

@@ -1,6 +1,6 @@
 // The range of the fastest object's speed along a part of a decoupled LIN, exactly: the largest
 // and a lower bound of the smallest weighted speed per unit τ over τ ∈ [t₀, t₁]
-// (doc/planning.md §9, eqs. 34–38). The planner cuts a LIN where this range is wider than its
+// (doc/planning.md §9, eqs. 27–31). The planner cuts a LIN where this range is wider than its
 // cruise allows (append_cut, planner.cpp); the largest is the piece's length.
 #pragma once
 
@@ -21,8 +21,8 @@ struct SpeedRange {
 
 //! A decoupled LIN prepared once for the speed ranges of its parts. In the body frame of the
 //! start the pivot's velocity Δc is seen turning backwards about the rotation axis k while
-//! every body object's own term Ω × (r − p) stands still (eq. 34); absolute objects see an
-//! apparent velocity affine in τ (eq. 37).
+//! every body object's own term Ω × (r − p) stands still (doc/planning.md eq. 27); absolute objects see an
+//! apparent velocity affine in τ (doc/planning.md eq. 30).
 class DecoupledSpeeds {
  public:
   DecoupledSpeeds(const LinSection& lin, const GroupFactors& factors) noexcept;
@@ -34,7 +34,7 @@ class DecoupledSpeeds {
   Posed pose(double t) const noexcept;
 
  private:
-  // Δc⊥ seen from the body at τ (eq. 34), remembered for the last two τ asked.
+  // Δc⊥ seen from the body at τ (doc/planning.md eq. 27), remembered for the last two τ asked.
   Eigen::Vector3d across_at(double t) const noexcept;
 
   const GroupFactors* factors_;
@@ -44,7 +44,7 @@ class DecoupledSpeeds {
   Eigen::Vector3d across_side_;
   Eigen::Vector3d pivot_;       // p (body)
   double theta_ = 0.0, along_ = 0.0, across_size_ = 0.0;
-  // World view of absolute objects: g(τ) = Δc + Ω_w × (x − c₀) − τ Ω_w × Δc (eq. 37).
+  // World view of absolute objects: g(τ) = Δc + Ω_w × (x − c₀) − τ Ω_w × Δc (doc/planning.md eq. 30).
   Eigen::Vector3d delta_c_, omega_world_, w_hat_, pivot_start_, drift_;
   double along_world_ = 0.0;
   LineMotion motion_;

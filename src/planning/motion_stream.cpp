@@ -155,7 +155,7 @@ void MotionStream::continue_with(const Path& extra, double t) {
   if (t < end) {
     // The motion runs (or waits to start): the path ahead of it and `extra`, from the state at t
     // (§5). Where that state lies above the new plan's limits — a slower move joins the blended
-    // chain, whose lengths are balanced along it (doc/planning.md eq. 21) — the motion runs on as
+    // chain, whose lengths are balanced along it (doc/planning.md eq. 34) — the motion runs on as
     // planned a little longer, braking for its end, and joins later.
     const double from = std::max(t, last.start);
     for (const double share : {0.0, 0.25, 0.5, 0.75, 0.9}) {

@@ -1,15 +1,15 @@
 // Time-optimal re-timing under DISP and joint limits (retiming.hpp, retime_optimal;
 // doc/retiming.md §4–6). The stages, each in its own file:
 //   - smooth_parameter: the planned path by a parameter σ in which the pose derivative is
-//     continuous through tangent junctions, with the DISP limits in σ (eq. 9–10);
+//     continuous through tangent junctions, with the DISP limits in σ (doc/retiming.md eq. 9–10);
 //   - joint_grid: the joint path q(σ), q′, q″ and the torque coefficients on a grid of each
-//     rest-to-rest run, and each run's limits as half-planes in (σ̈, σ̇²) (eq. 11–15);
-//   - reachability: the fastest parameterisation of a run on its grid (eq. 16, as in TOPP-RA);
+//     rest-to-rest run, and each run's limits as half-planes in (σ̈, σ̇²) (doc/retiming.md eq. 11–15);
+//   - reachability: the fastest parameterisation of a run on its grid (doc/retiming.md eq. 16, as in TOPP-RA);
 //   - jerk_limited_run / jerk_filter: with a jerk limit, the moving average of the run's law over
 //     the smallest window that keeps the jerk, with the speed caps tightened over the window's
-//     reach (eq. 19–22), and the laws back in s.
+//     reach (doc/retiming.md eq. 19–22), and the laws back in s.
 // This file drives them: the grid, the dense check of the result against the joint limits, the
-// tightening of the limits where it overshoots between grid points (eq. 18), and, with a jerk
+// tightening of the limits where it overshoots between grid points (doc/retiming.md eq. 18), and, with a jerk
 // limit, the planner's own S-curve plan and the machine's scaling loop as faster candidates.
 #include <algorithm>
 #include <cmath>
@@ -245,7 +245,10 @@ OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, cons
   require(q_start.size() == model.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the machine's dof " + std::to_string(model.dof()));
   require_finite(q_start, "q_start");
-  return fastest_timing(path, set, limits, model, q_start, options);
+  PlanOptions continuous;
+  continuous.corner_tolerance = options.corner_tolerance;
+  const std::optional<Path> blended = continuous_path(path, continuous);
+  return fastest_timing(blended ? *blended : path, set, limits, model, q_start, options);
 }
 
 }  // namespace dispkin

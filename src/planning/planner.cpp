@@ -121,7 +121,7 @@ struct PlannedSections {
 };
 
 // A curved section (a SPLINE piece or a blend) as planned: cut where, for this set, the fastest
-// object's speed or the curvature rule's speed varies along it (doc/planning.md §9, eq. 39). Each
+// object's speed or the curvature rule's speed varies along it (doc/planning.md §9, eq. 33). Each
 // part's bound is its exact peak to 0.1 % however far the velocity turns within it
 // (doc/section-length.md eqs. 25–27); a part's pieces tell how far its speed (the least middle
 // speed against the peak) and its acceleration bound vary. A part is cut into as many equal parts
@@ -144,7 +144,7 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
     double loss;
     const double v_lim = b.acceleration > 0.0 ? b.length * std::sqrt(acceleration / b.acceleration) : speed_cap;
     if (v_lim < speed_cap) {
-      // v_lim = L √(a / A) (eq. 11) binds: the fastest object runs at V √(a / A), lowered by
+      // v_lim = L √(a / A) (doc/planning.md eq. 11) binds: the fastest object runs at V √(a / A), lowered by
       // the part's largest A from what its gentlest piece would allow (at most the cap).
       const double best = r.least_acceleration > 0.0 ? std::min(speed_cap, b.length * std::sqrt(acceleration / r.least_acceleration)) : speed_cap;
       loss = (1.0 - v_lim / best) / curvature_ratio_loss;
@@ -178,14 +178,14 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
 
 // Appends `section` to `out`; a decoupled LIN cut into pieces until the fastest object's speed
 // varies by at most 0.4 % within each (doc/planning.md §9). The range of that speed over a part
-// is exact (lin_speed_range.hpp, eqs. 34–38), so a LIN is cut only where its speed does vary, as
+// is exact (lin_speed_range.hpp, doc/planning.md eqs. 27–31), so a LIN is cut only where its speed does vary, as
 // finely as it varies: a part whose range is too wide is cut into as many equal parts as its
 // relative width asks for at 0.4 % each, and those are checked again (at most 4096 pieces per
 // section; a piece's length is its exact peak, so a coarser piece is only slower, never unsafe).
 void append_cut(const Section& section, std::size_t source, GroupFactors& factors, double rotation_scale,
                 double minimum, double speed_cap, double acceleration, PlannedSections& out) {
   // 0.4 %: the cruise keeps ≥ 99.5 %, and neighbouring pieces stay within the junction rule's
-  // 1 % (eq. 21) without lengthening.
+  // 1 % (doc/planning.md eq. 34) without lengthening.
   constexpr double cruise_ratio_loss = 0.004;
   constexpr std::size_t max_pieces = 4096;
   constexpr double max_split = 64.0;
@@ -203,9 +203,9 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
   const SectionBounds whole = detail::section_bounds(section, factors);
   const auto* lin = std::get_if<LinSection>(&section);
   // A minimum length at least the section's own runs the whole section at one speed: its
-  // fastest object is not what binds. Nor where the curvature rule (eq. 11) holds the speed
+  // fastest object is not what binds. Nor where the curvature rule (doc/planning.md eq. 11) holds the speed
   // below the limit (v_lim = L √(a / A) is the same for every piece): there is no cruise at
-  // the limit to keep. Nor where the rotational limit (eq. 23) makes the length.
+  // the limit to keep. Nor where the rotational limit (doc/planning.md eq. 36) makes the length.
   const bool curvature_binds = whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
   const double floor = std::max(minimum, whole.omega * rotation_scale);  // per unit τ of the section
   if (!lin || lin->interpolation != Interpolation::decoupled || floor >= whole.length || curvature_binds) {
@@ -261,7 +261,7 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
 }
 
 // The velocity-limit staircase over planned sections [first, last) (doc/planning.md §4): the path
-// curvature rule (eq. 11) with each move's own acceleration, its rotational twin for the
+// curvature rule (doc/planning.md eq. 11) with each move's own acceleration, its rotational twin for the
 // angular acceleration, each move's own velocity, rounded down to 10 % steps below v_sys; and
 // each segment's acceleration: the move's own, lowered where the angular acceleration needs.
 // Each span also keeps its ceiling, the level before a move's own velocity lowered it (what a
@@ -284,7 +284,7 @@ std::vector<SpeedLimit> speed_limit_segments(const PlannedSections& planned, con
     const double ceiling = level;
     if (move.velocity) level = std::min(level, *move.velocity);
     // The angular acceleration from s̈, |ω_τ| |s̈| / L ≤ α_max, caps the section's path
-    // acceleration (doc/planning.md eq. 24).
+    // acceleration (doc/planning.md eq. 37).
     double own_acceleration = move.acceleration ? a : 0.0;
     if (limits.angular_acceleration && bounds.omega > 0.0) {
       const double angular_cap = *limits.angular_acceleration * length / bounds.omega;
@@ -323,6 +323,13 @@ void Limits::validate(ProfileKind kind) const {
   if (angular_acceleration) require_limit(*angular_acceleration, "angular_acceleration");
 }
 
+std::optional<Path> continuous_path(const Path& path, const PlanOptions& options, std::vector<CornerStop>* stops) {
+  require(std::isfinite(options.corner_tolerance) && options.corner_tolerance >= 0.0, "corner_tolerance",
+          options.corner_tolerance, "must be a finite distance ≥ 0 (m)");
+  if (options.corner_tolerance == 0.0) return std::nullopt;
+  return path.blended(options.corner_tolerance, stops, options.blend_tolerance);
+}
+
 Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile) {
   return plan(path, set, limits, profile, PlanOptions{});
 }
@@ -330,34 +337,36 @@ Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, P
 Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                 const PlanOptions& options) {
   limits.validate(profile);
-  // With a rotational limit every rotation has a length of its own (doc/planning.md eq. 23):
+  // With a rotational limit every rotation has a length of its own (doc/planning.md eq. 36):
   // a set that does not see some rotation (one tool-centre point, as Pilz's TCP speed and
   // rotation limits) is enough then, if it is not empty.
   if (!limits.angular_velocity || set.empty()) set.require_well_formed();
-  const std::vector<double>& minimum = options.min_section_lengths;
-  require(std::isfinite(options.corner_tolerance) && options.corner_tolerance >= 0.0, "corner_tolerance",
-          options.corner_tolerance, "must be a finite distance ≥ 0 (m)");
-  require(options.corner_tolerance == 0.0 || minimum.empty(), "corner_tolerance", options.corner_tolerance,
-          "cannot be combined with min_section_lengths (given per section of the unblended path): plan "
-          "Path::blended(corner_tolerance) with the minimum lengths of its sections instead");
+  // Continuous-path mode: the corners blended first (doc/planning.md §10).
+  std::vector<CornerStop> corner_stops;
+  const std::optional<Path> blended = continuous_path(given_path, options, &corner_stops);
+  require(options.corner_tolerance == 0.0 || options.min_section_lengths.empty(), "corner_tolerance",
+          options.corner_tolerance,
+          "cannot be combined with min_section_lengths (given per section of the unblended path): give a "
+          "joint_metric, which is evaluated on the blended path");
+  require(!options.joint_metric || options.min_section_lengths.empty(), "min_section_lengths size",
+          static_cast<unsigned long>(options.min_section_lengths.size()),
+          "must be 0 with a joint_metric (it gives the minimum lengths)");
   require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity", options.start_velocity,
           "must be finite and ≥ 0 (m/s)");
   require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration, "must be finite (m/s²)");
-  // Continuous-path mode: the corners blended first (doc/planning.md §10).
-  std::vector<CornerStop> corner_stops;
-  std::optional<Path> blended;
-  if (options.corner_tolerance > 0.0)
-    blended.emplace(given_path.blended(options.corner_tolerance, &corner_stops, options.blend_tolerance));
   const Path& path = blended ? *blended : given_path;
   const std::vector<Section>& sections = path.sections();
   const std::size_t n = sections.size();
+  // A joint metric is per section of the path as planned, so it is evaluated after blending.
+  const std::vector<double> minimum = options.joint_metric ? options.joint_metric(path, limits) : options.min_section_lengths;
+  const std::string minimum_name = options.joint_metric ? "joint_metric(path, limits)" : "min_section_lengths";
   if (!(minimum.empty() || minimum.size() == n)) {
-    require(false, "min_section_lengths size", static_cast<unsigned long>(minimum.size()),
+    require(false, minimum_name + " size", static_cast<unsigned long>(minimum.size()),
             "must be 0 or the path's section count " + std::to_string(n));
   }
   for (std::size_t k = 0; k < minimum.size(); ++k) {
     if (!(std::isfinite(minimum[k]) && minimum[k] >= 0.0))
-      require(false, "min_section_lengths[" + std::to_string(k) + "]", minimum[k], "must be finite and not negative");
+      require(false, minimum_name + "[" + std::to_string(k) + "]", minimum[k], "must be finite and not negative");
   }
   // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
   // under its own limit. Lengths and acceleration bounds come from one evaluation per section
@@ -376,7 +385,7 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   }
   std::vector<double>& lengths = planned.lengths;
   if (limits.angular_velocity) {
-    // The rotational limit as one more term of the length (doc/planning.md eq. 23):
+    // The rotational limit as one more term of the length (doc/planning.md eq. 36):
     // |ω| = |ω_τ| ṡ / L ≤ ω_max.
     for (std::size_t k = 0; k < planned.size(); ++k) lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
   }
@@ -391,8 +400,8 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   }
 
   // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
-  // steps by less than 1 % there (eq. 9): lengthening the faster side, forward then backward,
-  // brings every such junction within 1 % (doc/planning.md eq. 21); junctions already within it
+  // steps by less than 1 % there (doc/planning.md eq. 9): lengthening the faster side, forward then backward,
+  // brings every such junction within 1 % (doc/planning.md eq. 34); junctions already within it
   // are left as they are.
   const std::size_t count = planned.size();
   std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);

@@ -15,7 +15,7 @@ namespace dispkin::detail {
 //! The planned path by the smooth parameter σ (doc/retiming.md (eq. 9)): section k gets a σ-length
 //! ℓ_k with ℓ_{k+1}/ℓ_k = |ξ_{k+1}(0)| / |ξ_k(1)|, so that the pose derivative per unit σ is
 //! continuous through tangent junctions, and its DISP limits become σ̇ ≤ v_lim ℓ_k/L_k and
-//! |σ̈| ≤ a ℓ_k/L_k (eq. 10).
+//! |σ̈| ≤ a ℓ_k/L_k (doc/retiming.md eq. 10).
 class SmoothParameter {
  public:
   SmoothParameter(const Trajectory& planned, double acceleration);

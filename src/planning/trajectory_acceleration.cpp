@@ -1,4 +1,4 @@
-// The acceleration of a trajectory's tool (trajectory_acceleration.hpp, doc/planning.md §12, eqs. 25–26).
+// The acceleration of a trajectory's tool (trajectory_acceleration.hpp, doc/planning.md §12, eqs. 38–39).
 #include "dispkin/planning/trajectory_acceleration.hpp"
 
 #include <algorithm>
@@ -50,7 +50,7 @@ Twistd twist_rate(const CurveSection& curve, double tau) noexcept {
   return Twistd(linear_rate, angular_rate);
 }
 
-// A nested-SLERP blend: its own exact rate (doc/planning.md eq. 30).
+// A nested-SLERP blend: its own exact rate (doc/planning.md eq. 20).
 Twistd twist_rate(const SlerpBlendSection& blend, double tau) noexcept { return blend.twist_rate(tau); }
 
 }  // namespace

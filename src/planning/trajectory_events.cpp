@@ -80,7 +80,7 @@ Trajectory Trajectory::stopped_at(double t) const {
   const double at = std::max(t, 0.0);
   const ProfileState x = state_at(law_, at);
   TimeLaw law = law_.before(at);
-  // The fastest stop under the smallest acceleration limit of the spans it crosses (eq. 4): the
+  // The fastest stop under the smallest acceleration limit of the spans it crosses (doc/events.md eq. 4): the
   // spans it crosses under one limit can only be fewer under a smaller one.
   double a = limits.acceleration;
   std::optional<Profile> stop = detail::fastest_stop(x.v, x.a, a, limits.jerk);
@@ -231,7 +231,7 @@ Trajectory Trajectory::starting_from(double velocity, double acceleration) const
     require(acceleration == 0.0, "acceleration", acceleration, "is not a state of the trapezoid law (s̈ jumps there): it must be 0");
   require(std::abs(acceleration) <= limits.acceleration * (1.0 + 1e-12), "acceleration", acceleration,
           "must be within the acceleration limit, ±" + number(limits.acceleration) + " m/s²");
-  // Above the limit at the start (scaled by the override, eq. 5) the law eases down onto it as
+  // Above the limit at the start (scaled by the override, doc/events.md eq. 5) the law eases down onto it as
   // after an override (§3); never above what the path allows there at all, its ceiling.
   const double top = speed_limits_.empty() ? 0.0 : speed_limits_.front().top();
   require(velocity <= top * (1.0 + 1e-12), "velocity", velocity,

@@ -32,7 +32,7 @@ inline double wrap_angle(double a) noexcept {
 
 //! θ + π in (−π, π] for θ in (−π, π]: the other solution of a joint whose neighbours turn by a
 //! half turn with it (the wrist flip, doc/inverse-kinematics.md (eq. 27); the shoulder's second
-//! q₁ on axis 1, eq. 30).
+//! q₁ on axis 1, doc/inverse-kinematics.md eq. 30).
 inline double half_turn(double angle) noexcept { return angle > 0.0 ? angle - pi : angle + pi; }
 
 }  // namespace detail

@@ -26,7 +26,7 @@ struct JointState {
 template <typename Pass>
 void newton_euler(int joint_count, const std::vector<ChainBody>& bodies, const Eigen::Vector3d& gravity, Pass&& pass,
                   const double* qd, const double* qdd, double* tau, double* holding, JointState* joints) {
-  // Base to tip (eq. 23): the spatial twist V = (v, ω) and its rate A = (a, α), starting from
+  // Base to tip (doc/retiming.md eq. 23): the spatial twist V = (v, ω) and its rate A = (a, α), starting from
   // A₀ = (−g, 0) so that gravity acts as an upward acceleration of the base.
   Eigen::Vector3d v = Eigen::Vector3d::Zero(), w = Eigen::Vector3d::Zero();
   Eigen::Vector3d a = -gravity, alpha = Eigen::Vector3d::Zero();
@@ -38,7 +38,7 @@ void newton_euler(int joint_count, const std::vector<ChainBody>& bodies, const E
     // Ȧ adds ξᵢ′ q̈ᵢ and the bracket [V, ξᵢ′] q̇ᵢ (the rate of the moving axis).
     a += qdd[i] * axis_v + qd[i] * (w.cross(axis_v) + v.cross(axis));
     alpha += qdd[i] * axis + qd[i] * w.cross(axis);
-    // The body at q (eq. 24): centre c, inertia I about c; its centre moves at v + ω × c.
+    // The body at q (doc/retiming.md eq. 24): centre c, inertia I about c; its centre moves at v + ω × c.
     const ChainBody& body = bodies[k];
     // I x = R I⁰ Rᵀ x, turned by the motion's quaternion: cheaper than forming R I⁰ Rᵀ.
     const Eigen::Quaterniond& r = motion.quaternion();
@@ -58,7 +58,7 @@ void newton_euler(int joint_count, const std::vector<ChainBody>& bodies, const E
       j.holding_moment = c.cross(j.holding_force);
     }
   });
-  // Tip to base (eq. 25): joint i carries the wrench of every body from i on; its torque is
+  // Tip to base (doc/retiming.md eq. 25): joint i carries the wrench of every body from i on; its torque is
   // that moment about the axis, taken about a point of the axis.
   Eigen::Vector3d f = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
   Eigen::Vector3d f_hold = Eigen::Vector3d::Zero(), n_hold = Eigen::Vector3d::Zero();

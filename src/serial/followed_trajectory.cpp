@@ -79,7 +79,7 @@ class SectionFollower {
       }
       out.rate[idx] = rate_of(k, tau, out.q[idx], per_tau);
     }
-    // The check of eq. 20 at every interval's middle.
+    // The check of doc/ptp.md eq. 20 at every interval's middle.
     const Hermite middle{0.5, 1.0 / n};
     for (int i = 0; i < n; ++i) {
       const auto a = static_cast<std::size_t>(i), b = a + 1;
@@ -115,7 +115,7 @@ class SectionFollower {
     return q;
   }
 
-  // q′ = J_b(q)⁻¹ ξ_τ (eq. 17).
+  // q′ = J_b(q)⁻¹ ξ_τ (doc/ptp.md eq. 17).
   Eigen::VectorXd rate_of(std::size_t k, double tau, const Eigen::VectorXd& q, const Twistd& per_tau) const {
     try {
       return detail::joint_velocity(arm_, q, per_tau, std::numeric_limits<double>::quiet_NaN(), s_at(k, tau));
@@ -151,7 +151,7 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& a
   require(q_given.size() == arm.dof(), given, static_cast<long>(q_given.size()),
           "entries: must have one per joint of the arm (" + std::to_string(arm.dof()) + ")");
   require_finite(q_given, given);
-  // Below 10 µm a grid only costs memory (eq. 20 refines where a motion needs it).
+  // Below 10 µm a grid only costs memory (doc/ptp.md eq. 20 refines where a motion needs it).
   require(std::isfinite(spacing) && spacing >= 1e-5 && spacing <= 1.0, "spacing", spacing, "must be in [1e-5, 1] m");
   require(trajectory_.section_count() > 0, "trajectory", static_cast<long>(trajectory_.section_count()),
           "sections: must have at least one");
@@ -224,7 +224,7 @@ JointTrajectorySample FollowedTrajectory::sample(double t) const noexcept {
   const Hermite at{tau * grid.intervals - i, 1.0 / grid.intervals};
   const Eigen::Index a = grid.first + i, b = a + 1;
   const auto q0 = nodes_q_.col(a), q1 = nodes_q_.col(b), m0 = nodes_rate_.col(a), m1 = nodes_rate_.col(b);
-  // Per unit s: the section's τ runs at 1/L_k (eq. 19).
+  // Per unit s: the section's τ runs at 1/L_k (doc/ptp.md eq. 19).
   const double per_s = path.inverse_length(k);
   JointTrajectorySample out;
   out.q = at.value(q0, m0, q1, m1);

@@ -58,7 +58,7 @@ EIGEN_ALWAYS_INLINE CosSin add(const CosSin& a, const CosSin& b) noexcept {
   return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
 }
 
-//! Appends a solution exact to rounding (measured error 0, eq. 26), its joints wrapped to (−π, π].
+//! Appends a solution exact to rounding (measured error 0, doc/inverse-kinematics.md eq. 26), its joints wrapped to (−π, π].
 EIGEN_ALWAYS_INLINE void push_exact(IkSolutionSet& out, const std::array<double, 6>& q) noexcept {
   if (out.count == 8) return;
   const auto k = static_cast<std::size_t>(out.count++);
@@ -66,7 +66,7 @@ EIGEN_ALWAYS_INLINE void push_exact(IkSolutionSet& out, const std::array<double,
   out.error[k] = 0.0;
 }
 
-//! The arm frame: origin p₁ on axis 1, z = ω₁, y = ω₂, x = y × z (eq. 29). Needs ω₁ ⊥ ω₂.
+//! The arm frame: origin p₁ on axis 1, z = ω₁, y = ω₂, x = y × z (doc/inverse-kinematics.md eq. 29). Needs ω₁ ⊥ ω₂.
 struct ArmFrame {
   Eigen::Matrix3d to_arm = Eigen::Matrix3d::Identity();  //!< Bᵀ: base vectors into arm coordinates
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();      //!< p₁
@@ -88,12 +88,12 @@ inline ArmFrame arm_frame(const RevoluteChain& chain) {
 
 //! A candidate all of whose subproblems are this far inside their solvable range (margin, §2)
 //! is exact to rounding and is kept without measuring its pose error (doc/inverse-kinematics.md
-//! (eq. 26)); nearer a tangency or a singularity rounding is amplified, and it is measured and
+//! (doc/inverse-kinematics.md eq. 26)); nearer a tangency or a singularity rounding is amplified, and it is measured and
 //! polished.
 constexpr double well_inside = 1e-4;
 
 //! Joint 1 of the arm frame: the turn about z that brings a point W (arm coordinates) to the
-//! lateral offset b its point has at q = 0 (eq. 30), labelled as subproblem 4 labels −q₁.
+//! lateral offset b its point has at q = 0 (doc/inverse-kinematics.md eq. 30), labelled as subproblem 4 labels −q₁.
 struct ShoulderTurn {
   FastStep step = FastStep::general;
   std::array<CosSin, 2> q1{};     //!< for the labels plus and minus
@@ -116,7 +116,7 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
   const double s = std::sqrt((rho - std::abs(lateral)) * (rho + std::abs(lateral)));
   const double inverse = 1.0 / rho2;
   for (std::size_t l = 0; l < 2; ++l) {
-    const double u = l == 0 ? -s : s;  // the label plus of −q₁ reaches back (eq. 30)
+    const double u = l == 0 ? -s : s;  // the label plus of −q₁ reaches back (doc/inverse-kinematics.md eq. 30)
     out.q1[l] = {(w.x() * u + w.y() * lateral) * inverse, (w.y() * u - w.x() * lateral) * inverse};
     out.reach[l] = u;
   }
@@ -125,16 +125,16 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
   return out;
 }
 
-//! The two-link elbow of the arm plane (eq. 31): axis 2 at p₂, axis 3 (along σ₃ y) at p₃, the
+//! The two-link elbow of the arm plane (doc/inverse-kinematics.md eq. 31): axis 2 at p₂, axis 3 (along σ₃ y) at p₃, the
 //! point X carried by joint 3; ‖L₂ + R(σ₃q₃) L₃‖ = ‖w − p₂‖ gives q₃, the plane rotation from
-//! L₂ + R(σ₃q₃) L₃ to w − p₂ gives q₂ (eq. 32).
+//! L₂ + R(σ₃q₃) L₃ to w − p₂ gives q₂ (doc/inverse-kinematics.md eq. 32).
 struct PlaneElbow {
   PlaneVector p2;           //!< axis 2
   PlaneVector upper;        //!< L₂ = p₃ − p₂
   PlaneVector fore;         //!< L₃ = X − p₃
   double half_sum = 0.0;    //!< ½(‖L₂‖² + ‖L₃‖²)
   double r = 1.0;           //!< ‖L₂‖ ‖L₃‖: subproblem 3's √(A² + B²)
-  CosSin phase;             //!< (A, B) / r: the angle φ of eq. 4
+  CosSin phase;             //!< (A, B) / r: the angle φ of doc/inverse-kinematics.md eq. 4
   double phase_angle = 0.0; //!< φ
   double sign3 = 1.0;       //!< σ₃ = ω₃ · ω₂
 };
@@ -149,7 +149,7 @@ inline PlaneElbow plane_elbow(const RevoluteChain& chain, const ArmFrame& frame,
   e.upper = ArmFrame::in_plane(frame.point(p3)) - e.p2;
   e.fore = ArmFrame::in_plane(frame.point(x)) - ArmFrame::in_plane(frame.point(p3));
   e.half_sum = 0.5 * (dot(e.upper, e.upper) + dot(e.fore, e.fore));
-  // A and B of subproblem 3 (eq. 7) with u = x − p₃, v = p₂ − p₃: fixed by the chain.
+  // A and B of subproblem 3 (doc/inverse-kinematics.md eq. 7) with u = x − p₃, v = p₂ − p₃: fixed by the chain.
   const Eigen::Vector3d u = x - p3, v = p2 - p3;
   const double a = v.dot(u - w3.dot(u) * w3), b = v.dot(w3.cross(u));
   e.r = std::sqrt(a * a + b * b);
@@ -212,13 +212,13 @@ struct OrthoParallel {
 //! (the caller has checked the rest: an exactly fitting parallel_23 spherical wrist that flips).
 bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& centre, OrthoParallel& out);
 
-//! All solutions of the pose by eqs. 29–34, appended to `out` as exact to rounding (eq. 26). False
+//! All solutions of the pose by doc/inverse-kinematics.md eqs. 29–34, appended to `out` as exact to rounding (eq. 26). False
 //! when some subproblem is near its tangency, the wrist near its singularity, or a branch misses
-//! the positioning residual of eq. 26: then nothing is appended and the general path decides.
+//! the positioning residual of doc/inverse-kinematics.md eq. 26: then nothing is appended and the general path decides.
 bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolutionSet& out);
 
 //! Three parallel axes (Universal Robots) with axis 1 ⊥ axes 2 ∥ 3 ∥ 4 to rounding: the per-chain
-//! constants of the closed form (eq. 12) in the arm frame (doc/inverse-kinematics.md §10, eq. 35).
+//! constants of the closed form (doc/inverse-kinematics.md eq. 12) in the arm frame (doc/inverse-kinematics.md §10, eq. 35).
 //! The wrist vectors are kept in the tip frame at q = 0 (rotated by R_Mᵀ), so that a pose enters
 //! through one product to_arm · R_T.
 struct ThreeParallelPlane {
@@ -228,7 +228,7 @@ struct ThreeParallelPlane {
   double sign4 = 1.0;                                        //!< σ₄ = ω₄ · ω₂
   Eigen::Vector3d centre_in_tip = Eigen::Vector3d::Zero();   //!< M⁻¹ c
   Eigen::Vector3d axis6 = Eigen::Vector3d::UnitZ();          //!< R_Mᵀ ω₆
-  // q₅ by subproblem 4 (eq. 8) with h = ω₂, k = ω₅, p = ω₆: A cos q₅ + B sin q₅ = d − K.
+  // q₅ by subproblem 4 (doc/inverse-kinematics.md eq. 8) with h = ω₂, k = ω₅, p = ω₆: A cos q₅ + B sin q₅ = d − K.
   double q5_offset = 0.0;                                    //!< K = (ω₅·ω₆)(ω₅·ω₂)
   double q5_r = 1.0;                                         //!< √(A² + B²)
   CosSin q5_phase;                                           //!< (A, B) / r
@@ -248,7 +248,7 @@ struct ThreeParallelPlane {
 //! 10⁻¹⁴ and subproblem 4 in q₅ is not degenerate.
 bool make_three_parallel_plane(const RevoluteChain& chain, const Eigen::Vector3d& centre, ThreeParallelPlane& out);
 
-//! All solutions of the pose by eq. 12 in the arm frame (eq. 35), appended to `out` as exact to
+//! All solutions of the pose by doc/inverse-kinematics.md eq. 12 in the arm frame (eq. 35), appended to `out` as exact to
 //! rounding. False (nothing appended) near a tangency or the wrist singularity.
 bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& pose, IkSolutionSet& out);
 

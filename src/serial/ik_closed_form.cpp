@@ -86,7 +86,7 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
       q1_of_angle = t[0];
     }
     const Eigen::Vector3d arm_angles(q1_angle, t[1].angle(), t[2].angle());
-    // R_w ω₆ and R_w x₆ with R_w = (R₁R₂R₃)ᵀ R_G (eq. 11), and e₁e₂e₃ c: rotations of vectors only.
+    // R_w ω₆ and R_w x₆ with R_w = (R₁R₂R₃)ᵀ R_G (doc/inverse-kinematics.md eq. 11), and e₁e₂e₃ c: rotations of vectors only.
     const auto from_base = [&](const Eigen::Vector3d& v) {
       return rotate(w3, t[2].inverse(), rotate(w2, t[1].inverse(), rotate(w1, t[0].inverse(), v)));
     };
@@ -105,7 +105,7 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
       measured = true;
       continue;
     }
-    // Exact to rounding (eq. 26): q₆ by subproblem 1 for each wrist solution, or the flip (eq. 27).
+    // Exact to rounding (doc/inverse-kinematics.md eq. 26): q₆ by subproblem 1 for each wrist solution, or the flip (eq. 27).
     const Eigen::Vector3d b6 = from_base(g_x6);
     const auto q6_of = [&](std::size_t l) {
       return subproblem1_cs(w6, x6, rotate(w5, q45.second[l].inverse(), rotate(w4, q45.first[l].inverse(), b6)));
@@ -202,7 +202,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
         const Eigen::Vector3d h_x4 = h.r * x4;
         const Angles q3s = subproblem3(w3, p4 - p3, p2 - p3, (y - p2).squaredNorm());
         if (!q3s.exists) continue;
-        // Exact to rounding (eq. 26) away from the wrist singularity and every tangency.
+        // Exact to rounding (doc/inverse-kinematics.md eq. 26) away from the wrist singularity and every tangency.
         const bool exact = geometry.exact_fit && !singular_wrist && k6 == 0 &&
                            std::min(std::min(q1s.margin, q5s.margin), q3s.margin) >= well_inside;
         for (int l3 = 0; l3 < (q3s.single() ? 1 : 2); ++l3) {

@@ -87,8 +87,8 @@ struct ChainGeometry {
   // Per-chain constants of the closed forms, worked out once with the geometry.
   Motion tip_inverse;                                  //!< M⁻¹
   JointThen tool;                                      //!< e₆(q₆) M split into fixed parts
-  Eigen::Vector3d normal_4 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₄ (x₄ of eq. 12)
-  Eigen::Vector3d normal_6 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₆ (x₆ of eq. 11)
+  Eigen::Vector3d normal_4 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₄ (x₄ of doc/inverse-kinematics.md eq. 12)
+  Eigen::Vector3d normal_6 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₆ (x₆ of doc/inverse-kinematics.md eq. 11)
   //! The family's axes meet and are parallel to rounding (exact_fit_tolerance), not merely to the
   //! recognition tolerance: only then is a well-conditioned closed-form candidate exact to
   //! rounding without a check (doc/inverse-kinematics.md §8, eq. 26).
@@ -176,7 +176,7 @@ inline PoseError motion_error(const Motion& t, const Motion& target) noexcept {
 }
 
 //! Newton's method on the full 6-D pose error (refine_pose, doc/inverse-kinematics.md (eq. 22)
-//! and (eq. 23)) to rounding, with minimum-norm steps at singular q so that it converges there
+//! and (doc/inverse-kinematics.md eq. 23)) to rounding, with minimum-norm steps at singular q so that it converges there
 //! too. Returns the final error; q is updated in place and wrapped to (−π, π].
 inline PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept {
   NewtonSettings settings;

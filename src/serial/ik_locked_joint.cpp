@@ -15,7 +15,7 @@ namespace dispkin {
 namespace serial {
 namespace {
 
-// The 6R chain of joints [first, first + 6) with the 7R chain's tip M (eqs. 37, 38).
+// The 6R chain of joints [first, first + 6) with the 7R chain's tip M (doc/inverse-kinematics.md eqs. 37, 38).
 RevoluteChain rest_of(const RevoluteChain& chain, int first) {
   RevoluteChain rest;
   for (int i = first; i < first + 6; ++i) {
@@ -26,7 +26,7 @@ RevoluteChain rest_of(const RevoluteChain& chain, int first) {
   return rest;
 }
 
-// The 6R chain S read from the tip back (eq. 39): S′(x′) = S(x)⁻¹ with x′ₖ = −x₇₋ₖ.
+// The 6R chain S read from the tip back (doc/inverse-kinematics.md eq. 39): S′(x′) = S(x)⁻¹ with x′ₖ = −x₇₋ₖ.
 RevoluteChain reversed(const RevoluteChain& s) {
   RevoluteChain r;
   const Posed n_inv = s.tip_at_zero.inverse();
@@ -46,7 +46,7 @@ bool has_closed_form(IkFamily f) { return f == IkFamily::spherical_wrist || f ==
 LockedJoint find_locked_joint(const RevoluteChain& chain) {
   LockedJoint lock;
   if (chain.dof() != 7 || chain.points.size() != 7) return lock;
-  // Locking an end joint moves the rest of the chain rigidly (eqs. 37, 38): its family is one for all values.
+  // Locking an end joint moves the rest of the chain rigidly (doc/inverse-kinematics.md eqs. 37, 38): its family is one for all values.
   for (const int joint : {6, 0}) {
     const RevoluteChain rest = rest_of(chain, joint == 6 ? 0 : 1);
     for (const bool from_tip : {false, true}) {
@@ -67,7 +67,7 @@ void locked_joint_inverse(const RevoluteChain& chain, const LockedJoint& lock, d
                           std::vector<Eigen::VectorXd>& out) {
   require_finite(value, "redundancy");
   require(lock.found(), "lock.joint", lock.joint, "no locked joint leaves a closed form");
-  // The pose the 6R chain must reach (eq. 37 / 38), inverted when it is read from the tip (eq. 39).
+  // The pose the 6R chain must reach (doc/inverse-kinematics.md eq. 37 / 38), inverted when it is read from the tip (eq. 39).
   const auto j = static_cast<std::size_t>(lock.joint);
   const Posed unlock = rotation_about_line(chain.axes[j], chain.points[j], -value);
   Posed target = lock.joint == 6 ? pose * (chain.tip_at_zero.inverse() * unlock * chain.tip_at_zero) : unlock * pose;
@@ -95,7 +95,7 @@ double Redundancy::value(const Eigen::VectorXd& q) const {
 std::vector<double> Redundancy::default_values() const {
   std::vector<double> values;
   if (!has_parameter()) return values;
-  // Centres of equal parts (eq. 40): never a range end, where a joint limit sits.
+  // Centres of equal parts (doc/inverse-kinematics.md eq. 40): never a range end, where a joint limit sits.
   const double width = (upper - lower) / default_value_count;
   for (int k = 0; k < default_value_count; ++k) values.push_back(lower + (k + 0.5) * width);
   return values;

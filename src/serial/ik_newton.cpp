@@ -28,7 +28,7 @@ using Residual = Eigen::Matrix<double, 6, 1>;
 // the largest pivot of its QR).
 constexpr double singular_threshold = 1e-10;
 
-// The Newton step Δq of a square J (eq. 23): J⁻¹ e by LU when its pivot ratio says it is well
+// The Newton step Δq of a square J (doc/inverse-kinematics.md eq. 23): J⁻¹ e by LU when its pivot ratio says it is well
 // conditioned, else the minimum-norm one, if allowed. False: no step.
 bool newton_step(const Eigen::Matrix<double, 6, 6>& jacobian, const Residual& residual, const NewtonSettings& settings,
                  Eigen::Matrix<double, 6, 1>& step) noexcept {

@@ -1,5 +1,5 @@
 // Newton's method on the full pose error of a revolute chain (doc/inverse-kinematics.md (eq. 22)
-// and (eq. 23)): the one refinement of an inverse-kinematics solution in the serial plugin. The
+// and (doc/inverse-kinematics.md eq. 23)): the one refinement of an inverse-kinematics solution in the serial plugin. The
 // analytic solvers finish every candidate with it, the numeric fallback brings its roots down
 // to rounding with it, and following a trajectory's branch tracks the next pose with it.
 #pragma once
@@ -33,7 +33,7 @@ struct NewtonSettings {
   //! leaving the neighbourhood of the start, where another branch may be reached.
   double largest_step = std::numeric_limits<double>::infinity();
   //! Square J: above this ratio of the smallest to the largest pivot of its LU the step is
-  //! J⁻¹ e (eq. 23). The ratio is a cheap stand-in for the reciprocal condition number.
+  //! J⁻¹ e (doc/inverse-kinematics.md eq. 23). The ratio is a cheap stand-in for the reciprocal condition number.
   double well_conditioned = 1e-5;
   //! Below it (and for a J that is not square, always) the step is the minimum-norm least-
   //! squares one J⁺ e, which leaves a free combination of joints alone at a singular q; false:

@@ -1,8 +1,8 @@
 // The spherical wrist on an ortho-parallel basis (Brandstötter, Angerer and Hofbaur 2014) in the
 // arm frame: axis 1 ⊥ axes 2 ∥ 3, wrist axes 4 ⊥ 5 ⊥ 6 with 4 ∥ 6 at q = 0. The general path
-// (ik_closed_form.cpp, eq. 11) solves the same subproblems with rotations about general axes;
-// here the positioning stage is the plane problem of eqs. 30–32 on per-chain constants and the
-// wrist reads its angles off two target vectors in the wrist's own basis (eqs. 33–34), so a pose
+// (ik_closed_form.cpp, doc/inverse-kinematics.md eq. 11) solves the same subproblems with rotations about general axes;
+// here the positioning stage is the plane problem of doc/inverse-kinematics.md eqs. 30–32 on per-chain constants and the
+// wrist reads its angles off two target vectors in the wrist's own basis (doc/inverse-kinematics.md eqs. 33–34), so a pose
 // costs a few hundred multiplications, six square roots and twenty arctangents for its eight
 // solutions. doc/inverse-kinematics.md §10.
 #include "ik_arm_frame.hpp"
@@ -13,7 +13,7 @@ namespace detail {
 
 namespace {
 
-// The positioning residual ‖e₁e₂e₃ c − G c‖ (m) of eq. 26 below which a branch counts as exact.
+// The positioning residual ‖e₁e₂e₃ c − G c‖ (m) of doc/inverse-kinematics.md eq. 26 below which a branch counts as exact.
 constexpr double exact_position = 4e-15;
 
 // R_z(−q₁) v: a vector of arm coordinates into link 1's frame.
@@ -21,7 +21,7 @@ EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn1(const CosSin& q1, const Eigen::Vecto
   return {q1.c * v.x() + q1.s * v.y(), q1.c * v.y() - q1.s * v.x(), v.z()};
 }
 
-// R_y(−θ) v: undoes a turn θ about y (in the plane (ξ, η) = (z, x), eq. 29).
+// R_y(−θ) v: undoes a turn θ about y (in the plane (ξ, η) = (z, x), doc/inverse-kinematics.md eq. 29).
 EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn_y(const CosSin& t, const Eigen::Vector3d& v) noexcept {
   return {t.c * v.x() - t.s * v.z(), v.y(), t.c * v.z() + t.s * v.x()};
 }
@@ -31,7 +31,7 @@ EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn_y(const CosSin& t, const Eigen::Vecto
 }  // namespace
 
 bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& centre, OrthoParallel& out) {
-  // Axis 1 ⊥ axis 2 to rounding: only then are the arm frame's solutions exact (eq. 26).
+  // Axis 1 ⊥ axis 2 to rounding: only then are the arm frame's solutions exact (doc/inverse-kinematics.md eq. 26).
   if (std::abs(chain.axes[0].dot(chain.axes[1])) > exact_fit_tolerance) return false;
   out.frame = arm_frame(chain);
   out.elbow = plane_elbow(chain, out.frame, centre);
@@ -52,7 +52,7 @@ bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& cent
 
 bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolutionSet& out) {
   const int start = out.count;
-  // The pose in the arm frame: W = G c (eq. 30) and the target's wrist axes R_G ω₆, R_G ω₅.
+  // The pose in the arm frame: W = G c (doc/inverse-kinematics.md eq. 30) and the target's wrist axes R_G ω₆, R_G ω₅.
   const Eigen::Matrix3d into_arm = arm.frame.to_arm * pose.rotation();
   const Eigen::Vector3d w = into_arm * arm.centre_in_tip + arm.frame.point(pose.translation());
   const Eigen::Vector3d g6 = into_arm * arm.axis6_in_tip;
@@ -75,12 +75,12 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
     const PlaneVector to_target = target - elbow.p2;
     for (std::size_t l3 = 0; l3 < 2; ++l3) {
       const CosSin q3 = q3s.q3[l3];
-      // q₂: the plane rotation from L₂ + R(σ₃q₃) L₃ onto w − p₂ (eq. 32).
+      // q₂: the plane rotation from L₂ + R(σ₃q₃) L₃ onto w − p₂ (doc/inverse-kinematics.md eq. 32).
       const PlaneVector reach = elbow_reach(elbow, q3);
       const double c2 = dot(reach, to_target), s2 = cross(reach, to_target);
       const double inverse2 = 1.0 / std::sqrt(c2 * c2 + s2 * s2);
       const CosSin q2{c2 * inverse2, s2 * inverse2};
-      // The positioning residual of eq. 26 in the plane (eq. 34): e₁e₂e₃ c against W.
+      // The positioning residual of doc/inverse-kinematics.md eq. 26 in the plane (eq. 34): e₁e₂e₃ c against W.
       const PlaneVector placed = elbow.p2 + turn(q2, reach);
       const double rx = q1.c * placed.eta - q1.s * b - w.x();
       const double ry = q1.s * placed.eta + q1.c * b - w.y();
@@ -89,12 +89,12 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
         out.count = start;
         return false;
       }
-      // The wrist (eq. 33): a = R_w ω₆ and v = R_w ω₅ in the basis (ω₄, ω₅, ω₄ × ω₅), R_w = (R₁R₂R₃)ᵀ R_G.
+      // The wrist (doc/inverse-kinematics.md eq. 33): a = R_w ω₆ and v = R_w ω₅ in the basis (ω₄, ω₅, ω₄ × ω₅), R_w = (R₁R₂R₃)ᵀ R_G.
       const CosSin q23 = add(q2, plane_turn3(elbow, q3));
       const Eigen::Vector3d a = arm.wrist_rows * unturn_y(q23, h6);
       const Eigen::Vector3d v = arm.wrist_rows * unturn_y(q23, h5);
       const double gamma2 = a.y() * a.y() + a.z() * a.z();
-      if (!(gamma2 >= well_inside * a.squaredNorm())) {  // subproblem 2's margin sin² q₅ (eq. 26)
+      if (!(gamma2 >= well_inside * a.squaredNorm())) {  // subproblem 2's margin sin² q₅ (doc/inverse-kinematics.md eq. 26)
         out.count = start;
         return false;
       }
@@ -105,7 +105,7 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
           CosSin{a.z() * v.y() - a.y() * v.z(), a.x() * (a.y() * v.y() + a.z() * v.z()) - gamma2 * v.x()}.angle();
       const double q2_angle = q2.angle();
       push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], q4, q5, q6});
-      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], half_turn(q4), -q5, half_turn(q6)});  // eq. 27
+      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], half_turn(q4), -q5, half_turn(q6)});  // doc/inverse-kinematics.md eq. 27
     }
   }
   return true;

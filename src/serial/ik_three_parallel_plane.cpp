@@ -1,6 +1,6 @@
 // Three parallel axes (Universal Robots) in the arm frame, with Hawkins' order of the unknowns
 // (q₁, q₅, q₆, then the planar q₃, q₂ and q₄ as what the parallel axes leave of their sum): the
-// subproblems of eq. 12 on per-chain constants (doc/inverse-kinematics.md §10, eq. 35). Joint 5's
+// subproblems of doc/inverse-kinematics.md eq. 12 on per-chain constants (doc/inverse-kinematics.md §10, eq. 35). Joint 5's
 // rotations of the fixed wrist vectors are split into three parts once per chain, the pose enters
 // through one 3 × 3 product, and q₄ needs no arctangent of its own.
 #include "ik_arm_frame.hpp"
@@ -32,7 +32,7 @@ bool make_three_parallel_plane(const RevoluteChain& chain, const Eigen::Vector3d
   out.elbow = plane_elbow(chain, out.frame, chain.points[3]);
   out.lateral = out.frame.point(centre).y();
   out.sign4 = chain.axes[3].dot(w2) > 0.0 ? 1.0 : -1.0;
-  // Subproblem 4 in q₅ (eq. 8, as the general path): h = ω₂, k = ω₅, p = ω₆.
+  // Subproblem 4 in q₅ (doc/inverse-kinematics.md eq. 8, as the general path): h = ω₂, k = ω₅, p = ω₆.
   const double a = w2.dot(w6 - w5.dot(w6) * w5), b = w2.dot(w5.cross(w6));
   out.q5_offset = w5.dot(w6) * w5.dot(w2);
   out.q5_r = std::sqrt(a * a + b * b);
@@ -62,13 +62,13 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
   const Eigen::Vector3d g6 = into_arm * arm.axis6;                                              // R_G ω₆
   const Eigen::Vector3d& k6 = arm.axis6;
   const PlaneElbow& elbow = arm.elbow;
-  // q₁: ω₂ · e₁⁻¹ G c = ω₂ · c (eq. 30).
+  // q₁: ω₂ · e₁⁻¹ G c = ω₂ · c (doc/inverse-kinematics.md eq. 30).
   const ShoulderTurn shoulder = shoulder_turn(w, arm.lateral);
   if (shoulder.step != FastStep::exact) return shoulder.step == FastStep::none;
   for (std::size_t l1 = 0; l1 < 2; ++l1) {
     const CosSin q1 = shoulder.q1[l1];
     const double q1_angle = shoulder.angle[l1];
-    // q₅: ω₂ · R₅ ω₆ = (R₁ ω₂) · R_G ω₆ (subproblem 4, eq. 12).
+    // q₅: ω₂ · R₅ ω₆ = (R₁ ω₂) · R_G ω₆ (subproblem 4, doc/inverse-kinematics.md eq. 12).
     const double x = (q1.c * g6.y() - q1.s * g6.x() - arm.q5_offset) / arm.q5_r;
     const double margin5 = 1.0 - std::abs(x);
     if (margin5 < well_inside) {
@@ -84,7 +84,7 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
     for (std::size_t l5 = 0; l5 < 2; ++l5) {
       const CosSin q5 = q5s[l5];
       const double q5_angle = wrap_angle(arm.q5_phase_angle + (l5 == 0 ? half5 : -half5));
-      // −q₆ = subproblem 1 (ω₆, R₅ᵀ ω₂, R_Gᵀ R₁ ω₂) (eq. 12).
+      // −q₆ = subproblem 1 (ω₆, R₅ᵀ ω₂, R_Gᵀ R₁ ω₂) (doc/inverse-kinematics.md eq. 12).
       const Eigen::Vector3d u = arm.axis2.back(q5);
       const Eigen::Vector3d u_x_k6 = u.cross(k6);
       if (u_x_k6.norm() < singular_wrist) return general();
@@ -94,7 +94,7 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
       if (!(h6 > 1e-300)) return general();
       const CosSin q6{cosine / h6, -sine / h6};
       const double q6_angle = q6.angle();
-      // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄: the point y = H p₄ and the turn θ_H of R_H about y (eq. 35).
+      // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄: the point y = H p₄ and the turn θ_H of R_H about y (doc/inverse-kinematics.md eq. 35).
       const CosSin back6 = q6.inverse();
       const Eigen::Vector3d to_p4 = w + into_arm * rotate(k6, back6, arm.arm_to_p4.back(q5));
       const Eigen::Vector3d hx = into_arm * rotate(k6, back6, arm.arm_x.back(q5));

@@ -28,7 +28,7 @@ Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, c
 
 //! q̇ as joint_velocity gives it and, from the same factorisation of J_b(q), the joint
 //! acceleration of the body acceleration `body_rate`: J_b q̈ = ξ̇_b − J̇_b(q, q̇) q̇ (doc/retiming.md
-//! (eq. 27)). Per unit of path instead of time (ξ′, ξ″) it gives q′ and q″ (eq. 28). Throws as
+//! (doc/retiming.md eq. 27)). Per unit of path instead of time (ξ′, ξ″) it gives q′ and q″ (eq. 28). Throws as
 //! joint_velocity.
 void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
                  double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd);

@@ -28,7 +28,7 @@ OverlappedJointTrajectory::OverlappedJointTrajectory(JointTrajectory before, Joi
 }
 
 JointTrajectorySample OverlappedJointTrajectory::sample(double t) const noexcept {
-  // eq. 16
+  // doc/ptp.md eq. 16
   return detail::overlapped_joint_sample(
       t, overlap_, before_.duration(), before_.length(), after_.duration(), duration(), via_, after_.chain(),
       [this](double u) { return before_.sample(u); }, [this](double u) { return after_.sample(u); });

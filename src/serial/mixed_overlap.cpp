@@ -44,7 +44,7 @@ void OverlappedMixedTrajectory::check(double overlap) const {
 }
 
 JointTrajectorySample OverlappedMixedTrajectory::sample(double t) const noexcept {
-  // eq. 21
+  // doc/ptp.md eq. 21
   return detail::overlapped_joint_sample(
       t, overlap_, before_duration(), before_length(), after_duration(), duration(), via_, ptp_.chain(),
       [this](double u) { return before_at(u); }, [this](double u) { return after_at(u); });

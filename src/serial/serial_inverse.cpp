@@ -17,7 +17,7 @@
 
 #include "angles.hpp"
 #include "dispkin/error.hpp"
-#include "dispkin/input_limits.hpp"
+#include "dispkin/input_budget.hpp"
 #include "dispkin/serial/serial_arm.hpp"
 #include "ik_newton.hpp"
 #include "serial_arm_model.hpp"
@@ -307,11 +307,11 @@ void keep_solutions(const SerialArm& arm, const std::vector<Eigen::VectorXd>& ra
 void add_copies(const SerialArm& arm, const Representatives& kept, const JointLimits& limits, const Posed& pose,
                 InverseResult& result) {
   const double count = copy_count(kept.q, kept.inside, limits);
-  if (count > static_cast<double>(input_limits::max_ik_solutions)) {
+  if (count > static_cast<double>(input_budget::max_ik_solutions)) {
     std::ostringstream why;
     why << "asks for the 2π copies of the " << kept.q.size() << " solutions inside the joint limits, "
-        << count << " in all, more than " << input_limits::max_ik_solutions
-        << " (doc/resource-limits.md); leave it false for the distinct solutions, or narrow the limits";
+        << count << " in all, more than " << input_budget::max_ik_solutions
+        << " (doc/input-budget.md); leave it false for the distinct solutions, or narrow the limits";
     throw std::invalid_argument(describe("offer_equivalents", std::string("true"), why.str()));
   }
   for (std::size_t r = 0; r < kept.q.size(); ++r) {

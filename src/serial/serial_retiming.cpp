@@ -26,7 +26,7 @@ namespace {
 
 // Adds a sample (q, q̇, q̈ and the torques) to the report: its position excess and its share of
 // FVEL and FACC (doc/retiming.md (eq. 4) and (eq. 5)). Throws std::runtime_error where the static
-// torque alone reaches an effort limit (eq. 6).
+// torque alone reaches an effort limit (doc/retiming.md eq. 6).
 void add_sample(JointLimitReport& report, JointSample sample, const SerialArm& arm, const JointLimits& limits,
                 double s) {
   const std::size_t index = report.samples.size();
@@ -77,7 +77,7 @@ std::pair<std::size_t, int> phase_at(const TimeLaw& law, double t) noexcept {
 // Whether the tool's acceleration is continuous on [t0, t1]: one phase of one law (the
 // acceleration of a trapezoid steps between phases) and one section of the path (the pose's
 // second derivative steps at a junction). Only there is q̈ taken in closed form (doc/retiming.md
-// (eq. 27)); across a step the central difference of (eq. 2) stays, as the check has always
+// (doc/retiming.md eq. 27)); across a step the central difference of (eq. 2) stays, as the check has always
 // measured it.
 bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1) noexcept {
   const TimeLaw& law = trajectory.time_law();
@@ -118,7 +118,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
     sample.q = branch_solution(arm, here.pose, q_prev, t, here.s, previous ? &guess : nullptr);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
-      // q̇ and q̈ from one factorisation of J_b (eq. 27), τ and g(q) on the pass that gave J_b.
+      // q̇ and q̈ from one factorisation of J_b (doc/retiming.md eq. 27), τ and g(q) on the pass that gave J_b.
       Eigen::VectorXd torque;
       detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s, sample.qd,
                                       sample.qdd, torque, sample.static_torque);
@@ -139,7 +139,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
       } else {
         sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
       }
-      // τ and g(q) in one pass (eq. 3).
+      // τ and g(q) in one pass (doc/retiming.md eq. 3).
       Eigen::VectorXd torque;
       arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
       sample.dynamic_torque = torque - sample.static_torque;
@@ -216,10 +216,14 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
   return out;
 }
 
-RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
+RetimeResult retime_by_scaling(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const SerialArm& arm, const Eigen::VectorXd& q_start,
-                               const JointCheckOptions& options, int max_iterations) {
+                               const JointCheckOptions& options, int max_iterations, double corner_tolerance) {
   require(max_iterations >= 1, "max_iterations", static_cast<long>(max_iterations), "must be ≥ 1");
+  PlanOptions continuous;
+  continuous.corner_tolerance = corner_tolerance;
+  const std::optional<Path> blended = continuous_path(given_path, continuous);
+  const Path& path = blended ? *blended : given_path;
   Limits scaled = limits;
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     Trajectory trajectory = plan(path, set, scaled, profile);
@@ -274,7 +278,7 @@ class SerialModel final : public JointModel {
   void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
                            Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const override {
     // g = τ(q, 0, 0), M q′ = τ(q, 0, q′) − g, M q″ + C(q, q′) q′ = τ(q, q′, q″) − g (doc/retiming.md
-    // (eq. 12)); g comes with the last of them, from the same pass.
+    // (doc/retiming.md eq. 12)); g comes with the last of them, from the same pass.
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
     arm_.torques(q, q1, q2, torque_x, gravity);
     torque_u = arm_.torques(q, zero, q1) - gravity;

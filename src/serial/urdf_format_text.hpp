@@ -1,5 +1,5 @@
 // The decoded text of a URDF, checked for what urdfdom would hand to printf as a format
-// (urdf_format_text.cpp, doc/resource-limits.md).
+// (urdf_format_text.cpp, doc/input-budget.md).
 #pragma once
 
 class TiXmlDocument;

@@ -25,7 +25,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "dispkin/error.hpp"
-#include "dispkin/input_limits.hpp"
+#include "dispkin/input_budget.hpp"
 #include "serial_arm_model.hpp"
 #include "urdf_format_text.hpp"
 #include "urdf_joint_graph.hpp"
@@ -216,8 +216,8 @@ SerialArm SerialArm::from_urdf_file(const std::string& path, const std::string& 
   if (!in) throw std::invalid_argument(describe("path", path, "cannot be opened"));
   // Read in blocks up to the limit: a larger file is refused without being read to its end.
   std::string text;
-  require(input_limits::read_at_most(in, input_limits::max_urdf_bytes, text), "path", path,
-          "is larger than " + std::to_string(input_limits::max_urdf_bytes) + " bytes, the limit of a URDF (doc/resource-limits.md)");
+  require(input_budget::read_at_most(in, input_budget::max_urdf_bytes, text), "path", path,
+          "is larger than " + std::to_string(input_budget::max_urdf_bytes) + " bytes, the limit of a URDF (doc/input-budget.md)");
   try {
     return from_urdf_string(text, base_link, tip_link);
   } catch (const std::invalid_argument& e) {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "dispkin/error.hpp"
-#include "dispkin/input_limits.hpp"
+#include "dispkin/input_budget.hpp"
 
 namespace dispkin {
 namespace serial {
@@ -78,20 +78,20 @@ class Scanner {
         if (i_ < xml_.size()) step();
         continue;
       }
-      if (c == '=' && ++attributes > input_limits::max_xml_attributes) {
+      if (c == '=' && ++attributes > input_budget::max_xml_attributes) {
         throw std::invalid_argument(describe("URDF element at", where(line, column),
-                                             "has more than " + std::to_string(input_limits::max_xml_attributes) +
-                                                 " attributes (doc/resource-limits.md)"));
+                                             "has more than " + std::to_string(input_budget::max_xml_attributes) +
+                                                 " attributes (doc/input-budget.md)"));
       }
       closed_here = c == '/';
       step();
     }
     if (i_ < xml_.size()) step();  // '>'
     if (closed_here) return;
-    if (++depth_ > input_limits::max_nesting_depth) {
+    if (++depth_ > input_budget::max_nesting_depth) {
       throw std::invalid_argument(describe("URDF element at", where(line, column),
-                                           "nests deeper than " + std::to_string(input_limits::max_nesting_depth) +
-                                               " elements (doc/resource-limits.md)"));
+                                           "nests deeper than " + std::to_string(input_budget::max_nesting_depth) +
+                                               " elements (doc/input-budget.md)"));
     }
   }
 
@@ -105,8 +105,8 @@ class Scanner {
 }  // namespace
 
 void require_bounded_xml(const std::string& xml) {
-  require(xml.size() <= input_limits::max_urdf_bytes, "URDF size", static_cast<unsigned long>(xml.size()),
-          "more than " + std::to_string(input_limits::max_urdf_bytes) + " bytes, the limit of a URDF (doc/resource-limits.md)");
+  require(xml.size() <= input_budget::max_urdf_bytes, "URDF size", static_cast<unsigned long>(xml.size()),
+          "more than " + std::to_string(input_budget::max_urdf_bytes) + " bytes, the limit of a URDF (doc/input-budget.md)");
   Scanner(xml).run();
 }
 

@@ -1,5 +1,5 @@
-// The resource limits of a URDF's XML text, checked before any XML parser reads it
-// (xml_bounds.cpp, doc/resource-limits.md).
+// The input budget of a URDF's XML text, checked before any XML parser reads it
+// (xml_bounds.cpp, doc/input-budget.md).
 #pragma once
 
 #include <string>
@@ -8,8 +8,8 @@ namespace dispkin {
 namespace serial {
 
 // Throws std::invalid_argument naming the line and column when the text is larger than
-// input_limits::max_urdf_bytes, nests elements deeper than input_limits::max_nesting_depth or
-// gives one element more than input_limits::max_xml_attributes attributes. Malformed XML
+// input_budget::max_urdf_bytes, nests elements deeper than input_budget::max_nesting_depth or
+// gives one element more than input_budget::max_xml_attributes attributes. Malformed XML
 // otherwise passes: the parsers report it.
 void require_bounded_xml(const std::string& xml);
 

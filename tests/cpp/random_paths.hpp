@@ -1,4 +1,4 @@
-// Random paths and metric sets for the guarantee oracle (doc/planning.md eq. 18), shared by the
+// Random paths and metric sets for the guarantee oracle (doc/planning.md eq. 25), shared by the
 // planner tests and the sweeps, and the oracle itself: point speeds by finite differences of
 // the planned motion.
 #pragma once

@@ -1,7 +1,7 @@
 // Continuous motion at full speed (doc/planning.md §9–§11): corners blended within a
 // tolerance, LIN sections cut so that a cruise runs at the limit, per-move limits and the
 // rotational limit — each checked against the guarantee's oracle (finite differences of the
-// planned motion, doc/planning.md eq. 18).
+// planned motion, doc/planning.md eq. 25).
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -474,6 +474,35 @@ TEST(HexapodJointMetric, CircIsOnePieceAndKeepsTheLegs) {
   std::printf("CIRC of %zu sections: rule (b) %.3f s, rule (a) %.3f s\n", arc.size(), trajectory.duration(), rule_a.duration());
 }
 
+// PlanOptions::joint_metric is evaluated on the path as planned: with corners blended it plans
+// exactly what the joint metric of the blended path does, and the corners left keep the blend's
+// reason for stopping.
+TEST(HexapodJointMetric, OptionsEvaluateItOnTheBlendedPath) {
+  const Hexapod h = test_hexapod();
+  const auto shifted = [&](double x, double y) {
+    return h.home() * Posed::exp(Twistd(Eigen::Vector3d(x, y, 0.0), Eigen::Vector3d::Zero()));
+  };
+  // A right-angle corner (blended) and a reversal (not blendable).
+  Path path = Path::lin(shifted(0.0, 0.0), shifted(0.02, 0.0));
+  path.then(Path::lin(shifted(0.02, 0.0), shifted(0.02, 0.02))).then(Path::lin(shifted(0.02, 0.02), shifted(0.02, 0.0)));
+  const Limits limits{0.1, 1.0, 20.0};
+  PlanOptions options;
+  options.corner_tolerance = 0.005;
+  options.joint_metric = h.joint_metric();
+  const Trajectory planned = plan(path, tool_points(), limits, ProfileKind::scurve, options);
+  const Path blended = path.blended(options.corner_tolerance);
+  const Trajectory reference = plan(blended, tool_points(), limits, ProfileKind::scurve, h.joint_metric(blended, limits));
+  EXPECT_EQ(planned.duration(), reference.duration());
+  EXPECT_EQ(planned.section_lengths(), reference.section_lengths());
+  ASSERT_EQ(planned.stops().size(), 1u);
+  EXPECT_NE(planned.stops()[0].reason.find("reverses"), std::string::npos) << planned.stops()[0].reason;
+  // Its lengths and min_section_lengths are one or the other.
+  options.min_section_lengths.assign(path.size(), 0.0);
+  options.corner_tolerance = 0.0;
+  EXPECT_NE(message_of([&] { plan(path, tool_points(), limits, ProfileKind::scurve, options); }).find("with a joint_metric"),
+            std::string::npos);
+}
+
 TEST(HexapodJointMetric, PlannedTrajectoriesKeepEveryLegWithinItsSpeed) {
   const Hexapod h = test_hexapod();
   Random rnd(523);

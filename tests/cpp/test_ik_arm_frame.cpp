@@ -53,7 +53,7 @@ std::vector<Case> ortho_parallel_arms() {
   const Posed base(Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, -2.0, 0.5).normalized())),
                    Eigen::Vector3d(0.3, -1.2, 0.45));
   // A KR6-like table with joint offsets and a lateral (b) offset on joint 2; joint 5's offset is π
-  // (axis 6 against axis 4 at q = 0: an offset that bends the wrist there leaves the flip of eq. 27
+  // (axis 6 against axis 4 at q = 0: an offset that bends the wrist there leaves the flip of doc/inverse-kinematics.md eq. 27
   // and this fast path out).
   const RevoluteChain offsets = testing::chain_from_dh({{0.025, -testing::half_pi, 0.400, 0.3},
                                                         {0.455, 0.0, 0.06, -testing::half_pi + 0.2},
@@ -139,7 +139,7 @@ struct Comparison {
     }
     ++poses;
     expect_same_sets(chain, a, b, what, joints);
-    // Every solution reproduces the pose to ik_pose_tolerance; one kept as exact (error 0, eq. 26),
+    // Every solution reproduces the pose to ik_pose_tolerance; one kept as exact (error 0, doc/inverse-kinematics.md eq. 26),
     // which includes every one of the fast path, to 1e-12.
     for (int i = 0; i < a.count; ++i) {
       const detail::PoseError e = detail::pose_error(serial::forward(chain, Eigen::VectorXd(a[i])), pose);
@@ -215,7 +215,7 @@ TEST(IkArmFrame, ShoulderAndElbowSingularitiesAgree) {
         c.check(moved, arm.name + " shoulder, rho = " + std::to_string(rho), rho > 0.0);
       }
     }
-    // Stretched and folded elbows: q₃ where L₂ ∥ R(σ₃q₃) L₃ (eq. 31), then nudged.
+    // Stretched and folded elbows: q₃ where L₂ ∥ R(σ₃q₃) L₃ (doc/inverse-kinematics.md eq. 31), then nudged.
     const detail::PlaneElbow& e = spherical ? c.fast.ortho.elbow : c.fast.plane.elbow;
     const double aligned = std::atan2(e.upper.eta, e.upper.xi) - std::atan2(e.fore.eta, e.fore.xi);
     for (double fold : {0.0, testing::pi})

@@ -1,5 +1,5 @@
 // The speed range of a part of a decoupled LIN (src/planning/lin_speed_range.hpp, doc/planning.md
-// eqs. 34–38) against the motion itself: its largest speed equals the section length of the part
+// doc/planning.md eqs. 27–31) against the motion itself: its largest speed equals the section length of the part
 // (the exact kernel of doc/section-length.md), no densely sampled speed of the set lies above it
 // or below its lower bound, and for a set whose fastest object does not change the lower bound is
 // the sampled minimum.
@@ -59,7 +59,7 @@ TEST(LinSpeedRange, PeakIsThePartsLengthAndBoundsHoldDensely) {
   }
 }
 
-// One object: the lower bound is its exact minimum (eq. 35 for a point, 36 for a body sphere,
+// One object: the lower bound is its exact minimum (doc/planning.md eq. 28 for a point, 36 for a body sphere,
 // 37 and 38 for absolute ones) — the cut then stops where the speed itself stops varying.
 TEST(LinSpeedRange, LowerBoundIsExactForOneObject) {
   Random rnd(3402);
@@ -99,7 +99,7 @@ TEST(LinSpeedRange, CutFollowsTheSpeedNotItsBound) {
   const Trajectory traj = plan(Path::lin(Posed(), end), set, Limits{0.1, 0.5, 5.0});
   const std::size_t pieces = traj.path().section_count();
   EXPECT_GE(pieces, 7u);   // (max − min)/max of the whole LIN / 0.4 %, at least
-  EXPECT_LE(pieces, 29u);  // half of the 59 the bound of the speed's rate (doc/planning.md eq. 19) asked for
+  EXPECT_LE(pieces, 29u);  // half of the 59 the bound of the speed's rate (doc/planning.md eq. 26) asked for
   const LinSection lin{Posed(), end, Interpolation::decoupled, V::Zero()};
   for (std::size_t k = 0; k < pieces; ++k) {
     const SectionSource& source = traj.section_sources()[k];

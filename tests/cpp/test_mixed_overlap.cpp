@@ -1,6 +1,6 @@
 // A Cartesian move as joint motion on the arm's IK branch (followed_trajectory.hpp, doc/ptp.md
-// eqs. 17–20) and the overlapped velocity method for a PTP move and a Cartesian move
-// (mixed_overlap.hpp, eq. 21): poses reproduced, the article's joint formula, continuity at the
+// doc/ptp.md eqs. 17–20) and the overlapped velocity method for a PTP move and a Cartesian move
+// (mixed_overlap.hpp, doc/ptp.md eq. 21): poses reproduced, the article's joint formula, continuity at the
 // overlap's ends, the exact end, the peak speed reported, bad input.
 #include <algorithm>
 #include <cmath>
@@ -105,7 +105,7 @@ TEST(FollowedTrajectory, ReproducesTheCartesianPosesByForwardKinematics) {
                                              (fk.translation() - want.pose.translation()).cwiseAbs().maxCoeff());
           ASSERT_LE(pose_error, 1e-9) << "t = " << t;
           worst_pose = std::max(worst_pose, pose_error);
-          // q̇ is the trajectory's twist through the body Jacobian (eq. 19).
+          // q̇ is the trajectory's twist through the body Jacobian (doc/ptp.md eq. 19).
           const double rate_error = (s.body_twist.vector() - want.body_twist.vector()).cwiseAbs().maxCoeff();
           ASSERT_LE(rate_error, 1e-7) << "t = " << t;
           worst_rate = std::max(worst_rate, rate_error);

@@ -1,7 +1,7 @@
 // MotionStream (doc/events.md §5): moves appended while the motion runs never change what was
 // sampled before a request; fed in time the motion never stops between moves, fed late it stops
 // at the last pose and starts again without a jump; stops, resumptions and overrides inside a
-// stream; the point-set limit held throughout (oracle of doc/planning.md eq. 18).
+// stream; the point-set limit held throughout (oracle of doc/planning.md eq. 25).
 #include <algorithm>
 #include <cmath>
 #include <limits>

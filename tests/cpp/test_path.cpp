@@ -131,7 +131,7 @@ TEST(Path, CircSectionsJoinWithContinuousVelocity) {
 
 // The arc bound: never below the sampled speed, above it by at most (2 + θ) δ — the reference
 // section may itself be δ faster than the arc, and the bound adds (1 + θ) δ (doc/section-length.md
-// eq. 14, which keeps the guarantee of doc/planning.md eq. 5 for arcs: conservative, tight as
+// doc/section-length.md eq. 14, which keeps the guarantee of doc/planning.md eq. 5 for arcs: conservative, tight as
 // sections shrink).
 TEST(Path, ArcSectionLengthBoundsTheSampledMotion) {
   Random rnd(105);

@@ -1,4 +1,4 @@
-// The planner and the guarantee (doc/planning.md eq. 5) with its oracle (eq. 18): along any planned
+// The planner and the guarantee (doc/planning.md eq. 5) with its oracle (eq. 25): along any planned
 // trajectory, sampled densely by finite differences, no point or sphere of the set moves faster
 // than its limit.
 #include <algorithm>

@@ -1,5 +1,5 @@
 // PTP moves under the DISP limit (ptp.hpp): the section bound against dense sampling, the guarantee
-// (doc/planning.md eqs. 5, 18) by finite differences of every point and sphere over random moves
+// (doc/planning.md eqs. 5, 25) by finite differences of every point and sphere over random moves
 // and sets on two arms, tightness, joint limits, exact ends, bad input.
 #include <cmath>
 #include <limits>
@@ -124,7 +124,7 @@ TEST(Ptp, AccelerationBoundHoldsForEveryPoint) {
   }
 }
 
-// The guarantee's oracle (doc/planning.md eq. 18) by dense finite differences (10⁴ chords per
+// The guarantee's oracle (doc/planning.md eq. 25) by dense finite differences (10⁴ chords per
 // trajectory) over random PTP moves and random sets (relative and absolute points and spheres,
 // groups with their own limits), both profiles, on the UR5e and the KR6-like arm: 2 × 500 cases.
 class PtpGuarantee : public ::testing::TestWithParam<int> {};

@@ -44,7 +44,7 @@ TEST(Retiming, JointVelocitiesAreTheDerivativeOfTheJointPath) {
 }
 
 // Its joint accelerations (in closed form away from the steps of the time law, doc/retiming.md
-// (eq. 27), by differences at them) are the derivatives of its joint velocities.
+// (doc/retiming.md eq. 27), by differences at them) are the derivatives of its joint velocities.
 TEST(Retiming, JointAccelerationsAreTheDerivativeOfTheJointVelocities) {
   const serial::SerialArm arm = ur5e();
   const Move m = lin_move(arm);

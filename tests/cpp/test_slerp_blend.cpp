@@ -1,6 +1,6 @@
 // Nested-SLERP blends at via points (the Mamezou trajectory article's "Fitting Posture",
 // doc/planning.md §6.1): the article's formula, the joins, the exact derivatives and the rigorous
-// bounds of eqs. 29–33, the planner's guarantee along blended chains, bad input.
+// bounds of doc/planning.md eqs. 19–23, the planner's guarantee along blended chains, bad input.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -74,7 +74,7 @@ TEST(SlerpBlend, ReproducesTheArticlesNestedSlerpAndTheQuadraticBezier) {
   std::printf("nested SLERP vs the article's formula: %.3g rad, pivot %.3g m\n", worst_q, worst_c);
 }
 
-// Both joins keep the twist's direction (eq. 28): no kink anywhere along the path, and the
+// Both joins keep the twist's direction (doc/planning.md eq. 18): no kink anywhere along the path, and the
 // planner runs from start to end without a stop.
 TEST(SlerpBlend, JoinsKeepTheTwistDirectionAndThePlannerDoesNotStop) {
   Random rnd(4102);
@@ -169,7 +169,7 @@ TEST(SlerpBlend, NoRotationGivesZeroAngularVelocity) {
   }
 }
 
-// The motion bounds (eqs. 31–33) against dense samples of the exact motion on random curves and
+// The motion bounds (doc/planning.md eqs. 21–23) against dense samples of the exact motion on random curves and
 // parts: never below, and within a stated factor.
 TEST(SlerpBlend, MotionBoundsAreRigorousAndTight) {
   Random rnd(4105);

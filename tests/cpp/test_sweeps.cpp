@@ -1,4 +1,4 @@
-// Large random sweeps: the guarantee (doc/planning.md eq. 5; oracle eq. 18) per path family,
+// Large random sweeps: the guarantee (doc/planning.md eq. 5; oracle eq. 25) per path family,
 // profile invariants per law, hexapod IK → FK round trips. The count per family comes from
 // DISPKIN_SWEEP_COUNT (CMake cache variable of the same name: 10⁵ in `make test`, 10⁷ in
 // `make sweep`); the analytic-IK round trips run as the `sweep_analytic_ik_round_trips` test

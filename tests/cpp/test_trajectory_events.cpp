@@ -1,6 +1,6 @@
 // Events on planned trajectories (doc/events.md): a stop on the path, a resumption and a speed
 // override keep the motion before them bit for bit, hold every limit after them (the point-set
-// limit by the oracle of doc/planning.md eq. 18), keep the pose continuous and end at rest.
+// limit by the oracle of doc/planning.md eq. 25), keep the pose continuous and end at rest.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -448,9 +448,9 @@ row("Hexapod.leg_section_lengths", "zero tolerance", lambda: HJ.leg_section_leng
 row("Hexapod.leg_rate_bounds", "NaN tolerance", lambda: HJ.leg_rate_bounds(HEX_LINE, NAN), V, "tolerance = nan")
 row("Hexapod.leg_rate_bounds", "tolerance above 1", lambda: HJ.leg_rate_bounds(HEX_LINE, 2.0), V, "tolerance = 2")
 row("plan", "joint_metric without the method", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=42), V, "joint_metric = \"42\": must have a method leg_section_lengths")
-row("plan", "joint_metric wrong count", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([0.1, 0.2])), V, "min_section_lengths size = 2: must be 0 or the path's section count 1")
-row("plan", "joint_metric negative length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([-0.5])), V, "min_section_lengths[0] = -0.5")
-row("plan", "joint_metric NaN length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([NAN])), V, "min_section_lengths[0] = nan")
+row("plan", "joint_metric wrong count", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([0.1, 0.2])), V, "joint_metric(path, limits) size = 2: must be 0 or the path's section count 1")
+row("plan", "joint_metric negative length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([-0.5])), V, "joint_metric(path, limits)[0] = -0.5")
+row("plan", "joint_metric NaN length", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([NAN])), V, "joint_metric(path, limits)[0] = nan")
 row("plan", "joint_metric wrong shape (1, 1)", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths([[0.1]])), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,), got shape (1, 1)")
 row("plan", "joint_metric not numbers", lambda: dispkin.plan(HEX_LINE, good_set(), LIMITS, joint_metric=_LegLengths("long")), V, "joint_metric.leg_section_lengths(path, velocity): expected an array of shape (1,)")
 
@@ -682,7 +682,7 @@ row("cli.main", "check of malformed YAML", lambda: run_cli("check", pathlib.Path
 row("cli.main", "plan of a job with a NaN limit", lambda: run_cli("plan", pathlib.Path(job_file("nan_plan.yaml", data=[("jerk: 5.0", "jerk: .nan")])).name, "-o", "out"),
     ExitStatus, "exit status 1: dispkin plan: nan_plan.yaml:8:44: limits.jerk: nan: must be finite")
 
-# --- hostile inputs (doc/resource-limits.md) -----------------------------------------------
+# --- hostile inputs (doc/input-budget.md) -----------------------------------------------
 PLANAR_URDF = (URDF / "arm_planar_two_link.urdf").read_text()
 
 
@@ -911,7 +911,7 @@ def trajectory_state(change):
 
 def faster_law(s, factor=1000.0):
     """Every law of a Trajectory state run `factor` times faster (v × f, a × f², j × f³)."""
-    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)
+    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)  # noqa: E731
     runs, pieces = s[2]
     s[2] = (runs, tuple(((k, tuple((d / factor, j * factor ** 3, scale(a), scale(b)) for d, j, a, b in ph),
                            tuple(t / factor for t in ts), S, peak * factor, scale(x0), scale(x1)), s0)
@@ -1101,7 +1101,7 @@ def markdown():
         "non-zero exit status and its stderr (without the usage lines) are the `ExitStatus` message.",
         "Rows **accepted by design** give no error on purpose (the reason is given) and assert the",
         "documented result instead. The sections after the first hold hostile inputs: nesting, sizes",
-        "and counts, wide joint limits, impossible numbers (doc/resource-limits.md).",
+        "and counts, wide joint limits, impossible numbers (doc/input-budget.md).",
     ]
     header = ["", "| # | Entry point | Bad input | Expected error | Message fragment | Status |", "|---|---|---|---|---|---|"]
     current = object()

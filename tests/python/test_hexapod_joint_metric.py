@@ -98,9 +98,9 @@ def test_bad_joint_metrics_are_refused():
 
     with pytest.raises(ValueError, match="joint_metric = .*must have a method leg_section_lengths"):
         dispkin.plan(path, tool_points(), LIMITS, joint_metric=42)
-    with pytest.raises(ValueError, match=r"min_section_lengths size = 2"):
+    with pytest.raises(ValueError, match=r"joint_metric\(path, limits\) size = 2"):
         dispkin.plan(path, tool_points(), LIMITS, joint_metric=Wrong([0.1, 0.2]))
-    with pytest.raises(ValueError, match=r"min_section_lengths\[0\] = -1"):
+    with pytest.raises(ValueError, match=r"joint_metric\(path, limits\)\[0\] = -1"):
         dispkin.plan(path, tool_points(), LIMITS, joint_metric=Wrong([-1.0]))
     with pytest.raises(ValueError, match=r"expected an array of shape \(1,\), got shape \(1, 1\)"):
         dispkin.plan(path, tool_points(), LIMITS, joint_metric=Wrong([[0.1]]))
@@ -120,3 +120,38 @@ def test_circ_runs_through_without_stopping():
     assert traj.piece_count == 1
     assert np.all(traj.section_lengths() >= h.leg_section_lengths(arc, LIMITS.velocity))
     assert h.check(traj, dt=traj.duration / 20000).ok
+
+
+def test_with_blended_corners_the_joint_metric_is_that_of_the_blended_path():
+    # A right-angle corner (blended) and a reversal (not blendable): plan blends, then measures the
+    # legs along the blended path; the corner left stops for the blend's reason.
+    h = desktop()
+    shifted = lambda x, y: h.home * dispkin.Pose.exp([x, y, 0.0, 0.0, 0.0, 0.0])  # noqa: E731
+    path = dispkin.Path.lin(shifted(0.0, 0.0), shifted(0.02, 0.0))
+    path.then(dispkin.Path.lin(shifted(0.02, 0.0), shifted(0.02, 0.02)))
+    path.then(dispkin.Path.lin(shifted(0.02, 0.02), shifted(0.02, 0.0)))
+    traj = dispkin.plan(path, tool_points(), LIMITS, joint_metric=h, corner_tolerance=0.005)
+    blended, _ = path.blended(0.005)
+    reference = dispkin.plan(blended, tool_points(), LIMITS, joint_metric=h)
+    assert traj.duration == reference.duration
+    assert np.array_equal(traj.section_lengths(), reference.section_lengths())
+    assert len(traj.stops) == 1
+    assert "reverses" in traj.stops[0][1]
+    assert h.check(traj, dt=traj.duration / 20000).ok
+
+
+def test_retime_blends_the_corners_as_plan_does():
+    # retime(..., corner_tolerance=d) re-times the path plan() would run along: the blended one.
+    h = desktop()
+    shifted = lambda x, y: h.home * dispkin.Pose.exp([x, y, 0.0, 0.0, 0.0, 0.0])  # noqa: E731
+    path = dispkin.Path.lin(shifted(0.0, 0.0), shifted(0.02, 0.0))
+    path.then(dispkin.Path.lin(shifted(0.02, 0.0), shifted(0.02, 0.02)))
+    limits = dispkin.Limits(0.1, 1.0)
+    blended, _ = path.blended(0.005)
+    once = dispkin.retime(path, tool_points(), limits, h, corner_tolerance=0.005, grid_intervals=20)
+    reference = dispkin.retime(blended, tool_points(), limits, h, grid_intervals=20)
+    assert once.trajectory.duration == reference.trajectory.duration
+    assert once.trajectory.piece_count == 1
+    assert np.array_equal(once.trajectory.section_lengths(), reference.trajectory.section_lengths())
+    with pytest.raises(ValueError, match="corner_tolerance = -1"):
+        dispkin.retime(path, tool_points(), limits, h, corner_tolerance=-1.0)

@@ -1,4 +1,4 @@
-"""Hostile inputs and resource limits (doc/resource-limits.md): deep nesting, bombs, huge and
+"""Hostile inputs and the input budget (doc/input-budget.md): deep nesting, bombs, huge and
 absurd numbers, wide joint limits, long chains. Each case either gives dispkin's own error
 (naming the argument, its value or the file's line) or the right answer; never a crash, a hang,
 an unbounded allocation or a silently changed model.

@@ -15,7 +15,7 @@ import pytest
 import dispkin
 from dispkin import cli, jobs
 from dispkin.commands import EXIT_LIMITS_BROKEN
-from dispkin.job import limits as resource_limits
+from dispkin.job import input_budget
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "jobs" / "ur5e_lin_move_events.yaml"
@@ -276,8 +276,8 @@ BAD_EVENTS = {
     "no time": (["  - {stop: true}"], "events[0]", 10, "missing required key `at`"),
     "not a list": ([" {at: 1, stop: true}"], "events", 9, "is not of type 'array'"),
     "an empty list": ([" []"], "events", 9, "expected at least 1 item(s), got 0"),
-    "more events than the limit": ([f"  - {{at: {k}, override: 0.5}}" for k in range(resource_limits.MAX_EVENTS + 1)], "events", 9,
-                                   f"{resource_limits.MAX_EVENTS + 1} events, more than {resource_limits.MAX_EVENTS}"),
+    "more events than the limit": ([f"  - {{at: {k}, override: 0.5}}" for k in range(input_budget.MAX_EVENTS + 1)], "events", 9,
+                                   f"{input_budget.MAX_EVENTS + 1} events, more than {input_budget.MAX_EVENTS}"),
 }
 
 

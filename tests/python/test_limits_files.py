@@ -140,7 +140,7 @@ def test_bad_pilz_files_name_the_key(tmp_path, text, message):
     assert message in str(error.value)
 
 
-# --- read under the resource limits of job files --------------------------------------------
+# --- read under the input budget of job files --------------------------------------------
 
 
 def test_errors_name_the_line_and_column_of_the_key(tmp_path):

@@ -1,10 +1,9 @@
 """Memory in proportion to the moves: a long blended pose list planned in continuous-path mode
 keeps its trajectory and its pickle within a fixed number of bytes per move, because each corner
 blend is a few sections whose bounds are their exact peaks (doc/section-length.md eqs. 25–29),
-not one section per milliradian of the corner's turn (doc/planning.md §9, eq. 39)."""
+not one section per milliradian of the corner's turn (doc/planning.md §9, eq. 33)."""
 
 import os
-import pickle
 import subprocess
 import sys
 import textwrap
@@ -64,7 +63,7 @@ def test_a_long_blended_pose_list_keeps_memory_and_pickle_per_move_bounded():
     # A move is a LIN and a blend of one section or a few (the two 90° step-overs of a pass, 100
     # moves, take about 150 each): 4.4 sections, 3.2 kB resident and 1.5 kB pickled per move.
     # When each blend was cut per milliradian of its turn it was 27 sections, 14 kB resident and
-    # 9.6 kB pickled per move (benchmarks/RESULTS.md, "Long blended pose lists").
+    # 9.6 kB pickled per move (benchmarks/history/2026-12-04-long-blended-pose-lists-sections-in-proportion.md).
     assert m["sections"] <= 6 * MOVES, m
     if not SANITIZED:
         assert m["resident"] <= 5000 * MOVES, m

@@ -10,7 +10,7 @@ import dispkin
 
 pytestmark = pytest.mark.skipif(not hasattr(dispkin, "SerialArm"), reason="built without the serial-arm plugin")
 toppra = pytest.importorskip("toppra")
-import toppra.algorithm  # noqa: E402
+import toppra.algorithm  # noqa: E402, F811
 import toppra.constraint  # noqa: E402
 
 URDF = pathlib.Path(__file__).resolve().parents[1] / "data" / "urdf" / "arm_ur5e_dh.urdf"

@@ -205,7 +205,7 @@ def scaled_profile(state, factor, peak=True):
     """A Profile state run `factor` times faster (velocities × f, accelerations × f², jerks × f³);
     the peak velocity too only if `peak`."""
     kind, phases, times, distance, peak_velocity, start, end = state
-    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)
+    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)  # noqa: E731
     phases = tuple((d / factor, j * factor ** 3, scale(a), scale(b)) for d, j, a, b in phases)
     return (kind, phases, tuple(t / factor for t in times), distance, peak_velocity * (factor if peak else 1.0),
             scale(start), scale(end))
@@ -239,7 +239,7 @@ def test_a_trajectory_must_keep_its_own_limits_and_join_up():
     # An 8.6 m jump: the last section moved away along x.
     last = list(s[0][-1])
     assert last[0] == "lin"
-    moved = lambda p: p[:4] + (p[4] + 8.6,) + p[5:]
+    moved = lambda p: p[:4] + (p[4] + 8.6,) + p[5:]  # noqa: E731
     jumped = s[0][:-1] + (tuple([last[0], moved(last[1]), moved(last[2])] + last[3:]),)
     assert_refused(dispkin.Trajectory, (jumped,) + s[1:], ValueError, f"sections[{len(jumped) - 1}].start = (", "gap 8.6")
     assert_refused(dispkin.Trajectory, (s[0], tuple(2 * L for L in s[1])) + s[2:], ValueError,
@@ -326,7 +326,7 @@ def test_machine_results_must_be_consistent():
     w = named("WorkspaceCheck").__getstate__()
     lengths = tuple(w[0].tolist())
     assert_refused(dispkin.WorkspaceCheck, ((lengths[0] + 1.0,) + lengths[1:], w[1]), ValueError,
-                   f"violations[0].length = ", "must be the length of leg")
+                   "violations[0].length = ", "must be the length of leg")
     e = named("LegExcursion").__getstate__()
     assert_refused(dispkin.LegExcursion, replaced(e, (0,), "width"), ValueError, "state[0] (kind) = 'width': must be 'length' or 'speed'")
     assert_refused(dispkin.LegExcursion, replaced(e, (4,), e[3] + 1.0), ValueError, "must have start_time <= worst_time <= end_time")

@@ -20,8 +20,8 @@ import pytest
 
 ruckig = pytest.importorskip("ruckig")
 
-import dispkin
-from _helpers import COUNT, rng_for
+import dispkin  # noqa: E402
+from _helpers import COUNT, rng_for  # noqa: E402
 
 REL = 1e-9
 INF = float("inf")

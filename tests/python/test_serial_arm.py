@@ -40,7 +40,7 @@ def panda_urdf_without_fingers():
         if joint.get("type") == "prismatic":
             child = joint.find("child").get("link")
             root.remove(joint)
-            root.remove(next(l for l in root.findall("link") if l.get("name") == child))
+            root.remove(next(link for link in root.findall("link") if link.get("name") == child))
     return ET.tostring(root, encoding="unicode")
 
 

@@ -9,7 +9,7 @@ import pytest
 
 import dispkin
 from dispkin import shapes
-from _helpers import COUNT, rng_for, sphere_speed_reference, unit_vectors
+from _helpers import COUNT, rng_for, sphere_speed_reference
 
 
 def icosahedron_faces(v):

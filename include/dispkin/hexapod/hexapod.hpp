@@ -253,6 +253,11 @@ class Hexapod : public Kinematics {
   //! rest wherever the leg demand changes.
   PlanOptions joint_metric(const Path& path, const Limits& limits) const;
 
+  //! Rule (b) as PlanOptions::joint_metric: joint_metric(path, limits).min_section_lengths for the
+  //! path as planned, so that plan() evaluates it after blending corners. Holds a copy of this
+  //! hexapod.
+  JointMetric joint_metric() const;
+
   // Kinematics
   int dof() const override { return 6; }
   Posed forward(const Eigen::VectorXd& q) const override;

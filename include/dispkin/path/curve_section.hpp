@@ -149,7 +149,7 @@ struct CurveSection {
   //! bounds() with how the speed and the acceleration bound vary along the section.
   RefinedBounds refined(const GroupFactors& factors) const;
 
-  //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
+  //! The bounds of the section as one piece (doc/section-length.md eq. 24), with its weighted middle speed.
   SectionBounds piece_bounds(const GroupFactors& factors, double& middle_speed) const;
 
  private:

@@ -180,7 +180,7 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, double r_re
   return rate;
 }
 
-//! A section's bounds from its middle (doc/planning.md eq. 19): every object's speed changes at
+//! A section's bounds from its middle (doc/section-length.md eqs. 23–24): every object's speed changes at
 //! most at the rate of its acceleration bound, so within half a section of the middle it exceeds
 //! its middle speed by at most half that bound. Each group's exact speed at the middle pose and
 //! twist plus half its rate, weighted; the largest rate; the motion's |ω| and |ω̇|.

@@ -259,10 +259,10 @@ struct MoveLimits {
 
 //! How a blend at a via point turns the orientation (Path::then with a blend, doc/planning.md §6).
 enum class OrientationBlend {
-  //! A cubic in the rotation vector whose end angular velocities are the neighbours' (eq. 15);
+  //! A cubic in the rotation vector whose end angular velocities are the neighbours' (doc/planning.md eq. 15);
   //! any neighbouring sections, the pivot on a cubic Hermite curve.
   rotation_vector,
-  //! The Mamezou article's nested SLERP with the corner orientation as control point (eq. 27),
+  //! The Mamezou article's nested SLERP with the corner orientation as control point (doc/planning.md eq. 17),
   //! the pivot on the quadratic Bézier curve with the corner as control point; both neighbours
   //! must be decoupled LIN sections at the sub-points.
   nested_slerp,
@@ -329,7 +329,7 @@ class Path {
   //! "Fitting Posture" instead (doc/planning.md §6.1): the orientation by nested SLERP from the
   //! sub-point's orientation q₁ through the corner's q_m (control point) to q₂, the pivot on
   //! the quadratic Bézier curve with the corner as control point, over one blend parameter; the
-  //! twist at each join is twice the neighbouring LIN's own (eq. 28), so the planner passes both
+  //! twist at each join is twice the neighbouring LIN's own (doc/planning.md eq. 18), so the planner passes both
   //! joins. It needs the sub-points on decoupled LIN sections with one pivot — the last section of
   //! this path and the first of `next` — and throws std::invalid_argument naming
   //! `orientation_blend` or `next` otherwise.
@@ -407,7 +407,7 @@ class Path {
   //! Append the cubic pose curve R₀ exp(φ(v)), c(v), v ∈ [0, 1], cut into equal-v sections so
   //! that within each the speed |ċ| + 0.1 m·|ω| varies by about `tolerance` of its largest
   //! value (doc/section-length.md eq. 29); each section's length is its exact peak to 0.1 % for
-  //! any set (eqs. 25–27), and the planner cuts further where the set's own speed varies.
+  //! any set (doc/section-length.md eqs. 25–27), and the planner cuts further where the set's own speed varies.
   void cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
                  const Eigen::Vector3d& pivot, double tolerance);
   //! Append a nested-SLERP blend (its section over v ∈ [0, 1]) cut into equal-v sections where

@@ -1,15 +1,15 @@
 //! Blend sections whose orientation follows the nested SLERP of the Mamezou trajectory article
 //! (Ishii, "Algorithm 2 for Robot Manipulator Control", section "Fitting Posture"; doc/planning.md
-//! §6.1, eqs. 27–33): with q₁, q_m, q₂ the orientations at the two sub-points and at the corner,
+//! §6.1, doc/planning.md eqs. 17–23): with q₁, q_m, q₂ the orientations at the two sub-points and at the corner,
 //!   q(v) = Slerp(v, Slerp(v, q₁, q_m), Slerp(v, q_m, q₂)),   v ∈ [0, 1],
 //! the quadratic de Casteljau (Bézier) curve on the unit quaternions with control point q_m. The
 //! pivot follows the quadratic Bézier curve c₁ → c_m (control) → c₂ over the same v, so that at
-//! both ends the twist is twice the neighbouring LIN's (eq. 28): one blend zone for both.
+//! both ends the twist is twice the neighbouring LIN's (doc/planning.md eq. 18): one blend zone for both.
 //!
 //! In rotation vectors (body of q₁), a = log(q₁⁻¹ q_m), b = log(q_m⁻¹ q₂):
 //!   q(v) = q₁ exp(v a) exp(u(v)),  u = v c(v),  c(v) = log D(v),  D(v) = exp((1 − v) a) exp(v b)  (27)
-//! whose angular velocity and its rate come in closed form from the right Jacobian (eqs. 29–30),
-//! and whose bounds over a part [v₀, v₁] follow from |c| ≤ (1 − v) |a| + v |b| (eqs. 31–33).
+//! whose angular velocity and its rate come in closed form from the right Jacobian (doc/planning.md eqs. 19–20),
+//! and whose bounds over a part [v₀, v₁] follow from |c| ≤ (1 − v) |a| + v |b| (doc/planning.md eqs. 21–23).
 #pragma once
 
 #include <algorithm>
@@ -55,7 +55,7 @@ inline void jacobian_coefficient_rates(double theta, double& alpha_rate, double&
   beta_rate = (3.0 * s - 2.0 * theta - theta * c) / (t4 * theta);
 }
 
-//! dJ_r(φ)[δ] δ, the rate of J_r(φ(v)) δ along φ′ = δ (doc/planning.md eq. 26; the [δ]ₓ δ terms
+//! dJ_r(φ)[δ] δ, the rate of J_r(φ(v)) δ along φ′ = δ (doc/planning.md eq. 39; the [δ]ₓ δ terms
 //! vanish): −α′ θ′ φ × δ + β′ θ′ φ × (φ × δ) + β δ × (φ × δ), θ θ′ = φ · δ.
 inline Eigen::Vector3d right_jacobian_rate_times(const Eigen::Vector3d& phi, const Eigen::Vector3d& delta) noexcept {
   double alpha_rate = 0.0, beta_rate = 0.0;
@@ -72,8 +72,8 @@ inline double right_jacobian_inverse_norm(double theta) noexcept {
   return 0.5 * theta / std::sin(0.5 * theta);
 }
 
-//! The nested SLERP of eq. 27 relative to q₁: exp(v a) exp(u(v)), its body angular velocity per
-//! unit v (eq. 29) and, if asked, that velocity's rate (eq. 30).
+//! The nested SLERP of doc/planning.md eq. 17 relative to q₁: exp(v a) exp(u(v)), its body angular velocity per
+//! unit v (doc/planning.md eq. 19) and, if asked, that velocity's rate (eq. 20).
 struct NestedSlerp {
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
 
@@ -102,19 +102,19 @@ struct NestedSlerp {
     *omega_rate = a_body.cross(omega_2) + right_jacobian_rate_times(u, u_dot) + right_jacobian_times(u, u_ddot);
   }
 
-  //! Bounds over v ∈ [v0, v1] (0 ≤ v0 ≤ v1 ≤ 1) of |ω| and |ω̇| per unit v (eqs. 31–33).
+  //! Bounds over v ∈ [v0, v1] (0 ≤ v0 ≤ v1 ≤ 1) of |ω| and |ω̇| per unit v (doc/planning.md eqs. 21–23).
   void bounds(double v0, double v1, double& omega_bound, double& omega_rate_bound) const noexcept {
     const double alpha = a.norm(), beta = b.norm(), twist = a.cross(b).norm();
     // |c| ≤ (1 − v) α + v β (the triangle inequality on SO(3)), at most π; largest at an end.
     const double c_max = std::min(pi, std::max((1.0 - v0) * alpha + v0 * beta, (1.0 - v1) * alpha + v1 * beta));
     // ω_D = b − R a, R = exp(−v[b]) turns about b: |a − R a| ≤ v |a × b| and |ω̇_D| = |b × R a| = |a × b|
-    // (eq. 31).
+    // (doc/planning.md eq. 21).
     const double omega_d = std::min(alpha + beta, (b - a).norm() + v1 * twist);
     const double k = right_jacobian_inverse_norm(c_max);
     const double c_dot = k * omega_d;
-    // |dJ_r(φ)[δ] δ| ≤ |φ × δ| |δ| j(θ) (eq. 32), with |c × ċ| ≤ |c| |ċ|.
+    // |dJ_r(φ)[δ] δ| ≤ |φ × δ| |δ| j(θ) (doc/planning.md eq. 22), with |c × ċ| ≤ |c| |ċ|.
     const double c_ddot = k * (twist + c_max * c_dot * c_dot * jacobian_rate_along_bound(c_max));
-    // u = v c: u̇ = c + v ċ, ü = 2ċ + v c̈, u × u̇ = v² c × ċ (eq. 33).
+    // u = v c: u̇ = c + v ċ, ü = 2ċ + v c̈, u × u̇ = v² c × ċ (doc/planning.md eq. 23).
     const double u_dot = c_max + v1 * c_dot, u_ddot = 2.0 * c_dot + v1 * c_ddot;
     const double u_cross = v1 * v1 * c_max * c_dot;
     omega_bound = alpha + u_dot;
@@ -123,7 +123,7 @@ struct NestedSlerp {
 
   //! j(θ) = θ/12 + θ²/60 + 1/6 ≥ |α′(θ)| + θ |β′(θ)| + β(θ) for θ < 3.8 (alternating series whose
   //! first terms bound them: α′ = −θ/12 + …, β′ = −θ/60 + …, β = 1/6 − …), so that
-  //! |dJ_r(φ)[δ] δ| ≤ |φ × δ| |δ| j(θ) (eq. 32).
+  //! |dJ_r(φ)[δ] δ| ≤ |φ × δ| |δ| j(θ) (doc/planning.md eq. 22).
   static double jacobian_rate_along_bound(double theta) noexcept { return theta / 12.0 + theta * theta / 60.0 + 1.0 / 6.0; }
 };
 
@@ -173,7 +173,7 @@ struct SlerpBlendSection {
     twist_out = Twistd(q.conjugate() * (h * position.first(v)) - omega.cross(pivot), omega);
   }
 
-  //! The body twist's rate per unit τ² (doc/planning.md eq. 25): ω_b′ = h² ω′ (eq. 30),
+  //! The body twist's rate per unit τ² (doc/planning.md eq. 38): ω_b′ = h² ω′ (eq. 20),
   //! v_b′ = −ω_b × (Rᵀ h c′) + Rᵀ h² c″ − ω_b′ × p.
   Twistd twist_rate(double tau) const noexcept {
     const double h = span(), v = v0 + tau * h;
@@ -188,7 +188,7 @@ struct SlerpBlendSection {
   }
 
   //! Bounds over the section of |ċ|, |c̈|, |ω| and |ω̇| per unit τ: the pivot's from the
-  //! polynomial (as CurveSection), the orientation's from eqs. 31–33, |ω| also at most its
+  //! polynomial (as CurveSection), the orientation's from doc/planning.md eqs. 21–23, |ω| also at most its
   //! value at the middle plus half a section at the rate bound.
   MotionBounds motion_bounds() const noexcept {
     const double h = span(), m = 0.5 * (v0 + v1);
@@ -204,7 +204,7 @@ struct SlerpBlendSection {
 
   //! An upper bound of the speed of every object of the set per unit τ: each group's exact
   //! speed at the middle plus half the bound of the rate at which it can change (as
-  //! CurveSection::length, doc/planning.md eq. 19).
+  //! CurveSection::length, doc/section-length.md eqs. 23–24).
   double length(const MetricSetd& set, std::optional<double> system_velocity) const {
     set.require_well_formed();
     GroupFactors factors(set, system_velocity);
@@ -237,7 +237,7 @@ struct SlerpBlendSection {
     });
   }
 
-  //! The bounds of the section as one piece (eq. 24), with its weighted middle speed.
+  //! The bounds of the section as one piece (doc/section-length.md eq. 24), with its weighted middle speed.
   SectionBounds piece_bounds(const GroupFactors& factors, double& middle_speed) const {
     const MotionBounds motion = motion_bounds();
     Posed middle;

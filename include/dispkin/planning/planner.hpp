@@ -15,6 +15,7 @@
 //! (doc/planning.md §9); each move runs under its own MoveLimits.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -35,17 +36,21 @@ struct Limits {
   double acceleration = 0.0;   //!< |s̈| ≤ this (m/s²); the curvature rule lowers the speed where the path bends
   std::optional<double> jerk;  //!< |s⃛| ≤ this (m/s³), S-curve only
   //! |ω| ≤ this (rad/s), exactly: one more term θ·v_sys/ω_max of each section's length
-  //! (doc/planning.md eq. 23). With it the metric set need not see every rotation: one
+  //! (doc/planning.md eq. 36). With it the metric set need not see every rotation: one
   //! tool-centre point is enough (the TCP speed and rotation limits of robot controllers).
   std::optional<double> angular_velocity{};
   //! |ω̇| ≤ this (rad/s²) from the path acceleration, and again from the curvature rule on
-  //! curved sections (doc/planning.md eq. 24).
+  //! curved sections (doc/planning.md eq. 37).
   std::optional<double> angular_acceleration{};
 
   //! Throws std::invalid_argument naming the limit; the jerk is required for the S-curve
   //! and refused for the trapezoid (it would be silently ignored).
   void validate(ProfileKind kind) const;
 };
+
+//! A joint-space metric for plan(): the minimum length (m) of each section of `path` for
+//! `limits` (PlanOptions::joint_metric).
+using JointMetric = std::function<std::vector<double>(const Path& path, const Limits& limits)>;
 
 //! Extra constraints for plan() beyond the metric set.
 struct PlanOptions {
@@ -55,11 +60,19 @@ struct PlanOptions {
   //! section only slows it down, so the DISP guarantee of the set still holds.
   std::vector<double> min_section_lengths;
 
+  //! A joint-space metric (the DISP patent JP7742490B2's rule (b)): given the path as planned
+  //! (Path::blended(corner_tolerance) in continuous-path mode, else the path as given) and the
+  //! limits, the minimum length of each of its sections (m), used as min_section_lengths are.
+  //! Empty: none. hexapod::Hexapod::joint_metric() gives a hexapod's leg speeds; any machine
+  //! whose joint speeds bound per section can give one. Not combined with min_section_lengths.
+  JointMetric joint_metric;
+
   //! Continuous-path mode (doc/planning.md §10): 0 (the default) stops at every corner; a
   //! positive distance (m) plans Path::blended(corner_tolerance) instead, so that every corner
   //! the blends can round is passed at speed. Corners left (reversals, turns too sharp for
   //! the tolerance) stop and are listed by Trajectory::stops(). Not combined with
-  //! min_section_lengths (those are per section of the path as given).
+  //! min_section_lengths (those are per section of the path as given); joint_metric is
+  //! evaluated on the blended path.
   double corner_tolerance = 0.0;
   //! How finely the corner blends are cut into sections (Path::blended's `tolerance`, in
   //! (0, 0.1]): coarser plans faster, at a slightly lower speed through the blends.
@@ -74,6 +87,13 @@ struct PlanOptions {
   double start_acceleration = 0.0;
   //!@}
 };
+
+//! The path that plan() runs along under `options` in continuous-path mode (doc/planning.md §10):
+//! Path::blended(options.corner_tolerance, stops, options.blend_tolerance) when the corner
+//! tolerance is positive, empty when the path is planned as given. Re-timing plans the same path
+//! (OptimalRetimeOptions::corner_tolerance). Throws std::invalid_argument for a corner tolerance
+//! that is negative or not finite.
+std::optional<Path> continuous_path(const Path& path, const PlanOptions& options, std::vector<CornerStop>* stops = nullptr);
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
 //! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed (with an

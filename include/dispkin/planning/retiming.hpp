@@ -154,6 +154,10 @@ struct OptimalRetimeOptions {
   //! Re-solves with tightened limits when the dense check finds an overshoot between grid
   //! points (≥ 0); if the last one still overshoots, retime_optimal throws.
   int max_refinements = 6;
+  //! Continuous-path mode as plan()'s (PlanOptions::corner_tolerance, m, ≥ 0): the path re-timed
+  //! is continuous_path(path) with its corners blended, and its rests are kept; 0 re-times the
+  //! path as given.
+  double corner_tolerance = 0.0;
 };
 
 //! What retime_optimal produced.

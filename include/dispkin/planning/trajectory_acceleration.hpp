@@ -1,5 +1,5 @@
 //! The acceleration of a trajectory's tool: the time derivative of its body twist, from the
-//! path's second derivative (doc/planning.md §12, eqs. 25–26). With ξ_τ the body twist per unit τ of section
+//! path's second derivative (doc/planning.md §12, eqs. 38–39). With ξ_τ the body twist per unit τ of section
 //! k, L_k its length and τ = (s − s_k)/L_k, the body twist is ξ = ξ_τ ṡ/L_k, so
 //!   dξ/dt = ξ′_τ (ṡ/L_k)² + ξ_τ s̈/L_k,   ξ′_τ = dξ_τ/dτ.
 //! Allocation-free and noexcept, like sampling; not on the control loop's path (it visits the

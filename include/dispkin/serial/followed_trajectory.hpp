@@ -7,11 +7,11 @@
 //! the path (τ = (s − s_k)/L_k ∈ [0, 1]) on nodes τ_i = i/n_k, with n_k = ⌈L_k / spacing⌉ doubled
 //! until the check below passes, the IK solution on the branch q_i and its rate per τ
 //! q′_i = J_b(q_i)⁻¹ ξ_τ (ξ_τ the section's body twist per unit τ). Between nodes a cubic Hermite
-//! polynomial interpolates q(τ) (eq. 18). The time law s(t) is the trajectory's own, evaluated
+//! polynomial interpolates q(τ) (doc/ptp.md eq. 18). The time law s(t) is the trajectory's own, evaluated
 //! exactly at sample time, so its jerk steps and the velocity steps of ds/dτ at section junctions
 //! never fall inside an interpolation interval:
-//!   q̇ = q′ ṡ / L_k,   q̈ = q″ (ṡ / L_k)² + q′ s̈ / L_k     (eq. 19).
-//! Check (eq. 20): at every interval's middle the interpolant agrees with the branch's IK solution
+//!   q̇ = q′ ṡ / L_k,   q̈ = q″ (ṡ / L_k)² + q′ s̈ / L_k     (doc/ptp.md eq. 19).
+//! Check (doc/ptp.md eq. 20): at every interval's middle the interpolant agrees with the branch's IK solution
 //! to midpoint_tolerance (1e-10 rad); the cubic Hermite error (t−a)²(t−b)² q⁗/24 is largest
 //! there, so this bounds the joint error everywhere to that order, and a branch change or a
 //! near-singular spike — which no grid resolves — is refused.
@@ -73,7 +73,7 @@ class FollowedTrajectory {
   double midpoint_error() const noexcept { return midpoint_error_; }
 
   //! The state at t (clamped to [0, duration]): s, ṡ, s̈ of the trajectory's time law, q, q̇, q̈
-  //! by eqs. 18–19, pose and body twist by forward kinematics of q and q̇, u = s / length. Exactly
+  //! by doc/ptp.md eqs. 18–19, pose and body twist by forward kinematics of q and q̇, u = s / length. Exactly
   //! start() at t ≤ 0 (and NaN) and end() at t ≥ duration. noexcept, allocation-free.
   JointTrajectorySample sample(double t) const noexcept;
 

@@ -17,7 +17,7 @@
 namespace dispkin::serial {
 
 //! Two PTP moves run with an overlap t_ov, their joint displacements added during it (doc/ptp.md
-//! §4, eq. 16). No speed guarantee of its own: see the file's comment.
+//! §4, doc/ptp.md eq. 16). No speed guarantee of its own: see the file's comment.
 class OverlappedJointTrajectory {
  public:
   //! `before` must end where `after` starts (joint vectors equal to 1e-9 rad), both planned on
@@ -33,7 +33,7 @@ class OverlappedJointTrajectory {
   const JointTrajectory& before() const noexcept { return before_; }  //!< the first move
   const JointTrajectory& after() const noexcept { return after_; }    //!< the next move
 
-  //! The state at t (clamped to [0, duration]): joints by eq. 16, the pose and body twist by the
+  //! The state at t (clamped to [0, duration]): joints by doc/ptp.md eq. 16, the pose and body twist by the
   //! arm's kinematics of θ and θ̇; s, ṡ, s̈ the sums of both moves' (s continues from the first
   //! move's length after the overlap); u the first move's before the overlap, the next move's
   //! from its start on. noexcept, allocation-free.

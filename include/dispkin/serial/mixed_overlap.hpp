@@ -3,7 +3,7 @@
 //! is PTP control, this method can be applied after unifying to one type of control trajectory"
 //! (doc/ptp.md §4, eq. 21). The Cartesian move is unified to joint space as a FollowedTrajectory
 //! (the arm's IK branch that starts where the PTP move ends, or ends where it starts), and then
-//! the joint displacements add during the overlap as for two PTP moves (eq. 16):
+//! the joint displacements add during the overlap as for two PTP moves (doc/ptp.md eq. 16):
 //!   θ(t) = θ_b(t) + θ_f(t′) − θ₂,   θ̇ = θ̇_b + θ̇_f,   θ̈ = θ̈_b + θ̈_f,   t′ = t − (T_b − t_ov),
 //! each move's own joint motion outside the overlap; the pose and twist are the arm's forward
 //! kinematics of θ and θ̇.
@@ -41,7 +41,7 @@ class OverlappedMixedTrajectory {
   const JointTrajectory& ptp() const noexcept { return ptp_; }               //!< the PTP move
   const FollowedTrajectory& cartesian() const noexcept { return cartesian_; }  //!< the Cartesian move, in joint space
 
-  //! The state at t (clamped to [0, duration]): joints by eq. 21, the pose and body twist by the
+  //! The state at t (clamped to [0, duration]): joints by doc/ptp.md eq. 21, the pose and body twist by the
   //! arm's kinematics of θ and θ̇; s, ṡ, s̈ the sums of both moves' (s continues from the first
   //! move's length after the overlap); u the first move's before the overlap, the next move's
   //! from its start on. Exactly the first move's start at t ≤ 0 and the second's end at

@@ -10,8 +10,7 @@
 //! with V_g(½) the exact fastest speed of the group at the section's middle (doc/disp-metric.md §6: points,
 //! absolute points seen from the tool, spheres by the exact sphere formula) and A_g a bound of
 //! the acceleration per τ² of every object of the group over the section (a Lipschitz bound of
-//! its velocity, derived from the chain geometry — see src/serial/ptp_section.cpp and
-//! doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
+//! its velocity, derived from the chain geometry — see doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
 //! faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same construction
 //! as CurveSection (speed at the middle + half the acceleration bound).
 //!

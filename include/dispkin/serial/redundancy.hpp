@@ -25,7 +25,7 @@ namespace serial {
 //! How a 7R chain is solved with one joint locked: which joint, and the 6R chain left.
 struct LockedJoint {
   int joint = -1;          //!< the locked joint (0 or 6); −1: no lock gives a closed form
-  bool reversed = false;   //!< the 6R chain is read from the tip back (eq. 39)
+  bool reversed = false;   //!< the 6R chain is read from the tip back (doc/inverse-kinematics.md eq. 39)
   RevoluteChain rest;      //!< the 6R chain solved for each value (reversed if so)
   IkFamily family = IkFamily::general;  //!< its closed form (spherical_wrist or three_parallel)
 
@@ -39,7 +39,7 @@ struct LockedJoint {
 LockedJoint find_locked_joint(const RevoluteChain& chain);
 
 //! Every solution of `pose` with the locked joint at `value` (rad, finite): the 6R closed form of
-//! lock.rest for the pose eq. 37 or 38 gives, its solutions as 7-joint vectors (the locked joint
+//! lock.rest for the pose doc/inverse-kinematics.md eq. 37 or 38 gives, its solutions as 7-joint vectors (the locked joint
 //! `value` itself, the others in [−π, π]). Up to 8; no allocation but the result's. Throws
 //! std::invalid_argument for a value that is not finite.
 void locked_joint_inverse(const RevoluteChain& chain, const LockedJoint& lock, double value, const Posed& pose,
@@ -62,7 +62,7 @@ struct Redundancy {
   //! is no parameter, or for a q of the wrong size (not `dof` entries) or not finite.
   double value(const Eigen::VectorXd& q) const;
   //! The parameter values inverse_solutions uses when given neither a value nor q_ref:
-  //! default_value_count values at the centres of equal parts of [lower, upper] (eq. 40).
+  //! default_value_count values at the centres of equal parts of [lower, upper] (doc/inverse-kinematics.md eq. 40).
   std::vector<double> default_values() const;
   //! How many values default_values() gives.
   static constexpr int default_value_count = 16;

@@ -76,7 +76,7 @@ struct Configuration {
 struct InverseOptions {
   bool keep_outside_limits = false;  //!< also return solutions outside the position limits (flagged)
   //! Also return every q + 2πk inside the limits of joints whose range exceeds a turn, at most
-  //! input_limits::max_ik_solutions in all (more is refused: ±20 rad on a 6R arm make 5·10⁵).
+  //! input_budget::max_ik_solutions in all (more is refused: ±20 rad on a 6R arm make 5·10⁵).
   bool offer_equivalents = false;
   //! A redundant arm with a parameter (SerialArm::redundancy()): every solution at this parameter
   //! value only (finite; a value outside the parameter's range gives the solutions there, which
@@ -155,7 +155,7 @@ class SerialArm : public Kinematics {
   //! nearest to 0 inside the limits (continuous joints: in (−π, π]), however wide the limits
   //! (±1e16 rad included); duplicates (equal up to 2π, every joint within 1e-7) are removed.
   //! options.offer_equivalents adds the 2π copies inside the limits, and throws
-  //! std::invalid_argument when they would be more than input_limits::max_ik_solutions.
+  //! std::invalid_argument when they would be more than input_budget::max_ik_solutions.
   //! An unreachable pose gives none. For a
   //! redundant arm (dof() > 6) the solutions form a continuum: with a parameter (redundancy(),
   //! family locked_joint) every solution at options.redundancy, at q_ref's value (options.q_ref),
@@ -166,8 +166,8 @@ class SerialArm : public Kinematics {
   //! options.redundancy on an arm without a parameter,
   //! or together with q_ref, throws std::invalid_argument.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
-  //! a closed-form one as the solver measured it (eq. 25, which implies it: doc/inverse-kinematics.md
-  //! eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
+  //! a closed-form one as the solver measured it (doc/inverse-kinematics.md eq. 25, which implies it: doc/inverse-kinematics.md
+  //! doc/inverse-kinematics.md eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
   //! safety: const and without shared mutable state (the KDL solvers are made per call on a
   //! copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain
   //! analysis per thread), so one arm may be used from several threads at once.

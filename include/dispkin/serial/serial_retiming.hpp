@@ -30,10 +30,10 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
                                     const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
 
 //! The joint-limit factors of a PTP move at `times` (s): FVEL and FACC (doc/retiming.md (eq. 4)
-//! and (eq. 5)) of its joint line's own q, q̇ and q̈, with the torques of the arm's dynamics
+//! and (doc/retiming.md eq. 5)) of its joint line's own q, q̇ and q̈, with the torques of the arm's dynamics
 //! model (its position excess is 0: both ends are inside the limits, and the range is a box).
 //! Throws std::invalid_argument for a trajectory of another dof or a time that is not finite,
-//! std::runtime_error where the static torque alone reaches an effort limit (eq. 6).
+//! std::runtime_error where the static torque alone reaches an effort limit (doc/retiming.md eq. 6).
 JointLimitReport check_joint_limits(const JointTrajectory& trajectory, const SerialArm& arm,
                                     const std::vector<double>& times);
 
@@ -57,10 +57,12 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
 //! Plans `path`, checks it, scales the limits by 1/FVEL and 1/FACC and re-plans until both
 //! factors are ≤ 1 at every checked sample. Throws std::runtime_error if a position limit is
 //! violated (slowing down cannot help), if the static torque exceeds a limit, or if
-//! `max_iterations` plans do not converge.
+//! `max_iterations` plans do not converge. `corner_tolerance` (m, ≥ 0): continuous-path mode as
+//! plan()'s, the path's corners blended (continuous_path) before the first plan.
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const SerialArm& arm, const Eigen::VectorXd& q_start,
-                               const JointCheckOptions& options = {}, int max_iterations = 20);
+                               const JointCheckOptions& options = {}, int max_iterations = 20,
+                               double corner_tolerance = 0.0);
 
 //! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
 //! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the

@@ -29,7 +29,7 @@ from .._core import Hexapod, Limits, MetricSet, Path, Pose, WorkToolFrames
 from ..limits_files import PilzCartesianLimits
 from .events import read_events
 from .machine_limits import job_limits, read_limits_files, read_retime
-from . import limits as resource_limits
+from . import input_budget
 from .model import DEFAULT_SAMPLE_PERIOD, Job, JobError, KeyPath, Move, Part, value_at
 from .reader import Source
 from .schema import validate
@@ -539,9 +539,9 @@ class _Builder:
         """output: the sample period and the file names (default: from the job's name)."""
         out = self.data.get("output") or {}
         job["sample_period"] = float(out.get("sample_period", DEFAULT_SAMPLE_PERIOD))
-        if job["sample_period"] < resource_limits.MIN_SAMPLE_PERIOD:
+        if job["sample_period"] < input_budget.MIN_SAMPLE_PERIOD:
             raise self.fail(("output", "sample_period"), f"{job['sample_period']!r}: must be at least "
-                            f"{resource_limits.MIN_SAMPLE_PERIOD:g} s (doc/resource-limits.md)")
+                            f"{input_budget.MIN_SAMPLE_PERIOD:g} s (doc/input-budget.md)")
         files = {"csv": f"{name}.csv", "json": f"{name}.json", "summary": f"{name}.summary.txt"}
         for key in files:
             if key in out:

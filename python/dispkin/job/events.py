@@ -18,7 +18,7 @@ events are applied (:func:`apply_events`).
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from .._core import Trajectory
-from . import limits as resource_limits
+from . import input_budget
 from .model import Event, Job, JobError, KeyPath, Part, format_key_path
 
 #: The override factors Trajectory.with_override takes (times the velocity-limit curve as planned).
@@ -46,9 +46,9 @@ def read_events(builder: Any, job: Dict[str, Any], parts: Sequence[Part]) -> Non
     if value is None:
         return
     at: KeyPath = ("events",)
-    if len(value) > resource_limits.MAX_EVENTS:
-        raise builder.fail(at, f"{len(value)} events, more than {resource_limits.MAX_EVENTS}, the most a job may have "
-                               "(each plans the rest of the motion anew; doc/resource-limits.md)")
+    if len(value) > input_budget.MAX_EVENTS:
+        raise builder.fail(at, f"{len(value)} events, more than {input_budget.MAX_EVENTS}, the most a job may have "
+                               "(each plans the rest of the motion anew; doc/input-budget.md)")
     ptp = next((k for part in parts if part.kind == "ptp" for k in part.moves), None)
     if ptp is not None:
         raise builder.fail(at, f"events apply to a job planned as one Cartesian trajectory; moves[{ptp}] is a PTP move, so this "
@@ -132,12 +132,12 @@ def apply_events(job: Job, trajectory: Trajectory) -> Trajectory:
                                                  "which the motion moves") from error
             raise _error(job, key, f"{event.kind} at t = {event.at:g} s failed: {error}") from error
         count = trajectory.duration / job.sample_period
-        if count > resource_limits.MAX_SAMPLES:
+        if count > input_budget.MAX_SAMPLES:
             at = key + (("override",) if event.kind == "override" else ("at",))
             value = event.factor if event.kind == "override" else event.at
             raise _error(job, at, f"{_number(value)}: with this event the motion lasts {trajectory.duration:.6g} s, {count:.3g} samples "
-                                  f"of {job.sample_period:g} s (output.sample_period), more than {resource_limits.MAX_SAMPLES} "
-                                  "(doc/resource-limits.md)")
+                                  f"of {job.sample_period:g} s (output.sample_period), more than {input_budget.MAX_SAMPLES} "
+                                  "(doc/input-budget.md)")
     if job.events and trajectory.duration == 0.0:
         stop = next(e for e in reversed(job.events) if e.kind == "stop")
         raise _error(job, ("events", stop.index, "at"), f"{_number(stop.at)}: the stop comes before the motion starts and no resumption "

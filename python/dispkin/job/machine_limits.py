@@ -42,7 +42,7 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
     for at in keys:
         path = builder.file(at)
         try:
-            # Read once, under the resource limits of job files; both readers take the document.
+            # Read once, under the input budget of job files; both readers take the document.
             document = limits_files.load_limits_file(path)
         except limits_files.LimitsFileError as error:
             raise builder.fail(at, str(error)) from error

@@ -81,9 +81,9 @@ def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory
         joint_metric = job.hexapod if job.joint_metric else None
         return plan(path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric,
                     corner_tolerance=job.corner_tolerance)
-    if job.corner_tolerance > 0.0:
-        path, _ = path.blended(job.corner_tolerance)  # re-timing keeps the blended path's rests
-    extra = {} if job.retime.joint_acceleration is None else {"joint_acceleration": job.retime.joint_acceleration}
+    extra = {"corner_tolerance": job.corner_tolerance}
+    if job.retime.joint_acceleration is not None:
+        extra["joint_acceleration"] = job.retime.joint_acceleration
     if job.arm is not None:
         result = _core.retime(path, job.metric_set, job.limits, job.arm, q_start, profile=job.profile, method=job.retime.method, **extra)
     else:

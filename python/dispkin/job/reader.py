@@ -11,7 +11,7 @@ import pathlib
 import re
 from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
-from . import limits
+from . import input_budget
 from .model import JobError, KeyPath, format_key_path
 
 try:
@@ -56,11 +56,11 @@ if getattr(yaml, "__with_libyaml__", False):
 class Source:
     """A job file's text, its data, and where each key path is (1-based line, column).
 
-    Limits files are read by it too, under the same resource limits: `what` names the kind of
+    Limits files are read by it too, under the same input budget: `what` names the kind of
     file in messages ("job", "limits file") and `fail` makes the error to raise (a JobError for
     job files)."""
 
-    def __init__(self, path: pathlib.Path, what: str = "job", fail: limits.ErrorFactory = limits.job_error):
+    def __init__(self, path: pathlib.Path, what: str = "job", fail: input_budget.ErrorFactory = input_budget.job_error):
         #: The file.
         self.path = path
         self._what, self._fail = what, fail
@@ -73,11 +73,11 @@ class Source:
     def _read_text(self, path: pathlib.Path) -> str:
         what = f"{self._what} file" if self._what == "job" else self._what
         try:
-            data = limits.read_bounded(path, what, self._fail)
+            data = input_budget.read_bounded(path, what, self._fail)
         except OSError as error:
             reason = f"cannot read the {what}" if self._what == "job" else f"the {what} cannot be read"
             raise self._fail(f"{path}: {reason}: {error.strerror or error}", None) from error
-        return limits.decode_utf8(path, data, what, self._fail)
+        return input_budget.decode_utf8(path, data, what, self._fail)
 
     def _parse(self, text: str) -> Any:
         """The data of the YAML text, recording each key path's place on the way."""
@@ -103,8 +103,8 @@ class Source:
             raise fail(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
                        line) from error
         try:
-            # The limits first, from the parser's events: nothing is built beyond them.
-            limits.check_events(path, yaml.parse(text, Loader=loader_class), self._what, fail)
+            # The budget first, from the parser's events: nothing is built beyond them.
+            input_budget.check_events(path, yaml.parse(text, Loader=loader_class), self._what, fail)
             node = loader.get_single_node()
             if node is None:
                 raise fail(f"{path}: the {self._what}{' file' if self._what == 'job' else ''} is empty", None)
@@ -167,7 +167,7 @@ class Source:
                 self._walk(item, key_path + (str(i),))
 
     def _duplicate(self, message: str, key_path: Tuple[str, ...], line: int) -> Exception:
-        if self._fail is limits.job_error:
+        if self._fail is input_budget.job_error:
             return JobError(message, key_path, line)
         return self._fail(message, line)
 

@@ -15,7 +15,7 @@ from typing import Callable, Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from .._core import MetricSet, Pose, Trajectory, max_point_speed
-from . import limits
+from . import input_budget
 from .model import Job, JobError
 from .planning import JobTrajectory
 
@@ -154,9 +154,9 @@ def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: O
     report = progress or (lambda stage, done, total: None)
     period = period or job.sample_period
     count = trajectory.duration / period
-    if not count <= limits.MAX_SAMPLES:
+    if not count <= input_budget.MAX_SAMPLES:
         message = (f"{period!r}: the {trajectory.duration:g} s trajectory would be {count:.3g} samples, more than "
-                   f"{limits.MAX_SAMPLES} (doc/resource-limits.md)")
+                   f"{input_budget.MAX_SAMPLES} (doc/input-budget.md)")
         if job.source is not None:
             raise job.source.error(("output", "sample_period"), message)
         raise JobError(f"{job.file}: output.sample_period: {message}")

@@ -1,4 +1,4 @@
-//! The resource limits of dispkin's readers (doc/resource-limits.md): how large and how deep
+//! The input budget of dispkin's readers (doc/input-budget.md): how large and how deep
 //! a file, and how many IK solutions, one call accepts. Each is checked once, where the
 //! reader first sees its input, before anything is built from it, so that a short hostile
 //! file cannot take the stack (deep nesting) or the memory (a huge count) and a real robot or
@@ -10,7 +10,7 @@
 #include <string>
 
 namespace dispkin {
-namespace input_limits {
+namespace input_budget {
 
 //! Deepest nesting of arrays/objects (JSON) or elements (XML). Parsers and destructors
 //! recurse once per level; a hexapod description is 4 deep, a URDF 5 or 6.
@@ -43,5 +43,5 @@ inline bool read_at_most(std::istream& in, std::size_t limit, std::string& text)
   return text.size() <= limit;
 }
 
-}  // namespace input_limits
+}  // namespace input_budget
 }  // namespace dispkin

@@ -1,4 +1,4 @@
-"""The resource limits of job files (doc/resource-limits.md), checked while the YAML is read,
+"""The input budget of job files (doc/input-budget.md), checked while the YAML is read,
 before any Python object is built from it: a ten-line file cannot take the stack (nesting
 1000 deep), the memory (an alias bomb expands to 10⁹ nodes) or the time of the commands.
 
@@ -82,7 +82,7 @@ def read_bounded(path: pathlib.Path, what: str = "job file", fail: ErrorFactory 
                 break
             data += block
     if status.st_size > limit or len(data) > limit:
-        raise fail(f"{path}: the {what} is larger than {limit} bytes, the limit of a {what} (doc/resource-limits.md)", None)
+        raise fail(f"{path}: the {what} is larger than {limit} bytes, the limit of a {what} (doc/input-budget.md)", None)
     return bytes(data)
 
 
@@ -120,7 +120,7 @@ def check_events(path: pathlib.Path, events: Any, what: str = "job", fail: Error
 
     def refuse(event: Any, reason: str) -> Exception:
         mark = event.start_mark
-        return fail(f"{path}:{mark.line + 1}:{mark.column + 1}: ({what}): {reason} (doc/resource-limits.md)", mark.line + 1)
+        return fail(f"{path}:{mark.line + 1}:{mark.column + 1}: ({what}): {reason} (doc/input-budget.md)", mark.line + 1)
 
     def count(event: Any, nodes: int) -> None:
         """`nodes` more values at `event`, in the whole job and in the collection being read."""
