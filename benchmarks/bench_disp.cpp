@@ -45,7 +45,7 @@ const Vector3d kPivot(0.0, 0.0, 0.1);
 struct Moves {
   std::vector<Posed> start;
   std::vector<Posed> end;
-  std::vector<Twistd> twist;    // the body twist log(start⁻¹ end) of each move
+  std::vector<Twistd> twist;     // the body twist log(start⁻¹ end) of each move
   std::vector<Vector6d> xyzuvw;  // start.to_xyzuvw()
 };
 
@@ -215,9 +215,13 @@ void section_length_cloud(benchmark::State& state, Interpolation kind) {
   set_point_counters(state, cloud_size(state));
 }
 BENCHMARK_CAPTURE(section_length_cloud, screw, Interpolation::screw)
-    ->Arg(100000)->Arg(10000000)->Unit(benchmark::kMicrosecond);
+    ->Arg(100000)
+    ->Arg(10000000)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(section_length_cloud, decoupled, Interpolation::decoupled)
-    ->Arg(100000)->Arg(10000000)->Unit(benchmark::kMicrosecond);
+    ->Arg(100000)
+    ->Arg(10000000)
+    ->Unit(benchmark::kMicrosecond);
 
 void disp_distance_cloud(benchmark::State& state) {
   const MetricSetd& set = cloud_relative(cloud_size(state));

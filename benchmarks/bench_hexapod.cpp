@@ -5,9 +5,9 @@
 
 namespace {
 
-using dispkin::hexapod::Hexapod;
 using dispkin::Posed;
 using dispkin::Twistd;
+using dispkin::hexapod::Hexapod;
 
 const double pi = 3.14159265358979323846;
 

@@ -28,7 +28,8 @@ void plan_lin_icosahedron(benchmark::State& state) {
   const auto set = icosahedron_tool();
   const auto path = dispkin::Path::lin(kStart, kEnd);
   for (auto _ : state) benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}));
-  state.counters["pieces"] = static_cast<double>(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}).path().section_count());
+  state.counters["pieces"] =
+      static_cast<double>(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}).path().section_count());
 }
 BENCHMARK(plan_lin_icosahedron);
 
@@ -56,7 +57,8 @@ void plan_polyline_1000_blended(benchmark::State& state) {
   dispkin::PlanOptions options;
   options.corner_tolerance = 2e-5;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}, dispkin::ProfileKind::scurve, options));
+    benchmark::DoNotOptimize(
+        dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0}, dispkin::ProfileKind::scurve, options));
   }
 }
 BENCHMARK(plan_polyline_1000_blended)->Unit(benchmark::kMillisecond);
@@ -65,8 +67,8 @@ BENCHMARK(plan_polyline_1000_blended)->Unit(benchmark::kMillisecond);
 // it), icosahedron set.
 std::vector<Posed> spline_keys() {
   const auto turn = [](double a) { return Eigen::Quaterniond(Eigen::AngleAxisd(a, V(0.3, 0.2, 1.0).normalized())); };
-  return {kStart, Posed(turn(0.2), V(0.1, 0.1, 0.0)), Posed(turn(0.4), V(0.2, 0.0, 0.05)), Posed(turn(0.6), V(0.3, 0.1, 0.05)),
-          Posed(turn(0.8), V(0.4, 0.0, 0.0))};
+  return {kStart, Posed(turn(0.2), V(0.1, 0.1, 0.0)), Posed(turn(0.4), V(0.2, 0.0, 0.05)),
+          Posed(turn(0.6), V(0.3, 0.1, 0.05)), Posed(turn(0.8), V(0.4, 0.0, 0.0))};
 }
 
 void plan_spline_1000_sections(benchmark::State& state) {
@@ -90,7 +92,7 @@ void sample_trajectory(benchmark::State& state) {
   const auto set = icosahedron_tool();
   const int kind = static_cast<int>(state.range(0));
   const int mode = static_cast<int>(state.range(1));
-  const auto path = kind == 0 ? dispkin::Path::lin(kStart, kEnd)
+  const auto path = kind == 0   ? dispkin::Path::lin(kStart, kEnd)
                     : kind == 1 ? dispkin::Path::circ(kStart, kVia, kEnd, V::Zero(), 2.2e-3)
                                 : dispkin::Path::spline(spline_keys(), V::Zero(), 8e-3);
   const auto traj = dispkin::plan(path, set, dispkin::Limits{0.1, 0.5, 5.0});

@@ -43,7 +43,8 @@ std::vector<Case> make_cases(bool boundary_velocities) {
       c.v_start = c.v_max * unit(rng);
       c.v_end = c.v_max * unit(rng);
       const double dv = std::abs(c.v_end - c.v_start);
-      const double change = dv >= c.a_max * c.a_max / c.j_max ? dv / c.a_max + c.a_max / c.j_max : 2 * std::sqrt(dv / c.j_max);
+      const double change =
+          dv >= c.a_max * c.a_max / c.j_max ? dv / c.a_max + c.a_max / c.j_max : 2 * std::sqrt(dv / c.j_max);
       c.distance += 0.5 * (c.v_start + c.v_end) * change;
     }
     cases.push_back(c);

@@ -47,14 +47,23 @@ std::vector<Case> make_cases(bool beyond, std::uint64_t seed) {
     c.a_start = c.a_max * uniform(-1, 1);
     c.v_end = c.v_max * uniform(0, 1);
     switch (rng() % 6) {
-      case 0: c.a_start = rng() % 2 ? c.a_max : -c.a_max; break;
-      case 1: c.v_end = c.v_max; break;
-      case 2: c.v_end = 0.0; break;
-      default: break;
+      case 0:
+        c.a_start = rng() % 2 ? c.a_max : -c.a_max;
+        break;
+      case 1:
+        c.v_end = c.v_max;
+        break;
+      case 2:
+        c.v_end = 0.0;
+        break;
+      default:
+        break;
     }
     if (beyond) {
-      if (rng() % 2) c.v_start = c.v_max * uniform(1, 3);
-      else c.a_start = c.a_max * uniform(1, 3) * (rng() % 2 ? 1.0 : -1.0);
+      if (rng() % 2)
+        c.v_start = c.v_max * uniform(1, 3);
+      else
+        c.a_start = c.a_max * uniform(1, 3) * (rng() % 2 ? 1.0 : -1.0);
     }
     const double natural = c.v_start + c.a_start * std::abs(c.a_start) / (2.0 * c.j_max);
     if (c.a_start < 0.0 && natural < 0.0) continue;

@@ -13,8 +13,8 @@ namespace {
 using dispkin::serial::SerialArm;
 
 const SerialArm& ur5e() {
-  static const SerialArm arm =
-      SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
+  static const SerialArm arm = SerialArm::from_urdf_file(
+      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
   return arm;
 }
 
@@ -38,7 +38,8 @@ void BM_PtpPlanUr5e(benchmark::State& state) {
   const dispkin::Limits limits{0.5, 2.0, 20.0};
   std::size_t sections = 0;
   for (auto _ : state) {
-    const dispkin::serial::JointTrajectory traj = dispkin::serial::plan(move, set, limits, dispkin::ProfileKind::scurve, ur5e());
+    const dispkin::serial::JointTrajectory traj =
+        dispkin::serial::plan(move, set, limits, dispkin::ProfileKind::scurve, ur5e());
     sections = traj.sections().size();
     benchmark::DoNotOptimize(traj.duration());
   }
@@ -47,8 +48,8 @@ void BM_PtpPlanUr5e(benchmark::State& state) {
 BENCHMARK(BM_PtpPlanUr5e)->Unit(benchmark::kMicrosecond);
 
 void BM_PtpSampleUr5e(benchmark::State& state) {
-  const dispkin::serial::JointTrajectory traj =
-      dispkin::serial::plan(bench_move(), tool_set(), dispkin::Limits{0.5, 2.0, 20.0}, dispkin::ProfileKind::scurve, ur5e());
+  const dispkin::serial::JointTrajectory traj = dispkin::serial::plan(
+      bench_move(), tool_set(), dispkin::Limits{0.5, 2.0, 20.0}, dispkin::ProfileKind::scurve, ur5e());
   double t = 0.0;
   const double dt = traj.duration() / 997.0;
   for (auto _ : state) {

@@ -29,7 +29,8 @@ const Move& move() {
     Eigen::VectorXd q(6);
     q << 0.3, -1.2, 1.5, -1.9, -1.57, 0.2;
     const dispkin::Posed a = arm.forward(q);
-    const Eigen::Quaterniond turned = Eigen::Quaterniond(Eigen::AngleAxisd(0.5235987755982988, V::UnitZ())) * a.quaternion();
+    const Eigen::Quaterniond turned =
+        Eigen::Quaterniond(Eigen::AngleAxisd(0.5235987755982988, V::UnitZ())) * a.quaternion();
     dispkin::MetricSetd tool;
     tool.add_relative(dispkin::shapes::icosahedron(0.05, V(0, 0, 0.1)));
     return Move{arm, q, dispkin::Path::lin(a, dispkin::Posed(turned, a.translation() + V(0.25, -0.2, -0.15))), tool};
@@ -61,7 +62,8 @@ void BM_RetimeOptimal(benchmark::State& state) {
   dispkin::OptimalRetimeOptions options;
   options.grid_intervals = 100;
   options.check_samples_between = static_cast<int>(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, fast, m.arm, m.q_start, options));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, fast, m.arm, m.q_start, options));
 }
 BENCHMARK(BM_RetimeOptimal)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 
@@ -74,7 +76,8 @@ void BM_RetimeOptimalJerkLimited(benchmark::State& state) {
   dispkin::OptimalRetimeOptions options;
   options.grid_intervals = 100;
   options.check_samples_between = static_cast<int>(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, limits, m.arm, m.q_start, options));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(dispkin::serial::retime_optimal(m.path, m.tool, limits, m.arm, m.q_start, options));
 }
 BENCHMARK(BM_RetimeOptimalJerkLimited)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 

@@ -53,25 +53,29 @@ int main() {
   const double stops = dispkin::plan(lins_through(poses), set, limits, kind).duration();
   const double blended = dispkin::plan(lins_through(poses), set, limits, kind, blend).duration();
   const double spline = dispkin::plan(Path::spline(poses), set, limits, kind).duration();
-  std::printf("21-pose list: stopping %.4f s, blended (d = %.4f m) %.4f s, spline %.4f s; blended / spline %.4f, "
-              "stopping / blended %.3f\n",
-              stops, blend.corner_tolerance, blended, spline, blended / spline, stops / blended);
+  std::printf(
+      "21-pose list: stopping %.4f s, blended (d = %.4f m) %.4f s, spline %.4f s; blended / spline %.4f, "
+      "stopping / blended %.3f\n",
+      stops, blend.corner_tolerance, blended, spline, blended / spline, stops / blended);
 
   // A polyline of 10³ points on three quarters of a circle, R = 0.2 m.
   const double radius = 0.2;
   std::vector<Posed> polyline;
   for (int k = 0; k <= 1000; ++k) {
     const double angle = 1.5 * dispkin::pi * k / 1000;
-    polyline.push_back(Posed(Eigen::Quaterniond::Identity(), V(radius * std::cos(angle), radius * std::sin(angle), 0.0)));
+    polyline.push_back(
+        Posed(Eigen::Quaterniond::Identity(), V(radius * std::cos(angle), radius * std::sin(angle), 0.0)));
   }
   dispkin::PlanOptions fine;
   fine.corner_tolerance = 1e-4 * radius;
   const auto small_tool = tool(0.05);
   const double through = dispkin::plan(lins_through(polyline), small_tool, limits, kind, fine).duration();
-  const double circ = dispkin::plan(Path::circ(polyline.front(), polyline[500], polyline.back()), small_tool, limits, kind).duration();
+  const double circ =
+      dispkin::plan(Path::circ(polyline.front(), polyline[500], polyline.back()), small_tool, limits, kind).duration();
   const double polyline_stops = dispkin::plan(lins_through(polyline), small_tool, limits, kind).duration();
-  std::printf("10^3-point polyline of a circle: blended (d = 1e-4 R) %.4f s, CIRC %.4f s, ratio %.4f; stopping %.2f s\n",
-              through, circ, through / circ, polyline_stops);
+  std::printf(
+      "10^3-point polyline of a circle: blended (d = 1e-4 R) %.4f s, CIRC %.4f s, ratio %.4f; stopping %.2f s\n",
+      through, circ, through / circ, polyline_stops);
 
   // A 0.3 m + 90° decoupled LIN of a 0.3 m icosahedron: one section (the fastest instant bounds
   // the whole move) against the planned, cut move.
@@ -82,8 +86,8 @@ int main() {
                                                       limits.acceleration, *limits.jerk)
                                  .duration();
   const double cut = dispkin::plan(lin, wide, limits, kind).duration();
-  std::printf("0.3 m + 90 deg LIN (0.3 m icosahedron): as one section %.4f s, planned %.4f s, ratio %.4f\n", one_section, cut,
-              one_section / cut);
+  std::printf("0.3 m + 90 deg LIN (0.3 m icosahedron): as one section %.4f s, planned %.4f s, ratio %.4f\n",
+              one_section, cut, one_section / cut);
 
   // A combined move (0.3 m and 120°) of the tool centre under v = 0.2 m/s and ω = 0.5 rad/s: the
   // rotational limit against the sphere of radius v/ω around the tool centre.

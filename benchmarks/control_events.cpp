@@ -73,9 +73,24 @@ void run_requests(double scale, const std::string& only) {
     Parts stop, over;
     std::vector<double> whole_copy;
     for (const Request& r : reqs) {
-      const double ts = time_call([&] { const Trajectory x = traj.stopped_at(r.t); keep(x); }, overhead);
-      const double to = time_call([&] { const Trajectory x = traj.with_override(r.t, r.factor); keep(x); }, overhead);
-      const double tp = time_call([&] { const SampledPath p(traj.path()); keep(p); }, overhead);
+      const double ts = time_call(
+          [&] {
+            const Trajectory x = traj.stopped_at(r.t);
+            keep(x);
+          },
+          overhead);
+      const double to = time_call(
+          [&] {
+            const Trajectory x = traj.with_override(r.t, r.factor);
+            keep(x);
+          },
+          overhead);
+      const double tp = time_call(
+          [&] {
+            const SampledPath p(traj.path());
+            keep(p);
+          },
+          overhead);
       const double tv = time_call(
           [&] {
             const auto a = traj.speed_limits();
@@ -85,9 +100,19 @@ void run_requests(double scale, const std::string& only) {
             keep(a), keep(b), keep(c), keep(d);
           },
           overhead);
-      const double tb = time_call([&] { const TimeLaw l = traj.time_law().before(r.t); keep(l); }, overhead);
+      const double tb = time_call(
+          [&] {
+            const TimeLaw l = traj.time_law().before(r.t);
+            keep(l);
+          },
+          overhead);
       const double tc = time_call([&] { traj.require_consistent(); }, overhead);
-      whole_copy.push_back(time_call([&] { const Trajectory x(traj); keep(x); }, overhead));
+      whole_copy.push_back(time_call(
+          [&] {
+            const Trajectory x(traj);
+            keep(x);
+          },
+          overhead));
       for (auto* p : {&stop, &over}) {
         p->path.push_back(tp);
         p->vectors.push_back(tv);
@@ -100,15 +125,16 @@ void run_requests(double scale, const std::string& only) {
       over.rest.push_back(to - tp - tv - tb - tc);
     }
     const Spread s = spread(stop.request), o = spread(over.request);
-    std::printf("%-26s %5zu %8zu %6zu %8.2fs | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f\n", w.name.c_str(), traj.law_count(),
-                traj.section_count(), traj.speed_limits().size(), traj.duration(), s.median * 1e-3, s.p99 * 1e-3,
-                s.max * 1e-3, o.median * 1e-3, o.p99 * 1e-3, o.max * 1e-3);
+    std::printf("%-26s %5zu %8zu %6zu %8.2fs | %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f\n", w.name.c_str(),
+                traj.law_count(), traj.section_count(), traj.speed_limits().size(), traj.duration(), s.median * 1e-3,
+                s.p99 * 1e-3, s.max * 1e-3, o.median * 1e-3, o.p99 * 1e-3, o.max * 1e-3);
     std::fflush(stdout);
     breakdowns.push_back({w.name, {stop, over}});
     whole_copy_medians.push_back(median(whole_copy));
   }
-  std::printf("\nwhere the time of a request goes (medians over the same requests, us; rest = request less the parts, "
-              "per request)\n");
+  std::printf(
+      "\nwhere the time of a request goes (medians over the same requests, us; rest = request less the parts, "
+      "per request)\n");
   std::printf("%-26s %-13s %9s %9s %9s %9s %9s %9s %11s\n", "trajectory", "request", "request", "path copy", "vectors",
               "before(t)", "check", "rest", "whole copy");
   for (std::size_t i = 0; i < breakdowns.size(); ++i) {
@@ -125,9 +151,10 @@ void run_requests(double scale, const std::string& only) {
 
 void run_append(double scale) {
   const double overhead = thread_clock_overhead();
-  std::printf("== MotionStream::append to a running leg of n LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), "
-              "thread CPU us; load average %s\n",
-              load_average().c_str());
+  std::printf(
+      "== MotionStream::append to a running leg of n LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), "
+      "thread CPU us; load average %s\n",
+      load_average().c_str());
   std::printf("%4s %7s %8s %9s %9s %9s %9s | %11s\n", "n", "joined", "new leg", "median", "p99", "max", "per move",
               "plan median");
   const dispkin::MetricSetd set = tool_set();
@@ -155,8 +182,12 @@ void run_append(double scale) {
         } else {
           ++new_leg;
         }
-        plan_ns.push_back(time_call([&] { const Trajectory x = dispkin::plan(longer, set, limits, ProfileKind::scurve, options); keep(x); },
-                                    overhead));
+        plan_ns.push_back(time_call(
+            [&] {
+              const Trajectory x = dispkin::plan(longer, set, limits, ProfileKind::scurve, options);
+              keep(x);
+            },
+            overhead));
       }
     }
     const Spread a = spread(append_ns);
@@ -173,9 +204,10 @@ void run_append(double scale) {
 void run_stream(double scale) {
   const double overhead = thread_clock_overhead();
   const std::size_t count = scaled(1000, scale);
-  std::printf("== MotionStream fed just in time: %zu LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), each appended "
-              "when under 1.5 s is planned ahead; thread CPU us per append by moves appended before; load average %s\n",
-              count, load_average().c_str());
+  std::printf(
+      "== MotionStream fed just in time: %zu LINs (S-curve, v 0.2, a 1, j 10, corner tolerance 1 mm), each appended "
+      "when under 1.5 s is planned ahead; thread CPU us per append by moves appended before; load average %s\n",
+      count, load_average().c_str());
   std::mt19937_64 rng(9500);
   const std::vector<Path> moves = zigzag(rng, count);
   MotionStream stream(tool_set(), limits_for(ProfileKind::scurve), ProfileKind::scurve, kCornerTolerance);
@@ -196,8 +228,8 @@ void run_stream(double scale) {
   std::printf("%-22s %8s %9s %9s %9s\n", "moves appended before", "appends", "median", "p99", "max");
   for (std::size_t b = 0; b < buckets; ++b) {
     const Spread a = spread(ns[b]);
-    std::printf("%8zu – %-11zu %8zu %9.1f %9.1f %9.1f\n", b * per_bucket, std::min(count, (b + 1) * per_bucket) - 1, ns[b].size(),
-                a.median * 1e-3, a.p99 * 1e-3, a.max * 1e-3);
+    std::printf("%8zu – %-11zu %8zu %9.1f %9.1f %9.1f\n", b * per_bucket, std::min(count, (b + 1) * per_bucket) - 1,
+                ns[b].size(), a.median * 1e-3, a.p99 * 1e-3, a.max * 1e-3);
   }
   std::printf("legs from rest: %zu (1: it never stopped); duration %.1f s\n", stream.leg_count(), stream.duration());
   std::printf("load average after: %s\n\n", load_average().c_str());
@@ -235,9 +267,10 @@ void run_sample(std::size_t paced_cycles) {
     stream.stop(600.0);
     stream.resume(620.0);
   }
-  std::printf("== sampling: %zu consecutive 1 kHz cycles (t = k ms) in a tight loop, steady_clock ns per call (wall time); "
-              "load average %s\n",
-              cycles, load_average().c_str());
+  std::printf(
+      "== sampling: %zu consecutive 1 kHz cycles (t = k ms) in a tight loop, steady_clock ns per call (wall time); "
+      "load average %s\n",
+      cycles, load_average().c_str());
   std::printf("trajectory: %.1f s, %zu laws, %zu sections; stream: %.1f s, %zu leg(s)\n", events.duration(),
               events.law_count(), events.section_count(), stream.duration(), stream.leg_count());
   std::printf("%-44s %9s %9s %9s %10s %8s\n", "", "median", "p99", "p99.99", "max", ">10us");
@@ -264,18 +297,22 @@ void run_sample(std::size_t paced_cycles) {
     const std::string r = " (" + std::to_string(round) + ")";
     print_tail(("steady_clock pair alone, the floor" + r).c_str(), run(cycles, false, nothing));
     Trajectory::Cursor tc;
-    print_tail(("Trajectory::sample(t, cursor)" + r).c_str(), run(cycles, false, [&](double t) { return events.sample(t, tc); }));
+    print_tail(("Trajectory::sample(t, cursor)" + r).c_str(),
+               run(cycles, false, [&](double t) { return events.sample(t, tc); }));
     MotionStream::Cursor sc;
-    print_tail(("MotionStream::sample(t, cursor)" + r).c_str(), run(cycles, false, [&](double t) { return stream.sample(t, sc); }));
+    print_tail(("MotionStream::sample(t, cursor)" + r).c_str(),
+               run(cycles, false, [&](double t) { return stream.sample(t, sc); }));
   }
   if (paced_cycles > 0) {
     std::printf("paced: %zu cycles each, sleeping until every next 1 ms deadline (caches as a real loop leaves them)\n",
                 paced_cycles);
     print_tail("steady_clock pair alone, paced", run(paced_cycles, true, nothing));
     Trajectory::Cursor tc;
-    print_tail("Trajectory::sample(t, cursor), paced", run(paced_cycles, true, [&](double t) { return events.sample(t, tc); }));
+    print_tail("Trajectory::sample(t, cursor), paced",
+               run(paced_cycles, true, [&](double t) { return events.sample(t, tc); }));
     MotionStream::Cursor sc;
-    print_tail("MotionStream::sample(t, cursor), paced", run(paced_cycles, true, [&](double t) { return stream.sample(t, sc); }));
+    print_tail("MotionStream::sample(t, cursor), paced",
+               run(paced_cycles, true, [&](double t) { return stream.sample(t, sc); }));
   }
   std::printf("load average after: %s\n\n", load_average().c_str());
 }
@@ -287,7 +324,8 @@ int main(int argc, char** argv) {
   const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   const std::string only = argc > 3 ? argv[3] : "";
   if (part != "all" && part != "requests" && part != "append" && part != "stream" && part != "sample") {
-    std::fprintf(stderr, "usage: %s [all|requests|append|stream|sample] [scale=1] [trajectories named with this]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [all|requests|append|stream|sample] [scale=1] [trajectories named with this]\n",
+                 argv[0]);
     return 2;
   }
   if (part == "all" || part == "requests") run_requests(scale, only);

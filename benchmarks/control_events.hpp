@@ -106,7 +106,8 @@ inline Rounds alternate(const std::function<void()>& pass_a, const std::function
     b.push_back(tb);
     r.push_back(tb / ta);
   }
-  return {median(a), median(b), median(r), *std::min_element(r.begin(), r.end()), *std::max_element(r.begin(), r.end())};
+  return {median(a), median(b), median(r), *std::min_element(r.begin(), r.end()),
+          *std::max_element(r.begin(), r.end())};
 }
 
 //! The metric set of the planner benchmarks and the stream tests: an icosahedron of 0.1 m

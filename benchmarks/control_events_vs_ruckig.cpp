@@ -96,11 +96,13 @@ int main(int argc, char** argv) {
   const std::size_t count = argc > 1 ? static_cast<std::size_t>(std::atol(argv[1])) : 1000;
   const int rounds = argc > 2 ? std::atoi(argv[2]) : 21;
   const double overhead = thread_clock_overhead();
-  std::printf("%zu requests per trajectory, %d alternating rounds; thread CPU clock pair %.0f ns (subtracted per call); "
-              "load average %s\n",
-              count, rounds, overhead, load_average().c_str());
-  std::printf("%-26s %-9s | %-19s | %-19s | %9s %9s | %-22s | %8s %6s\n", "trajectory", "request", "dispkin median/max us",
-              "Ruckig median/max us", "dk pass", "Rk pass", "dispkin/Ruckig [range]", "max diff", "failed");
+  std::printf(
+      "%zu requests per trajectory, %d alternating rounds; thread CPU clock pair %.0f ns (subtracted per call); "
+      "load average %s\n",
+      count, rounds, overhead, load_average().c_str());
+  std::printf("%-26s %-9s | %-19s | %-19s | %9s %9s | %-22s | %8s %6s\n", "trajectory", "request",
+              "dispkin median/max us", "Ruckig median/max us", "dk pass", "Rk pass", "dispkin/Ruckig [range]",
+              "max diff", "failed");
   std::vector<std::string> failures;
   for (const Workload& w : workloads()) {
     const Trajectory& traj = w.trajectory;
@@ -116,7 +118,8 @@ int main(int argc, char** argv) {
       double worst = 0.0;
       std::size_t failed = 0;
       for (const State& x : states) {
-        const double theirs = stop ? ruckig.stop_from(x.v, x.a) : ruckig.move_from(x.remaining, x.v, x.a, x.factor * w.limits.velocity);
+        const double theirs =
+            stop ? ruckig.stop_from(x.v, x.a) : ruckig.move_from(x.remaining, x.v, x.a, x.factor * w.limits.velocity);
         if (!std::isfinite(theirs)) {
           if (failed++ == 0)
             failures.push_back(w.name + (stop ? " stop" : " override") + ": Ruckig result " +
@@ -137,8 +140,14 @@ int main(int argc, char** argv) {
       const auto ruckig_call = [&](const State& x) {
         keep(stop ? ruckig.stop_from(x.v, x.a) : ruckig.move_from(x.remaining, x.v, x.a, x.factor * w.limits.velocity));
       };
-      const Rounds r = alternate([&] { for (const State& x : states) ruckig_call(x); },
-                                 [&] { for (const State& x : states) dispkin_call(x); }, states.size(), rounds);
+      const Rounds r = alternate(
+          [&] {
+            for (const State& x : states) ruckig_call(x);
+          },
+          [&] {
+            for (const State& x : states) dispkin_call(x);
+          },
+          states.size(), rounds);
       // Per request: one dispkin call; Ruckig's, far below the thread clock's own cost, as the
       // mean of kRepeat calls on the same state.
       std::vector<double> ours, theirs;

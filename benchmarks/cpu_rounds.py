@@ -44,7 +44,7 @@ def alternating_rounds(blocks, rounds):
     times = {label: [] for label in blocks}
     labels = list(blocks)
     for r in range(rounds):
-        for label in labels[r % len(labels):] + labels[: r % len(labels)]:
+        for label in labels[r % len(labels) :] + labels[: r % len(labels)]:
             times[label].append(blocks[label]())
     return times
 

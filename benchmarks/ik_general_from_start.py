@@ -39,7 +39,9 @@ def main() -> None:
     parser.add_argument("--count", type=int, default=200)
     parser.add_argument("--rounds", type=int, default=5)
     args = parser.parse_args()
-    print(f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}, dispkin {dispkin.__version__}")
+    print(
+        f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}, dispkin {dispkin.__version__}"
+    )
     rng = np.random.default_rng(20261204 + 7)
     arm = dispkin.SerialArm.from_urdf(random_7r_urdf(rng), "l0", "l7")
     limits = arm.joint_limits
@@ -61,7 +63,9 @@ def main() -> None:
     times = cpu_rounds.alternating_rounds(blocks, args.rounds)
     for label, seconds in times.items():
         print(f"  {label}: {statistics.median(seconds) * 1e6:.1f} µs per call (median of {args.rounds} rounds)")
-    print(f"  ratio search / Newton: {cpu_rounds.median_ratio(times['search (64 starts, 50 ms)'], times['Newton from q_ref']):.0f}")
+    print(
+        f"  ratio search / Newton: {cpu_rounds.median_ratio(times['search (64 starts, 50 ms)'], times['Newton from q_ref']):.0f}"
+    )
 
     a = panda()
     q = np.array([0.1, -0.4, 0.2, -2.0, 0.1, 1.8, 0.7])

@@ -71,9 +71,10 @@ int main(int argc, char** argv) {
       if (serial::offset_wrist_inverse(chain, pose, dense).size() != solutions.size()) ++count_differs;
     }
   }
-  std::printf("samples %d, %d cases: found %ld (recovery %.4f %%), solutions above 1e-10: %ld, "
-              "count differs from 3600 samples: %ld of %ld\n",
-              options.samples, count, count - missed, 100.0 * static_cast<double>(count - missed) / count, inexact,
-              count_differs, compared);
+  std::printf(
+      "samples %d, %d cases: found %ld (recovery %.4f %%), solutions above 1e-10: %ld, "
+      "count differs from 3600 samples: %ld of %ld\n",
+      options.samples, count, count - missed, 100.0 * static_cast<double>(count - missed) / count, inexact,
+      count_differs, compared);
   return missed == 0 && inexact == 0 && count_differs == 0 ? 0 : 1;
 }

@@ -46,7 +46,9 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--timed", type=int, default=2000, help="poses per timing block")
     args = parser.parse_args()
-    print(f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}, dispkin {dispkin.__version__}")
+    print(
+        f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}, dispkin {dispkin.__version__}"
+    )
     for name, arm in arms().items():
         rng = np.random.default_rng(20261204)
         qs = random_q(rng, arm, args.count)
@@ -58,8 +60,10 @@ def main() -> None:
                 misses += 1
             else:
                 worst = max(worst, np.abs(solutions[0] - q).max())
-        print(f"{name}: {args.count} round trips, {misses} misses, worst joint error {worst:.2e} rad, "
-              f"{total / args.count:.2f} solutions per value on average")
+        print(
+            f"{name}: {args.count} round trips, {misses} misses, worst joint error {worst:.2e} rad, "
+            f"{total / args.count:.2f} solutions per value on average"
+        )
         poses = [arm.forward(q).matrix() for q in qs[: args.timed]]
         timed = qs[: args.timed]
         calls = {
@@ -69,7 +73,7 @@ def main() -> None:
         per_call = {key: [] for key in calls}
         for r in range(args.rounds):
             keys = list(calls)
-            for key in keys[r % len(keys):] + keys[: r % len(keys)]:
+            for key in keys[r % len(keys) :] + keys[: r % len(keys)]:
                 start = time.thread_time_ns()
                 calls[key]()
                 per_call[key].append((time.thread_time_ns() - start) / len(poses) / 1e3)

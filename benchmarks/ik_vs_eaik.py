@@ -92,10 +92,15 @@ def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, roun
     for pose, their_pose in zip(ours[:200], theirs[:200]):
         mine = arm.inverse_solutions(pose, keep_outside_limits=True, offer_equivalents=False).solutions
         solution = eaik_robot.IK(their_pose)
-        exact = [q for q, least_squares in zip(solution.Q, solution.is_LS)
-                 if not least_squares and np.abs(eaik_robot.fwdKin(q) - their_pose).max() <= 1e-9]
+        exact = [
+            q
+            for q, least_squares in zip(solution.Q, solution.is_LS)
+            if not least_squares and np.abs(eaik_robot.fwdKin(q) - their_pose).max() <= 1e-9
+        ]
         if distinct_count(mine) != distinct_count(exact):
-            raise RuntimeError(f"{name}: {distinct_count(mine)} solutions from dispkin, {distinct_count(exact)} from EAIK")
+            raise RuntimeError(
+                f"{name}: {distinct_count(mine)} solutions from dispkin, {distinct_count(exact)} from EAIK"
+            )
 
     mean_solutions = statistics.mean(len(arm.inverse(p)) for p in ours)
     as_poses = [dispkin.Pose.from_matrix(p) for p in ours]
@@ -105,19 +110,27 @@ def compare(name: str, path: pathlib.Path, base: str, tip: str, poses: int, roun
         "dispkin inverse_solutions(pose)": lambda: per_call(arm.inverse_solutions, ours),
         "dispkin inverse_many(all poses)": lambda: whole_batch(arm.inverse_many, ours_batch),
         "EAIK IK(pose)": lambda: per_call(eaik_robot.IK, theirs),
-        "EAIK IK_batched(all poses, 1 thread)": lambda: whole_batch(lambda batch: eaik_robot.IK_batched(batch, 1), theirs),
+        "EAIK IK_batched(all poses, 1 thread)": lambda: whole_batch(
+            lambda batch: eaik_robot.IK_batched(batch, 1), theirs
+        ),
         "empty call (arm.dof)": lambda: per_call(lambda p: arm.dof, ours),
     }
     ours_batch = np.array(ours)
     times = alternating_rounds(blocks, rounds)
     ratios = [d / e for d, e in zip(times["dispkin inverse(pose), pose a (4, 4) array"], times["EAIK IK(pose)"])]
-    print(f"\n{name}: {poses} poses, {mean_solutions:.2f} solutions per pose, family {arm.family!r} / EAIK "
-          f"{eaik_robot.getKinematicFamily()!r}")
+    print(
+        f"\n{name}: {poses} poses, {mean_solutions:.2f} solutions per pose, family {arm.family!r} / EAIK "
+        f"{eaik_robot.getKinematicFamily()!r}"
+    )
     for label, seconds in times.items():
-        print(f"  {label:48s} {statistics.median(seconds) * 1e6:8.2f} µs   "
-              f"(rounds: {min(seconds) * 1e6:.2f} – {max(seconds) * 1e6:.2f})")
-    print(f"  ratio dispkin inverse(array) / EAIK IK, median over rounds: {statistics.median(ratios):.3f} "
-          f"({min(ratios):.3f} – {max(ratios):.3f})")
+        print(
+            f"  {label:48s} {statistics.median(seconds) * 1e6:8.2f} µs   "
+            f"(rounds: {min(seconds) * 1e6:.2f} – {max(seconds) * 1e6:.2f})"
+        )
+    print(
+        f"  ratio dispkin inverse(array) / EAIK IK, median over rounds: {statistics.median(ratios):.3f} "
+        f"({min(ratios):.3f} – {max(ratios):.3f})"
+    )
 
 
 def main() -> None:
@@ -129,9 +142,11 @@ def main() -> None:
     import eaik  # noqa: F401  (fail early with a clear ImportError)
     from importlib.metadata import version
 
-    print(f"dispkin {dispkin.__version__}, eaik {version('eaik')}, numpy {np.__version__}, "
-          f"Python {platform.python_version()}, {platform.machine()}; thread CPU time (time.thread_time_ns) "
-          f"per pose, median of {args.rounds} alternating rounds")
+    print(
+        f"dispkin {dispkin.__version__}, eaik {version('eaik')}, numpy {np.__version__}, "
+        f"Python {platform.python_version()}, {platform.machine()}; thread CPU time (time.thread_time_ns) "
+        f"per pose, median of {args.rounds} alternating rounds"
+    )
     for name, (path, base, tip) in ARMS.items():
         compare(name, path, base, tip, args.poses, args.rounds, args.seed)
 

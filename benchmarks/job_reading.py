@@ -21,8 +21,14 @@ from dispkin.job import reader  # noqa: E402
 
 def pose_list_job(moves: int) -> str:
     """A CAM-like program: a sphere and a tip, LINs of a few millimetres, every corner blended."""
-    lines = ["metric_set:", "  points:", "    - {shape: sphere, radius: 0.1}", "    - {shape: icosahedron, radius: 0.02, center: [0, 0, 0.2]}",
-             "start: {xyzuvw: [0, 0, 0, 0, 0, 0]}", "moves:"]
+    lines = [
+        "metric_set:",
+        "  points:",
+        "    - {shape: sphere, radius: 0.1}",
+        "    - {shape: icosahedron, radius: 0.02, center: [0, 0, 0.2]}",
+        "start: {xyzuvw: [0, 0, 0, 0, 0, 0]}",
+        "moves:",
+    ]
     for k in range(1, moves + 1):
         x, y = 0.002 * k, 0.004 * (k % 2)
         blend = ", blend: 0.0005" if k > 1 else ""
@@ -49,11 +55,17 @@ def main() -> None:
                     return cpu_rounds.repeated(lambda: reader.Source(job), 1)
                 finally:
                     reader._FastLoader = fast
+
             return block
 
-        times = cpu_rounds.alternating_rounds({"libyaml": read(fast), "pure Python": read(None),
-                                               "load_job": lambda: cpu_rounds.repeated(lambda: jobs.load_job(job), 1)},
-                                              args.rounds)
+        times = cpu_rounds.alternating_rounds(
+            {
+                "libyaml": read(fast),
+                "pure Python": read(None),
+                "load_job": lambda: cpu_rounds.repeated(lambda: jobs.load_job(job), 1),
+            },
+            args.rounds,
+        )
     print(f"{args.moves} moves, {size} bytes; medians of {args.rounds} rounds")
     for label, seconds in times.items():
         print(f"  {label:12s} {statistics.median(seconds) * 1e3:8.1f} ms")

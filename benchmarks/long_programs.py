@@ -128,20 +128,28 @@ def compare(before, after, runs=(("cam", 4682), ("five_axis", 200)), rounds=3):
         results = {"before": [], "after": []}
         pythons = [("before", before), ("after", after)]
         for r in range(rounds):
-            for label, python in pythons[r % 2:] + pythons[: r % 2]:
-                out = subprocess.run([python, __file__, "--measure", workload, str(moves), "1"],
-                                     capture_output=True, text=True, check=True)
+            for label, python in pythons[r % 2 :] + pythons[: r % 2]:
+                out = subprocess.run(
+                    [python, __file__, "--measure", workload, str(moves), "1"],
+                    capture_output=True,
+                    text=True,
+                    check=True,
+                )
                 results[label].append(json.loads(out.stdout))
         rows.append((workload, moves, results))
-    print("| workload | moves | | sections | resident B/move | pickle B/move | peak growth MB | ms / 1000 moves | duration s |")
+    print(
+        "| workload | moves | | sections | resident B/move | pickle B/move | peak growth MB | ms / 1000 moves | duration s |"
+    )
     print("|---|---:|---|---:|---:|---:|---:|---:|---:|")
     for workload, moves, results in rows:
         for label in ("before", "after"):
             rs = results[label]
             med = lambda key: statistics.median(r[key] for r in rs)  # noqa: E731
-            print(f"| {workload} | {moves} | {label} | {rs[0]['sections']} | {med('resident_per_move'):.0f} | "
-                  f"{rs[0]['pickle_per_move']:.0f} | {med('peak_growth_mb'):.1f} | {med('ms_per_1000_moves'):.1f} | "
-                  f"{rs[0]['duration']:.4f} |")
+            print(
+                f"| {workload} | {moves} | {label} | {rs[0]['sections']} | {med('resident_per_move'):.0f} | "
+                f"{rs[0]['pickle_per_move']:.0f} | {med('peak_growth_mb'):.1f} | {med('ms_per_1000_moves'):.1f} | "
+                f"{rs[0]['duration']:.4f} |"
+            )
 
 
 if __name__ == "__main__":

@@ -81,14 +81,19 @@ def main():
             lambda S, v, a, j: plan(S, v, a, inf),
         ),
     }
-    print(f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
-          f"ruckig {getattr(ruckig, '__version__', '?')}, dispkin {dispkin.__version__}, {args.count} rest-to-rest cases, "
-          f"thread CPU time, medians of {args.rounds} alternating rounds")
-    print("| kind | dispkin µs/profile | Ruckig µs/profile | ratio | max rel. duration diff | cases > 1e-9 (Ruckig end-position error there) |")
+    print(
+        f"{platform.processor() or platform.machine()}, Python {platform.python_version()}, "
+        f"ruckig {getattr(ruckig, '__version__', '?')}, dispkin {dispkin.__version__}, {args.count} rest-to-rest cases, "
+        f"thread CPU time, medians of {args.rounds} alternating rounds"
+    )
+    print(
+        "| kind | dispkin µs/profile | Ruckig µs/profile | ratio | max rel. duration diff | cases > 1e-9 (Ruckig end-position error there) |"
+    )
     print("|---|---:|---:|---:|---:|---|")
     for kind, (ours, theirs, our_duration, their_plan) in runs.items():
-        times = alternating_rounds({"dispkin": lambda: per_call(ours, all_cases),
-                                    "ruckig": lambda: per_call(theirs, all_cases)}, args.rounds)
+        times = alternating_rounds(
+            {"dispkin": lambda: per_call(ours, all_cases), "ruckig": lambda: per_call(theirs, all_cases)}, args.rounds
+        )
         t_ours, t_theirs = statistics.median(times["dispkin"]), statistics.median(times["ruckig"])
         ratio = median_ratio(times["ruckig"], times["dispkin"])
         worst, off = 0.0, []
@@ -100,7 +105,9 @@ def main():
             if rel > 1e-9:
                 off.append((rel, abs(trajectory.at_time(trajectory.duration)[0][0] - c[0]) / c[0]))
         detail = "; ".join(f"{r:.1e} ({p:.1e} rel.)" for r, p in off[:5]) or "none"
-        print(f"| {kind} | {t_ours * 1e6:.2f} | {t_theirs * 1e6:.2f} | {ratio:.2f}× | {worst:.1e} | {len(off)}: {detail} |")
+        print(
+            f"| {kind} | {t_ours * 1e6:.2f} | {t_theirs * 1e6:.2f} | {ratio:.2f}× | {worst:.1e} | {len(off)}: {detail} |"
+        )
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@ one line of the entry, so the table says nothing the dated record does not.
 
 Standard library only.
 """
+
 import pathlib
 import sys
 

@@ -42,15 +42,23 @@ def test_move(kind):
 
 
 def toppra_duration(path, grid=100):
-    samples = dispkin.check_joint_limits(dispkin.plan(path, tool, dispkin.Limits(0.1, 1.0), profile="trapezoid"), arm, Q0,
-                                         samples_between=20).samples
+    samples = dispkin.check_joint_limits(
+        dispkin.plan(path, tool, dispkin.Limits(0.1, 1.0), profile="trapezoid"), arm, Q0, samples_between=20
+    ).samples
     s, keep = np.unique(samples["s"], return_index=True)
     limits = arm.joint_limits
-    constraints = [toppra.constraint.JointVelocityConstraint(np.column_stack([-limits.velocity, limits.velocity])),
-                   toppra.constraint.JointTorqueConstraint(lambda q, qd, qdd: arm.torques(q, qd, qdd),
-                                                           np.column_stack([-limits.effort, limits.effort]), np.zeros(6))]
-    instance = toppra.algorithm.TOPPRA(constraints, toppra.SplineInterpolator(s, samples["q"][keep]),
-                                       gridpoints=np.linspace(s[0], s[-1], grid + 1), parametrizer="ParametrizeConstAccel")
+    constraints = [
+        toppra.constraint.JointVelocityConstraint(np.column_stack([-limits.velocity, limits.velocity])),
+        toppra.constraint.JointTorqueConstraint(
+            lambda q, qd, qdd: arm.torques(q, qd, qdd), np.column_stack([-limits.effort, limits.effort]), np.zeros(6)
+        ),
+    ]
+    instance = toppra.algorithm.TOPPRA(
+        constraints,
+        toppra.SplineInterpolator(s, samples["q"][keep]),
+        gridpoints=np.linspace(s[0], s[-1], grid + 1),
+        parametrizer="ParametrizeConstAccel",
+    )
     return instance.compute_trajectory(0, 0).duration
 
 
@@ -61,8 +69,10 @@ CASES = [
     ("test LIN, DISP-bound", test_move("lin"), 0.3, 2.0, [20.0]),
 ]
 
-print("| move | v, a (DISP) | jerk | jerk-free optimal | toppra (no jerk) | jerk-limited optimal | window T | "
-      "cost vs jerk-free | S-curve plan (no joint limits) | scaling, S-curve |")
+print(
+    "| move | v, a (DISP) | jerk | jerk-free optimal | toppra (no jerk) | jerk-limited optimal | window T | "
+    "cost vs jerk-free | S-curve plan (no joint limits) | scaling, S-curve |"
+)
 print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
 for name, path, v, a, jerks in CASES:
     plain = dispkin.retime(path, tool, dispkin.Limits(v, a), arm, Q0, profile="trapezoid", method="optimal")
@@ -76,6 +86,8 @@ for name, path, v, a, jerks in CASES:
             scaled = "does not converge"
         scurve = dispkin.plan(path, tool, limits, profile="scurve").duration
         d0, d1 = plain.trajectory.duration, jerked.trajectory.duration
-        print(f"| {name} | {v:g} m/s, {a:g} m/s² | {j:g} | {d0:.4f} s | {theirs:.4f} s | {d1:.4f} s | "
-              f"{jerked.jerk_window * 1e3:.1f} ms | +{(d1 / d0 - 1) * 100:.1f} % | {scurve:.4f} s | "
-              f"{scaled} |")
+        print(
+            f"| {name} | {v:g} m/s, {a:g} m/s² | {j:g} | {d0:.4f} s | {theirs:.4f} s | {d1:.4f} s | "
+            f"{jerked.jerk_window * 1e3:.1f} ms | +{(d1 / d0 - 1) * 100:.1f} % | {scurve:.4f} s | "
+            f"{scaled} |"
+        )

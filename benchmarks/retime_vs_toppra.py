@@ -42,8 +42,9 @@ ACCELERATION = np.array([8.0, 8.0, 8.0, 12.0, 12.0, 12.0])
 GRID = 100
 
 # The joint path for toppra: dispkin's q(s), sampled.
-samples = dispkin.check_joint_limits(dispkin.plan(path, tool, fast, profile="trapezoid"), arm, q_start,
-                                     samples_between=20).samples
+samples = dispkin.check_joint_limits(
+    dispkin.plan(path, tool, fast, profile="trapezoid"), arm, q_start, samples_between=20
+).samples
 s, keep = np.unique(samples["s"], return_index=True)
 pick = np.linspace(0, len(s) - 1, 101).round().astype(int)
 s_knots, q_knots = s[pick], samples["q"][keep][pick]
@@ -54,19 +55,40 @@ def toppra_run(with_torque):
     spline = toppra.SplineInterpolator(s_knots, q_knots)
     constraints = [toppra.constraint.JointVelocityConstraint(np.column_stack([-limits.velocity, limits.velocity]))]
     if with_torque:
-        constraints.append(toppra.constraint.JointTorqueConstraint(
-            lambda q, qd, qdd: arm.torques(q, qd, qdd), np.column_stack([-limits.effort, limits.effort]), np.zeros(6)))
+        constraints.append(
+            toppra.constraint.JointTorqueConstraint(
+                lambda q, qd, qdd: arm.torques(q, qd, qdd),
+                np.column_stack([-limits.effort, limits.effort]),
+                np.zeros(6),
+            )
+        )
     else:
-        constraints.append(toppra.constraint.JointAccelerationConstraint(np.column_stack([-ACCELERATION, ACCELERATION])))
-    instance = toppra.algorithm.TOPPRA(constraints, spline, gridpoints=np.linspace(s_knots[0], s_knots[-1], GRID + 1),
-                                       parametrizer="ParametrizeConstAccel")
+        constraints.append(
+            toppra.constraint.JointAccelerationConstraint(np.column_stack([-ACCELERATION, ACCELERATION]))
+        )
+    instance = toppra.algorithm.TOPPRA(
+        constraints,
+        spline,
+        gridpoints=np.linspace(s_knots[0], s_knots[-1], GRID + 1),
+        parametrizer="ParametrizeConstAccel",
+    )
     return instance.compute_trajectory(0, 0).duration
 
 
 def ours(with_torque, check):
-    r = dispkin.retime(path, tool, fast, arm, q_start, profile="trapezoid", method="optimal", grid_intervals=GRID,
-                       joint_acceleration=None if with_torque else ACCELERATION, torque_limits=with_torque,
-                       samples_between=check)
+    r = dispkin.retime(
+        path,
+        tool,
+        fast,
+        arm,
+        q_start,
+        profile="trapezoid",
+        method="optimal",
+        grid_intervals=GRID,
+        joint_acceleration=None if with_torque else ACCELERATION,
+        torque_limits=with_torque,
+        samples_between=check,
+    )
     return r.trajectory.duration
 
 
@@ -80,10 +102,12 @@ def check():
 
 def timed(f, values, name):
     """A block: one call of f on this thread, its value kept in values[name]; its CPU time (s)."""
+
     def block():
         start = time.thread_time()
         values[name] = f()
         return time.thread_time() - start
+
     return block
 
 
@@ -95,11 +119,13 @@ def main():
     ]
     groups = []
     for with_torque, label in ((False, "velocity + acceleration"), (True, "velocity + torque")):
-        groups.append([
-            (f"dispkin optimal, {label}, dense check 3", lambda w=with_torque: ours(w, 3)),
-            (f"dispkin optimal, {label}, check 0 (ends and middles only)", lambda w=with_torque: ours(w, 0)),
-            (f"toppra, {label}", lambda w=with_torque: toppra_run(w)),
-        ])
+        groups.append(
+            [
+                (f"dispkin optimal, {label}, dense check 3", lambda w=with_torque: ours(w, 3)),
+                (f"dispkin optimal, {label}, check 0 (ends and middles only)", lambda w=with_torque: ours(w, 0)),
+                (f"toppra, {label}", lambda w=with_torque: toppra_run(w)),
+            ]
+        )
     rows += [row for group in groups for row in group]
     # Alternating rounds (cpu_rounds.py): every row once per round, starting from another row
     # each round, so that a slow spell of the machine falls on all of them alike; the median over

@@ -55,9 +55,11 @@ void report(const char* name, const Path& path, const dispkin::MetricSetd& set, 
             double tolerance) {
   dispkin::PlanOptions options;
   options.corner_tolerance = tolerance;
-  const double trapezoid = dispkin::plan(path, set, dispkin::Limits{v, a, {}}, dispkin::ProfileKind::trapezoid, options).duration();
+  const double trapezoid =
+      dispkin::plan(path, set, dispkin::Limits{v, a, {}}, dispkin::ProfileKind::trapezoid, options).duration();
   const double plan_start = thread_cpu();
-  const dispkin::Trajectory scurve = dispkin::plan(path, set, dispkin::Limits{v, a, j}, dispkin::ProfileKind::scurve, options);
+  const dispkin::Trajectory scurve =
+      dispkin::plan(path, set, dispkin::Limits{v, a, j}, dispkin::ProfileKind::scurve, options);
   const double plan_cpu = thread_cpu() - plan_start;
   // The chain and the law over the same staircases, timed in alternating rounds (best of 5).
   const auto runs = staircases(scurve);
@@ -78,10 +80,12 @@ void report(const char* name, const Path& path, const dispkin::MetricSetd& set, 
     chain_cpu = std::min(chain_cpu, t1 - t0);
     law_cpu = std::min(law_cpu, t2 - t1);
   }
-  std::printf("%s: %zu segments in %zu runs; trapezoid %.3f s, S-curve %.3f s (its laws %.3f s; chain at rest "
-              "boundaries %.3f s); S-curve / trapezoid %.3f (chain %.3f); law %.2f ms, chain %.2f ms CPU (%.1f x) of a %.0f ms plan\n",
-              name, segments, runs.size(), trapezoid, scurve.duration(), law, chain, scurve.duration() / trapezoid,
-              chain / trapezoid, 1e3 * law_cpu, 1e3 * chain_cpu, law_cpu / chain_cpu, 1e3 * plan_cpu);
+  std::printf(
+      "%s: %zu segments in %zu runs; trapezoid %.3f s, S-curve %.3f s (its laws %.3f s; chain at rest "
+      "boundaries %.3f s); S-curve / trapezoid %.3f (chain %.3f); law %.2f ms, chain %.2f ms CPU (%.1f x) of a %.0f ms "
+      "plan\n",
+      name, segments, runs.size(), trapezoid, scurve.duration(), law, chain, scurve.duration() / trapezoid,
+      chain / trapezoid, 1e3 * law_cpu, 1e3 * chain_cpu, law_cpu / chain_cpu, 1e3 * plan_cpu);
 }
 
 }  // namespace
@@ -111,7 +115,8 @@ int main() {
     std::vector<Posed> poses;
     double phi = 0.0, angle = 0.0;
     for (int k = 0; k <= 2000; ++k) {
-      poses.emplace_back(Eigen::Quaterniond(Eigen::AngleAxisd(angle, V::UnitZ())), V(0.05 * std::cos(phi), 0.05 * std::sin(phi), 0.0));
+      poses.emplace_back(Eigen::Quaterniond(Eigen::AngleAxisd(angle, V::UnitZ())),
+                         V(0.05 * std::cos(phi), 0.05 * std::sin(phi), 0.0));
       phi += (0.00008 + 0.00016 * u(engine)) / 0.05;
       angle += 0.005 + 0.01 * u(engine);
     }

@@ -6,6 +6,7 @@ files, the median of the runs' medians and the range of those medians), items/s 
 
     python3 benchmarks/summarize.py run1.json [run2.json ...]
 """
+
 import json
 import statistics
 import sys

@@ -69,9 +69,11 @@ def path(arm):
     def at(dx, dy, dz):
         return dispkin.Pose(a.quaternion, t + np.array([dx, dy, dz]))
 
-    return (dispkin.Path.lin(a, at(0.1, 0.0, 0.0))
-            .then(dispkin.Path.circ(at(0.1, 0.0, 0.0), at(0.15, 0.05, 0.0), at(0.1, 0.1, 0.0)), blend=0.02)
-            .then(dispkin.Path.lin(at(0.1, 0.1, 0.0), at(0.0, 0.1, -0.05)), blend=0.02))
+    return (
+        dispkin.Path.lin(a, at(0.1, 0.0, 0.0))
+        .then(dispkin.Path.circ(at(0.1, 0.0, 0.0), at(0.15, 0.05, 0.0), at(0.1, 0.1, 0.0)), blend=0.02)
+        .then(dispkin.Path.lin(at(0.1, 0.1, 0.0), at(0.0, 0.1, -0.05)), blend=0.02)
+    )
 
 
 def plan_unit():
@@ -162,10 +164,12 @@ def measure(name, make_unit, rounds):
         one.append(walls[one_thread])
         two.append(walls[two_threads])
         ratios.append(walls[one_thread] / walls[two_threads])
-    print(f"  {name:14s} 1 thread {statistics.median(one) * 1e3:8.1f} ms   2 threads {statistics.median(two) * 1e3:8.1f} ms"
-          f"   speed-up {statistics.median(one) / statistics.median(two):.2f}"
-          f" (per round: median {statistics.median(ratios):.2f}, {min(ratios):.2f} – {max(ratios):.2f})"
-          f"   cores busy: 1 thread {statistics.median(busy_one):.2f}, 2 threads {statistics.median(busy_two):.2f}")
+    print(
+        f"  {name:14s} 1 thread {statistics.median(one) * 1e3:8.1f} ms   2 threads {statistics.median(two) * 1e3:8.1f} ms"
+        f"   speed-up {statistics.median(one) / statistics.median(two):.2f}"
+        f" (per round: median {statistics.median(ratios):.2f}, {min(ratios):.2f} – {max(ratios):.2f})"
+        f"   cores busy: 1 thread {statistics.median(busy_one):.2f}, 2 threads {statistics.median(busy_two):.2f}"
+    )
 
 
 def main() -> None:
@@ -174,9 +178,11 @@ def main() -> None:
     parser.add_argument("--only", choices=sorted(WORKLOADS), help="run one workload")
     args = parser.parse_args()
     load = os.getloadavg()
-    print(f"dispkin {dispkin.__version__}, numpy {np.__version__}, Python {platform.python_version()}, "
-          f"{platform.machine()}, {os.cpu_count()} cores, load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; "
-          f"wall time (time.perf_counter), median of {args.rounds} alternating rounds, two units of work each")
+    print(
+        f"dispkin {dispkin.__version__}, numpy {np.__version__}, Python {platform.python_version()}, "
+        f"{platform.machine()}, {os.cpu_count()} cores, load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; "
+        f"wall time (time.perf_counter), median of {args.rounds} alternating rounds, two units of work each"
+    )
     for name, make_unit in WORKLOADS.items():
         if args.only in (None, name):
             measure(name, make_unit, args.rounds)

@@ -37,5 +37,7 @@ print(
 )
 
 traj = dispkin.plan(dispkin.Path.lin(start, end), tool, dispkin.Limits(v, 0.5, jerk=5.0))
-print(f"dispkin S-curve plan      {traj.duration:.3f} s, path speed never above {traj.path_velocity(np.linspace(0, traj.duration, 1001)).max():.4f} m/s")
+print(
+    f"dispkin S-curve plan      {traj.duration:.3f} s, path speed never above {traj.path_velocity(np.linspace(0, traj.duration, 1001)).max():.4f} m/s"
+)
 assert chord <= lin * (1 + 1e-12)

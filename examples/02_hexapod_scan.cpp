@@ -11,7 +11,8 @@
 
 int main() {
   const double deg = 3.14159265358979323846 / 180.0;
-  const dispkin::hexapod::Hexapod hexapod = dispkin::hexapod::Hexapod::symmetric(0.12, 20 * deg, 0.08, 20 * deg, 0.15, 0.13, 0.20, 0.01);
+  const dispkin::hexapod::Hexapod hexapod =
+      dispkin::hexapod::Hexapod::symmetric(0.12, 20 * deg, 0.08, 20 * deg, 0.15, 0.13, 0.20, 0.01);
   const Eigen::Vector3d fibre_end(0.0, 0.0, 0.05);  // platform coordinates
   const dispkin::WorkToolFrames frames(dispkin::Posed(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0, 0, 0.20)),
                                        dispkin::Posed(Eigen::Quaterniond::Identity(), fibre_end));

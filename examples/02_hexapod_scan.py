@@ -17,13 +17,20 @@ import numpy as np
 import dispkin
 
 hexapod = dispkin.Hexapod.symmetric(
-    base_radius=0.12, base_gap=math.radians(20), platform_radius=0.08, platform_gap=math.radians(20),
-    height=0.15, leg_min=0.13, leg_max=0.20, leg_speed=0.01,
+    base_radius=0.12,
+    base_gap=math.radians(20),
+    platform_radius=0.08,
+    platform_gap=math.radians(20),
+    height=0.15,
+    leg_min=0.13,
+    leg_max=0.20,
+    leg_speed=0.01,
 )
 home = hexapod.forward(hexapod.inverse(dispkin.Pose.from_xyzuvw([0, 0, 0.15, 0, 0, 0])))
 fibre_end = np.array([0.0, 0.0, 0.05])  # platform coordinates
-frames = dispkin.WorkToolFrames(work=dispkin.Pose.from_xyzuvw([0, 0, 0.20, 0, 0, 0]),
-                                tool=dispkin.Pose.from_xyzuvw([*fibre_end, 0, 0, 0]))
+frames = dispkin.WorkToolFrames(
+    work=dispkin.Pose.from_xyzuvw([0, 0, 0.20, 0, 0, 0]), tool=dispkin.Pose.from_xyzuvw([*fibre_end, 0, 0, 0])
+)
 pivot = frames.pivot
 
 shell = dispkin.MetricSet()
@@ -44,16 +51,20 @@ limits = dispkin.Limits(velocity=0.01, acceleration=0.05, jerk=0.5)
 traj = dispkin.plan(path, scan, limits)
 check = hexapod.check_trajectory(traj, 1e-3)
 print(f"scan: {len(tilts) - 1} tilts about the fibre end, {traj.duration:.2f} s, {traj.piece_count} stops")
-print(f"leg lengths {check.min_length.min() * 1000:.2f} .. {check.max_length.max() * 1000:.2f} mm "
-      f"(range {0.13 * 1000:.0f} .. {0.20 * 1000:.0f} mm)")
+print(
+    f"leg lengths {check.min_length.min() * 1000:.2f} .. {check.max_length.max() * 1000:.2f} mm "
+    f"(range {0.13 * 1000:.0f} .. {0.20 * 1000:.0f} mm)"
+)
 print(f"fastest leg {check.max_speed.max() * 1000:.3f} mm/s (limit {0.01 * 1000:.0f} mm/s); within limits: {check.ok}")
 assert check.ok
 
 # Rule (b): no leg group in the set; each section is made long enough for the fastest leg.
 traj_b = dispkin.plan(path, shell, limits, joint_metric=hexapod)
 check_b = hexapod.check_trajectory(traj_b, 1e-3)
-print(f"rule (b), joint-space metric: {traj_b.duration:.2f} s (rule (a): {traj.duration:.2f} s), "
-      f"fastest leg {check_b.max_speed.max() * 1000:.3f} mm/s; within limits: {check_b.ok}")
+print(
+    f"rule (b), joint-space metric: {traj_b.duration:.2f} s (rule (a): {traj.duration:.2f} s), "
+    f"fastest leg {check_b.max_speed.max() * 1000:.3f} mm/s; within limits: {check_b.ok}"
+)
 assert check_b.ok
 
 # Leg lengths and the fastest point's speed over time (needs matplotlib: pip install dispkin[plot]).

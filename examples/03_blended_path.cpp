@@ -12,7 +12,8 @@ namespace {
 
 dispkin::Posed pose(double x, double y, double yaw_degrees) {
   const double deg = 3.14159265358979323846 / 180.0;
-  return dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << x, y, 0.0, 0.0, 0.0, yaw_degrees * deg).finished());
+  return dispkin::Posed::from_xyzuvw(
+      (Eigen::Matrix<double, 6, 1>() << x, y, 0.0, 0.0, 0.0, yaw_degrees * deg).finished());
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ def pose(x, y, yaw_degrees):
 start, p1, via, p2, end = pose(0, 0, 0), pose(0.3, 0, 10), pose(0.45, 0.1, 20), pose(0.3, 0.2, 30), pose(0, 0.2, 40)
 
 tool = dispkin.MetricSet()
-tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0]))    # around the flange
+tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0]))  # around the flange
 tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0.2]))  # around the tool tip
 limits = dispkin.Limits(velocity=0.25, acceleration=1.0, jerk=10.0)
 
@@ -43,8 +43,10 @@ def peak_point_speed(traj, step=1e-3):
 sharp, smooth = build(None), build(0.03)
 for name, path in (("sharp corners", sharp), ("blended 30 mm", smooth)):
     traj = dispkin.plan(path, tool, limits)
-    print(f"{name}: {len(path)} sections, {traj.piece_count} rest-to-rest piece(s), {traj.duration:.3f} s, "
-          f"fastest tool point {peak_point_speed(traj):.4f} m/s (limit {limits.velocity} m/s)")
+    print(
+        f"{name}: {len(path)} sections, {traj.piece_count} rest-to-rest piece(s), {traj.duration:.3f} s, "
+        f"fastest tool point {peak_point_speed(traj):.4f} m/s (limit {limits.velocity} m/s)"
+    )
 
 blended = dispkin.plan(smooth, tool, limits)
 assert blended.piece_count == 1

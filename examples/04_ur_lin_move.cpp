@@ -25,7 +25,8 @@ int main() {
   dispkin::MetricSetd tool;
   tool.add_relative(Eigen::Vector3d(0.0, 0.0, 0.15));
   tool.add_sphere(Eigen::Vector3d::Zero(), 0.04);
-  const dispkin::Trajectory traj = dispkin::plan(dispkin::Path::lin(start, goal), tool, dispkin::Limits{0.25, 1.0, 10.0});
+  const dispkin::Trajectory traj =
+      dispkin::plan(dispkin::Path::lin(start, goal), tool, dispkin::Limits{0.25, 1.0, 10.0});
 
   std::vector<Posed> poses;
   std::vector<double> times;

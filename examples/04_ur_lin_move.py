@@ -17,7 +17,9 @@ import dispkin
 arm = dispkin.SerialArm.from_urdf(dispkin.data.path("ur5e.urdf"), "base_link", "tool0")
 q_start = np.array([0.0, -1.9, 1.9, -1.57, -1.57, 0.0])
 start = arm.forward(q_start)
-goal = dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])
+goal = (
+    dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])
+)
 
 tool = dispkin.MetricSet()
 tool.add_relative((0.0, 0.0, 0.15))  # the tool tip, tool0 coordinates

@@ -37,7 +37,8 @@ int main() {
               scaled.trajectory.duration(), scaled.iterations, scaled.limits.velocity, scaled.limits.acceleration);
   const dispkin::OptimalRetimeResult optimal = dispkin::serial::retime_optimal(path, tool, fast, arm, q_start);
   std::printf("optimal:   %.3f s; largest joint speed / limit %.3f, torque / limit %.3f (checked at %zu samples)\n",
-              optimal.trajectory.duration(), optimal.velocity_ratio, optimal.torque_ratio, optimal.report.samples.size());
+              optimal.trajectory.duration(), optimal.velocity_ratio, optimal.torque_ratio,
+              optimal.report.samples.size());
   // The same with a jerk limit on the tool points (2000 m/s³): each rest-to-rest run is averaged
   // over a window T so that |s⃛| ≤ j; it costs about T.
   dispkin::Limits smooth = fast;

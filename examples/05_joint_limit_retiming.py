@@ -29,23 +29,31 @@ fast = dispkin.Limits(velocity=3.0, acceleration=400.0)
 
 requested = dispkin.plan(path, tool, fast, profile="trapezoid")
 before = dispkin.check_joint_limits(requested, arm, q_start)
-print(f"requested: {requested.duration:.3f} s, FVEL {before.velocity_factor:.2f}, FACC {before.acceleration_factor:.2f}")
+print(
+    f"requested: {requested.duration:.3f} s, FVEL {before.velocity_factor:.2f}, FACC {before.acceleration_factor:.2f}"
+)
 
 scaled = dispkin.retime(path, tool, fast, arm, q_start, profile="trapezoid", method="scaling")
 optimal = dispkin.retime(path, tool, fast, arm, q_start, profile="trapezoid", method="optimal")
-print(f"scaling:   {scaled.trajectory.duration:.3f} s after {scaled.iterations} plans "
-      f"(velocity {scaled.limits.velocity:.3f} m/s, acceleration {scaled.limits.acceleration:.1f} m/s²)")
-print(f"optimal:   {optimal.trajectory.duration:.3f} s; largest joint speed / limit {optimal.velocity_ratio:.3f}, "
-      f"torque / limit {optimal.torque_ratio:.3f}")
+print(
+    f"scaling:   {scaled.trajectory.duration:.3f} s after {scaled.iterations} plans "
+    f"(velocity {scaled.limits.velocity:.3f} m/s, acceleration {scaled.limits.acceleration:.1f} m/s²)"
+)
+print(
+    f"optimal:   {optimal.trajectory.duration:.3f} s; largest joint speed / limit {optimal.velocity_ratio:.3f}, "
+    f"torque / limit {optimal.torque_ratio:.3f}"
+)
 assert requested.duration < optimal.trajectory.duration <= scaled.trajectory.duration
 
 # The same with a jerk limit on the tool points: each rest-to-rest run is averaged over a window T
 # so that |s'''| <= jerk; the DISP and joint limits still hold, at a cost of about T.
 smooth = dispkin.Limits(velocity=3.0, acceleration=400.0, jerk=2000.0)
 jerked = dispkin.retime(path, tool, smooth, arm, q_start, profile="scurve", method="optimal")
-print(f"optimal, jerk <= {smooth.jerk:g} m/s³: {jerked.trajectory.duration:.3f} s (window "
-      f"{jerked.jerk_window * 1e3:.1f} ms); joint speed / limit {jerked.velocity_ratio:.3f}, "
-      f"torque / limit {jerked.torque_ratio:.3f}")
+print(
+    f"optimal, jerk <= {smooth.jerk:g} m/s³: {jerked.trajectory.duration:.3f} s (window "
+    f"{jerked.jerk_window * 1e3:.1f} ms); joint speed / limit {jerked.velocity_ratio:.3f}, "
+    f"torque / limit {jerked.torque_ratio:.3f}"
+)
 assert optimal.trajectory.duration <= jerked.trajectory.duration
 
 limits = arm.joint_limits

@@ -36,7 +36,8 @@ std::vector<Path> program(int count) {
   std::vector<Path> moves;
   Posed p;
   for (int k = 1; k <= count; ++k) {
-    const Posed q(Eigen::Quaterniond(Eigen::AngleAxisd(4.0 * k * M_PI / 180.0, V::UnitZ())), V(0.08 * k, 0.03 * (k % 2), 0.0));
+    const Posed q(Eigen::Quaterniond(Eigen::AngleAxisd(4.0 * k * M_PI / 180.0, V::UnitZ())),
+                  V(0.08 * k, 0.03 * (k % 2), 0.0));
     moves.push_back(Path::lin(p, q));
     p = q;
   }
@@ -172,8 +173,8 @@ int main() {
   }
 
   const Posed goal = program(12).back().end();
-  std::printf("ran %.3f s of motion in 1 kHz cycles; feed hold at %.3f s (speed %.2g m/s before resuming)\n", t, stop_time,
-              stopped_speed);
+  std::printf("ran %.3f s of motion in 1 kHz cycles; feed hold at %.3f s (speed %.2g m/s before resuming)\n", t,
+              stop_time, stopped_speed);
   std::printf("path speed at most %.4f m/s (limit %.2f); largest step of the tool between cycles %.3g m\n", fastest,
               limits.velocity, largest_step);
   std::printf("longest cycle (load and sample) %.1f us; legs %zu; ends at the last pose: %s\n", longest_cycle * 1e6,

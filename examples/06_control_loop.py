@@ -17,12 +17,15 @@ import dispkin
 
 
 def program(count):
-    poses = [dispkin.Pose.from_xyzuvw([0.08 * k, 0.03 * (k % 2), 0.0, 0.0, 0.0, math.radians(4.0 * k)]) for k in range(count + 1)]
+    poses = [
+        dispkin.Pose.from_xyzuvw([0.08 * k, 0.03 * (k % 2), 0.0, 0.0, 0.0, math.radians(4.0 * k)])
+        for k in range(count + 1)
+    ]
     return [dispkin.Path.lin(a, b) for a, b in zip(poses, poses[1:])]
 
 
 tool = dispkin.MetricSet()
-tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0]))    # around the flange
+tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0]))  # around the flange
 tool.add_relative(dispkin.shapes.icosahedron(0.02, [0, 0, 0.2]))  # around the tool tip
 limits = dispkin.Limits(velocity=0.2, acceleration=1.0, jerk=10.0)
 
@@ -42,8 +45,11 @@ while True:
     for name, at in events.items():
         if name not in done_events and t >= at:
             done_events.add(name)
-            {"stop": lambda: stream.stop(t), "resume": lambda: stream.resume(t),
-             "override": lambda: stream.set_override(t, 0.5)}[name]()
+            {
+                "stop": lambda: stream.stop(t),
+                "resume": lambda: stream.resume(t),
+                "override": lambda: stream.set_override(t, 0.5),
+            }[name]()
     stream.path_velocity(np.array([t]), out=speed)  # one cycle's sample, into the same array
     times.append(t)
     speeds.append(speed[0])
@@ -53,8 +59,10 @@ while True:
 
 speeds = np.array(speeds)
 print(f"{len(times)} cycles of 1 ms; {stream.leg_count} leg(s): the motion never stopped between moves")
-print(f"highest path speed {speeds.max():.4f} m/s (limit {limits.velocity}); at rest during the hold: "
-      f"{bool(np.all(speeds[(np.array(times) > 2.2) & (np.array(times) < 2.5)] < 1e-9))}")
+print(
+    f"highest path speed {speeds.max():.4f} m/s (limit {limits.velocity}); at rest during the hold: "
+    f"{bool(np.all(speeds[(np.array(times) > 2.2) & (np.array(times) < 2.5)] < 1e-9))}"
+)
 after = np.array(times) > events["override"] + 0.5
 print(f"after the override: at most {speeds[after].max():.4f} m/s (50 % of {limits.velocity})")
 

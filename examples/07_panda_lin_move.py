@@ -23,7 +23,9 @@ import numpy as np
 import dispkin
 
 try:
-    robots = importlib.metadata.distribution("example-robot-data").locate_file("cmeel.prefix/share/example-robot-data/robots")
+    robots = importlib.metadata.distribution("example-robot-data").locate_file(
+        "cmeel.prefix/share/example-robot-data/robots"
+    )
 except importlib.metadata.PackageNotFoundError:
     sys.exit("07_panda_lin_move needs the Panda of example-robot-data: pip install example-robot-data")
 urdf = (pathlib.Path(robots) / "panda_description" / "urdf" / "panda.urdf").read_text()
@@ -31,7 +33,9 @@ urdf = (pathlib.Path(robots) / "panda_description" / "urdf" / "panda.urdf").read
 arm = dispkin.SerialArm.from_urdf(urdf, "panda_link0", "panda_hand")
 q_start = np.array([0.1, -0.4, 0.2, -2.0, 0.1, 1.8, 0.7])
 start = arm.forward(q_start)
-goal = dispkin.Pose((1, 0, 0, 0), (0.15, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(20)])
+goal = (
+    dispkin.Pose((1, 0, 0, 0), (0.15, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(20)])
+)
 path = dispkin.Path.lin(start, goal)
 
 tool = dispkin.MetricSet()
@@ -39,8 +43,10 @@ tool.add_relative((0.0, 0.0, 0.1))  # the tool tip, panda_hand coordinates
 tool.add_sphere((0.0, 0.0, 0.0), 0.05)
 limits = dispkin.Limits(velocity=0.25, acceleration=1.0, jerk=10.0)
 traj = dispkin.plan(path, tool, limits)
-print(f"{arm.robot_name}: family {arm.family}, redundancy {arm.redundancy.kind} "
-      f"({arm.redundancy.joint_name} in [{arm.redundancy.lower:.3f}, {arm.redundancy.upper:.3f}])")
+print(
+    f"{arm.robot_name}: family {arm.family}, redundancy {arm.redundancy.kind} "
+    f"({arm.redundancy.joint_name} in [{arm.redundancy.lower:.3f}, {arm.redundancy.upper:.3f}])"
+)
 
 poses = [dispkin.Pose.from_matrix(m) for m in traj.sample(np.linspace(0.0, traj.duration, 41))]
 moved = arm.follow(poses, q_start)
@@ -48,8 +54,10 @@ kept = arm.follow(poses, q_start, move_redundancy=False)
 for name, joints in (("q7 moved by the rule", moved), ("q7 kept", kept)):
     worst = max(np.abs(arm.forward(q).matrix() - p.matrix()).max() for q, p in zip(joints, poses))
     steps = np.abs(np.diff(joints, axis=0)).max()
-    print(f"follow, {name}: q7 from {joints[0, 6]:.4f} to {joints[-1, 6]:.4f} rad, largest joint step "
-          f"{steps:.4f} rad, largest pose error {worst:.1e}")
+    print(
+        f"follow, {name}: q7 from {joints[0, 6]:.4f} to {joints[-1, 6]:.4f} rad, largest joint step "
+        f"{steps:.4f} rad, largest pose error {worst:.1e}"
+    )
     assert np.abs(joints[0] - q_start).max() <= 1e-9 and steps <= 0.3 and worst <= 1e-10
 
 fast = dispkin.Limits(velocity=1.5, acceleration=20.0, jerk=400.0)
@@ -57,9 +65,11 @@ retimed = dispkin.retime(path, tool, fast, arm, q_start, profile="scurve", metho
 report = dispkin.check_joint_limits(retimed.trajectory, arm, q_start, samples_between=20)
 samples = report.samples
 joint_limits = arm.joint_limits
-print(f"re-timed for the joints: {retimed.trajectory.duration:.3f} s (planned for the tool alone at "
-      f"{fast.velocity} m/s: {dispkin.plan(path, tool, fast).duration:.3f} s); joint speed / limit "
-      f"{np.max(np.abs(samples['qd']) / joint_limits.velocity):.3f}")
+print(
+    f"re-timed for the joints: {retimed.trajectory.duration:.3f} s (planned for the tool alone at "
+    f"{fast.velocity} m/s: {dispkin.plan(path, tool, fast).duration:.3f} s); joint speed / limit "
+    f"{np.max(np.abs(samples['qd']) / joint_limits.velocity):.3f}"
+)
 assert np.all(np.abs(samples["qd"]) <= joint_limits.velocity)
 assert np.all(np.abs(samples["static_torque"] + samples["dynamic_torque"]) <= joint_limits.effort)
 
@@ -69,7 +79,14 @@ if __name__ == "__main__":
     matplotlib.use("Agg")
     from dispkin import plots
 
-    axes = plots.joint_limits(samples["time"], arm.joint_names, samples["q"], samples["qd"], joint_limits.lower,
-                              joint_limits.upper, joint_limits.velocity)
+    axes = plots.joint_limits(
+        samples["time"],
+        arm.joint_names,
+        samples["q"],
+        samples["qd"],
+        joint_limits.lower,
+        joint_limits.upper,
+        joint_limits.velocity,
+    )
     plots.save(axes, "07_panda_lin_move.png")
     print("wrote 07_panda_lin_move.png")

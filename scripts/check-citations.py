@@ -17,6 +17,7 @@ document numbers its equations once each and in increasing order.
 
 Prints each offence as FILE:LINE: and exits 1 if there is any, 0 otherwise.
 """
+
 import pathlib
 import re
 import sys
@@ -62,7 +63,9 @@ def check(root):
         last = 0
         for line, label in labels:
             if label <= last:
-                problems.append(f"doc/{path.name}:{line}: equation ({label}) after ({last}): number them once each, in order")
+                problems.append(
+                    f"doc/{path.name}:{line}: equation ({label}) after ({last}): number them once each, in order"
+                )
             last = max(last, label)
     for path in scanned_files(root):
         relative = path.relative_to(root).as_posix()
@@ -86,8 +89,11 @@ def check(root):
                 else:
                     missing = [x for x in cited_numbers(m.group(2)) if x not in docs[name]]
                     if missing:
-                        problems.append(f"{relative}:{n}: '{text}' of doc/{name}: no equation "
-                                        + ", ".join(f"({x})" for x in missing) + " there")
+                        problems.append(
+                            f"{relative}:{n}: '{text}' of doc/{name}: no equation "
+                            + ", ".join(f"({x})" for x in missing)
+                            + " there"
+                        )
     return problems
 
 

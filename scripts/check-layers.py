@@ -17,6 +17,7 @@ planning layers opens dispkin or one inside it that is not a plugin's.
 Prints each offending #include or namespace as FILE:LINE: and exits 1 if there is any, 0
 otherwise.
 """
+
 import pathlib
 import re
 import sys
@@ -87,8 +88,10 @@ def violations(root):
         text = path.read_text(encoding="utf-8")
         for number, name in opened_namespaces(text):
             if name.split("::")[0] == "dispkin" and not namespace_fits(layer, name):
-                yield (f"{path.relative_to(root)}:{number}: the {layer} layer opens namespace {name}, "
-                       f"not one inside {namespace_of_layer(layer)}")
+                yield (
+                    f"{path.relative_to(root)}:{number}: the {layer} layer opens namespace {name}, "
+                    f"not one inside {namespace_of_layer(layer)}"
+                )
         for number, line in enumerate(text.splitlines(), 1):
             match = INCLUDE.match(line)
             if not match:
@@ -97,8 +100,10 @@ def violations(root):
             if target is None or target == layer:
                 continue
             if RANKS[target] > RANKS[layer] or RANKS[target] == RANKS[layer]:
-                yield (f"{path.relative_to(root)}:{number}: the {layer} layer includes {match.group(1)} "
-                       f"of the {target} layer, which is not below it")
+                yield (
+                    f"{path.relative_to(root)}:{number}: the {layer} layer includes {match.group(1)} "
+                    f"of the {target} layer, which is not below it"
+                )
 
 
 def main(argv):
@@ -107,8 +112,10 @@ def main(argv):
     for message in found:
         print(message)
     if found:
-        print(f"check-layers: {len(found)} include(s) point up or across or namespace(s) differ from their "
-              "folder (doc/architecture.md)")
+        print(
+            f"check-layers: {len(found)} include(s) point up or across or namespace(s) differ from their "
+            "folder (doc/architecture.md)"
+        )
         return 1
     print("check-layers: every include points down and every namespace follows its folder")
     return 0

@@ -64,7 +64,7 @@ std::vector<Eigen::Vector3d> convex_hull_vertices(const std::vector<Eigen::Vecto
   for (const auto& p : points) covariance += (p - mean) * (p - mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance);
   const Eigen::Matrix3d axes = eig.eigenvectors();  // columns by ascending spread
-  Eigen::Vector3d reach = Eigen::Vector3d::Zero();   // largest |coordinate| along each axis
+  Eigen::Vector3d reach = Eigen::Vector3d::Zero();  // largest |coordinate| along each axis
   for (const auto& p : points) reach = reach.cwiseMax((axes.transpose() * (p - mean)).cwiseAbs());
   const double extent = reach(2);
   const double within_rounding = 1e-12 * extent;

@@ -53,10 +53,10 @@ void require_finite_duration(const Profile& law, double distance, double v_max, 
 
 [[noreturn]] void throw_too_short(double distance, double needed, double v_start, double v_end,
                                   const std::string& limits, const std::string& beyond) {
-  throw std::invalid_argument(describe("distance", distance,
-                                       "too short to change the velocity from v_start = " + number(v_start) +
-                                           " to v_end = " + number(v_end) + " under " + limits + ": it needs at least " +
-                                           number(needed) + beyond + "; lower v_start or v_end"));
+  throw std::invalid_argument(
+      describe("distance", distance,
+               "too short to change the velocity from v_start = " + number(v_start) + " to v_end = " + number(v_end) +
+                   " under " + limits + ": it needs at least " + number(needed) + beyond + "; lower v_start or v_end"));
 }
 
 // --- trapezoid -------------------------------------------------------------------------------
@@ -139,7 +139,8 @@ double scurve_rest_peak(double distance, double v_max, double a_max, double j_ma
   // The positive root of the quadratic, in the form without cancellation. Where a S or r²
   // leave the normal doubles: with q = √a √S, 2 q (q / (r + hypot(r, 2q))).
   const double a_s = a_max * distance;
-  if (std::isnormal(a_s) && std::isnormal(r * r)) return std::min(2.0 * a_s / (r + std::sqrt(r * r + 4.0 * a_s)), v_max);
+  if (std::isnormal(a_s) && std::isnormal(r * r))
+    return std::min(2.0 * a_s / (r + std::sqrt(r * r + 4.0 * a_s)), v_max);
   const double q = std::sqrt(a_max) * std::sqrt(distance);
   return std::min(2.0 * q * (q / (r + std::hypot(r, 2.0 * q))), v_max);
 }
@@ -179,14 +180,15 @@ Peak scurve_peak(double distance, double v_max, double a_max, double j_max, doub
   // Newton from above converges only linearly when the root is far below hi (D(w) − S behaves
   // like w³ near a root at w ≈ 0: a factor ≈ 2/3 per step), which a root at 1e-40 (S ≈ 1e-110 m)
   // needs ≈ 230 steps for: the cap leaves room down to the smallest doubles.
-  for (int iteration = 0; iteration < 4000 && hi - lo > 2.0 * std::numeric_limits<double>::epsilon() * hi; ++iteration) {
+  for (int iteration = 0; iteration < 4000 && hi - lo > 2.0 * std::numeric_limits<double>::epsilon() * hi;
+       ++iteration) {
     const double f = excess(w);
     if (f == 0.0) break;
     (f < 0.0 ? lo : hi) = w;
     const double d = slope(w);
     double next = d > 0.0 ? w - f / d : lo - 1.0;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
-    if (next == w) break;                                    // converged to rounding
+    if (next == w) break;                                   // converged to rounding
     w = next;
   }
   return {lowest + w * w, c_start + w * w, c_end + w * w};
@@ -299,9 +301,9 @@ Profile Profile::trapezoid_from_state(double distance, double v_max, double a_ma
   if (v_start <= v_max) return trapezoid(distance, v_max, a_max, v_start, v_end);
   const double needed = ramp_distance(v_start, v_end, a_max);
   if (distance < needed) {
-    throw_too_short(distance, needed, v_start, v_end, "a_max = " + number(a_max),
-                    ", " + number(needed - distance) + " more (braking at a_max from above v_max = " +
-                        number(v_max) + ")");
+    throw_too_short(
+        distance, needed, v_start, v_end, "a_max = " + number(a_max),
+        ", " + number(needed - distance) + " more (braking at a_max from above v_max = " + number(v_max) + ")");
   }
 
   Profile p;
@@ -373,7 +375,8 @@ Profile Profile::scurve(double distance, double v_max, double a_max, double j_ma
 // --- explicit phases -------------------------------------------------------------------------
 
 Profile Profile::from_parts(const Parts& parts) {
-  require(parts.count >= 0 && parts.count <= max_phases, "count", static_cast<long>(parts.count), "must be within [0, 7]");
+  require(parts.count >= 0 && parts.count <= max_phases, "count", static_cast<long>(parts.count),
+          "must be within [0, 7]");
   const auto finite_state = [](const ProfileState& x, const std::string& name) {
     require(std::isfinite(x.s) && std::isfinite(x.v) && std::isfinite(x.a) && std::isfinite(x.j), name,
             Eigen::Vector4d(x.s, x.v, x.a, x.j), "every value of the state (s, v, a, j) must be finite");
@@ -382,15 +385,17 @@ Profile Profile::from_parts(const Parts& parts) {
   require(parts.times[0] == 0.0, "times[0]", parts.times[0], "must be 0");
   for (std::size_t i = 0; i < n; ++i) {
     const std::string name = "phases[" + std::to_string(i) + "]";
-    require(std::isfinite(parts.times[i + 1]) && parts.times[i + 1] >= parts.times[i], "times[" + std::to_string(i + 1) + "]",
-            parts.times[i + 1], "must be finite and not below the time before it");
+    require(std::isfinite(parts.times[i + 1]) && parts.times[i + 1] >= parts.times[i],
+            "times[" + std::to_string(i + 1) + "]", parts.times[i + 1],
+            "must be finite and not below the time before it");
     require(std::isfinite(parts.phases[i].duration) && parts.phases[i].duration >= 0.0, name + ".duration",
             parts.phases[i].duration, "must be finite and not negative");
     require_finite(parts.phases[i].jerk, name + ".jerk");
     finite_state(parts.phases[i].start, name + ".start");
     finite_state(parts.phases[i].end, name + ".end");
   }
-  require(std::isfinite(parts.distance) && parts.distance >= 0.0, "distance", parts.distance, "must be finite and not negative");
+  require(std::isfinite(parts.distance) && parts.distance >= 0.0, "distance", parts.distance,
+          "must be finite and not negative");
   require(std::isfinite(parts.peak_velocity) && parts.peak_velocity >= 0.0, "peak_velocity", parts.peak_velocity,
           "must be finite and not negative");
   finite_state(parts.start, "start");
@@ -466,27 +471,31 @@ void Profile::require_consistent() const {
   // between phases by design; within a phase it is constant.
   // Names are made on failure only: every law planned passes here.
   const auto same = [&](const ProfileState& x, const ProfileState& y, bool acceleration, auto name) {
-    const bool close = std::abs(x.s - y.s) <= tol.s && std::abs(x.v - y.v) <= tol.v &&
-                       (!acceleration || std::abs(x.a - y.a) <= tol.a);
+    const bool close =
+        std::abs(x.s - y.s) <= tol.s && std::abs(x.v - y.v) <= tol.v && (!acceleration || std::abs(x.a - y.a) <= tol.a);
     if (!close)
       throw std::invalid_argument(describe(name() + " (s, v, a)", Eigen::Vector3d(y.s, y.v, y.a),
                                            "must be " + state_text(x) + " (to 1e-8 of the law's scale)"));
   };
-  const auto phase = [](std::size_t i, const char* field) { return [i, field] { return "phases[" + std::to_string(i) + "]" + field; }; };
+  const auto phase = [](std::size_t i, const char* field) {
+    return [i, field] { return "phases[" + std::to_string(i) + "]" + field; };
+  };
   const auto named = [](const char* name) { return [name] { return std::string(name); }; };
   // Accelerations are compared within phases only: the trapezoid's jump between phases by design,
   // and an S-curve's jerk phase shorter than its start time's resolution is left out, its
   // acceleration then jumping (a = 1e-300 m/s² at j = 1e300 m/s³).
   const bool continuous_acceleration = false;
   require(start_.s == 0.0, "start.s", start_.s, "must be 0 (a law starts at s = 0)");
-  require_lazily(std::abs(end_.s - distance_) <= tol.s, named("end.s"), end_.s, [&] { return "must be the distance " + number(distance_); });
+  require_lazily(std::abs(end_.s - distance_) <= tol.s, named("end.s"), end_.s,
+                 [&] { return "must be the distance " + number(distance_); });
   if (n == 0) same(start_, end_, false, named("end"));
   for (std::size_t i = 0; i < n; ++i) {
     const ProfilePhase& p = phases_[i];
     const double d = p.duration;
-    require_lazily(std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
-                   phase(i, ".duration"), d,
-                   [&] { return "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")"; });
+    require_lazily(
+        std::abs((time_[i + 1] - time_[i]) - d) <= 4.0 * std::numeric_limits<double>::epsilon() * time_[i + 1],
+        phase(i, ".duration"), d,
+        [&] { return "must be the time between its start and end times (" + number(time_[i + 1] - time_[i]) + ")"; });
     const ProfileState& x = p.start;
     const ProfileState carried{x.s + d * (x.v + d * (0.5 * x.a + p.jerk * d / 6.0)), x.v + d * (x.a + 0.5 * p.jerk * d),
                                x.a + p.jerk * d, p.jerk};
@@ -591,19 +600,20 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
   const bool meet = std::abs(x.s - y.s) <= tolerance * (distance + scale_v * total) &&
                     std::abs(x.v - y.v) <= tolerance * scale_v &&
                     std::abs(x.a - y.a) <= tolerance * (scale_a + scale_j * total) +
-                                                  1e-12 * scale_v / std::max(total, std::numeric_limits<double>::min());
+                                               1e-12 * scale_v / std::max(total, std::numeric_limits<double>::min());
   if (!meet) {
-    throw std::invalid_argument(describe("distance", distance,
-                                         "the phases do not lead from the start state (v = " + number(v_start) +
-                                             ", a = " + number(a_start) + ") to the end state (v = " + number(v_end) +
-                                             ", a = " + number(a_end) + "): integrated forward they reach s = " +
-                                             number(x.s) + ", v = " + number(x.v) + ", a = " + number(x.a) +
-                                             " where integrated backward they give s = " + number(y.s) +
-                                             ", v = " + number(y.v) + ", a = " + number(y.a)));
+    throw std::invalid_argument(
+        describe("distance", distance,
+                 "the phases do not lead from the start state (v = " + number(v_start) + ", a = " + number(a_start) +
+                     ") to the end state (v = " + number(v_end) + ", a = " + number(a_end) +
+                     "): integrated forward they reach s = " + number(x.s) + ", v = " + number(x.v) +
+                     ", a = " + number(x.a) + " where integrated backward they give s = " + number(y.s) +
+                     ", v = " + number(y.v) + ", a = " + number(y.a)));
   }
   if (lowest < -tolerance * scale_v) {
-    throw std::invalid_argument(describe("v_start", v_start, "the phases make the velocity negative (down to " +
-                                                                 number(lowest) + "): s would move backwards"));
+    throw std::invalid_argument(
+        describe("v_start", v_start,
+                 "the phases make the velocity negative (down to " + number(lowest) + "): s would move backwards"));
   }
   p.peak_velocity_ = peak;
   p.require_consistent();

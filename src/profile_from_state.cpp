@@ -25,10 +25,10 @@ using detail::number;  // message_number.hpp
 namespace {
 
 using Limits = detail::JerkLimits;
-using detail::Motion;
-using detail::Pulse;
 using detail::advance;
+using detail::Motion;
 using detail::natural_change;
+using detail::Pulse;
 using detail::pulse;
 
 // --- the law as pieces -------------------------------------------------------------------------
@@ -149,9 +149,9 @@ bool brake_into_limits(Draft& law, const Limits& lim) {
 // Each family appends its pieces to either a Draft (the law returned, holding the brake) or an
 // Endpoint (the distance only, for the root searches).
 struct Start {
-  Motion braked;    //!< the state after the brake into the limits (the start state if none)
-  double natural;   //!< v_n = v + natural_change(a) ≤ v_max
-  double lowest;    //!< v_lo = max(v_n, v_end), the lowest peak of the family (20)
+  Motion braked;   //!< the state after the brake into the limits (the start state if none)
+  double natural;  //!< v_n = v + natural_change(a) ≤ v_max
+  double lowest;   //!< v_lo = max(v_n, v_end), the lowest peak of the family (20)
   double v_end;
   Limits lim;
 
@@ -255,7 +255,8 @@ double increasing_root(F f, double lo, double hi, double f_lo, double f_hi, doub
       fb = fc;
       fc = fa;
     }
-    const double tol = 2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + std::numeric_limits<double>::denorm_min();
+    const double tol =
+        2.0 * std::numeric_limits<double>::epsilon() * std::abs(b) + std::numeric_limits<double>::denorm_min();
     const double m = 0.5 * (c - b);
     if (std::abs(m) <= tol || std::abs(fb) <= f_tol) break;
     if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
@@ -269,7 +270,10 @@ double increasing_root(F f, double lo, double hi, double f_lo, double f_hi, doub
         p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
         q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
       }
-      if (p > 0.0) q = -q; else p = -p;
+      if (p > 0.0)
+        q = -q;
+      else
+        p = -p;
       if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
         e = d;
         d = p / q;
@@ -307,11 +311,11 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
   // below zero the law would run backwards whatever it does.
   const double lowest = v_start + natural_change(std::min(a_start, 0.0), lim);
   if (lowest < 0.0) {
-    throw std::invalid_argument(describe(
-        "a_start", a_start,
-        "brakes too hard for v_start = " + number(v_start) + " under j_max = " + number(lim.j_max) +
-            ": the velocity falls to " + number(lowest) +
-            " < 0 before the acceleration can return to zero (the law would run backwards)"));
+    throw std::invalid_argument(
+        describe("a_start", a_start,
+                 "brakes too hard for v_start = " + number(v_start) + " under j_max = " + number(lim.j_max) +
+                     ": the velocity falls to " + number(lowest) +
+                     " < 0 before the acceleration can return to zero (the law would run backwards)"));
   }
 }
 
@@ -319,11 +323,10 @@ void check_input(double distance, const Limits& lim, double v_start, double a_st
                                   const Limits& lim) {
   throw std::invalid_argument(describe(
       "distance", distance,
-      "too short to go from v_start = " + number(v_start) + ", a_start = " + number(a_start) + " to v_end = " +
-          number(v_end) + " under v_max = " + number(lim.v_max) + ", a_max = " + number(lim.a_max) +
+      "too short to go from v_start = " + number(v_start) + ", a_start = " + number(a_start) +
+          " to v_end = " + number(v_end) + " under v_max = " + number(lim.v_max) + ", a_max = " + number(lim.a_max) +
           ", j_max = " + number(lim.j_max) + ": it needs at least " + number(needed) + ", " +
-          number(needed - distance) +
-          " more (even stopping on the way: no law reaches v_end in a shorter distance)"));
+          number(needed - distance) + " more (even stopping on the way: no law reaches v_end in a shorter distance)"));
 }
 
 // (24) Below the shortest law without a dip (of distance `shortest` > S): the trough law with the
@@ -390,8 +393,8 @@ void solve(Draft& law, const Start& start, double distance, double v_start, doub
 
 }  // namespace
 
-Profile Profile::from_state(double distance, double v_max, double a_max, double j_max, double v_start,
-                            double a_start, double v_end) {
+Profile Profile::from_state(double distance, double v_max, double a_max, double j_max, double v_start, double a_start,
+                            double v_end) {
   const Limits lim{v_max, a_max, j_max, 1.0 / j_max};
   check_input(distance, lim, v_start, a_start, v_end);
 

@@ -26,7 +26,10 @@ def _plain_text_marks(app, what, name, obj, options, lines):
     the same in help() and the stubs; pybind11 adds the signatures, with their bare `*`): escape
     their asterisks too."""
     compiled = getattr(obj, "__module__", None) == "dispkin._core" or type(obj).__name__ in (
-        "builtin_function_or_method", "instancemethod", "property")
+        "builtin_function_or_method",
+        "instancemethod",
+        "property",
+    )
     for i, line in enumerate(lines):
         line = line.replace("|", r"\|")
         lines[i] = line.replace("*", r"\*") if compiled else line

@@ -26,9 +26,7 @@ enum class Interpolation {
 };
 
 //! The interpolation's name: "screw" or "decoupled" (read back by interpolation_from_string).
-inline const char* to_string(Interpolation kind) {
-  return kind == Interpolation::screw ? "screw" : "decoupled";
-}
+inline const char* to_string(Interpolation kind) { return kind == Interpolation::screw ? "screw" : "decoupled"; }
 
 //! "screw" or "decoupled"; anything else throws std::invalid_argument naming the value.
 inline Interpolation interpolation_from_string(const std::string& name) {
@@ -248,11 +246,14 @@ Scalar max_point_speed(const MetricSet<Scalar>& set, const Pose<Scalar>& pose, c
                        std::optional<non_deduced<Scalar>> system_velocity = std::nullopt) {
   // A speed of 0 must mean "standing still", never "nothing was measured". (A collinear set
   // is fine here: its speed is well defined, only its distance is not a metric.)
-  if (set.empty()) throw std::invalid_argument(describe("metric_set", std::string("MetricSet"), "is empty: there is no point whose speed could be measured"));
+  if (set.empty())
+    throw std::invalid_argument(
+        describe("metric_set", std::string("MetricSet"), "is empty: there is no point whose speed could be measured"));
   require_finite(body.vector(), "twist");
   detail::require_system_velocity(system_velocity);
   Scalar best(0);
-  for (const auto& g : set.groups()) best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));
+  for (const auto& g : set.groups())
+    best = std::max(best, g.weight(system_velocity) * detail::group_max_speed(g, pose, body));
   return best;
 }
 
@@ -335,7 +336,8 @@ struct DecoupledSection {
 
   DecoupledSection(const Pose<Scalar>& a, const Pose<Scalar>& b, const Vector3& pivot) noexcept
       : DecoupledSection(a.quaternion(), b.quaternion(), a * pivot, b * pivot - a * pivot,
-                         quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion())), pivot) {}
+                         quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion())),
+                         pivot) {}
 
   // From its parts, when the caller knows them without a logarithm: the orientations at both
   // ends, the pivot's start ca and travel Δc (world), and Ω = log(Raᵀ Rb) (body of a, angle
@@ -397,7 +399,8 @@ struct DecoupledSection {
         const Scalar bx = dbx + qx, by = dby + qy, bz = dbz + qz;
         const Scalar a2 = ax * ax + ay * ay + az * az, b2 = bx * bx + by * by + bz * bz;
         end2_of[j] = a2 < b2 ? b2 : a2;  // std::max(a2, b2)
-        const bool inside = (qx * max_ + qy * may + qz * maz >= Scalar(0)) & (qx * mbx + qy * mby + qz * mbz >= Scalar(0));
+        const bool inside =
+            (qx * max_ + qy * may + qz * maz >= Scalar(0)) & (qx * mbx + qy * mby + qz * mbz >= Scalar(0));
         q2_of[j] = inside ? qx * qx + qy * qy + qz * qz : Scalar(-1);
       }
       for (std::size_t j = 0; j < n; ++j) {
@@ -437,22 +440,20 @@ struct DecoupledSection {
     const Vector3 g0 = delta_c + omega_world.cross(s.center - pivot_start);
     const Vector3 g1 = g0 - omega_world.cross(delta_c);
     const Scalar along_w = delta_c.dot(w_hat);
-    const Scalar across_peak =
-        std::max((g0 - g0.dot(w_hat) * w_hat).norm(), (g1 - g1.dot(w_hat) * w_hat).norm());
+    const Scalar across_peak = std::max((g0 - g0.dot(w_hat) * w_hat).norm(), (g1 - g1.dot(w_hat) * w_hat).norm());
     const Scalar rim = across_peak + theta * s.radius;
     return sqrt(along_w * along_w + rim * rim);
   }
 
-  Vector3 delta_c, omega, k, pivot_body, d_a, d_b, d_a_across, d_b_across, m_a, m_b, omega_world, w_hat,
-      pivot_start;
+  Vector3 delta_c, omega, k, pivot_body, d_a, d_b, d_a_across, d_b_across, m_a, m_b, omega_world, w_hat, pivot_start;
   Scalar theta, along, across;
 };
 
 template <typename Scalar>
 Scalar group_decoupled_length(const MetricGroup<Scalar>& g, const DecoupledSection<Scalar>& section) noexcept {
   using std::sqrt;
-  Scalar best = sqrt(std::max(section.relative_points_speed2(g.relative_points),
-                              section.absolute_points_speed2(g.absolute_points)));
+  Scalar best = sqrt(
+      std::max(section.relative_points_speed2(g.relative_points), section.absolute_points_speed2(g.absolute_points)));
   for (const auto& s : g.relative_spheres) best = std::max(best, section.relative_sphere_speed(s));
   for (const auto& s : g.absolute_spheres) best = std::max(best, section.absolute_sphere_speed(s));
   return best;
@@ -491,8 +492,9 @@ Scalar section_length(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const
 
 //! The pose at τ ∈ [0, 1] of a section — the motion whose speed section_length bounds.
 template <typename Scalar>
-Pose<Scalar> interpolate(const Pose<Scalar>& a, const Pose<Scalar>& b, non_deduced<Scalar> tau,
-                         Interpolation interpolation, const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) noexcept {
+Pose<Scalar> interpolate(
+    const Pose<Scalar>& a, const Pose<Scalar>& b, non_deduced<Scalar> tau, Interpolation interpolation,
+    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& pivot = Eigen::Matrix<Scalar, 3, 1>::Zero()) noexcept {
   if (interpolation == Interpolation::screw) return a * Pose<Scalar>::exp((a.inverse() * b).log() * tau);
   // Decoupled: R(τ) = Ra·exp(τ θ k), pivot c(τ) = ca + τ Δc, t = c − R p.
   const Eigen::Quaternion<Scalar> q_rel = a.quaternion().conjugate() * b.quaternion();

@@ -207,7 +207,8 @@ template <typename Derived>
 void require_translation(const Eigen::DenseBase<Derived>& value, std::string_view argument) {
   if (within_translation_range(value)) return;
   require_finite(value, argument);
-  throw std::invalid_argument(describe(argument, value, "must have coordinates within ±1e12 m (dispkin's numeric range)"));
+  throw std::invalid_argument(
+      describe(argument, value, "must have coordinates within ±1e12 m (dispkin's numeric range)"));
 }
 
 }  // namespace dispkin

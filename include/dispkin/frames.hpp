@@ -65,16 +65,19 @@ class WorkToolFrames {
   //! Adds an envelope of `radius` (m) around the tool origin as relative objects of `group`
   //! (the icosahedron turned with the tool frame). Throws std::invalid_argument for a radius
   //! that is not finite and positive or a negative group.
-  void add_tool_envelope(MetricSetd& set, double radius, Envelope envelope = Envelope::icosahedron, int group = 0) const {
+  void add_tool_envelope(MetricSetd& set, double radius, Envelope envelope = Envelope::icosahedron,
+                         int group = 0) const {
     add_envelope(set, tool_, radius, envelope, Frame::relative, group);
   }
   //! Adds an envelope of `radius` (m) around the work origin as absolute objects of `group`.
-  void add_work_envelope(MetricSetd& set, double radius, Envelope envelope = Envelope::icosahedron, int group = 0) const {
+  void add_work_envelope(MetricSetd& set, double radius, Envelope envelope = Envelope::icosahedron,
+                         int group = 0) const {
     add_envelope(set, work_, radius, envelope, Frame::absolute, group);
   }
 
  private:
-  static void add_envelope(MetricSetd& set, const Posed& frame, double radius, Envelope envelope, Frame where, int group) {
+  static void add_envelope(MetricSetd& set, const Posed& frame, double radius, Envelope envelope, Frame where,
+                           int group) {
     require_positive(radius, "radius");
     if (envelope == Envelope::sphere) {
       set.add_sphere(frame.translation(), radius, where, group);

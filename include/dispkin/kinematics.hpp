@@ -41,7 +41,8 @@ void require_joint_limits(const JointLimits& limits, Eigen::Index n, JointName j
     require(!std::isnan(limits.lower(i)) && !std::isnan(limits.upper(i)) && limits.lower(i) < limits.upper(i),
             joint + "(lower, upper)", Eigen::Vector2d(limits.lower(i), limits.upper(i)), "must have lower < upper");
     require(limits.velocity(i) > 0.0, joint + "velocity", limits.velocity(i), "must be > 0 (+inf: none)");
-    if (limits.effort.size()) require(limits.effort(i) > 0.0, joint + "effort", limits.effort(i), "must be > 0 (+inf: none)");
+    if (limits.effort.size())
+      require(limits.effort(i) > 0.0, joint + "effort", limits.effort(i), "must be > 0 (+inf: none)");
   }
 }
 

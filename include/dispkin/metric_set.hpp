@@ -43,7 +43,7 @@ struct Sphere {
 template <typename Scalar>
 class PointColumns {
  public:
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;                                 //!< a point
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;                               //!< a point
   using Column = Eigen::Map<const Eigen::Array<Scalar, Eigen::Dynamic, 1>>;  //!< one coordinate of every point
 
   //! Appends point p.
@@ -90,7 +90,7 @@ class PointColumns {
     const PointColumns* owner_;
     std::size_t i_;
   };
-  const_iterator begin() const { return const_iterator(this, 0); }       //!< at the first point
+  const_iterator begin() const { return const_iterator(this, 0); }     //!< at the first point
   const_iterator end() const { return const_iterator(this, size()); }  //!< past the last point
 
  private:
@@ -102,8 +102,8 @@ template <typename Scalar>
 struct MetricGroup {
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;  //!< a point
 
-  int id = 0;                         //!< the group's number, ≥ 0
-  std::optional<Scalar> speed_limit;  //!< unset: the group is held to the system velocity
+  int id = 0;                                    //!< the group's number, ≥ 0
+  std::optional<Scalar> speed_limit;             //!< unset: the group is held to the system velocity
   PointColumns<Scalar> relative_points;          //!< points in body coordinates
   PointColumns<Scalar> absolute_points;          //!< points in world coordinates
   std::vector<Sphere<Scalar>> relative_spheres;  //!< balls in body coordinates
@@ -111,8 +111,7 @@ struct MetricGroup {
 
   //! Whether the group holds no point and no sphere.
   bool empty() const {
-    return relative_points.empty() && absolute_points.empty() && relative_spheres.empty() &&
-           absolute_spheres.empty();
+    return relative_points.empty() && absolute_points.empty() && relative_spheres.empty() && absolute_spheres.empty();
   }
 
   //! The factor this group's lengths are multiplied by so that path speed ≤ v_sys keeps the group
@@ -167,7 +166,7 @@ struct AffineSpan {
     const Matrix3 covariance = outer / Scalar(count) - mean * mean.transpose();
     Eigen::SelfAdjointEigenSolver<Matrix3> eig;
     eig.compute(covariance, Eigen::EigenvaluesOnly);  // iterative: computeDirect loses half the digits
-    const Vector3 lambda = eig.eigenvalues();  // ascending
+    const Vector3 lambda = eig.eigenvalues();         // ascending
     return lambda(2) > Scalar(0) && lambda(1) > Scalar(1e-14) * lambda(2);
   }
 };
@@ -212,8 +211,8 @@ class MetricSet {
   void add_sphere(const Vector3& center, Scalar radius, Frame frame = Frame::relative, int group = 0) {
     require_translation(center, "center");
     using std::isfinite;
-    require(isfinite(radius) && radius >= Scalar(0) && radius <= Scalar(numeric_range::max_translation), "radius", radius,
-            "must be finite and not negative, at most 1e12 m (dispkin's numeric range)");
+    require(isfinite(radius) && radius >= Scalar(0) && radius <= Scalar(numeric_range::max_translation), "radius",
+            radius, "must be finite and not negative, at most 1e12 m (dispkin's numeric range)");
     Group& g = group_for(group);
     (frame == Frame::relative ? g.relative_spheres : g.absolute_spheres).push_back({center, radius});
     auto& span = frame == Frame::relative ? relative_span_ : absolute_span_;

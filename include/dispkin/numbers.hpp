@@ -7,6 +7,6 @@
 namespace dispkin {
 
 constexpr double pi = static_cast<double>(EIGEN_PI);  //!< π
-constexpr double two_pi = 2.0 * pi;                    //!< 2π, one full turn (rad)
+constexpr double two_pi = 2.0 * pi;                   //!< 2π, one full turn (rad)
 
 }  // namespace dispkin

@@ -148,10 +148,10 @@ Eigen::Matrix<Scalar, 3, 1> quaternion_log(const Eigen::Quaternion<Scalar>& q_in
 template <typename Scalar>
 class Pose {
  public:
-  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;    //!< a point or a translation
-  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;    //!< XYZUVW or a twist (v, ω)
-  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;    //!< a rotation matrix
-  using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;    //!< a homogeneous transform
+  using Vector3 = Eigen::Matrix<Scalar, 3, 1>;   //!< a point or a translation
+  using Vector6 = Eigen::Matrix<Scalar, 6, 1>;   //!< XYZUVW or a twist (v, ω)
+  using Matrix3 = Eigen::Matrix<Scalar, 3, 3>;   //!< a rotation matrix
+  using Matrix4 = Eigen::Matrix<Scalar, 4, 4>;   //!< a homogeneous transform
   using Quaternion = Eigen::Quaternion<Scalar>;  //!< the orientation, unit norm
 
   //! The identity.
@@ -174,7 +174,9 @@ class Pose {
   //! How far from 1 the norm of a stored (already normalised) quaternion may be: dividing by the
   //! norm leaves it within 2ε of 1; 4096ε (9·10⁻¹³ for double) also takes a quaternion written
   //! out with 17 digits and composed a few times.
-  static constexpr Scalar stored_quaternion_tolerance() { return Scalar(4096) * std::numeric_limits<Scalar>::epsilon(); }
+  static constexpr Scalar stored_quaternion_tolerance() {
+    return Scalar(4096) * std::numeric_limits<Scalar>::epsilon();
+  }
 
   //! From an orthonormal rotation matrix (det +1, checked to 1e-6) and a translation.
   Pose(const Matrix3& rotation, const Vector3& translation) : Pose(checked_quaternion(rotation), translation) {}
@@ -290,8 +292,8 @@ class Pose {
     return unchecked(orientation.q_, anchor - orientation.q_ * pivot);
   }
 
-  const Quaternion& quaternion() const noexcept { return q_; }  //!< the unit quaternion of R
-  const Vector3& translation() const noexcept { return t_; }    //!< t: the body origin in world coordinates
+  const Quaternion& quaternion() const noexcept { return q_; }         //!< the unit quaternion of R
+  const Vector3& translation() const noexcept { return t_; }           //!< t: the body origin in world coordinates
   Matrix3 rotation() const noexcept { return q_.toRotationMatrix(); }  //!< R
 
   //! The 4×4 homogeneous matrix [R t; 0 1].
@@ -339,9 +341,9 @@ class Pose {
     const Scalar orthogonality = (r.transpose() * r - Matrix3::Identity()).cwiseAbs().maxCoeff();
     // The message only on failure: formatting a number costs more than the whole check.
     if (!(orthogonality <= Scalar(1e-6) && r.determinant() > Scalar(0))) {
-      throw std::invalid_argument(describe("rotation", r,
-                                           "must be orthonormal with determinant +1 (max |RᵀR − I| = " +
-                                               std::to_string(orthogonality) + ")"));
+      throw std::invalid_argument(
+          describe("rotation", r,
+                   "must be orthonormal with determinant +1 (max |RᵀR − I| = " + std::to_string(orthogonality) + ")"));
     }
     Quaternion q(r);
     q.normalize();

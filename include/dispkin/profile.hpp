@@ -42,8 +42,8 @@ struct ProfileState {
 struct ProfilePhase {
   double duration = 0.0;  //!< how long the phase lasts (s)
   double jerk = 0.0;      //!< its constant jerk s⃛
-  ProfileState start;  //!< state at the start of the phase (start.j = jerk)
-  ProfileState end;    //!< state at the end of the phase (end.j = jerk)
+  ProfileState start;     //!< state at the start of the phase (start.j = jerk)
+  ProfileState end;       //!< state at the end of the phase (end.j = jerk)
 };
 
 //! A time law s(t), t ∈ [0, duration()], from (0, v_start, 0) to (S, v_end, 0).
@@ -108,10 +108,10 @@ class Profile {
     int count = 0;                                  //!< phases used, 0 … max_phases
     std::array<ProfilePhase, max_phases> phases{};  //!< the first `count` are used
     std::array<double, max_phases + 1> times{};     //!< start times of the phases, then T
-    double distance = 0.0;       //!< S, the length the law covers
-    double peak_velocity = 0.0;  //!< the highest ṡ of the law
-    ProfileState start{};  //!< the state before the start
-    ProfileState end{};    //!< the state from the end on
+    double distance = 0.0;                          //!< S, the length the law covers
+    double peak_velocity = 0.0;                     //!< the highest ṡ of the law
+    ProfileState start{};                           //!< the state before the start
+    ProfileState end{};                             //!< the state from the end on
   };
   //! The law's parts (from_parts(parts()) is this law).
   Parts parts() const noexcept { return {kind_, count_, phases_, time_, distance_, peak_velocity_, start_, end_}; }

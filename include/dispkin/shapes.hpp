@@ -54,10 +54,12 @@ Scalar icosahedron_circumradius_ratio() {
 
 //! The 8 corners of an axis-aligned box with edge lengths `size` around `center`.
 template <typename Scalar>
-std::vector<Eigen::Matrix<Scalar, 3, 1>> box(const Eigen::Matrix<Scalar, 3, 1>& size,
-                                            const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+std::vector<Eigen::Matrix<Scalar, 3, 1>> box(
+    const Eigen::Matrix<Scalar, 3, 1>& size,
+    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   require_translation(center, "center");
-  require(size.allFinite() && (size.array() > Scalar(0)).all(), "size", size, "edge lengths must be finite and positive");
+  require(size.allFinite() && (size.array() > Scalar(0)).all(), "size", size,
+          "edge lengths must be finite and positive");
   std::vector<Eigen::Matrix<Scalar, 3, 1>> corners;
   corners.reserve(8);
   for (int i = 0; i < 8; ++i) {
@@ -75,12 +77,12 @@ Polyhedron<Scalar> unit_icosahedron() {
   using std::sqrt;
   const Scalar phi = (Scalar(1) + sqrt(Scalar(5))) / 2;
   Polyhedron<Scalar> p;
-  const Scalar raw[12][3] = {{-1, phi, 0}, {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
+  const Scalar raw[12][3] = {{-1, phi, 0},  {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi},  {0, 1, phi},
                              {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1},  {phi, 0, 1},  {-phi, 0, -1}, {-phi, 0, 1}};
   for (const auto& v : raw) p.vertices.push_back(Eigen::Matrix<Scalar, 3, 1>(v[0], v[1], v[2]).normalized());
-  p.faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+  p.faces = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-             {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+             {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   return p;
 }
 
@@ -113,7 +115,7 @@ Polyhedron<Scalar> subdivide(const Polyhedron<Scalar>& in) {
 
 template <typename Scalar>
 std::vector<Eigen::Matrix<Scalar, 3, 1>> placed(const Polyhedron<Scalar>& unit, Scalar scale,
-                                               const Eigen::Matrix<Scalar, 3, 1>& center) {
+                                                const Eigen::Matrix<Scalar, 3, 1>& center) {
   std::vector<Eigen::Matrix<Scalar, 3, 1>> out;
   out.reserve(unit.vertices.size());
   for (const auto& v : unit.vertices) out.push_back(center + scale * v);
@@ -126,9 +128,9 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> placed(const Polyhedron<Scalar>& unit, 
 //! circumscribed (default) — its faces touch the sphere, so it contains it and never
 //! under-estimates the sphere's speed; otherwise its vertices lie on the sphere.
 template <typename Scalar>
-std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(Scalar radius,
-                                                    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero(),
-                                                    bool circumscribed = true) {
+std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(
+    Scalar radius, const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero(),
+    bool circumscribed = true) {
   require_positive(radius, "radius");
   require_translation(center, "center");
   const Scalar scale = circumscribed ? radius * icosahedron_circumradius_ratio<Scalar>() : radius;
@@ -139,8 +141,9 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosahedron(Scalar radius,
 //! vertices), scaled so its faces circumscribe the sphere of `radius` — it contains the sphere,
 //! and its speed bound converges to the sphere's exact speed as subdivisions grow.
 template <typename Scalar>
-std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisions,
-                                                  const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(
+    Scalar radius, int subdivisions,
+    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   require_positive(radius, "radius");
   require_translation(center, "center");
   require(subdivisions >= 0 && subdivisions <= 7, "subdivisions", subdivisions,
@@ -155,8 +158,9 @@ std::vector<Eigen::Matrix<Scalar, 3, 1>> icosphere(Scalar radius, int subdivisio
 //! the spherical shell of relative points around a pivot of the DISP patent JP7742490B2, which ties
 //! the angular speed about the pivot to the system velocity through the radius.
 template <typename Scalar>
-std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(Scalar radius, int count,
-                                                        const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
+std::vector<Eigen::Matrix<Scalar, 3, 1>> spherical_shell(
+    Scalar radius, int count,
+    const non_deduced<Eigen::Matrix<Scalar, 3, 1>>& center = Eigen::Matrix<Scalar, 3, 1>::Zero()) {
   using std::cos;
   using std::sin;
   using std::sqrt;

@@ -43,7 +43,21 @@ from .batches import batch
 # The serial-arm plugin (URDF via urdfdom into Orocos KDL) is there when the build has it
 # (CMake option DISPKIN_BUILD_SERIAL, on by default).
 if hasattr(_core, "SerialArm"):
-    from ._core import FollowedTrajectory, InverseResult, JointLimitReport, JointLimits, JointTrajectory, OptimalRetimeResult, OverlappedJointTrajectory, OverlappedMixedTrajectory, RetimeResult, Redundancy, SerialArm, check_joint_limits, retime
+    from ._core import (
+        FollowedTrajectory,
+        InverseResult,
+        JointLimitReport,
+        JointLimits,
+        JointTrajectory,
+        OptimalRetimeResult,
+        OverlappedJointTrajectory,
+        OverlappedMixedTrajectory,
+        RetimeResult,
+        Redundancy,
+        SerialArm,
+        check_joint_limits,
+        retime,
+    )
 
 #: The library version, the one set in CMakeLists.txt (``project(dispkin VERSION ...)``).
 __version__: str = _core.__version__
@@ -82,4 +96,18 @@ __all__ = [
     "xyzuvw_for_new_pivot",
 ]
 if hasattr(_core, "SerialArm"):
-    __all__ += ["FollowedTrajectory", "InverseResult", "JointLimitReport", "JointLimits", "JointTrajectory", "OptimalRetimeResult", "OverlappedJointTrajectory", "OverlappedMixedTrajectory", "RetimeResult", "Redundancy", "SerialArm", "check_joint_limits", "retime"]
+    __all__ += [
+        "FollowedTrajectory",
+        "InverseResult",
+        "JointLimitReport",
+        "JointLimits",
+        "JointTrajectory",
+        "OptimalRetimeResult",
+        "OverlappedJointTrajectory",
+        "OverlappedMixedTrajectory",
+        "RetimeResult",
+        "Redundancy",
+        "SerialArm",
+        "check_joint_limits",
+        "retime",
+    ]

@@ -58,10 +58,16 @@ class BatchResult:
 
     def row(self) -> Dict[str, str]:
         """The job's row of the summary table."""
-        return {"job": self.job, "folder": self.outdir.name, "status": self.status,
-                "duration": "" if self.duration is None else repr(self.duration), "binding": self.binding,
-                "violations": str(len(self.violations)) if self.status != FAILED else "",
-                "broken_limits": "; ".join(self.violations), "error": self.error}
+        return {
+            "job": self.job,
+            "folder": self.outdir.name,
+            "status": self.status,
+            "duration": "" if self.duration is None else repr(self.duration),
+            "binding": self.binding,
+            "violations": str(len(self.violations)) if self.status != FAILED else "",
+            "broken_limits": "; ".join(self.violations),
+            "error": self.error,
+        }
 
 
 def plan_job_file(job_file: str, outdir: str, plot: bool = False) -> Dict[str, Any]:
@@ -75,8 +81,12 @@ def plan_job_file(job_file: str, outdir: str, plot: bool = False) -> Dict[str, A
         return {"error": str(error)}
     except Exception as error:  # noqa: BLE001 - one job's failure, whatever it is, must not stop the others
         return {"error": f"{type(error).__name__}: {error}"}
-    return {"duration": float(planned.summary["duration"]), "binding": planned.summary["binding"],
-            "violations": planned.violations, "written": [str(p) for p in planned.written]}
+    return {
+        "duration": float(planned.summary["duration"]),
+        "binding": planned.summary["binding"],
+        "violations": planned.violations,
+        "written": [str(p) for p in planned.written],
+    }
 
 
 def job_folders(jobs: Sequence[str]) -> List[str]:
@@ -96,8 +106,14 @@ def job_folders(jobs: Sequence[str]) -> List[str]:
     return folders
 
 
-def batch(jobs: Iterable[Union[str, os.PathLike]], outdir: Union[str, os.PathLike], workers: Optional[int] = None,
-          scheduler: Any = None, plot: bool = False, progress: Optional[Progress] = None) -> List[BatchResult]:
+def batch(
+    jobs: Iterable[Union[str, os.PathLike]],
+    outdir: Union[str, os.PathLike],
+    workers: Optional[int] = None,
+    scheduler: Any = None,
+    plot: bool = False,
+    progress: Optional[Progress] = None,
+) -> List[BatchResult]:
     """Plan every job file of `jobs`, each into its own folder of `outdir` exactly as
     ``dispkin plan JOB -o OUTDIR/FOLDER`` plans it, and write ``OUTDIR/batch_summary.csv`` (one
     row per job, in the order given). The jobs run on `workers` local processes (default: one
@@ -113,14 +129,21 @@ def batch(jobs: Iterable[Union[str, os.PathLike]], outdir: Union[str, os.PathLik
 
         require_matplotlib()  # before the work, not in every job
     if scheduler is not None and workers is not None:
-        raise JobError(f"workers = {workers!r}: give either workers (local processes) or scheduler (a Dask "
-                       "cluster), not both")
-    run = _run_on_cluster(scheduler) if scheduler is not None else _run_on_processes(_worker_count(workers, len(job_files)))
+        raise JobError(
+            f"workers = {workers!r}: give either workers (local processes) or scheduler (a Dask cluster), not both"
+        )
+    run = (
+        _run_on_cluster(scheduler)
+        if scheduler is not None
+        else _run_on_processes(_worker_count(workers, len(job_files)))
+    )
     directory = _output_directory(outdir)
     progress = progress or Progress(None, "")
     folders = [directory / name for name in job_folders(job_files)]
     # Absolute paths: a worker does not run in this directory (nor, on a cluster, on this machine).
-    tasks = [(str(pathlib.Path(job).absolute()), str(folder.absolute()), plot) for job, folder in zip(job_files, folders)]
+    tasks = [
+        (str(pathlib.Path(job).absolute()), str(folder.absolute()), plot) for job, folder in zip(job_files, folders)
+    ]
     results: List[Optional[BatchResult]] = [None] * len(tasks)
     for done, (index, outcome) in enumerate(run(tasks), start=1):
         results[index] = _result(job_files[index], folders[index], tasks[index], outcome)
@@ -196,8 +219,10 @@ def _run_on_cluster(scheduler: Any) -> Runner:
     (index, outcome) as jobs finish. The argument is checked here, the connection made by the run."""
     distributed = _import_distributed()
     if not isinstance(scheduler, distributed.Client) and (not isinstance(scheduler, str) or not scheduler.strip()):
-        raise JobError(f"scheduler = {scheduler!r}: must be the address of a Dask scheduler (e.g. "
-                       "'tcp://host:8786') or a distributed.Client")
+        raise JobError(
+            f"scheduler = {scheduler!r}: must be the address of a Dask scheduler (e.g. "
+            "'tcp://host:8786') or a distributed.Client"
+        )
 
     def run(tasks: List[Task]) -> Iterator[Tuple[int, Dict[str, Any]]]:
         client = scheduler if isinstance(scheduler, distributed.Client) else _connect(distributed, scheduler)
@@ -216,8 +241,10 @@ def _import_distributed() -> Any:
     try:
         import distributed
     except ImportError as error:
-        raise JobError("--scheduler needs Dask's distributed scheduler, which is not installed: "
-                       "pip install 'dispkin[distributed]' (or pip install 'dask[distributed]')") from error
+        raise JobError(
+            "--scheduler needs Dask's distributed scheduler, which is not installed: "
+            "pip install 'dispkin[distributed]' (or pip install 'dask[distributed]')"
+        ) from error
     return distributed
 
 
@@ -246,9 +273,18 @@ def _result(job: str, folder: pathlib.Path, task: Task, outcome: Dict[str, Any])
     if "error" in outcome:
         # The worker read the job at its absolute path: name it as given, as `dispkin plan` does.
         error = outcome["error"]
-        return BatchResult(job, folder, FAILED, error=job + error[len(task[0]):] if error.startswith(task[0]) else error)
-    return BatchResult(job, folder, LIMITS_BROKEN if outcome["violations"] else PLANNED, outcome["duration"],
-                       outcome["binding"], list(outcome["violations"]), written=[pathlib.Path(p) for p in outcome["written"]])
+        return BatchResult(
+            job, folder, FAILED, error=job + error[len(task[0]) :] if error.startswith(task[0]) else error
+        )
+    return BatchResult(
+        job,
+        folder,
+        LIMITS_BROKEN if outcome["violations"] else PLANNED,
+        outcome["duration"],
+        outcome["binding"],
+        list(outcome["violations"]),
+        written=[pathlib.Path(p) for p in outcome["written"]],
+    )
 
 
 def _report(progress: Progress, result: BatchResult, done: int, total: int) -> None:
@@ -269,13 +305,23 @@ def _write_summary(directory: pathlib.Path, results: List[BatchResult]) -> pathl
     try:
         path.write_text(text.getvalue(), encoding="utf-8")
     except OSError as error:
-        raise JobError(f"-o DIR = {str(directory)!r}: {SUMMARY_FILE} cannot be written: {error.strerror or error}") from error
+        raise JobError(
+            f"-o DIR = {str(directory)!r}: {SUMMARY_FILE} cannot be written: {error.strerror or error}"
+        ) from error
     return path
 
 
-def run_batch(jobs: Sequence[str], outdir: str, workers: Optional[int], scheduler: Optional[str], plot: bool,
-              out: TextIO, allow_violations: bool = False, progress: Optional[Progress] = None,
-              errors: Optional[TextIO] = None) -> int:
+def run_batch(
+    jobs: Sequence[str],
+    outdir: str,
+    workers: Optional[int],
+    scheduler: Optional[str],
+    plot: bool,
+    out: TextIO,
+    allow_violations: bool = False,
+    progress: Optional[Progress] = None,
+    errors: Optional[TextIO] = None,
+) -> int:
     """`dispkin batch`: plan the jobs (:func:`batch`), print a line per job that failed or
     breaks a machine limit and the totals. Returns 0; 1 when a job failed;
     EXIT_LIMITS_BROKEN when a trajectory breaks a machine limit unless `allow_violations`."""
@@ -293,14 +339,19 @@ def run_batch(jobs: Sequence[str], outdir: str, workers: Optional[int], schedule
         print(f"dispkin batch: {r.job}: the trajectory breaks {len(r.violations)} machine limit(s):", file=errors)
         for line in r.violations:
             print("  " + line, file=errors)
-    print(f"{len(results) - len(failed)} of {len(results)} job(s) planned into {outdir}"
-          + (f", {len(broken)} breaking a machine limit" if broken else "")
-          + f"; summary: {pathlib.Path(outdir) / SUMMARY_FILE}", file=out)
+    print(
+        f"{len(results) - len(failed)} of {len(results)} job(s) planned into {outdir}"
+        + (f", {len(broken)} breaking a machine limit" if broken else "")
+        + f"; summary: {pathlib.Path(outdir) / SUMMARY_FILE}",
+        file=out,
+    )
     if failed:
         print(f"dispkin batch: {len(failed)} of {len(results)} job(s) failed", file=errors)
         return 1
     if broken and not allow_violations:
-        print(f"dispkin batch: {len(broken)} job(s) break a machine limit (use --allow-violations to accept it)",
-              file=errors)
+        print(
+            f"dispkin batch: {len(broken)} job(s) break a machine limit (use --allow-violations to accept it)",
+            file=errors,
+        )
         return EXIT_LIMITS_BROKEN
     return 0

@@ -16,8 +16,10 @@ from typing import List, Optional
 
 from . import __version__
 from .progress import Progress
+
 # The check and plan commands, importable from here too.
 from .commands import run_check, run_plan, write_plots  # noqa: F401
+
 # The demo's names, importable from here too: callers of dispkin.cli.demo_tool & co. keep working.
 from .demo import (  # noqa: F401
     DEMO_ACCELERATION,
@@ -72,9 +74,14 @@ def build_parser() -> argparse.ArgumentParser:
     )
     demo.add_argument("--moves", type=_positive_int, default=10000, help="random moves in the sweep (default 10000)")
     demo.add_argument("--seed", type=int, default=1, help="seed of the random moves (default 1)")
-    demo.add_argument("-o", "--outdir", metavar="OUTDIR", default="dispkin-demo",
-                      help="directory of the demo job (OUTDIR/job.yaml, written from the built-in job when missing: "
-                      "edit it and re-run) and of its outputs: CSV, JSON, summary, PNG (default: dispkin-demo)")
+    demo.add_argument(
+        "-o",
+        "--outdir",
+        metavar="OUTDIR",
+        default="dispkin-demo",
+        help="directory of the demo job (OUTDIR/job.yaml, written from the built-in job when missing: "
+        "edit it and re-run) and of its outputs: CSV, JSON, summary, PNG (default: dispkin-demo)",
+    )
     demo.add_argument("--no-job", action="store_true", help="only the comparison and the sweep, no job")
     demo.add_argument("-q", "--quiet", action="store_true", help="no progress display on stderr")
     check = commands.add_parser(
@@ -100,17 +107,31 @@ def build_parser() -> argparse.ArgumentParser:
         "time and by how much) - the files are written all the same; --allow-violations exits 0.",
     )
     plan_.add_argument("job", metavar="JOB.yaml", help="the job file")
-    plan_.add_argument("-o", "--outdir", metavar="OUTDIR", default=".",
-                       help="directory for the output files, created if missing (default: the current directory)")
-    plan_.add_argument("--plot", action="store_true",
-                       help="also write a PNG: path velocity and point speeds against the limit (and leg lengths "
-                       "for a hexapod); needs matplotlib (pip install 'dispkin[plot]')")
-    plan_.add_argument("--allow-violations", action="store_true",
-                       help="exit 0 even when the trajectory breaks a machine limit (the broken limits are still "
-                       "printed on stderr and listed in the summary)")
+    plan_.add_argument(
+        "-o",
+        "--outdir",
+        metavar="OUTDIR",
+        default=".",
+        help="directory for the output files, created if missing (default: the current directory)",
+    )
+    plan_.add_argument(
+        "--plot",
+        action="store_true",
+        help="also write a PNG: path velocity and point speeds against the limit (and leg lengths "
+        "for a hexapod); needs matplotlib (pip install 'dispkin[plot]')",
+    )
+    plan_.add_argument(
+        "--allow-violations",
+        action="store_true",
+        help="exit 0 even when the trajectory breaks a machine limit (the broken limits are still "
+        "printed on stderr and listed in the summary)",
+    )
     shown = plan_.add_mutually_exclusive_group()
-    shown.add_argument("--progress", action="store_true",
-                       help="progress on stderr even when it is not a terminal (by default only on a terminal)")
+    shown.add_argument(
+        "--progress",
+        action="store_true",
+        help="progress on stderr even when it is not a terminal (by default only on a terminal)",
+    )
     shown.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     _add_batch(commands)
     return parser
@@ -131,21 +152,38 @@ def _add_batch(commands) -> None:
         "bad arguments; 3 a trajectory breaks a machine limit (--allow-violations exits 0).",
     )
     batch.add_argument("jobs", nargs="+", metavar="JOB.yaml", help="the job files")
-    batch.add_argument("-o", "--outdir", metavar="DIR", required=True,
-                       help="directory of the summary table and of one folder per job, created if missing")
+    batch.add_argument(
+        "-o",
+        "--outdir",
+        metavar="DIR",
+        required=True,
+        help="directory of the summary table and of one folder per job, created if missing",
+    )
     where = batch.add_mutually_exclusive_group()
-    where.add_argument("--workers", metavar="N", type=_positive_int,
-                       help="local worker processes (default: one per core, at most one per job)")
-    where.add_argument("--scheduler", metavar="ADDRESS",
-                       help="plan on the Dask cluster of the scheduler at ADDRESS (e.g. tcp://host:8786); needs "
-                       "pip install 'dispkin[distributed]'")
+    where.add_argument(
+        "--workers",
+        metavar="N",
+        type=_positive_int,
+        help="local worker processes (default: one per core, at most one per job)",
+    )
+    where.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="plan on the Dask cluster of the scheduler at ADDRESS (e.g. tcp://host:8786); needs "
+        "pip install 'dispkin[distributed]'",
+    )
     batch.add_argument("--plot", action="store_true", help="also write each job's PNG, as `dispkin plan --plot` does")
-    batch.add_argument("--allow-violations", action="store_true",
-                       help="exit 0 even when a trajectory breaks a machine limit (still reported and in the table)")
+    batch.add_argument(
+        "--allow-violations",
+        action="store_true",
+        help="exit 0 even when a trajectory breaks a machine limit (still reported and in the table)",
+    )
     shown = batch.add_mutually_exclusive_group()
-    shown.add_argument("--progress", action="store_true",
-                       help="a line per finished job on stderr even when it is not a terminal (by default only on a "
-                       "terminal)")
+    shown.add_argument(
+        "--progress",
+        action="store_true",
+        help="a line per finished job on stderr even when it is not a terminal (by default only on a terminal)",
+    )
     shown.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
 
 
@@ -156,8 +194,13 @@ def main(argv: Optional[List[str]] = None) -> int:
 
     try:
         if args.command == "demo":
-            return run_demo(args.moves, args.seed, sys.stdout, None if args.no_job else args.outdir,
-                            None if args.quiet else sys.stderr)
+            return run_demo(
+                args.moves,
+                args.seed,
+                sys.stdout,
+                None if args.no_job else args.outdir,
+                None if args.quiet else sys.stderr,
+            )
         if args.command == "check":
             return run_check(args.job, sys.stdout)
         if args.command == "plan":
@@ -167,8 +210,16 @@ def main(argv: Optional[List[str]] = None) -> int:
             from .batches import run_batch
 
             progress = Progress.for_stderr(sys.stderr, "dispkin batch", force=args.progress, quiet=args.quiet)
-            return run_batch(args.jobs, args.outdir, args.workers, args.scheduler, args.plot, sys.stdout,
-                             args.allow_violations, progress)
+            return run_batch(
+                args.jobs,
+                args.outdir,
+                args.workers,
+                args.scheduler,
+                args.plot,
+                sys.stdout,
+                args.allow_violations,
+                progress,
+            )
     except JobError as error:
         print(f"dispkin {args.command}: {error}", file=sys.stderr)
         return 1

@@ -27,14 +27,20 @@ def run_check(job_file: str, out: TextIO) -> int:
     job = jobs.load_job(job_file)
     ms = job.metric_set
     print(f"{job.file}: valid job {job.name!r}", file=out)
-    machine = {"hexapod": "hexapod (legs " + ", ".join(job.joint_names) + ")",
-               "serial_arm": f"serial arm {job.arm.robot_name if job.arm else ''} ({job.arm.dof if job.arm else 0} joints, "
-               f"family {job.arm.family if job.arm else ''})", "none": "none (poses only)"}[job.machine]
+    machine = {
+        "hexapod": "hexapod (legs " + ", ".join(job.joint_names) + ")",
+        "serial_arm": f"serial arm {job.arm.robot_name if job.arm else ''} ({job.arm.dof if job.arm else 0} joints, "
+        f"family {job.arm.family if job.arm else ''})",
+        "none": "none (poses only)",
+    }[job.machine]
     print(f"  machine: {machine}", file=out)
     if job.arm is not None and job.arm.redundancy.kind != "none":
         r = job.arm.redundancy
-        print(f"  redundancy: joint {r.joint_name} (range [{r.lower:g}, {r.upper:g}] rad) held at its value in q_start, "
-              f"{r.value(job.q_start):g} rad", file=out)
+        print(
+            f"  redundancy: joint {r.joint_name} (range [{r.lower:g}, {r.upper:g}] rad) held at its value in q_start, "
+            f"{r.value(job.q_start):g} rad",
+            file=out,
+        )
     if job.hexapod is not None:
         rule = [f"leg group {job.leg_speed_group} (rule a)"] if job.leg_speed_group is not None else []
         rule += ["joint metric (rule b)"] if job.joint_metric else []
@@ -42,21 +48,33 @@ def run_check(job_file: str, out: TextIO) -> int:
     if job.frames is not None:
         work, tool = job.frames.work.to_xyzuvw(), job.frames.tool.to_xyzuvw()
         work[3:], tool[3:] = np.degrees(work[3:]), np.degrees(tool[3:])
-        print(f"  frames: work {np.round(work, 6).tolist()}, tool {np.round(tool, 6).tolist()} (XYZUVW, m and degrees)", file=out)
+        print(
+            f"  frames: work {np.round(work, 6).tolist()}, tool {np.round(tool, 6).tolist()} (XYZUVW, m and degrees)",
+            file=out,
+        )
     print(f"  pivot {job.pivot.tolist()} m (platform/flange coordinates)", file=out)
     for group in ms.groups:
         limit = ms.group_speed(group)
-        print(f"  metric set group {group}: {len(ms.relative_points(group))} relative + {len(ms.absolute_points(group))} "
-              f"absolute points, {len(ms.spheres(group))} sphere(s), limit "
-              f"{(str(limit) + ' m/s') if limit is not None else 'the system velocity'}", file=out)
+        print(
+            f"  metric set group {group}: {len(ms.relative_points(group))} relative + {len(ms.absolute_points(group))} "
+            f"absolute points, {len(ms.spheres(group))} sphere(s), limit "
+            f"{(str(limit) + ' m/s') if limit is not None else 'the system velocity'}",
+            file=out,
+        )
     if job.path is not None:
         lengths = job.path.section_lengths(ms, job.limits.velocity)
-        print(f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
-              f"at the system velocity", file=out)
+        print(
+            f"  path: {len(job.moves)} move(s) -> {len(job.path)} section(s), DISP length {float(np.sum(lengths)):.6f} m "
+            f"at the system velocity",
+            file=out,
+        )
     else:
         ptp = sum(part.kind == "ptp" for part in job.parts)
-        print(f"  path: {len(job.moves)} move(s) in {len(job.parts)} part(s) planned one after the other "
-              f"({ptp} PTP move(s) on the arm, at rest at both ends)", file=out)
+        print(
+            f"  path: {len(job.moves)} move(s) in {len(job.parts)} part(s) planned one after the other "
+            f"({ptp} PTP move(s) on the arm, at rest at both ends)",
+            file=out,
+        )
     for i, move in enumerate(job.moves):
         blend = f", {move.blend_text()}" if move.blend_text() else ""
         if move.kind == "ptp":
@@ -64,19 +82,27 @@ def run_check(job_file: str, out: TextIO) -> int:
             continue
         end = move.path.end.to_xyzuvw()
         end[3:] = np.degrees(end[3:])
-        print(f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {np.round(end, 6).tolist()} (m, degrees)", file=out)
+        print(
+            f"    move {i}: {move.kind}{blend}, ends at platform XYZUVW {np.round(end, 6).tolist()} (m, degrees)",
+            file=out,
+        )
     lim = job.limits
     jerk = f", j = {lim.jerk:g} m/s³" if lim.jerk is not None else ""
     print(f"  limits: v = {lim.velocity:g} m/s, a = {lim.acceleration:g} m/s²{jerk}, profile {job.profile}", file=out)
     for file in job.limits_files:
         print(f"  limits file: {file}", file=out)
     if job.joint_acceleration is not None:
-        print(f"  joint accelerations: {np.round(job.joint_acceleration, 6).tolist()} (checked in the output)", file=out)
+        print(
+            f"  joint accelerations: {np.round(job.joint_acceleration, 6).tolist()} (checked in the output)", file=out
+        )
     if job.retime is not None:
         print(f"  re-timed to the joint limits: method {job.retime.method}", file=out)
     if job.events:
         print(f"  events: {events_text(job.events)} (applied in this order to the planned trajectory)", file=out)
-    print(f"  output: every {job.sample_period:g} s -> {job.outputs['csv']}, {job.outputs['json']}, {job.outputs['summary']}", file=out)
+    print(
+        f"  output: every {job.sample_period:g} s -> {job.outputs['csv']}, {job.outputs['json']}, {job.outputs['summary']}",
+        file=out,
+    )
     return 0
 
 
@@ -84,8 +110,15 @@ def run_check(job_file: str, out: TextIO) -> int:
 EXIT_LIMITS_BROKEN = 3
 
 
-def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violations: bool = False,
-             progress: Optional[Progress] = None, errors: Optional[TextIO] = None) -> int:
+def run_plan(
+    job_file: str,
+    outdir: str,
+    plot: bool,
+    out: TextIO,
+    allow_violations: bool = False,
+    progress: Optional[Progress] = None,
+    errors: Optional[TextIO] = None,
+) -> int:
     """`dispkin plan`: plan the job, write CSV, JSON, the summary and (plot) PNGs. Returns 0, or
     EXIT_LIMITS_BROKEN when the trajectory breaks a machine limit (each one is described on
     `errors`, default stderr) unless `allow_violations`; the files are written either way."""
@@ -100,8 +133,10 @@ def run_plan(job_file: str, outdir: str, plot: bool, out: TextIO, allow_violatio
     if not broken:
         return 0
     verdict = "allowed by --allow-violations" if allow_violations else "use --allow-violations to accept it"
-    print(f"dispkin plan: {planned.job_file}: the trajectory breaks {len(broken)} machine limit(s) ({verdict}):",
-          file=errors)
+    print(
+        f"dispkin plan: {planned.job_file}: the trajectory breaks {len(broken)} machine limit(s) ({verdict}):",
+        file=errors,
+    )
     for line in broken:
         print("  " + line, file=errors)
     return 0 if allow_violations else EXIT_LIMITS_BROKEN
@@ -126,8 +161,10 @@ class PlannedJob:
     @property
     def violations(self) -> List[str]:
         """Each machine limit the trajectory breaks, described on one line."""
-        return [Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe()
-                for v in self.summary["violations"]]
+        return [
+            Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe()
+            for v in self.summary["violations"]
+        ]
 
 
 def plan_to_files(job_file: str, outdir: str, plot: bool, progress: Optional[Progress] = None) -> PlannedJob:
@@ -144,7 +181,9 @@ def plan_to_files(job_file: str, outdir: str, plot: bool, progress: Optional[Pro
     check_outputs(job, outdir, plot)  # before the work too: planning may take minutes
     progress.stage("planning")
     trajectory = jobs.plan_job(job)
-    samples = jobs.sample_job(job, trajectory, progress=lambda stage, done, total: progress.step(f"sampling ({stage})", done, total))
+    samples = jobs.sample_job(
+        job, trajectory, progress=lambda stage, done, total: progress.step(f"sampling ({stage})", done, total)
+    )
     progress.stage("checking the limits")
     summary = jobs.summarize(job, trajectory, samples)
     progress.stage("writing")
@@ -183,14 +222,18 @@ def check_outputs(job, outdir: str, plot: bool) -> None:
     directory = pathlib.Path(outdir)
     existing = next((p for p in (directory, *directory.parents) if os.path.lexists(p)), None)
     if existing is not None and not existing.is_dir():
-        where = "is not a directory" if existing == directory else f"cannot be made: {str(existing)!r} is not a directory"
+        where = (
+            "is not a directory" if existing == directory else f"cannot be made: {str(existing)!r} is not a directory"
+        )
         raise JobError(f"-o OUTDIR = {outdir!r}: {where}")
     inputs = [("the job file", job.file)] + [("a file the job reads", p) for p in job.inputs]
     files = output_files(job, directory, plot)
     for key, path in files.items():
         problem = _output_problem(path, inputs)
         if key == "png" and problem is None:
-            problem = next((f"is also output.{other}" for other, p in files.items() if other != "png" and p == path), None)
+            problem = next(
+                (f"is also output.{other}" for other, p in files.items() if other != "png" and p == path), None
+            )
         if problem is not None:
             raise _output_error(job, key, path, problem)
 
@@ -227,8 +270,9 @@ def require_matplotlib() -> None:
     try:
         import matplotlib  # noqa: F401
     except ImportError as error:
-        raise JobError("--plot needs matplotlib, which is not installed: pip install 'dispkin[plot]' "
-                       "(or pip install matplotlib)") from error
+        raise JobError(
+            "--plot needs matplotlib, which is not installed: pip install 'dispkin[plot]' (or pip install matplotlib)"
+        ) from error
 
 
 #: Most points of the path-velocity and point-speed curves of `dispkin plan --plot`.
@@ -259,14 +303,28 @@ def write_plots(job, trajectory: Trajectory, samples, directory: pathlib.Path) -
         _mark_events(axes[0][0], job.events)
     if job.hexapod is not None:
         h = job.hexapod
-        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
-                           np.asarray(h.leg_min), np.asarray(h.leg_max), np.asarray(h.leg_speed),
-                           axes=(axes[1][0], axes[2][0]))
+        plots.joint_limits(
+            samples.time,
+            samples.joint_names,
+            samples.positions,
+            samples.velocities,
+            np.asarray(h.leg_min),
+            np.asarray(h.leg_max),
+            np.asarray(h.leg_speed),
+            axes=(axes[1][0], axes[2][0]),
+        )
     elif job.arm is not None:
         limits = job.arm.joint_limits
-        plots.joint_limits(samples.time, samples.joint_names, samples.positions, samples.velocities,
-                           np.asarray(limits.lower), np.asarray(limits.upper), np.asarray(limits.velocity),
-                           axes=(axes[1][0], axes[2][0]))
+        plots.joint_limits(
+            samples.time,
+            samples.joint_names,
+            samples.positions,
+            samples.velocities,
+            np.asarray(limits.lower),
+            np.asarray(limits.upper),
+            np.asarray(limits.velocity),
+            axes=(axes[1][0], axes[2][0]),
+        )
     path = directory / f"{stem}.png"
     plots.save([axes[0][0]], str(path))
     plt.close(figure)
@@ -286,6 +344,13 @@ def _mark_events(ax, events) -> None:
         labelled.add(event.kind)
         ax.axvline(event.at, color=_EVENT_COLOURS[event.kind], ls=":", lw=1.2, label=label)
         if event.kind == "override":
-            ax.annotate(f"×{event.factor:g}", (event.at, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10),
-                        textcoords="offset points", fontsize="small", color=_EVENT_COLOURS["override"])
+            ax.annotate(
+                f"×{event.factor:g}",
+                (event.at, 1.0),
+                xycoords=("data", "axes fraction"),
+                xytext=(2, -10),
+                textcoords="offset points",
+                fontsize="small",
+                color=_EVENT_COLOURS["override"],
+            )
     ax.legend(loc="lower center", fontsize="small", ncol=2)

@@ -17,7 +17,18 @@ from typing import List, Optional, TextIO, Tuple
 import numpy as np
 
 from .commands import run_plan
-from . import Limits, MetricSet, Path, Pose, Trajectory, __version__, disp_distance, max_point_speed, plan, section_length
+from . import (
+    Limits,
+    MetricSet,
+    Path,
+    Pose,
+    Trajectory,
+    __version__,
+    disp_distance,
+    max_point_speed,
+    plan,
+    section_length,
+)
 
 #: Commanded speed of the demo (m/s), and the acceleration (m/s²) and jerk (m/s³) of its plan.
 SYSTEM_VELOCITY = 0.1
@@ -211,12 +222,16 @@ def _plan_demo_job(outdir: str, out: TextIO) -> int:
         print(f"\nwrote the demo job to {job_file}", file=out)
     print(f"\nplanning {job_file} (dispkin plan {job_file} -o {outdir} --plot):", file=out)
     status = run_plan(str(job_file), outdir, True, out)
-    print(f"\nEdit {job_file} (moves, limits, tool points, machine) and run the demo again to plan your version.",
-          file=out)
+    print(
+        f"\nEdit {job_file} (moves, limits, tool points, machine) and run the demo again to plan your version.",
+        file=out,
+    )
     return status
 
 
-def run_demo(moves: int, seed: int, out: TextIO, outdir: Optional[str] = None, progress: Optional[TextIO] = None) -> int:
+def run_demo(
+    moves: int, seed: int, out: TextIO, outdir: Optional[str] = None, progress: Optional[TextIO] = None
+) -> int:
     """Print the demo (see the module docstring) to `out`, with the sweep's progress on
     `progress`; then plan OUTDIR/job.yaml (if `outdir`). Returns the exit status 0."""
     _print_move_comparison(out)

@@ -97,8 +97,11 @@ def _in_limit_range(doc: LimitsDocument, keys: Sequence[Any], value: float) -> N
     """A speed, acceleration, jerk or effort limit: within dispkin's numeric range in magnitude
     (as the path limits of a job are; 1e300 rad/s is no limit the library can compute with)."""
     if not LIMIT_RANGE[0] <= abs(value) <= LIMIT_RANGE[1]:
-        raise doc.fail(keys, f" = {value:g}: must be in [{LIMIT_RANGE[0]:g}, {LIMIT_RANGE[1]:g}] in magnitude "
-                       "(dispkin's numeric range of limits)")
+        raise doc.fail(
+            keys,
+            f" = {value:g}: must be in [{LIMIT_RANGE[0]:g}, {LIMIT_RANGE[1]:g}] in magnitude "
+            "(dispkin's numeric range of limits)",
+        )
 
 
 def _flag(doc: LimitsDocument, keys: Sequence[Any], value: Any) -> bool:
@@ -184,12 +187,17 @@ def _joint_entry(doc: LimitsDocument, where: Tuple[Any, ...], entry: Dict[Any, A
             if key not in ("min_position", "max_position"):
                 _in_limit_range(doc, where + (key,), values[key])
     if values.get("min_position") is not None and not values["min_position"] < values["max_position"]:
-        raise doc.fail(where + ("min_position",), f" = {values['min_position']:g}: must have min_position < max_position "
-                       f"(max_position = {values['max_position']:g})")
+        raise doc.fail(
+            where + ("min_position",),
+            f" = {values['min_position']:g}: must have min_position < max_position "
+            f"(max_position = {values['max_position']:g})",
+        )
     return JointLimitEntry(**values)
 
 
-def apply_moveit_joint_limits(arm: Any, limits: Union[MoveItJointLimits, _PathLike]) -> Tuple[Any, Optional[np.ndarray]]:
+def apply_moveit_joint_limits(
+    arm: Any, limits: Union[MoveItJointLimits, _PathLike]
+) -> Tuple[Any, Optional[np.ndarray]]:
     """The arm with the file's velocity, effort and position limits replacing its URDF's (joints
     the file does not mention keep theirs), and the joint accelerations ((dof,) array, inf where
     a joint states none; None if no joint does) for ``retime(..., joint_acceleration=...)``.
@@ -200,8 +208,10 @@ def apply_moveit_joint_limits(arm: Any, limits: Union[MoveItJointLimits, _PathLi
     names = list(arm.joint_names)
     unknown = sorted(set(limits.joints) - set(names))
     if unknown:
-        raise LimitsFileError(f"{limits.places.get(unknown[0], limits.source)}: joint_limits.{unknown[0]}: not a joint of the arm "
-                              f"(its joints: {', '.join(names)})")
+        raise LimitsFileError(
+            f"{limits.places.get(unknown[0], limits.source)}: joint_limits.{unknown[0]}: not a joint of the arm "
+            f"(its joints: {', '.join(names)})"
+        )
     current = arm.joint_limits
     lower, upper = np.array(current.lower, dtype=float), np.array(current.upper, dtype=float)
     velocity = np.array(current.velocity, dtype=float)
@@ -261,7 +271,9 @@ def read_pilz_cartesian_limits(path: Union[_PathLike, LimitsDocument]) -> PilzCa
     if isinstance(data, dict) and isinstance(data.get("cartesian_limits"), dict):
         data, prefix = data["cartesian_limits"], ("cartesian_limits",)
     if not isinstance(data, dict):
-        raise doc.fail(("cartesian_limits",), ": missing; expected max_trans_vel, max_trans_acc, max_trans_dec and max_rot_vel")
+        raise doc.fail(
+            ("cartesian_limits",), ": missing; expected max_trans_vel, max_trans_acc, max_trans_dec and max_rot_vel"
+        )
     values = {}
     for key in ("max_trans_vel", "max_trans_acc", "max_trans_dec", "max_rot_vel"):
         if key not in data:

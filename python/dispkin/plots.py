@@ -51,9 +51,7 @@ def point_speed(
     return ax
 
 
-def leg_lengths(
-    hexapod: Hexapod, trajectory: Trajectory, step: float = 1e-3, ax: Optional[Any] = None
-) -> Any:
+def leg_lengths(hexapod: Hexapod, trajectory: Trajectory, step: float = 1e-3, ax: Optional[Any] = None) -> Any:
     """The six leg lengths over time, with the tightest leg range as dashed lines."""
     ax = _axes(ax)
     t = sample_times(trajectory, step)

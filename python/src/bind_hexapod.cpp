@@ -93,7 +93,8 @@ py::array_t<double> inverse_xyzuvw(const Hexapod& h, const py::object& xyzuvw, c
   const Eigen::Vector3d p = vector3(pivot, "pivot");
   const std::string expected = "an array of shape (6,) or (N, 6)";
   const Array a = as_array(xyzuvw, "xyzuvw", expected);
-  if (a.ndim() == 1 && a.shape(0) == 6) return legs_array(h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data())), p));
+  if (a.ndim() == 1 && a.shape(0) == 6)
+    return legs_array(h.leg_lengths(Vector6d(Eigen::Map<const Vector6d>(a.data())), p));
   if (a.ndim() != 2 || a.shape(1) != 6) wrong_shape("xyzuvw", expected, a);
   py::array_t<double> out({a.shape(0), py::ssize_t{6}});
   double* data = out.mutable_data();
@@ -119,8 +120,9 @@ LegViolation violation_of(const py::tuple& s, Field field) {
 }
 
 LegViolation violation_from_state(const py::object& state) {
-  const LegViolation v = violation_of(state_tuple(state, 5, "LegViolation"),
-                                      [](std::size_t k, const char* name) { return StateField("LegViolation", k, name); });
+  const LegViolation v = violation_of(state_tuple(state, 5, "LegViolation"), [](std::size_t k, const char* name) {
+    return StateField("LegViolation", k, name);
+  });
   require_consistent(v);
   return v;
 }
@@ -136,15 +138,19 @@ LegExcursion excursion_of(const py::tuple& s, Field field) {
   const StateField kind_at = field(0, "kind");
   const std::string kind = state_cast<std::string>(s[0], kind_at);
   if (kind != "length" && kind != "speed") throw py::value_error(kind_at.message(s[0], "must be 'length' or 'speed'"));
-  return LegExcursion{kind == "length" ? LegExcursion::Kind::length : LegExcursion::Kind::speed, state_cast<int>(s[1], field(1, "leg")),
-                      state_cast<double>(s[2], field(2, "start_time")), state_cast<double>(s[3], field(3, "end_time")),
-                      state_cast<double>(s[4], field(4, "worst_time")), state_cast<double>(s[5], field(5, "worst_value")),
+  return LegExcursion{kind == "length" ? LegExcursion::Kind::length : LegExcursion::Kind::speed,
+                      state_cast<int>(s[1], field(1, "leg")),
+                      state_cast<double>(s[2], field(2, "start_time")),
+                      state_cast<double>(s[3], field(3, "end_time")),
+                      state_cast<double>(s[4], field(4, "worst_time")),
+                      state_cast<double>(s[5], field(5, "worst_value")),
                       state_cast<double>(s[6], field(6, "excess"))};
 }
 
 LegExcursion excursion_from_state(const py::object& state) {
-  const LegExcursion e = excursion_of(state_tuple(state, 7, "LegExcursion"),
-                                      [](std::size_t k, const char* name) { return StateField("LegExcursion", k, name); });
+  const LegExcursion e = excursion_of(state_tuple(state, 7, "LegExcursion"), [](std::size_t k, const char* name) {
+    return StateField("LegExcursion", k, name);
+  });
   require_consistent(e);
   return e;
 }
@@ -169,9 +175,10 @@ std::vector<T> nested_items(const py::handle& obj, const StateField& where, std:
 
 WorkspaceCheck workspace_check_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 2, "WorkspaceCheck");
-  const WorkspaceCheck c{state_vector<6>(s[0], StateField("WorkspaceCheck", 0, "lengths")),
-                         nested_items<LegViolation>(s[1], StateField("WorkspaceCheck", 1, "violations"), 5,
-                                                    [](const py::tuple& v, auto field) { return violation_of(v, field); })};
+  const WorkspaceCheck c{
+      state_vector<6>(s[0], StateField("WorkspaceCheck", 0, "lengths")),
+      nested_items<LegViolation>(s[1], StateField("WorkspaceCheck", 1, "violations"), 5,
+                                 [](const py::tuple& v, auto field) { return violation_of(v, field); })};
   require_consistent(c);
   return c;
 }
@@ -190,8 +197,8 @@ TrajectoryCheck trajectory_check_from_state(const py::object& state) {
 std::string workspace_check_repr(const WorkspaceCheck& c) {
   std::string legs;
   for (const LegViolation& v : c.violations) legs += (legs.empty() ? "" : ", ") + std::to_string(v.leg);
-  return "WorkspaceCheck(reachable=" + std::string(c.reachable() ? "True" : "False") + ", lengths=" + tuple_repr(c.lengths) +
-         ", legs_out_of_range=[" + legs + "])";
+  return "WorkspaceCheck(reachable=" + std::string(c.reachable() ? "True" : "False") +
+         ", lengths=" + tuple_repr(c.lengths) + ", legs_out_of_range=[" + legs + "])";
 }
 
 std::string trajectory_check_repr(const TrajectoryCheck& c) {
@@ -211,24 +218,31 @@ void bind_hexapod(py::module_& m) {
       .def_readonly("excess", &LegViolation::excess, "how far outside the range (m), > 0")
       .def("__repr__", [](const LegViolation& v) {
         return "LegViolation(leg=" + std::to_string(v.leg) + ", length=" + float_repr(v.length) +
-               ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) + ", excess=" + float_repr(v.excess) + ")";
+               ", lower=" + float_repr(v.lower) + ", upper=" + float_repr(v.upper) +
+               ", excess=" + float_repr(v.excess) + ")";
       });
   def_pickle(violation, "LegViolation", &violation_state, &violation_from_state);
 
-  py::class_<WorkspaceCheck> workspace_check(m, "WorkspaceCheck", "Leg lengths at a pose and the legs out of range (Hexapod.check).");
-  workspace_check.def_property_readonly("lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
+  py::class_<WorkspaceCheck> workspace_check(m, "WorkspaceCheck",
+                                             "Leg lengths at a pose and the legs out of range (Hexapod.check).");
+  workspace_check
+      .def_property_readonly(
+          "lengths", [](const WorkspaceCheck& c) { return legs_array(c.lengths); }, "(6,) leg lengths (m)")
       .def_readonly("violations", &WorkspaceCheck::violations, "list of LegViolation, empty when reachable")
       .def_property_readonly("reachable", &WorkspaceCheck::reachable, "True when every leg is within its range")
       .def("__bool__", &WorkspaceCheck::reachable)
       .def("__repr__", &workspace_check_repr);
   def_pickle(
       workspace_check, "WorkspaceCheck",
-      [](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); }, &workspace_check_from_state);
+      [](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); },
+      &workspace_check_from_state);
 
   py::class_<LegExcursion> excursion(m, "LegExcursion",
-                           "A stretch of a trajectory where a leg leaves its range or exceeds its speed.");
-  excursion.def_property_readonly("kind", [](const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; },
-                             "'length' or 'speed'")
+                                     "A stretch of a trajectory where a leg leaves its range or exceeds its speed.");
+  excursion
+      .def_property_readonly(
+          "kind", [](const LegExcursion& e) { return e.kind == LegExcursion::Kind::length ? "length" : "speed"; },
+          "'length' or 'speed'")
       .def_readonly("leg", &LegExcursion::leg, "0-based leg index")
       .def_readonly("start_time", &LegExcursion::start_time, "first sample out of range (s)")
       .def_readonly("end_time", &LegExcursion::end_time, "last sample out of range (s)")
@@ -236,16 +250,21 @@ void bind_hexapod(py::module_& m) {
       .def_readonly("worst_value", &LegExcursion::worst_value, "the leg's length (m) or speed (m/s) there")
       .def_readonly("excess", &LegExcursion::excess, "how far beyond the range or limit, > 0")
       .def("__repr__", [](const LegExcursion& e) {
-        return std::string("LegExcursion(kind='") + kind_name(e) +
-               "', leg=" + std::to_string(e.leg) + ", start_time=" + float_repr(e.start_time) +
-               ", end_time=" + float_repr(e.end_time) + ", excess=" + float_repr(e.excess) + ")";
+        return std::string("LegExcursion(kind='") + kind_name(e) + "', leg=" + std::to_string(e.leg) +
+               ", start_time=" + float_repr(e.start_time) + ", end_time=" + float_repr(e.end_time) +
+               ", excess=" + float_repr(e.excess) + ")";
       });
   def_pickle(excursion, "LegExcursion", &excursion_state, &excursion_from_state);
 
-  py::class_<TrajectoryCheck> trajectory_check(m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).");
-  trajectory_check.def_property_readonly("min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
-      .def_property_readonly("max_length", [](const TrajectoryCheck& c) { return legs_array(c.max_length); }, "(6,) m")
-      .def_property_readonly("max_speed", [](const TrajectoryCheck& c) { return legs_array(c.max_speed); }, "(6,) m/s")
+  py::class_<TrajectoryCheck> trajectory_check(
+      m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).");
+  trajectory_check
+      .def_property_readonly(
+          "min_length", [](const TrajectoryCheck& c) { return legs_array(c.min_length); }, "(6,) m")
+      .def_property_readonly(
+          "max_length", [](const TrajectoryCheck& c) { return legs_array(c.max_length); }, "(6,) m")
+      .def_property_readonly(
+          "max_speed", [](const TrajectoryCheck& c) { return legs_array(c.max_speed); }, "(6,) m/s")
       .def_readonly("excursions", &TrajectoryCheck::excursions, "list of LegExcursion, empty when ok")
       .def_property_readonly("ok", &TrajectoryCheck::ok, "True when no leg leaves its range or exceeds its speed")
       .def("__bool__", &TrajectoryCheck::ok)
@@ -253,7 +272,8 @@ void bind_hexapod(py::module_& m) {
   def_pickle(
       trajectory_check, "TrajectoryCheck",
       [](const TrajectoryCheck& c) {
-        return py::make_tuple(legs_array(c.min_length), legs_array(c.max_length), legs_array(c.max_speed), c.excursions);
+        return py::make_tuple(legs_array(c.min_length), legs_array(c.max_length), legs_array(c.max_speed),
+                              c.excursions);
       },
       &trajectory_check_from_state);
 
@@ -261,7 +281,8 @@ void bind_hexapod(py::module_& m) {
 A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
 joints p_i (platform coordinates). A platform pose T maps platform to base coordinates and
 leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
-  hexapod.def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
+  hexapod
+      .def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
                        const py::object& speed, const py::object& home) {
              return Hexapod(joints(base, "base_joints"), joints(platform, "platform_joints"), legs(lo, "leg_min"),
                             legs(hi, "leg_max"), legs(speed, "leg_speed"),
@@ -280,71 +301,87 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
       .def("save", &Hexapod::save, py::arg("path"), "Writes the JSON description.")
       .def_static("from_json", &Hexapod::from_json, py::arg("text"), "From the JSON description as text.")
       .def("to_json", &Hexapod::to_json, "The JSON description as text.")
-      .def_property_readonly("base_joints", [](const Hexapod& h) { return joints_array(h.base_joints()); },
-                             "(6, 3) base joints, base coordinates (m)")
-      .def_property_readonly("platform_joints", [](const Hexapod& h) { return joints_array(h.platform_joints()); },
-                             "(6, 3) platform joints, platform coordinates (m)")
-      .def_property_readonly("leg_min", [](const Hexapod& h) { return legs_array(h.leg_min()); }, "(6,) shortest leg lengths (m)")
-      .def_property_readonly("leg_max", [](const Hexapod& h) { return legs_array(h.leg_max()); }, "(6,) longest leg lengths (m)")
-      .def_property_readonly("leg_speed", [](const Hexapod& h) { return legs_array(h.leg_speed()); }, "(6,) leg speed limits (m/s)")
+      .def_property_readonly(
+          "base_joints", [](const Hexapod& h) { return joints_array(h.base_joints()); },
+          "(6, 3) base joints, base coordinates (m)")
+      .def_property_readonly(
+          "platform_joints", [](const Hexapod& h) { return joints_array(h.platform_joints()); },
+          "(6, 3) platform joints, platform coordinates (m)")
+      .def_property_readonly(
+          "leg_min", [](const Hexapod& h) { return legs_array(h.leg_min()); }, "(6,) shortest leg lengths (m)")
+      .def_property_readonly(
+          "leg_max", [](const Hexapod& h) { return legs_array(h.leg_max()); }, "(6,) longest leg lengths (m)")
+      .def_property_readonly(
+          "leg_speed", [](const Hexapod& h) { return legs_array(h.leg_speed()); }, "(6,) leg speed limits (m/s)")
       .def_property_readonly("home", &Hexapod::home, "the pose forward() starts from by default")
       .def_property_readonly("dof", &Hexapod::dof, "6")
       .def_property_readonly("joint_names", &Hexapod::joint_names, "['leg1', ..., 'leg6']")
       .def("inverse", &inverse, py::arg("pose"),
            "Leg lengths: a Pose or (4, 4) matrix -> (6,); a sequence of poses or (N, 4, 4) -> (N, 6).")
-      .def("inverse_xyzuvw", &inverse_xyzuvw, py::arg("xyzuvw"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
+      .def("inverse_xyzuvw", &inverse_xyzuvw, py::arg("xyzuvw"),
+           py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
            "Leg lengths of XYZUVW about `pivot` (platform coordinates): (6,) -> (6,), (N, 6) -> (N, 6).")
-      .def("leg_jacobian", [](const Hexapod& h, const py::object& pose) {
-             return Eigen::Matrix<double, 6, 6, Eigen::RowMajor>(h.leg_jacobian(pose_of(pose, "pose")));
-           }, py::arg("pose"), "(6, 6) d(legs)/d(body twist (v, w)) of T exp(twist).")
-      .def("forward",
-           [](const Hexapod& h, const py::object& l, const py::object& guess) {
-             const Legs target = vector<6>(l, "legs");
-             const Posed start = guess.is_none() ? h.home() : pose_of(guess, "guess");
-             py::gil_scoped_release unlocked;  // Newton's method from the guess
-             return h.forward(target, start);
-           },
-           py::arg("legs"), py::arg("guess") = py::none(),
-           "The pose with these leg lengths (Newton's method from `guess`, default home), to 1e-12 m. "
-           "RuntimeError, with the iteration count and residual, when it does not converge or is singular.")
+      .def(
+          "leg_jacobian",
+          [](const Hexapod& h, const py::object& pose) {
+            return Eigen::Matrix<double, 6, 6, Eigen::RowMajor>(h.leg_jacobian(pose_of(pose, "pose")));
+          },
+          py::arg("pose"), "(6, 6) d(legs)/d(body twist (v, w)) of T exp(twist).")
+      .def(
+          "forward",
+          [](const Hexapod& h, const py::object& l, const py::object& guess) {
+            const Legs target = vector<6>(l, "legs");
+            const Posed start = guess.is_none() ? h.home() : pose_of(guess, "guess");
+            py::gil_scoped_release unlocked;  // Newton's method from the guess
+            return h.forward(target, start);
+          },
+          py::arg("legs"), py::arg("guess") = py::none(),
+          "The pose with these leg lengths (Newton's method from `guess`, default home), to 1e-12 m. "
+          "RuntimeError, with the iteration count and residual, when it does not converge or is singular.")
       .def(
           "check",
           [](const Hexapod& h, const Trajectory& trajectory, double dt) { return h.check_trajectory(trajectory, dt); },
           py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("dt") = 1e-3,
           "For a planned Trajectory: leg lengths and leg speeds every `dt` seconds against the limits "
           "(a TrajectoryCheck with the margins and every excursion). Same as check_trajectory.")
-      .def("check", [](const Hexapod& h, const py::object& pose) { return h.check(pose_of(pose, "pose")); },
-           py::arg("pose"), "Which legs are out of range at `pose`, and by how much.")
-      .def("require_reachable", [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); },
-           py::arg("pose"), "ValueError naming the first leg out of range.")
+      .def(
+          "check", [](const Hexapod& h, const py::object& pose) { return h.check(pose_of(pose, "pose")); },
+          py::arg("pose"), "Which legs are out of range at `pose`, and by how much.")
+      .def(
+          "require_reachable",
+          [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); }, py::arg("pose"),
+          "ValueError naming the first leg out of range.")
       .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::call_guard<py::gil_scoped_release>(),
            py::arg("trajectory"), py::arg("dt"),
            "Dense check every `dt` seconds: leg lengths and leg speeds (J times the body twist) against the limits.")
-      .def("leg_section_lengths",
-           [](const Hexapod& h, const Path& path, double system_velocity, double tolerance) {
-             std::vector<double> lengths;
-             {
-               const UnlockedIf unlocked(true, path);
-               lengths = h.leg_section_lengths(path, system_velocity, tolerance);
-             }
-             return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
-           },
-           py::arg("path"), py::arg("system_velocity"), py::arg("tolerance") = 1e-3,
-           "Leg-speed rule (b), the joint-space metric: the minimum length of every section of `path` (m, (N,)) "
-           "so that no leg exceeds its speed at path speed `system_velocity`: v_sys * max_i r_i / leg_speed_i.")
-      .def("leg_rate_bounds",
-           [](const Hexapod& h, const Path& path, double tolerance) {
-             py::array_t<double> out({static_cast<py::ssize_t>(path.size()), py::ssize_t{6}});
-             double* data = out.mutable_data();
-             {
-               const UnlockedIf unlocked(true, path);
-               for (std::size_t k = 0; k < path.size(); ++k) Eigen::Map<Legs>(data + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
-             }
-             return out;
-           },
-           py::arg("path"), py::arg("tolerance") = 1e-3,
-           "(N, 6) upper bounds r_i of max over tau of |d(leg i)/d(tau)| per section (m per unit of the section "
-           "parameter), rigorous, within `tolerance` of the section's largest leg-speed demand.")
+      .def(
+          "leg_section_lengths",
+          [](const Hexapod& h, const Path& path, double system_velocity, double tolerance) {
+            std::vector<double> lengths;
+            {
+              const UnlockedIf unlocked(true, path);
+              lengths = h.leg_section_lengths(path, system_velocity, tolerance);
+            }
+            return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
+          },
+          py::arg("path"), py::arg("system_velocity"), py::arg("tolerance") = 1e-3,
+          "Leg-speed rule (b), the joint-space metric: the minimum length of every section of `path` (m, (N,)) "
+          "so that no leg exceeds its speed at path speed `system_velocity`: v_sys * max_i r_i / leg_speed_i.")
+      .def(
+          "leg_rate_bounds",
+          [](const Hexapod& h, const Path& path, double tolerance) {
+            py::array_t<double> out({static_cast<py::ssize_t>(path.size()), py::ssize_t{6}});
+            double* data = out.mutable_data();
+            {
+              const UnlockedIf unlocked(true, path);
+              for (std::size_t k = 0; k < path.size(); ++k)
+                Eigen::Map<Legs>(data + 6 * k) = h.leg_rate_bounds(path.sections()[k], tolerance);
+            }
+            return out;
+          },
+          py::arg("path"), py::arg("tolerance") = 1e-3,
+          "(N, 6) upper bounds r_i of max over tau of |d(leg i)/d(tau)| per section (m per unit of the section "
+          "parameter), rigorous, within `tolerance` of the section's largest leg-speed demand.")
       .def(
           "add_leg_speed_group",
           [](const Hexapod& h, MetricSetd& set, int group) {
@@ -352,14 +389,16 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
             h.add_leg_speed_group(set, group);
           },
           py::arg("metric_set"), py::arg("group"),
-           "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
+          "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
       .def("__repr__", [](const Hexapod& h) {
         return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
                ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";
       });
-  def_pickle(hexapod, "Hexapod", [](const Hexapod& h) { return py::make_tuple(h.to_json()); }, [](const py::object& state) {
-    return Hexapod::from_json(state_item<std::string>(state_tuple(state, 1, "Hexapod"), 0, "Hexapod", "json"));
-  });
+  def_pickle(
+      hexapod, "Hexapod", [](const Hexapod& h) { return py::make_tuple(h.to_json()); },
+      [](const py::object& state) {
+        return Hexapod::from_json(state_item<std::string>(state_tuple(state, 1, "Hexapod"), 0, "Hexapod", "json"));
+      });
 
   m.def(
       "xyzuvw_for_new_pivot",

@@ -61,8 +61,10 @@ bool same_sets(const MetricSetd& a, const MetricSetd& b, Same same, SameSpeed sa
     const MetricGroup<double>& h = b.groups()[k];
     if (g.id != h.id || g.speed_limit.has_value() != h.speed_limit.has_value()) return false;
     if (g.speed_limit && !same_speed(*g.speed_limit, *h.speed_limit)) return false;
-    if (!same_points(g.relative_points, h.relative_points, same) || !same_points(g.absolute_points, h.absolute_points, same) ||
-        !same_spheres(g.relative_spheres, h.relative_spheres, same) || !same_spheres(g.absolute_spheres, h.absolute_spheres, same))
+    if (!same_points(g.relative_points, h.relative_points, same) ||
+        !same_points(g.absolute_points, h.absolute_points, same) ||
+        !same_spheres(g.relative_spheres, h.relative_spheres, same) ||
+        !same_spheres(g.absolute_spheres, h.absolute_spheres, same))
       return false;
   }
   return true;
@@ -91,7 +93,8 @@ py::list metric_set_state(const MetricSetd& set) {
 // add_points, add_sphere and set_group_speed check every value, as for a set built by hand.
 MetricSetd metric_set_from_state(const py::object& state) {
   if (!py::isinstance<py::list>(state) && !py::isinstance<py::tuple>(state))
-    throw py::type_error("MetricSet.__setstate__: state: expected a list of groups, got " + echoed(std::string(py::repr(state))));
+    throw py::type_error("MetricSet.__setstate__: state: expected a list of groups, got " +
+                         echoed(std::string(py::repr(state))));
   MetricSetd set;
   std::size_t k = 0;
   for (const py::handle item : py::reinterpret_borrow<py::sequence>(state)) {
@@ -102,17 +105,21 @@ MetricSetd metric_set_from_state(const py::object& state) {
     if (speed) set.set_group_speed(id, *speed);
     const auto rows = [&](std::size_t i, const char* name, py::ssize_t columns) {
       const StateField at = group_at / ("." + std::string(name));
-      const bool sequence = py::isinstance<py::tuple>(g[i]) || py::isinstance<py::list>(g[i]) || py::isinstance<py::array>(g[i]);
+      const bool sequence =
+          py::isinstance<py::tuple>(g[i]) || py::isinstance<py::list>(g[i]) || py::isinstance<py::array>(g[i]);
       const Array a = sequence ? Array::ensure(g[i]) : Array(py::ssize_t{0});
-      if (!sequence || !a) throw py::type_error(at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + ")"));
+      if (!sequence || !a)
+        throw py::type_error(at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + ")"));
       if (a.size() > 0 && (a.ndim() != 2 || a.shape(1) != columns))
-        throw py::value_error(at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + "), not " + shape_string(a)));
+        throw py::value_error(
+            at.message(g[i], "must be an array of shape (N, " + std::to_string(columns) + "), not " + shape_string(a)));
       return a;
     };
     for (std::size_t i = 2; i < 4; ++i) {
       const Array a = rows(i, i == 2 ? "relative_points" : "absolute_points", 3);
       std::vector<Eigen::Vector3d> points;
-      for (py::ssize_t r = 0; a.size() > 0 && r < a.shape(0); ++r) points.emplace_back(Eigen::Map<const Eigen::Vector3d>(a.data() + 3 * r));
+      for (py::ssize_t r = 0; a.size() > 0 && r < a.shape(0); ++r)
+        points.emplace_back(Eigen::Map<const Eigen::Vector3d>(a.data() + 3 * r));
       set.add_points(points, i == 2 ? Frame::relative : Frame::absolute, id);
     }
     for (std::size_t i = 4; i < 6; ++i) {
@@ -131,7 +138,8 @@ std::string metric_set_repr(const MetricSetd& set) {
   std::string speeds;
   for (const auto& g : set.groups()) {
     groups += (groups.empty() ? "" : ", ") + std::to_string(g.id);
-    if (g.speed_limit) speeds += (speeds.empty() ? "" : ", ") + std::to_string(g.id) + ": " + float_repr(*g.speed_limit);
+    if (g.speed_limit)
+      speeds += (speeds.empty() ? "" : ", ") + std::to_string(g.id) + ": " + float_repr(*g.speed_limit);
   }
   return "MetricSet(groups=[" + groups + "], points=" + std::to_string(set.point_count()) +
          ", spheres=" + std::to_string(set.sphere_count()) + (speeds.empty() ? "" : ", group_speeds={" + speeds + "}") +
@@ -182,8 +190,8 @@ Lengths in metres.)doc");
             self.set_group_speed(group, speed);
           },
           py::arg("group"), py::arg("speed"),
-           "Give group `group` its own speed limit in m/s (> 0); the group is created if needed. Its "
-           "lengths are then weighted by system_velocity / speed.")
+          "Give group `group` its own speed limit in m/s (> 0); the group is created if needed. Its "
+          "lengths are then weighted by system_velocity / speed.")
       .def_property_readonly(
           "groups",
           [](const MetricSetd& self) {
@@ -204,8 +212,7 @@ Lengths in metres.)doc");
            "The group's spheres as a list of (center (3,), radius, absolute) tuples: relative spheres "
            "first, then absolute ones, each in the order added.")
       .def(
-          "group_speed",
-          [](const MetricSetd& self, int group) { return existing_group(self, group).speed_limit; },
+          "group_speed", [](const MetricSetd& self, int group) { return existing_group(self, group).speed_limit; },
           py::arg("group"), "The group's own speed limit in m/s, or None if it follows the system velocity.")
       .def("is_well_formed", &MetricSetd::is_well_formed,
            "Whether the DISP distance over this set is a metric (the relative or the absolute part "
@@ -220,14 +227,14 @@ Lengths in metres.)doc");
             const UnlockedIf unlocked(true, self);
             return reduced_to_hull_vertices(self);
           },
-           "A new set with every group's relative and absolute points replaced by the vertices of "
-           "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
-           "length is the same.")
+          "A new set with every group's relative and absolute points replaced by the vertices of "
+          "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
+          "length is the same.")
       .def(
           "__eq__",
           [](const MetricSetd& a, const MetricSetd& b) {
-            return same_sets(a, b, [](const auto& x, const auto& y) { return x == y; },
-                             [](double x, double y) { return x == y; });
+            return same_sets(
+                a, b, [](const auto& x, const auto& y) { return x == y; }, [](double x, double y) { return x == y; });
           },
           py::is_operator(),
           "The same groups holding the same points and spheres in the same order, with the same speed limits.")
@@ -235,8 +242,9 @@ Lengths in metres.)doc");
           "isclose",
           [](const MetricSetd& a, const MetricSetd& b, double rel_tol, double abs_tol) {
             require_tolerances(rel_tol, abs_tol);
-            return same_sets(a, b, [&](const auto& x, const auto& y) { return all_close(x, y, rel_tol, abs_tol); },
-                             [&](double x, double y) { return isclose(x, y, rel_tol, abs_tol); });
+            return same_sets(
+                a, b, [&](const auto& x, const auto& y) { return all_close(x, y, rel_tol, abs_tol); },
+                [&](double x, double y) { return isclose(x, y, rel_tol, abs_tol); });
           },
           py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
           "Like ==, with math.isclose for every coordinate, radius and speed limit.")

@@ -43,14 +43,14 @@ Path& then_blended(Path& path, const Path& next, std::optional<double> blend, st
   if (weight) return path.then_weighted(next, *weight, orientation, tolerance);
   if (!blend && !before && !after) {
     if (orientation != OrientationBlend::rotation_vector)
-      throw std::invalid_argument(describe("orientation_blend", orientation_blend,
-                                           "needs a blend: give weight, blend or before and after"));
+      throw std::invalid_argument(
+          describe("orientation_blend", orientation_blend, "needs a blend: give weight, blend or before and after"));
     return path.then(next);
   }
-  if (blend && (before || after))
-    throw std::invalid_argument("blend: give either blend or before/after, not both");
+  if (blend && (before || after)) throw std::invalid_argument("blend: give either blend or before/after, not both");
   if (blend) return path.then(next, *blend, *blend, tolerance, orientation);
-  if (!before || !after) throw std::invalid_argument(std::string(before ? "after" : "before") + " is missing: give both before and after");
+  if (!before || !after)
+    throw std::invalid_argument(std::string(before ? "after" : "before") + " is missing: give both before and after");
   return path.then(next, *before, *after, tolerance, orientation);
 }
 
@@ -89,8 +89,10 @@ One section of a Path: the motion from `start` to `end` as the section parameter
 CIRC), "curve" (a piece of a SPLINE or of a blend) or "slerp_blend" (a piece of a blend with
 orientation_blend="nested_slerp"); arcs and curves have lengths that are tight upper bounds.)doc")
       .def_property_readonly("kind", &section_kind, "\"lin\", \"arc\", \"curve\" or \"slerp_blend\".")
-      .def_property_readonly("start", [](const SectionHolder& s) { return section_start(s.value); }, "Pose at tau = 0.")
-      .def_property_readonly("end", [](const SectionHolder& s) { return section_end(s.value); }, "Pose at tau = 1.")
+      .def_property_readonly(
+          "start", [](const SectionHolder& s) { return section_start(s.value); }, "Pose at tau = 0.")
+      .def_property_readonly(
+          "end", [](const SectionHolder& s) { return section_end(s.value); }, "Pose at tau = 1.")
       .def(
           "pose",
           [](const SectionHolder& s, double tau) {
@@ -110,7 +112,8 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
       .def("__repr__", [](const SectionHolder& s) { return std::string("Section(kind=\"") + section_kind(s) + "\")"; });
 
   // Before Path, so that the signature of Path.ptp names the Python type, not the C++ one.
-  py::class_<JointPath> joint_path(m, "JointPath", "A PTP move: the straight line between two joint vectors (radians / metres).");
+  py::class_<JointPath> joint_path(m, "JointPath",
+                                   "A PTP move: the straight line between two joint vectors (radians / metres).");
   joint_path.def_property_readonly("start", &JointPath::start, "q at u = 0.")
       .def_property_readonly("end", &JointPath::end, "q at u = 1.")
       .def(
@@ -153,7 +156,8 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
             return Path::circ(a, via, b, p, tolerance).with_limits({velocity, acceleration});
           },
           py::arg("a"), py::arg("via"), py::arg("b"), py::arg_v("pivot", origin, "(0, 0, 0)"),
-          py::arg("tolerance") = 1e-3, py::kw_only(), py::arg("velocity") = py::none(), py::arg("acceleration") = py::none(),
+          py::arg("tolerance") = 1e-3, py::kw_only(), py::arg("velocity") = py::none(),
+          py::arg("acceleration") = py::none(),
           "A CIRC move: the pivot on the circular arc from a through via to b, the orientation turning "
           "from a's to b's proportionally to the arc angle (via's orientation is not used). Cut into "
           "sections whose length bound exceeds the exact speed by at most `tolerance` (relative). `velocity`, "
@@ -174,8 +178,7 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
           "sections within each of which the speed varies by about `tolerance` (relative). `velocity`, "
           "`acceleration` (keywords): this move's own limits, as for lin.")
       .def_static(
-          "ptp",
-          [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
+          "ptp", [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
           py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).")
       .def("then", &then_blended, py::arg("next"), py::kw_only(), py::arg("blend") = py::none(),
            py::arg("before") = py::none(), py::arg("after") = py::none(), py::arg("tolerance") = 1e-3,
@@ -229,7 +232,8 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
             }
             return py::array_t<double>(static_cast<py::ssize_t>(lengths.size()), lengths.data());
           },
-          py::arg("metric_set"), py::arg("system_velocity") = py::none(), "L of every section (metres), as an (N,) array.")
+          py::arg("metric_set"), py::arg("system_velocity") = py::none(),
+          "L of every section (metres), as an (N,) array.")
       .def("sample", &sample_path, py::arg("u"),
            "Geometry only: the pose at u in [0, 1] (a Pose), or (N, 4, 4) matrices for an array of u. "
            "u is spread over the sections in proportion to pivot travel plus 0.1 m per radian.")

@@ -30,8 +30,8 @@ namespace {
 using hexapod::Hexapod;
 
 
-Limits make_limits(double velocity, double acceleration, std::optional<double> jerk, std::optional<double> angular_velocity,
-                   std::optional<double> angular_acceleration) {
+Limits make_limits(double velocity, double acceleration, std::optional<double> jerk,
+                   std::optional<double> angular_velocity, std::optional<double> angular_acceleration) {
   Limits limits{velocity, acceleration, jerk, angular_velocity, angular_acceleration};
   require_limit(velocity, "velocity");
   require_limit(acceleration, "acceleration");
@@ -49,8 +49,10 @@ bool optional_close(const std::optional<double>& a, const std::optional<double>&
 
 bool limits_close(const Limits& a, const Limits& b, double rel_tol, double abs_tol) {
   require_tolerances(rel_tol, abs_tol);
-  return isclose(a.velocity, b.velocity, rel_tol, abs_tol) && isclose(a.acceleration, b.acceleration, rel_tol, abs_tol) &&
-         optional_close(a.jerk, b.jerk, rel_tol, abs_tol) && optional_close(a.angular_velocity, b.angular_velocity, rel_tol, abs_tol) &&
+  return isclose(a.velocity, b.velocity, rel_tol, abs_tol) &&
+         isclose(a.acceleration, b.acceleration, rel_tol, abs_tol) &&
+         optional_close(a.jerk, b.jerk, rel_tol, abs_tol) &&
+         optional_close(a.angular_velocity, b.angular_velocity, rel_tol, abs_tol) &&
          optional_close(a.angular_acceleration, b.angular_acceleration, rel_tol, abs_tol);
 }
 
@@ -104,15 +106,16 @@ py::object shaped(const Times& times, const std::vector<py::ssize_t>& shape_tail
 
 // Samples the trajectory at `times` and writes `columns` numbers per sample with `write`.
 template <typename Sampled, typename Write>
-py::object sampled(const Sampled& traj, const py::object& times, const py::object& out, std::vector<py::ssize_t> shape_tail,
-                   py::ssize_t columns, Write write) {
+py::object sampled(const Sampled& traj, const py::object& times, const py::object& out,
+                   std::vector<py::ssize_t> shape_tail, py::ssize_t columns, Write write) {
   const Times at = times_of(times);
   return shaped(at, shape_tail, out, [&](double* data) {
     const std::vector<double>& t = at.t;
     if constexpr (std::is_same_v<Sampled, Trajectory> || std::is_same_v<Sampled, MotionStream>) {
       // A cursor: consecutive times (the usual array) find their section without search.
       typename Sampled::Cursor cursor;
-      for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
+      for (std::size_t i = 0; i < t.size(); ++i)
+        write(traj.sample(t[i], cursor), data + static_cast<py::ssize_t>(i) * columns);
     } else {
       for (std::size_t i = 0; i < t.size(); ++i) write(traj.sample(t[i]), data + static_cast<py::ssize_t>(i) * columns);
     }
@@ -124,7 +127,9 @@ py::object sampled(const Sampled& traj, const py::object& times, const py::objec
 void write_matrix(const TrajectorySample& s, double* out) {
   Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
 }
-void write_xyzuvw(const TrajectorySample& s, double* out) { Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw(); }
+void write_xyzuvw(const TrajectorySample& s, double* out) {
+  Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.pose.to_xyzuvw();
+}
 void write_body_twist(const TrajectorySample& s, double* out) {
   Eigen::Map<Eigen::Matrix<double, 6, 1>>{out} = s.body_twist.vector();
 }
@@ -134,10 +139,10 @@ void write_body_twist(const TrajectorySample& s, double* out) {
 // changed once built, so `trajectory` stays valid. The C++ cursor is only a hint (any value
 // samples the same numbers), so the pair has no other invariant.
 struct TrajectoryCursor {
-  py::object owner;               // the Python Trajectory
-  const Trajectory* trajectory;   // its C++ value
-  Trajectory::Cursor cursor;      // the law and section of the last sample
-  std::optional<double> t;        // the time of the last sample, as given
+  py::object owner;              // the Python Trajectory
+  const Trajectory* trajectory;  // its C++ value
+  Trajectory::Cursor cursor;     // the law and section of the last sample
+  std::optional<double> t;       // the time of the last sample, as given
 };
 
 // One state in TrajectoryCursor's flat layout: the XYZUVW pose [0, 6), the body twist [6, 12),
@@ -156,21 +161,21 @@ void write_cursor_state(const TrajectorySample& s, double* out) {
 // A sampling method's docstring: `doc`, then how it takes `out`.
 std::string with_out(const char* doc) {
   return std::string(doc) +
-         " `out` (keyword): a preallocated writeable C-contiguous float64 array of exactly the shape returned, written in "
+         " `out` (keyword): a preallocated writeable C-contiguous float64 array of exactly the shape returned, written "
+         "in "
          "place and returned instead of a new array (ValueError naming `out` and what it is otherwise).";
 }
 
 // The sampling methods shared by Trajectory, OverlappedTrajectory and MotionStream.
 template <typename T>
 void add_sampling(py::class_<T>& cls) {
-  cls
-      .def(
-          "sample",
-          [](const T& traj, const py::object& times, const py::object& out) {
-            return sampled(traj, times, out, {4, 4}, 16, write_matrix);
-          },
-          py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
-          with_out("Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.").c_str())
+  cls.def(
+         "sample",
+         [](const T& traj, const py::object& times, const py::object& out) {
+           return sampled(traj, times, out, {4, 4}, 16, write_matrix);
+         },
+         py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
+         with_out("Poses at `times` as (N, 4, 4) homogeneous matrices; one (4, 4) for a number.").c_str())
       .def(
           "sample_xyzuvw",
           [](const T& traj, const py::object& times, const py::object& out) {
@@ -192,7 +197,8 @@ void add_sampling(py::class_<T>& cls) {
           },
           py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
           with_out("s at `times`, (N,), metres of DISP arc length; a float for a number (with `out`: an array of shape "
-                   "(1,) or (), returned).").c_str())
+                   "(1,) or (), returned).")
+              .c_str())
       .def(
           "path_velocity",
           [](const T& traj, const py::object& times, const py::object& out) {
@@ -200,7 +206,8 @@ void add_sampling(py::class_<T>& cls) {
           },
           py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
           with_out("s-dot at `times`, (N,), m/s: the speed bound of every point of the set; a float for a number "
-                   "(with `out`: an array of shape (1,) or (), returned).").c_str())
+                   "(with `out`: an array of shape (1,) or (), returned).")
+              .c_str())
       .def(
           "path_acceleration",
           [](const T& traj, const py::object& times, const py::object& out) {
@@ -208,7 +215,8 @@ void add_sampling(py::class_<T>& cls) {
           },
           py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
           with_out("s-double-dot at `times`, (N,), m/s^2; a float for a number (with `out`: an array of shape (1,) or "
-                   "(), returned).").c_str());
+                   "(), returned).")
+              .c_str());
 }
 
 // PlanOptions::joint_metric of plan()'s `joint_metric` argument: a Hexapod's own (C++, run with
@@ -234,26 +242,32 @@ JointMetric joint_metric_of(const py::object& joint_metric) {
 }  // namespace
 
 void bind_planner(py::module_& m) {
-  py::class_<Limits> limits(m, "Limits", "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
-                                  "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).");
-  limits.def(py::init(&make_limits),
-           py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(), py::arg("angular_velocity") = py::none(),
-           py::arg("angular_acceleration") = py::none(),
+  py::class_<Limits> limits(
+      m, "Limits",
+      "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
+      "and optionally the tool's angular velocity (rad/s) and angular acceleration (rad/s^2).");
+  limits
+      .def(py::init(&make_limits), py::arg("velocity"), py::arg("acceleration"), py::arg("jerk") = py::none(),
+           py::arg("angular_velocity") = py::none(), py::arg("angular_acceleration") = py::none(),
            "Limits from the path velocity (m/s), acceleration (m/s^2) and jerk (m/s^3), each in "
-           "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the trapezoid (plan checks). "
-           "angular_velocity (rad/s) and angular_acceleration (rad/s^2), when given, limit the tool's rotation separately "
+           "[1e-12, 1e12] (dispkin's numeric range); the jerk is required by the S-curve profile and refused by the "
+           "trapezoid (plan checks). "
+           "angular_velocity (rad/s) and angular_acceleration (rad/s^2), when given, limit the tool's rotation "
+           "separately "
            "(|omega| never above angular_velocity, exactly).")
-      .def_readonly("velocity", &Limits::velocity, "The path velocity limit, m/s: no point of the metric set moves faster.")
+      .def_readonly("velocity", &Limits::velocity,
+                    "The path velocity limit, m/s: no point of the metric set moves faster.")
       .def_readonly("acceleration", &Limits::acceleration, "The path acceleration limit, m/s^2.")
       .def_readonly("jerk", &Limits::jerk, "The path jerk limit, m/s^3, or None (trapezoid profile).")
       .def_readonly("angular_velocity", &Limits::angular_velocity, "The tool's angular velocity limit, rad/s, or None.")
-      .def_readonly("angular_acceleration", &Limits::angular_acceleration, "The tool's angular acceleration limit, rad/s^2, or None.")
+      .def_readonly("angular_acceleration", &Limits::angular_acceleration,
+                    "The tool's angular acceleration limit, rad/s^2, or None.")
       .def(
-          "__eq__", [](const Limits& a, const Limits& b) { return limits_state(a).equal(limits_state(b)); }, py::is_operator(),
-          "The same velocity, acceleration, jerk and angular limits (each both None or equal).")
+          "__eq__", [](const Limits& a, const Limits& b) { return limits_state(a).equal(limits_state(b)); },
+          py::is_operator(), "The same velocity, acceleration, jerk and angular limits (each both None or equal).")
       .def("__hash__", [](const Limits& l) { return py::hash(limits_state(l)); })
-      .def("isclose", &limits_close, py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
-           "math.isclose for every limit (a limit of None only matches None).")
+      .def("isclose", &limits_close, py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9,
+           py::arg("abs_tol") = 0.0, "math.isclose for every limit (a limit of None only matches None).")
       .def("__repr__", [](const Limits& l) {
         std::string out = "Limits(velocity=" + float_repr(l.velocity) + ", acceleration=" + float_repr(l.acceleration) +
                           ", jerk=" + (l.jerk ? float_repr(*l.jerk) : std::string("None"));
@@ -263,9 +277,12 @@ void bind_planner(py::module_& m) {
       });
   def_pickle(limits, "Limits", &limits_state, [](const py::object& state) {
     const py::tuple s = state_tuple(state, 5, "Limits");
-    const auto item = [&s](std::size_t k, const char* field) { return state_item<std::optional<double>>(s, k, "Limits", field); };
-    return make_limits(state_item<double>(s, 0, "Limits", "velocity"), state_item<double>(s, 1, "Limits", "acceleration"),
-                       item(2, "jerk"), item(3, "angular_velocity"), item(4, "angular_acceleration"));
+    const auto item = [&s](std::size_t k, const char* field) {
+      return state_item<std::optional<double>>(s, k, "Limits", field);
+    };
+    return make_limits(state_item<double>(s, 0, "Limits", "velocity"),
+                       state_item<double>(s, 1, "Limits", "acceleration"), item(2, "jerk"), item(3, "angular_velocity"),
+                       item(4, "angular_acceleration"));
   });
 
   py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
@@ -277,36 +294,54 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
       .def_property_readonly("law_count", &Trajectory::law_count,
                              "Time laws: one per segment of each piece's velocity-limit curve (the path "
                              "slows down where it curves tightly: speed^2 x curvature <= acceleration).")
-      .def("section_lengths", [](const Trajectory& t) {
-        return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()), t.section_lengths().data());
-      }, "L of every section, metres.")
-      .def("rest_positions", [](const Trajectory& t) {
-        return py::array_t<double>(static_cast<py::ssize_t>(t.rest_positions().size()), t.rest_positions().data());
-      }, "Path positions s (m) where the trajectory is at rest: 0, every corner, the length.")
-      .def("section_sources", [](const Trajectory& t) {
-        Eigen::MatrixXd out(static_cast<Eigen::Index>(t.section_sources().size()), 3);
-        for (std::size_t k = 0; k < t.section_sources().size(); ++k) {
-          const SectionSource& source = t.section_sources()[k];
-          out.row(static_cast<Eigen::Index>(k)) << static_cast<double>(source.section), source.tau_start, source.tau_end;
-        }
-        return out;
-      }, "Where each section comes from, as (K, 3) rows (section of the path as planned, tau start, tau end): the "
-         "planner cuts sections whose fastest point's speed varies, and plans the blended path in continuous-path mode.")
-      .def_property_readonly("stops", [](const Trajectory& t) {
-        py::list out;
-        for (const Stop& stop : t.stops()) out.append(py::make_tuple(stop.s, stop.reason));
-        return out;
-      }, "The corners where the trajectory comes to rest inside the path, as (path position s in m, reason) tuples; "
-         "empty when the motion is one continuous run.")
-      .def("speed_limits", [](const Trajectory& t) {
-        Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
-        for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
-          const SpeedLimit& span = t.speed_limits()[k];
-          out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
-        }
-        return out;
-      }, "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
-         "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
+      .def(
+          "section_lengths",
+          [](const Trajectory& t) {
+            return py::array_t<double>(static_cast<py::ssize_t>(t.section_lengths().size()),
+                                       t.section_lengths().data());
+          },
+          "L of every section, metres.")
+      .def(
+          "rest_positions",
+          [](const Trajectory& t) {
+            return py::array_t<double>(static_cast<py::ssize_t>(t.rest_positions().size()), t.rest_positions().data());
+          },
+          "Path positions s (m) where the trajectory is at rest: 0, every corner, the length.")
+      .def(
+          "section_sources",
+          [](const Trajectory& t) {
+            Eigen::MatrixXd out(static_cast<Eigen::Index>(t.section_sources().size()), 3);
+            for (std::size_t k = 0; k < t.section_sources().size(); ++k) {
+              const SectionSource& source = t.section_sources()[k];
+              out.row(static_cast<Eigen::Index>(k)) << static_cast<double>(source.section), source.tau_start,
+                  source.tau_end;
+            }
+            return out;
+          },
+          "Where each section comes from, as (K, 3) rows (section of the path as planned, tau start, tau end): the "
+          "planner cuts sections whose fastest point's speed varies, and plans the blended path in continuous-path "
+          "mode.")
+      .def_property_readonly(
+          "stops",
+          [](const Trajectory& t) {
+            py::list out;
+            for (const Stop& stop : t.stops()) out.append(py::make_tuple(stop.s, stop.reason));
+            return out;
+          },
+          "The corners where the trajectory comes to rest inside the path, as (path position s in m, reason) tuples; "
+          "empty when the motion is one continuous run.")
+      .def(
+          "speed_limits",
+          [](const Trajectory& t) {
+            Eigen::MatrixXd out(static_cast<Eigen::Index>(t.speed_limits().size()), 3);
+            for (std::size_t k = 0; k < t.speed_limits().size(); ++k) {
+              const SpeedLimit& span = t.speed_limits()[k];
+              out.row(static_cast<Eigen::Index>(k)) << span.start_s, span.length, span.limit;
+            }
+            return out;
+          },
+          "The velocity-limit curve it was planned under, as (K, 3) rows (start s, length, limit): m, m, m/s. "
+          "The system velocity, lowered where the path curves tightly; any re-timing keeps to it.")
       .def(
           "body_acceleration",
           [](const Trajectory& traj, const py::object& times, const py::object& out) {
@@ -317,8 +352,9 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
             });
           },
           py::arg("times"), py::kw_only(), py::arg("out") = py::none(),
-          with_out("The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
-                   "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 12).")
+          with_out(
+              "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
+              "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 12).")
               .c_str())
       .def("stopped_at", &Trajectory::stopped_at, py::arg("t"),
            "A feed hold that keeps to the path: the same motion up to t (bit for bit), then the fastest stop from the "
@@ -344,16 +380,21 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
                              "Whether the motion ends at rest before the end of its path (stopped_at).")
       .def_property_readonly("end_position", &Trajectory::end_position,
                              "Where the motion ends, m of DISP arc length: the length, or where it stopped.")
-      .def_property_readonly("time_law_limits", [](const Trajectory& t) -> py::object {
-        if (!t.limits()) return py::none();
-        return py::make_tuple(t.limits()->acceleration, py::cast(t.limits()->jerk));
-      }, "(acceleration m/s^2, jerk m/s^3 or None) that the time law keeps to, and so every stop or override of it; "
-         "None for a re-timed trajectory (its law keeps to joint limits), which refuses events.")
+      .def_property_readonly(
+          "time_law_limits",
+          [](const Trajectory& t) -> py::object {
+            if (!t.limits()) return py::none();
+            return py::make_tuple(t.limits()->acceleration, py::cast(t.limits()->jerk));
+          },
+          "(acceleration m/s^2, jerk m/s^3 or None) that the time law keeps to, and so every stop or override of it; "
+          "None for a re-timed trajectory (its law keeps to joint limits), which refuses events.")
       .def("__repr__", [](const Trajectory& t) {
-        return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) + ")";
+        return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) +
+               ")";
       });
 
-  def_pickle(trajectory, "Trajectory", &trajectory_state, [](const py::object& state) { return trajectory_from_state(state); });
+  def_pickle(trajectory, "Trajectory", &trajectory_state,
+             [](const py::object& state) { return trajectory_from_state(state); });
   add_sampling(trajectory);
 
   py::class_<TrajectoryCursor> cursor(m, "TrajectoryCursor", R"doc(
@@ -394,15 +435,16 @@ Views made once, e.g. twist = out[TrajectoryCursor.BODY_TWIST], read the state o
           "float64 array of shape (15,) in the layout of the class, and returns `out` (a new array when None). With "
           "`out` given nothing is allocated: a control loop passes the same array at every cycle.")
       .def_property_readonly(
-          "t", [](const TrajectoryCursor& c) { return c.t; }, "The time of the last sample, seconds, as given; None before the first.")
+          "t", [](const TrajectoryCursor& c) { return c.t; },
+          "The time of the last sample, seconds, as given; None before the first.")
       .def_property_readonly(
           "section", [](const TrajectoryCursor& c) { return c.cursor.section; },
           "The index of the section of the last sample (0 before the first), into Trajectory.section_lengths().")
       .def_property_readonly(
           "trajectory", [](const TrajectoryCursor& c) { return c.owner; }, "The Trajectory the cursor runs along.")
       .def("__repr__", [](const TrajectoryCursor& c) {
-        return "TrajectoryCursor(t=" + (c.t ? float_repr(*c.t) : std::string("None")) + ", section=" + std::to_string(c.cursor.section) +
-               ")";
+        return "TrajectoryCursor(t=" + (c.t ? float_repr(*c.t) : std::string("None")) +
+               ", section=" + std::to_string(c.cursor.section) + ")";
       });
   trajectory.def(
       "cursor",
@@ -423,14 +465,17 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
       .def(py::init([](const Trajectory& before, const Trajectory& after, double overlap, const py::object& pivot) {
              return OverlappedTrajectory(before, after, overlap, vector3(pivot, "pivot"));
            }),
-           py::arg("before"), py::arg("after"), py::arg("overlap"), py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
+           py::arg("before"), py::arg("after"), py::arg("overlap"),
+           py::arg_v("pivot", py::make_tuple(0.0, 0.0, 0.0), "(0, 0, 0)"),
            "`after` started `overlap` seconds (0 <= overlap <= the shorter duration) before `before` ends; "
            "`after` must start where `before` ends. `pivot`: the body point (metres) whose velocities add.")
       .def_property_readonly("duration", &OverlappedTrajectory::duration, "Seconds.")
       .def_property_readonly("overlap", &OverlappedTrajectory::overlap, "Seconds during which both moves run.")
-      .def_property_readonly("overlap_start", &OverlappedTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def_property_readonly("overlap_start", &OverlappedTrajectory::overlap_start,
+                             "When the second move starts, seconds.")
       .def("__repr__", [](const OverlappedTrajectory& o) {
-        return "OverlappedTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
+        return "OverlappedTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) +
+               ")";
       });
   add_sampling(overlapped);
 
@@ -442,17 +487,20 @@ cost is that of the look-ahead), one appended after the motion ended starts from
 `stop`, `resume` and `set_override` act at any time. Every request at time t leaves the motion
 before t as it was, bit for bit; requests come in time order. Sample it at any times (seconds).)doc");
   stream
-      .def(py::init([](const MetricSetd& set, const Limits& limits, const std::string& profile, double corner_tolerance) {
-             return MotionStream(set, limits, profile_kind(profile), corner_tolerance);
-           }),
+      .def(py::init(
+               [](const MetricSetd& set, const Limits& limits, const std::string& profile, double corner_tolerance) {
+                 return MotionStream(set, limits, profile_kind(profile), corner_tolerance);
+               }),
            py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::arg("corner_tolerance") = 0.0,
            "An empty stream under the metric set and limits, with the \"scurve\" or \"trapezoid\" law; corners blended "
            "within corner_tolerance (m; 0 stops at every corner).")
       .def("append", &MotionStream::append, py::arg("path"), py::arg("t"),
            "Appends `path` (it starts where the last appended move ends) at time t (s, not before the last request).")
       .def("stop", &MotionStream::stop, py::arg("t"),
-           "Stops on the path from the state at t as fast as the limits allow; moves appended while stopped wait for resume.")
-      .def("resume", &MotionStream::resume, py::arg("t"), "Goes on at t through every move appended. ValueError unless stopped.")
+           "Stops on the path from the state at t as fast as the limits allow; moves appended while stopped wait for "
+           "resume.")
+      .def("resume", &MotionStream::resume, py::arg("t"),
+           "Goes on at t through every move appended. ValueError unless stopped.")
       .def("set_override", &MotionStream::set_override, py::arg("t"), py::arg("factor"),
            "The speed override from t on (factor in [0.001, 10], relative to the limits as planned).")
       .def_property_readonly("duration", &MotionStream::duration, "When what is planned now ends, at rest (s).")
@@ -486,8 +534,8 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
         const UnlockedIf unlocked(true, path, set);
         return plan(path, set, limits, kind, options);
       },
-      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve",
-      py::kw_only(), py::arg("joint_metric") = py::none(), py::arg("corner_tolerance") = 0.0, py::arg("start_velocity") = 0.0,
+      py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("profile") = "scurve", py::kw_only(),
+      py::arg("joint_metric") = py::none(), py::arg("corner_tolerance") = 0.0, py::arg("start_velocity") = 0.0,
       py::arg("start_acceleration") = 0.0,
       "Plan `path` under the metric set and limits with a time-optimal \"scurve\" (needs limits.jerk) "
       "or \"trapezoid\" law. The trajectory stops at corners of the path unless `corner_tolerance` (m, keyword) is "
@@ -500,7 +548,8 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       "Hexapod its C++ joint_metric is used: the leg-speed lengths (rule (b)), raised to one common speed along "
       "sections that continue one another (a CIRC), so the trajectory does not stop at their junctions. "
       "`start_velocity` (m/s) and `start_acceleration` (m/s², S-curve only; keywords): the state the motion starts in "
-      "instead of rest, within the limits at the start (doc/events.md section 3); its first run is the time-optimal law "
+      "instead of rest, within the limits at the start (doc/events.md section 3); its first run is the time-optimal "
+      "law "
       "from that state.");
 }
 

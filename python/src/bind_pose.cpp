@@ -160,11 +160,12 @@ velocity in rad/s, both in body coordinates.)doc");
           "__eq__", [](const Posed& self, const Posed& other) { return same_pose(self, other); }, py::is_operator(),
           "The same transform, exactly: equal translations and equal quaternions up to sign (q and -q are one "
           "rotation). Use isclose for poses computed in different ways.")
-      .def("__hash__", [](const Posed& self) {
-        const Eigen::Vector4d q = canonical_wxyz(self);
-        const Eigen::Vector3d& t = self.translation();
-        return hash_floats(q(0), q(1), q(2), q(3), t(0), t(1), t(2));
-      })
+      .def("__hash__",
+           [](const Posed& self) {
+             const Eigen::Vector4d q = canonical_wxyz(self);
+             const Eigen::Vector3d& t = self.translation();
+             return hash_floats(q(0), q(1), q(2), q(3), t(0), t(1), t(2));
+           })
       .def(
           "isclose",
           [](const Posed& self, const Posed& other, double rel_tol, double abs_tol) {

@@ -72,13 +72,14 @@ void bind_profile(py::module_& m) {
 A one-dimensional time-optimal time law s(t) over a distance S (metres, or any unit of path
 length): piecewise-constant jerk, at most seven phases, from velocity v_start to v_end with
 zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurve; immutable.)doc");
-  profile.def_static("trapezoid", &Profile::trapezoid, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
+  profile
+      .def_static("trapezoid", &Profile::trapezoid, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
                   py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
                   "The time-optimal law under |v| <= v_max, |a| <= a_max (no jerk limit): accelerate at "
                   "+a_max to the peak velocity, cruise, decelerate at -a_max. v_start, v_end in [0, v_max]. "
                   "ValueError on bad input or if `distance` is too short to go from v_start to v_end.")
-      .def_static("scurve", &Profile::scurve, py::arg("distance"), py::arg("v_max"), py::arg("a_max"),
-                  py::arg("j_max"), py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
+      .def_static("scurve", &Profile::scurve, py::arg("distance"), py::arg("v_max"), py::arg("a_max"), py::arg("j_max"),
+                  py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
                   "The time-optimal seven-phase law under |v| <= v_max, |a| <= a_max, |jerk| <= j_max, "
                   "accelerations zero at both ends. v_start, v_end in [0, v_max]. ValueError on bad input, "
                   "or if `distance` is too short for the accelerate-cruise-decelerate law between v_start "

@@ -34,8 +34,8 @@ using serial::PtpOptions;
 // number one sample shaped `tail` (a float when that is empty), as numpy does for a scalar. An
 // array of many times is sampled with the interpreter lock released (`write` is C++ only).
 template <typename Traj, typename Write>
-py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ssize_t> tail,
-                   py::ssize_t columns, Write write) {
+py::object sampled(const Traj& traj, const py::object& times, std::vector<py::ssize_t> tail, py::ssize_t columns,
+                   Write write) {
   const Array a = as_array(times, "times", "a number or an array of shape (N,)");
   if (a.ndim() > 1) wrong_shape("times", "a number or an array of shape (N,)", a);
   std::vector<double> t(a.data(), a.data() + a.size());
@@ -113,13 +113,16 @@ together, timed so that no point or sphere of the metric set moves faster than i
 time and no joint faster than its velocity limit. Sample it at any times (seconds, clamped to
 [0, duration]); the ends are exactly q_a and q_b, at rest.)doc");
   cls.def_property_readonly("duration", &JointTrajectory::duration, "Seconds.")
-      .def_property_readonly("length", &JointTrajectory::length, "The DISP arc length (sum of the section bounds), metres.")
+      .def_property_readonly("length", &JointTrajectory::length,
+                             "The DISP arc length (sum of the section bounds), metres.")
       .def_property_readonly("dof", &JointTrajectory::dof, "Number of joints.")
       .def_property_readonly("start", &JointTrajectory::start, "q_a (rad).")
       .def_property_readonly("end", &JointTrajectory::end, "q_b (rad).")
-      .def_property_readonly("law_count", &JointTrajectory::law_count, "Time laws: one per segment of the velocity-limit curve.")
-      .def_property_readonly("law_acceleration", &JointTrajectory::law_acceleration,
-                             "The acceleration limit of the time law (m/s^2): the DISP one, lowered by joint acceleration limits.")
+      .def_property_readonly("law_count", &JointTrajectory::law_count,
+                             "Time laws: one per segment of the velocity-limit curve.")
+      .def_property_readonly(
+          "law_acceleration", &JointTrajectory::law_acceleration,
+          "The acceleration limit of the time law (m/s^2): the DISP one, lowered by joint acceleration limits.")
       .def(
           "sections",
           [](const JointTrajectory& t) {
@@ -214,18 +217,23 @@ time and no joint faster than its velocity limit. Sample it at any times (second
             return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.s_dot; });
           },
           py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
-      .def("__reduce__", [](const py::object& self) -> py::tuple {
-        if (!py::hasattr(self, "_plan_arguments")) {
-          throw py::type_error("cannot pickle a JointTrajectory that dispkin.plan did not make");
-        }
-        const py::tuple a = self.attr("_plan_arguments");
-        py::dict keywords;
-        keywords["robot"] = a[4];
-        keywords["joint_acceleration"] = a[5];
-        keywords["tolerance"] = a[6];
-        const py::object replan = py::module_::import("functools").attr("partial")(py::module_::import("dispkin._core").attr("plan"), **keywords);
-        return py::make_tuple(replan, py::make_tuple(a[0], a[1], a[2], a[3]));
-      }, "Pickling: plan() again with the arguments that made this trajectory.")
+      .def(
+          "__reduce__",
+          [](const py::object& self) -> py::tuple {
+            if (!py::hasattr(self, "_plan_arguments")) {
+              throw py::type_error("cannot pickle a JointTrajectory that dispkin.plan did not make");
+            }
+            const py::tuple a = self.attr("_plan_arguments");
+            py::dict keywords;
+            keywords["robot"] = a[4];
+            keywords["joint_acceleration"] = a[5];
+            keywords["tolerance"] = a[6];
+            const py::object replan =
+                py::module_::import("functools")
+                    .attr("partial")(py::module_::import("dispkin._core").attr("plan"), **keywords);
+            return py::make_tuple(replan, py::make_tuple(a[0], a[1], a[2], a[3]));
+          },
+          "Pickling: plan() again with the arguments that made this trajectory.")
       .def("__repr__", [](const JointTrajectory& t) {
         return "JointTrajectory(duration=" + float_repr(t.duration()) + ", joints=" + std::to_string(t.dof()) +
                ", sections=" + std::to_string(t.sections().size()) + ")";
@@ -246,7 +254,8 @@ overlaps.)doc")
            "duration (seconds).")
       .def_property_readonly("duration", &OverlappedJointTrajectory::duration, "Seconds.")
       .def_property_readonly("overlap", &OverlappedJointTrajectory::overlap, "Seconds during which both moves run.")
-      .def_property_readonly("overlap_start", &OverlappedJointTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def_property_readonly("overlap_start", &OverlappedJointTrajectory::overlap_start,
+                             "When the second move starts, seconds.")
       .def(
           "sample",
           [](const OverlappedJointTrajectory& t, const py::object& times) {
@@ -291,7 +300,8 @@ overlaps.)doc")
           },
           py::arg("times"), "theta-double-dot at `times`, (N, dof), rad/s^2.")
       .def("__repr__", [](const OverlappedJointTrajectory& o) {
-        return "OverlappedJointTrajectory(duration=" + float_repr(o.duration()) + ", overlap=" + float_repr(o.overlap()) + ")";
+        return "OverlappedJointTrajectory(duration=" + float_repr(o.duration()) +
+               ", overlap=" + float_repr(o.overlap()) + ")";
       });
 
   py::class_<FollowedTrajectory> followed(m, "FollowedTrajectory", R"doc(
@@ -307,13 +317,15 @@ arm's forward kinematics of the joints.)doc");
                   py::arg("q_start"), py::arg("spacing") = FollowedTrajectory::default_spacing,
                   "The branch that starts at q_start (whose forward kinematics must be the trajectory's start "
                   "pose to 1e-9). ValueError naming the argument for a wrong q_start or spacing, an arm that is "
-                  "neither 6R nor 7R with a redundancy parameter (kept at q_start's value), or a trajectory the arm cannot follow (out of reach, singular, a joint limit).")
+                  "neither 6R nor 7R with a redundancy parameter (kept at q_start's value), or a trajectory the arm "
+                  "cannot follow (out of reach, singular, a joint limit).")
       .def_static("to_end", &FollowedTrajectory::to_end, py::arg("trajectory"), py::arg("robot"), py::arg("q_end"),
                   py::arg("spacing") = FollowedTrajectory::default_spacing,
                   "The branch that ends at q_end (followed backwards from the trajectory's end pose, which "
                   "forward kinematics of q_end must be): for a Cartesian move a PTP move from q_end follows.")
       .def_property_readonly("duration", &FollowedTrajectory::duration, "Seconds.")
-      .def_property_readonly("length", &FollowedTrajectory::length, "The Cartesian trajectory's DISP arc length, metres.")
+      .def_property_readonly("length", &FollowedTrajectory::length,
+                             "The Cartesian trajectory's DISP arc length, metres.")
       .def_property_readonly("dof", &FollowedTrajectory::dof, "Number of joints.")
       .def_property_readonly("start", &FollowedTrajectory::start, "The joints at t = 0 (rad).")
       .def_property_readonly("end", &FollowedTrajectory::end, "The joints at the end (rad).")
@@ -323,7 +335,8 @@ arm's forward kinematics of the joints.)doc");
                              "The largest joint error found at an interval's middle (rad, at most 1e-10).");
   def_joint_sampling(followed);
   followed.def("__repr__", [](const FollowedTrajectory& f) {
-    return "FollowedTrajectory(duration=" + float_repr(f.duration()) + ", nodes=" + std::to_string(f.node_count()) + ")";
+    return "FollowedTrajectory(duration=" + float_repr(f.duration()) + ", nodes=" + std::to_string(f.node_count()) +
+           ")";
   });
 
   py::class_<OverlappedMixedTrajectory> mixed(m, "OverlappedMixedTrajectory", R"doc(
@@ -349,7 +362,8 @@ before using large overlaps.)doc");
            "after.start); 0 <= overlap <= the shorter duration (seconds).")
       .def_property_readonly("duration", &OverlappedMixedTrajectory::duration, "Seconds.")
       .def_property_readonly("overlap", &OverlappedMixedTrajectory::overlap, "Seconds during which both moves run.")
-      .def_property_readonly("overlap_start", &OverlappedMixedTrajectory::overlap_start, "When the second move starts, seconds.")
+      .def_property_readonly("overlap_start", &OverlappedMixedTrajectory::overlap_start,
+                             "When the second move starts, seconds.")
       .def_property_readonly("ptp_first", &OverlappedMixedTrajectory::ptp_first,
                              "True for a PTP move then a Cartesian one, False for the reverse.");
   def_joint_sampling(mixed);

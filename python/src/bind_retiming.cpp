@@ -59,8 +59,9 @@ py::tuple report_state(const JointLimitReport& r) {
   py::list samples;
   for (const JointSample& x : r.samples)
     samples.append(py::make_tuple(x.time, x.s, x.q, x.qd, x.qdd, x.static_torque, x.dynamic_torque));
-  return py::make_tuple(py::tuple(samples), r.velocity_factor, r.acceleration_factor, r.velocity_joint, r.velocity_sample,
-                        r.torque_joint, r.torque_sample, r.position_excess, r.position_joint, r.position_sample);
+  return py::make_tuple(py::tuple(samples), r.velocity_factor, r.acceleration_factor, r.velocity_joint,
+                        r.velocity_sample, r.torque_joint, r.torque_sample, r.position_excess, r.position_joint,
+                        r.position_sample);
 }
 
 // A trajectory inside a result's state, at `where`; the Trajectory's own checks name their field.
@@ -77,12 +78,17 @@ JointLimitReport report_of_items(const py::tuple& s, Field field) {
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const StateField at = samples_at.at(k);
     const py::tuple x = state_fields(samples[k], 7, at);
-    const auto joints = [&](std::size_t i, const char* name) { return state_vector<Eigen::Dynamic>(x[i], at / ("." + std::string(name))); };
-    r.samples.push_back(JointSample{state_number(x[0], at / ".time"), state_number(x[1], at / ".s"), joints(2, "q"), joints(3, "qd"),
-                                    joints(4, "qdd"), joints(5, "static_torque"), joints(6, "dynamic_torque")});
+    const auto joints = [&](std::size_t i, const char* name) {
+      return state_vector<Eigen::Dynamic>(x[i], at / ("." + std::string(name)));
+    };
+    r.samples.push_back(JointSample{state_number(x[0], at / ".time"), state_number(x[1], at / ".s"), joints(2, "q"),
+                                    joints(3, "qd"), joints(4, "qdd"), joints(5, "static_torque"),
+                                    joints(6, "dynamic_torque")});
   }
   const auto joint = [&](std::size_t k, const char* name) { return state_cast<int>(s[k], field(k, name)); };
-  const auto sample = [&](std::size_t k, const char* name) { return state_count(s[k], field(k, name), r.samples.size()); };
+  const auto sample = [&](std::size_t k, const char* name) {
+    return state_count(s[k], field(k, name), r.samples.size());
+  };
   r.velocity_factor = state_cast<double>(s[1], field(1, "velocity_factor"));
   r.acceleration_factor = state_cast<double>(s[2], field(2, "acceleration_factor"));
   r.velocity_joint = joint(3, "velocity_joint");
@@ -160,21 +166,27 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
 (N, 0) arrays for a machine without a dynamics model, a hexapod).)doc");
   report.def_readonly("velocity_factor", &JointLimitReport::velocity_factor, "FVEL.")
       .def_readonly("acceleration_factor", &JointLimitReport::acceleration_factor, "FACC.")
-      .def_readonly("velocity_joint", &JointLimitReport::velocity_joint, "Joint index where FVEL is reached (-1: none).")
+      .def_readonly("velocity_joint", &JointLimitReport::velocity_joint,
+                    "Joint index where FVEL is reached (-1: none).")
       .def_readonly("torque_joint", &JointLimitReport::torque_joint, "Joint index where FACC is reached (-1: none).")
-      .def_readonly("position_excess", &JointLimitReport::position_excess, "Largest excursion outside [lower, upper] (rad).")
+      .def_readonly("position_excess", &JointLimitReport::position_excess,
+                    "Largest excursion outside [lower, upper] (rad).")
       .def_readonly("position_joint", &JointLimitReport::position_joint, "Joint index of that excursion (-1: none).")
-      .def_property_readonly("velocity_time", [](const JointLimitReport& r) {
-        return r.samples.empty() ? 0.0 : r.samples[r.velocity_sample].time;
-      }, "Time (s) where FVEL is reached.")
-      .def_property_readonly("torque_time", [](const JointLimitReport& r) {
-        return r.samples.empty() ? 0.0 : r.samples[r.torque_sample].time;
-      }, "Time (s) where FACC is reached.")
-      .def_property_readonly("within_limits", &JointLimitReport::within_limits, "FVEL <= 1, FACC <= 1, no position excursion.")
+      .def_property_readonly(
+          "velocity_time",
+          [](const JointLimitReport& r) { return r.samples.empty() ? 0.0 : r.samples[r.velocity_sample].time; },
+          "Time (s) where FVEL is reached.")
+      .def_property_readonly(
+          "torque_time",
+          [](const JointLimitReport& r) { return r.samples.empty() ? 0.0 : r.samples[r.torque_sample].time; },
+          "Time (s) where FACC is reached.")
+      .def_property_readonly("within_limits", &JointLimitReport::within_limits,
+                             "FVEL <= 1, FACC <= 1, no position excursion.")
       .def_property_readonly("samples", &report_arrays, "Per-sample arrays (dict).")
       .def("__repr__", [](const JointLimitReport& r) {
         return "JointLimitReport(velocity_factor=" + float_repr(r.velocity_factor) +
-               ", acceleration_factor=" + float_repr(r.acceleration_factor) + ", samples=" + std::to_string(r.samples.size()) + ")";
+               ", acceleration_factor=" + float_repr(r.acceleration_factor) +
+               ", samples=" + std::to_string(r.samples.size()) + ")";
       });
   def_pickle(report, "JointLimitReport", &report_state, &report_from_state);
 
@@ -198,24 +210,30 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       [](const Trajectory& trajectory, const Hexapod& hexapod, int samples_between, double difference_step) {
         return check_joint_limits(trajectory, hexapod, check_options(samples_between, difference_step));
       },
-      py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("robot"), py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
+      py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("robot"),
+      py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
       "The same for a Hexapod, whose legs are its joints: q = leg lengths, qd = leg Jacobian times the body "
       "twist, qdd by central differences; velocity_factor against leg_speed, position_excess against the leg "
       "range. No dynamics model: torques stay empty and acceleration_factor 0.");
 
-  py::class_<RetimeResult> retime_result(m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.");
+  py::class_<RetimeResult> retime_result(
+      m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.");
   retime_result.def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
       .def_readonly("limits", &RetimeResult::limits, "The scaled limits it was planned with.")
       .def_readonly("iterations", &RetimeResult::iterations, "Plans made (1: the original plan already fits).")
-      .def_readonly("report", &RetimeResult::report, "The joint-limit report of the final trajectory (within_limits is True).")
+      .def_readonly("report", &RetimeResult::report,
+                    "The joint-limit report of the final trajectory (within_limits is True).")
       .def("__repr__", [](const RetimeResult& r) {
-        return "RetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", iterations=" + std::to_string(r.iterations) +
+        return "RetimeResult(duration=" + float_repr(r.trajectory.duration()) +
+               ", iterations=" + std::to_string(r.iterations) +
                ", velocity_factor=" + float_repr(r.report.velocity_factor) +
                ", acceleration_factor=" + float_repr(r.report.acceleration_factor) + ")";
       });
   def_pickle(
       retime_result, "RetimeResult",
-      [](const RetimeResult& r) { return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report)); },
+      [](const RetimeResult& r) {
+        return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report));
+      },
       &retime_from_state);
 
   py::class_<OptimalRetimeResult> optimal(m, "OptimalRetimeResult", R"doc(
@@ -224,11 +242,14 @@ grid interval; with a jerk limit constant-jerk laws), the dense check of it (`re
 torque ratios found by that check (each <= 1; torque = static + dynamic against the effort limit),
 the fraction by which the limits were tightened on the grid so that they also hold between grid
 points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `grid_speed`).)doc");
-  optimal.def_readonly("trajectory", &OptimalRetimeResult::trajectory,
-                    "The re-timed trajectory: the same path, one constant-acceleration law per grid interval (with a jerk "
-                    "limit: constant-jerk laws).")
+  optimal
+      .def_readonly(
+          "trajectory", &OptimalRetimeResult::trajectory,
+          "The re-timed trajectory: the same path, one constant-acceleration law per grid interval (with a jerk "
+          "limit: constant-jerk laws).")
       .def_readonly("report", &OptimalRetimeResult::report, "The dense joint-limit check of `trajectory`.")
-      .def_readonly("velocity_ratio", &OptimalRetimeResult::velocity_ratio, "max |qd_i| / qd_max_i at the checked samples.")
+      .def_readonly("velocity_ratio", &OptimalRetimeResult::velocity_ratio,
+                    "max |qd_i| / qd_max_i at the checked samples.")
       .def_readonly("acceleration_ratio", &OptimalRetimeResult::acceleration_ratio,
                     "max |qdd_i| / qdd_max_i at the checked samples (0 without acceleration limits).")
       .def_readonly("torque_ratio", &OptimalRetimeResult::torque_ratio,
@@ -238,12 +259,22 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       .def_readonly("jerk_window", &OptimalRetimeResult::jerk_window,
                     "With a jerk limit (profile=\"scurve\"): the longest moving-average window (s) of the rest-to-rest "
                     "runs, the time each run grew by; 0 without.")
-      .def_property_readonly("grid_s", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_s.size()), r.grid_s.data()); }, "Grid positions s (m), (N+1,).")
-      .def_property_readonly("grid_speed", [](const OptimalRetimeResult& r) { return py::array_t<double>(static_cast<py::ssize_t>(r.grid_speed.size()), r.grid_speed.data()); },
-                             "Path speed at the grid positions (m/s), (N+1,).")
+      .def_property_readonly(
+          "grid_s",
+          [](const OptimalRetimeResult& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.grid_s.size()), r.grid_s.data());
+          },
+          "Grid positions s (m), (N+1,).")
+      .def_property_readonly(
+          "grid_speed",
+          [](const OptimalRetimeResult& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.grid_speed.size()), r.grid_speed.data());
+          },
+          "Path speed at the grid positions (m/s), (N+1,).")
       .def("__repr__", [](const OptimalRetimeResult& r) {
-        return "OptimalRetimeResult(duration=" + float_repr(r.trajectory.duration()) + ", velocity_ratio=" +
-               float_repr(r.velocity_ratio) + ", acceleration_ratio=" + float_repr(r.acceleration_ratio) +
+        return "OptimalRetimeResult(duration=" + float_repr(r.trajectory.duration()) +
+               ", velocity_ratio=" + float_repr(r.velocity_ratio) +
+               ", acceleration_ratio=" + float_repr(r.acceleration_ratio) +
                ", torque_ratio=" + float_repr(r.torque_ratio) + ", margin=" + float_repr(r.margin) +
                ", refinements=" + std::to_string(r.refinements) + ")";
       });
@@ -260,9 +291,10 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
         if (method == "scaling") {
           // The scaling loop has no joint acceleration limit to scale against: refused, not ignored.
           if (joint_acceleration)
-            throw std::invalid_argument(describe("joint_acceleration", *joint_acceleration,
-                                                 "is not a limit of method=\"scaling\" (it scales the Cartesian limits "
-                                                 "until the joint speed and effort limits hold); use method=\"optimal\""));
+            throw std::invalid_argument(
+                describe("joint_acceleration", *joint_acceleration,
+                         "is not a limit of method=\"scaling\" (it scales the Cartesian limits "
+                         "until the joint speed and effort limits hold); use method=\"optimal\""));
           RetimeResult result;
           {
             const UnlockedIf unlocked(true, path, set);
@@ -271,7 +303,8 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
           }
           return py::cast(std::move(result));
         }
-        if (method != "optimal") throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
+        if (method != "optimal")
+          throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
         limits.validate(kind);  // the S-curve needs a jerk limit, the trapezoid refuses one
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
@@ -293,7 +326,8 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       py::arg("torque_limits") = true, py::arg("corner_tolerance") = 0.0,
       "Re-time `path` so that the robot keeps its joint limits. `corner_tolerance` (m): the path's corners blended "
       "first, as plan(..., corner_tolerance=) does (0: the path as given).\n\n"
-      "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by FVEL and the "
+      "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by "
+      "FVEL and the "
       "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
       "method=\"optimal\": the fastest parameterisation under the DISP limits and the joint velocity limits, "
       "`joint_acceleration` ((dof,) array, optional) and the effort limits (if `torque_limits`) at once, over "
@@ -307,12 +341,13 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
 
   m.def(
       "retime",
-      [](const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod, const std::string& profile,
-         const std::string& method, int samples_between, int max_iterations, int grid_intervals,
-         const std::optional<Eigen::VectorXd>& joint_acceleration, double corner_tolerance) {
+      [](const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
+         const std::string& profile, const std::string& method, int samples_between, int max_iterations,
+         int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration, double corner_tolerance) {
         if (method != "optimal") {
-          throw std::invalid_argument(describe("method", method, "must be \"optimal\" for a Hexapod (its leg speeds enter "
-                                                                 "plan() through Hexapod.joint_metric; no scaling loop)"));
+          throw std::invalid_argument(describe("method", method,
+                                               "must be \"optimal\" for a Hexapod (its leg speeds enter "
+                                               "plan() through Hexapod.joint_metric; no scaling loop)"));
         }
         limits.validate(profile_kind(profile));
         OptimalRetimeOptions options;

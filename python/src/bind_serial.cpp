@@ -22,11 +22,11 @@ namespace python {
 
 namespace {
 
+using serial::FollowedJoints;
 using serial::InverseOptions;
 using serial::InverseResult;
-using serial::SerialArm;
-using serial::FollowedJoints;
 using serial::JointTrajectory;
+using serial::SerialArm;
 
 // A Pose or a (4, 4) matrix. A Pose is read as it is, and so is a contiguous float64 array, C
 // or Fortran order (Pose.matrix() gives the latter), without a converted copy; anything else
@@ -152,7 +152,8 @@ void choose_redundancy(InverseOptions& o, const py::object& redundancy, const py
   if (!redundancy.is_none()) {
     if (!py::isinstance<py::float_>(redundancy) && !py::isinstance<py::int_>(redundancy) &&
         !py::hasattr(redundancy, "__float__"))
-      throw py::type_error("redundancy: expected a number (rad), got " + std::string(py::str(py::type::of(redundancy))));
+      throw py::type_error("redundancy: expected a number (rad), got " +
+                           std::string(py::str(py::type::of(redundancy))));
     o.redundancy = py::float_(redundancy).cast<double>();
   }
   if (!q_ref.is_none()) o.q_ref = joint_vector(q_ref, "q_ref");
@@ -185,7 +186,8 @@ std::vector<double> times_of(const py::handle& obj, const std::string& name) {
 
 py::array_t<double> to_rows(const Eigen::MatrixXd& m) {
   py::array_t<double> out({static_cast<py::ssize_t>(m.rows()), static_cast<py::ssize_t>(m.cols())});
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(out.mutable_data(), m.rows(), m.cols()) = m;
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(out.mutable_data(), m.rows(),
+                                                                                     m.cols()) = m;
   return out;
 }
 
@@ -209,7 +211,8 @@ serial::IkFamily family_named(const std::string& name) {
 }
 
 py::tuple joint_limits_state(const JointLimits& l) {
-  return py::make_tuple(to_vector_array(l.lower), to_vector_array(l.upper), to_vector_array(l.velocity), to_vector_array(l.effort));
+  return py::make_tuple(to_vector_array(l.lower), to_vector_array(l.upper), to_vector_array(l.velocity),
+                        to_vector_array(l.effort));
 }
 
 // Joint limits from the 4 items of their state; `field(k, name)` says where item k sits. Checked
@@ -217,8 +220,9 @@ py::tuple joint_limits_state(const JointLimits& l) {
 // `lower` has.
 template <typename Field>
 JointLimits joint_limits_of(const py::tuple& s, Field field) {
-  JointLimits l{state_vector<Eigen::Dynamic>(s[0], field(0, "lower")), state_vector<Eigen::Dynamic>(s[1], field(1, "upper")),
-                state_vector<Eigen::Dynamic>(s[2], field(2, "velocity")), state_vector<Eigen::Dynamic>(s[3], field(3, "effort"))};
+  JointLimits l{
+      state_vector<Eigen::Dynamic>(s[0], field(0, "lower")), state_vector<Eigen::Dynamic>(s[1], field(1, "upper")),
+      state_vector<Eigen::Dynamic>(s[2], field(2, "velocity")), state_vector<Eigen::Dynamic>(s[3], field(3, "effort"))};
   require(l.lower.size() >= 1, "lower size", 0L, "must be at least 1 (one entry per joint)");
   require_joint_limits(l, l.lower.size(), [](Eigen::Index i) { return "joint " + std::to_string(i); });
   return l;
@@ -236,7 +240,8 @@ InverseResult inverse_result_from_state(const py::object& state) {
   r.solutions = [&] {
     std::vector<Eigen::VectorXd> out;
     const py::sequence items = state_sequence(s[0], field(0, "solutions"));
-    for (std::size_t k = 0; k < items.size(); ++k) out.push_back(state_vector<Eigen::Dynamic>(items[k], field(0, "solutions").at(k)));
+    for (std::size_t k = 0; k < items.size(); ++k)
+      out.push_back(state_vector<Eigen::Dynamic>(items[k], field(0, "solutions").at(k)));
     return out;
   }();
   r.within_limits = state_cast<std::vector<bool>>(s[1], field(1, "within_limits"));
@@ -249,11 +254,13 @@ InverseResult inverse_result_from_state(const py::object& state) {
     throw py::value_error(family_at.message(s[3], family_names));
   }
   // One flag per solution, every solution of one size and finite (a joint vector).
-  require(r.within_limits.size() == r.solutions.size(), "within_limits size", static_cast<unsigned long>(r.within_limits.size()),
+  require(r.within_limits.size() == r.solutions.size(), "within_limits size",
+          static_cast<unsigned long>(r.within_limits.size()),
           "must be the number of solutions, " + std::to_string(r.solutions.size()));
   for (std::size_t k = 0; k < r.solutions.size(); ++k) {
     const std::string name = "solutions[" + std::to_string(k) + "]";
-    require(r.solutions[k].size() == r.solutions.front().size(), name + " size", static_cast<long>(r.solutions[k].size()),
+    require(r.solutions[k].size() == r.solutions.front().size(), name + " size",
+            static_cast<long>(r.solutions[k].size()),
             "must be the size of solutions[0], " + std::to_string(r.solutions.front().size()));
     require_finite(r.solutions[k], name);
   }
@@ -270,7 +277,8 @@ std::string inverse_result_repr(const InverseResult& r) {
 // The state of a pickled SerialArm: the URDF text and links it was read from, its joint limits
 // (with_joint_limits may have replaced the URDF's) and its gravity.
 py::tuple arm_state(const SerialArm& a) {
-  return py::make_tuple(a.urdf(), a.base_link(), a.tip_link(), joint_limits_state(a.joint_limits()), to_array(a.gravity()));
+  return py::make_tuple(a.urdf(), a.base_link(), a.tip_link(), joint_limits_state(a.joint_limits()),
+                        to_array(a.gravity()));
 }
 
 // The URDF goes through the loader's checks, the limits through with_joint_limits'.
@@ -278,9 +286,11 @@ SerialArm arm_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 5, "SerialArm");
   const auto field = [](std::size_t k, const char* name) { return StateField("SerialArm", k, name); };
   const std::string urdf = state_cast<std::string>(s[0], field(0, "urdf"));
-  const std::string base = state_cast<std::string>(s[1], field(1, "base_link")), tip = state_cast<std::string>(s[2], field(2, "tip_link"));
+  const std::string base = state_cast<std::string>(s[1], field(1, "base_link")),
+                    tip = state_cast<std::string>(s[2], field(2, "tip_link"));
   const py::tuple limits = state_fields(s[3], 4, field(3, "joint_limits"));
-  const JointLimits joint_limits = joint_limits_of(limits, [&](std::size_t, const char* name) { return field(3, "joint_limits") / ("." + std::string(name)); });
+  const JointLimits joint_limits = joint_limits_of(
+      limits, [&](std::size_t, const char* name) { return field(3, "joint_limits") / ("." + std::string(name)); });
   const Eigen::Vector3d gravity = state_vector<3>(s[4], field(4, "gravity"));
   SerialArm arm = SerialArm::from_urdf_string(urdf, base, tip).with_joint_limits(joint_limits);
   arm.set_gravity(gravity);
@@ -291,14 +301,19 @@ SerialArm arm_from_state(const py::object& state) {
 
 void bind_serial(py::module_& m) {
   py::class_<JointLimits> joint_limits(m, "JointLimits", "Joint-space limits, one entry per joint ((n,) arrays).");
-  joint_limits.def_property_readonly("lower", [](const JointLimits& l) { return to_vector_array(l.lower); },
-                             "smallest joint positions (rad); -inf for a continuous joint")
-      .def_property_readonly("upper", [](const JointLimits& l) { return to_vector_array(l.upper); },
-                             "largest joint positions (rad); +inf for a continuous joint")
-      .def_property_readonly("velocity", [](const JointLimits& l) { return to_vector_array(l.velocity); },
-                             "largest joint speeds (rad/s); +inf where the URDF states none")
-      .def_property_readonly("effort", [](const JointLimits& l) { return to_vector_array(l.effort); },
-                             "largest joint torques (N m); +inf where the URDF states none (empty for a hexapod)")
+  joint_limits
+      .def_property_readonly(
+          "lower", [](const JointLimits& l) { return to_vector_array(l.lower); },
+          "smallest joint positions (rad); -inf for a continuous joint")
+      .def_property_readonly(
+          "upper", [](const JointLimits& l) { return to_vector_array(l.upper); },
+          "largest joint positions (rad); +inf for a continuous joint")
+      .def_property_readonly(
+          "velocity", [](const JointLimits& l) { return to_vector_array(l.velocity); },
+          "largest joint speeds (rad/s); +inf where the URDF states none")
+      .def_property_readonly(
+          "effort", [](const JointLimits& l) { return to_vector_array(l.effort); },
+          "largest joint torques (N m); +inf where the URDF states none (empty for a hexapod)")
       .def("__repr__", [](const JointLimits& l) {
         return "JointLimits(lower=" + tuple_repr(l.lower) + ", upper=" + tuple_repr(l.upper) +
                ", velocity=" + tuple_repr(l.velocity) + ", effort=" + tuple_repr(l.effort) + ")";
@@ -306,16 +321,20 @@ void bind_serial(py::module_& m) {
   def_pickle(joint_limits, "JointLimits", &joint_limits_state, &joint_limits_from_state);
 
   py::class_<InverseResult> inverse_result(m, "InverseResult", "What SerialArm.inverse_solutions found.");
-  inverse_result.def_property_readonly("solutions", [](const InverseResult& r) { return to_list(r.solutions); },
-                             "list of (n,) joint vectors, each reproducing the pose to 1e-10")
+  inverse_result
+      .def_property_readonly(
+          "solutions", [](const InverseResult& r) { return to_list(r.solutions); },
+          "list of (n,) joint vectors, each reproducing the pose to 1e-10")
       .def_readonly("within_limits", &InverseResult::within_limits,
                     "per solution: inside the position limits (all True unless keep_outside_limits)")
-      .def_readonly("complete", &InverseResult::complete,
-                    "True: every solution (analytic family; a seven-joint arm: every one at the redundancy value asked for); "
-                    "False: what the numeric search found, or a seven-joint arm's solutions at the default values")
-      .def_property_readonly("family", [](const InverseResult& r) { return serial::to_string(r.family); },
-                             "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist', 'general' or "
-                             "'locked_joint'")
+      .def_readonly(
+          "complete", &InverseResult::complete,
+          "True: every solution (analytic family; a seven-joint arm: every one at the redundancy value asked for); "
+          "False: what the numeric search found, or a seven-joint arm's solutions at the default values")
+      .def_property_readonly(
+          "family", [](const InverseResult& r) { return serial::to_string(r.family); },
+          "the method used: 'spherical_wrist', 'three_parallel', 'offset_wrist', 'general' or "
+          "'locked_joint'")
       .def("__repr__", &inverse_result_repr);
   def_pickle(
       inverse_result, "InverseResult",
@@ -335,8 +354,9 @@ void bind_serial(py::module_& m) {
       .def_property_readonly("default_values", &serial::Redundancy::default_values,
                              "the values SerialArm.inverse solves at when given neither redundancy nor q_ref: the "
                              "centres of 16 equal parts of [lower, upper]")
-      .def("value", [](const serial::Redundancy& r, const py::object& q) { return r.value(joint_vector(q, "q")); },
-           py::arg("q"), "the parameter value of the joint vector q (q[joint]); ValueError when there is none")
+      .def(
+          "value", [](const serial::Redundancy& r, const py::object& q) { return r.value(joint_vector(q, "q")); },
+          py::arg("q"), "the parameter value of the joint vector q (q[joint]); ValueError when there is none")
       .def("__repr__", [](const serial::Redundancy& r) {
         if (!r.has_parameter()) return std::string("Redundancy(kind='none')");
         return "Redundancy(kind='" + r.kind + "', joint=" + std::to_string(r.joint) + ", joint_name='" + r.joint_name +
@@ -348,7 +368,8 @@ void bind_serial(py::module_& m) {
 A serial arm of revolute joints between two links of a URDF (urdfdom into an Orocos KDL chain).
 Fixed joints are folded in, continuous joints have infinite position limits, prismatic, planar
 and floating joints on the path are refused. Units: metres, radians, seconds, kilograms, N m.)doc");
-  serial_arm.def_static("from_urdf", &from_urdf, py::arg("path_or_string"), py::arg("base_link"), py::arg("tip_link"),
+  serial_arm
+      .def_static("from_urdf", &from_urdf, py::arg("path_or_string"), py::arg("base_link"), py::arg("tip_link"),
                   "From a URDF file, or URDF text when the string starts with '<'. ValueError naming the file, "
                   "link or joint for malformed URDF, unknown links, base not an ancestor of tip, unsupported joints.")
       .def_property_readonly("robot_name", &SerialArm::robot_name, "the URDF's <robot name>")
@@ -356,11 +377,13 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
       .def_property_readonly("tip_link", &SerialArm::tip_link, "the link whose pose forward() gives")
       .def_property_readonly("dof", &SerialArm::dof, "number of joints n")
       .def_property_readonly("joint_names", &SerialArm::joint_names, "the joints in the order of q (base to tip)")
-      .def_property_readonly("joint_limits", &SerialArm::joint_limits, "position, velocity and effort limits (JointLimits)")
+      .def_property_readonly("joint_limits", &SerialArm::joint_limits,
+                             "position, velocity and effort limits (JointLimits)")
       .def(
           "with_joint_limits",
-          [](const SerialArm& a, const std::optional<Eigen::VectorXd>& lower, const std::optional<Eigen::VectorXd>& upper,
-             const std::optional<Eigen::VectorXd>& velocity, const std::optional<Eigen::VectorXd>& effort) {
+          [](const SerialArm& a, const std::optional<Eigen::VectorXd>& lower,
+             const std::optional<Eigen::VectorXd>& upper, const std::optional<Eigen::VectorXd>& velocity,
+             const std::optional<Eigen::VectorXd>& effort) {
             JointLimits l = a.joint_limits();
             if (lower) l.lower = *lower;
             if (upper) l.upper = *upper;
@@ -373,36 +396,41 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "The same arm with some joint limits replaced ((dof,) arrays; None keeps the URDF's): lower < upper "
           "(+-inf for continuous joints), velocity > 0 and effort > 0 (inf: none). MoveIt's joint_limits.yaml "
           "overrides a URDF this way (dispkin.limits_files.apply_moveit_joint_limits).")
-      .def_property_readonly("redundancy", &SerialArm::redundancy, py::return_value_policy::reference_internal,
-                             "the redundancy parameter (Redundancy): for a seven-joint arm of family 'locked_joint' the "
-                             "locked joint and its range; kind 'none' for any other arm")
-      .def_property_readonly("family", [](const SerialArm& a) { return serial::to_string(a.family()); },
-                             "the analytic IK family recognised from the joint axes: 'spherical_wrist', "
-                             "'three_parallel', 'offset_wrist' or 'general' (numeric fallback)")
-      .def_property("gravity", [](const SerialArm& a) { return to_array(a.gravity()); },
-                    [](SerialArm& a, const py::object& g) { a.set_gravity(vector3(g, "gravity")); },
-                    "(3,) gravitational acceleration in base coordinates (m/s^2), default (0, 0, -9.81)")
-      .def("forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); }, py::arg("q"),
-           "The tip pose in base coordinates for joint positions q (n,).")
-      .def("inverse",
-           [](const SerialArm& a, const py::handle& pose, bool equivalents, const py::object& redundancy,
-              const py::object& q_ref, bool wide_search) {
-             InverseOptions options;
-             options.offer_equivalents = equivalents;
-             options.wide_search = wide_search;
-             choose_redundancy(options, redundancy, q_ref);
-             return solution_rows(solve(a, pose_of(pose, "pose"), options).solutions, a.dof());
-           },
-           py::arg("pose"), py::arg("offer_equivalents") = false, py::kw_only(), py::arg("redundancy") = py::none(),
-           py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
-           "The distinct joint vectors inside the limits whose forward() is `pose` (a Pose or (4, 4)) to 1e-10, "
-           "as the rows of a (k, n) array, one per solution, each angle the 2pi-equivalent nearest to 0 inside "
-           "the limits; with offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else "
-           "ValueError); (0, n) when unreachable. A redundant arm with a parameter (arm.redundancy): every "
-           "solution at redundancy=value, or at q_ref's value with q_ref=q (nearest to q_ref first; on any arm "
-           "q_ref orders the solutions so), or with neither at each of arm.redundancy.default_values. An arm of "
-           "family 'general' given q_ref: Newton's method from q_ref first, its solution alone when it converges "
-           "inside the limits; wide_search=True adds the search from random starts.")
+      .def_property_readonly(
+          "redundancy", &SerialArm::redundancy, py::return_value_policy::reference_internal,
+          "the redundancy parameter (Redundancy): for a seven-joint arm of family 'locked_joint' the "
+          "locked joint and its range; kind 'none' for any other arm")
+      .def_property_readonly(
+          "family", [](const SerialArm& a) { return serial::to_string(a.family()); },
+          "the analytic IK family recognised from the joint axes: 'spherical_wrist', "
+          "'three_parallel', 'offset_wrist' or 'general' (numeric fallback)")
+      .def_property(
+          "gravity", [](const SerialArm& a) { return to_array(a.gravity()); },
+          [](SerialArm& a, const py::object& g) { a.set_gravity(vector3(g, "gravity")); },
+          "(3,) gravitational acceleration in base coordinates (m/s^2), default (0, 0, -9.81)")
+      .def(
+          "forward", [](const SerialArm& a, const py::object& q) { return a.forward(joint_vector(q, "q")); },
+          py::arg("q"), "The tip pose in base coordinates for joint positions q (n,).")
+      .def(
+          "inverse",
+          [](const SerialArm& a, const py::handle& pose, bool equivalents, const py::object& redundancy,
+             const py::object& q_ref, bool wide_search) {
+            InverseOptions options;
+            options.offer_equivalents = equivalents;
+            options.wide_search = wide_search;
+            choose_redundancy(options, redundancy, q_ref);
+            return solution_rows(solve(a, pose_of(pose, "pose"), options).solutions, a.dof());
+          },
+          py::arg("pose"), py::arg("offer_equivalents") = false, py::kw_only(), py::arg("redundancy") = py::none(),
+          py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
+          "The distinct joint vectors inside the limits whose forward() is `pose` (a Pose or (4, 4)) to 1e-10, "
+          "as the rows of a (k, n) array, one per solution, each angle the 2pi-equivalent nearest to 0 inside "
+          "the limits; with offer_equivalents=True also their 2pi copies inside the limits (at most 10000, else "
+          "ValueError); (0, n) when unreachable. A redundant arm with a parameter (arm.redundancy): every "
+          "solution at redundancy=value, or at q_ref's value with q_ref=q (nearest to q_ref first; on any arm "
+          "q_ref orders the solutions so), or with neither at each of arm.redundancy.default_values. An arm of "
+          "family 'general' given q_ref: Newton's method from q_ref first, its solution alone when it converges "
+          "inside the limits; wide_search=True adds the search from random starts.")
       .def(
           "inverse_many",
           [](const SerialArm& a, const py::handle& poses, bool equivalents) {
@@ -412,7 +440,8 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
             std::vector<std::vector<Eigen::VectorXd>> found(targets.size());
             {
               py::gil_scoped_release unlocked;
-              for (std::size_t i = 0; i < targets.size(); ++i) found[i] = a.inverse_solutions(targets[i], options).solutions;
+              for (std::size_t i = 0; i < targets.size(); ++i)
+                found[i] = a.inverse_solutions(targets[i], options).solutions;
             }
             py::list out(found.size());
             for (std::size_t i = 0; i < found.size(); ++i) out[i] = solution_rows(found[i], a.dof());
@@ -422,81 +451,95 @@ and floating joints on the path are refused. Units: metres, radians, seconds, ki
           "inverse() of every pose of an (N, 4, 4) array or a sequence of Poses: a list of N arrays, the i-th the "
           "(k_i, n) array inverse(poses[i]) gives. The interpreter lock is released for the whole batch. "
           "ValueError naming poses[i] for a pose that is not finite or not rigid.")
-      .def("inverse_solutions",
-           [](const SerialArm& a, const py::handle& pose, bool keep, bool equivalents, int attempts, double budget,
-              unsigned seed, const py::object& redundancy, const py::object& q_ref, bool wide_search) {
-             InverseOptions options = options_of(keep, equivalents, attempts, budget, seed);
-             options.wide_search = wide_search;
-             choose_redundancy(options, redundancy, q_ref);
-             return solve(a, pose_of(pose, "pose"), options);
-           },
-           py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
-           py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u, py::kw_only(),
-           py::arg("redundancy") = py::none(), py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
-           "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
-           "2pi copies on request (at most 10000, else ValueError); for the numeric fallback the restarts, time budget (s, "
-           "bounding the search's time) and seed.")
-      .def("jacobian",
-           [](const SerialArm& a, const py::object& q) {
-             return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.jacobian(joint_vector(q, "q")));
-           },
-           py::arg("q"),
-           "(6, n) geometric Jacobian: rows (v, w), the velocity of the tip frame's origin and the angular "
-           "velocity, both in base coordinates.")
-      .def("body_jacobian",
-           [](const SerialArm& a, const py::object& q) {
-             return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.body_jacobian(joint_vector(q, "q")));
-           },
-           py::arg("q"), "(6, n) body Jacobian: the same twist (v, w) in tip coordinates (Pose.log convention).")
-      .def("torques",
-           [](const SerialArm& a, const py::object& q, const py::object& qd, const py::object& qdd) {
-             return to_vector_array(a.torques(joint_vector(q, "q"), joint_vector(qd, "qd"), joint_vector(qdd, "qdd")));
-           },
-           py::arg("q"), py::arg("qd"), py::arg("qdd"),
-           "(n,) joint torques M(q) qdd + C(q, qd) qd + g(q) (N m), recursive Newton-Euler.")
-      .def("static_torques", [](const SerialArm& a, const py::object& q) { return to_vector_array(a.static_torques(joint_vector(q, "q"))); },
-           py::arg("q"), "(n,) gravity torques g(q) = torques(q, 0, 0) (N m).")
-      .def("configuration",
-           [](const SerialArm& a, const py::object& q) {
-             const serial::Configuration c = a.configuration(joint_vector(q, "q"));
-             return py::make_tuple(c.shoulder, c.elbow, c.wrist);
-           },
-           py::arg("q"),
-           "(shoulder, elbow, wrist) flags of a 6R arm, each +1, -1 or 0 on the boundary (signs of "
-           "(w - p1).(w2 x w1), w3.((p3 - p2) x (w - p3)), w5.(w4 x w6); see serial_arm.hpp).")
-      .def_static("nearest",
-                  [](const py::object& solutions, const py::object& q_ref) {
-                    return to_vector_array(serial::nearest(joint_vectors(solutions, "solutions"), joint_vector(q_ref, "q_ref")));
-                  },
-                  py::arg("solutions"), py::arg("q_ref"), "The solution closest to q_ref (Euclidean, no wrapping).")
-      .def("follow",
-           [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start, bool move_redundancy,
-              double gain, double max_rate, double singularity_weight) {
-             const Eigen::VectorXd start = joint_vector(q_start, "q_start");
-             serial::RedundancyRule rule;
-             rule.move = move_redundancy;
-             rule.gain = gain;
-             rule.max_rate = max_rate;
-             rule.singularity_weight = singularity_weight;
-             std::vector<Eigen::VectorXd> path;
-             {
-               py::gil_scoped_release unlocked;
-               path = serial::follow(a, poses, start, {}, rule);
-             }
-             py::array_t<double> out({static_cast<py::ssize_t>(path.size()), static_cast<py::ssize_t>(a.dof())});
-             for (std::size_t k = 0; k < path.size(); ++k)
-               Eigen::Map<Eigen::VectorXd>(out.mutable_data() + k * static_cast<std::size_t>(a.dof()), a.dof()) = path[k];
-             return out;
-           },
-           py::arg("poses"), py::arg("q_start"), py::kw_only(),
-           py::arg("move_redundancy") = serial::RedundancyRule{}.move, py::arg("gain") = serial::RedundancyRule{}.gain,
-           py::arg("max_rate") = serial::RedundancyRule{}.max_rate,
-           py::arg("singularity_weight") = serial::RedundancyRule{}.singularity_weight,
-           "(N, n) joint path: for each pose the solution nearest to the previous one, from q_start. "
-           "RuntimeError naming the first pose without a solution. A seven-joint arm with a redundancy parameter "
-           "starts at q_start's value and, with move_redundancy, moves it away from joint limits and singular poses "
-           "by at most max_rate rad per radian the other joints travel (doc/inverse-kinematics.md eq. 45); no joint "
-           "steps more than 0.3 rad from one pose to the next (RuntimeError naming the pose instead).")
+      .def(
+          "inverse_solutions",
+          [](const SerialArm& a, const py::handle& pose, bool keep, bool equivalents, int attempts, double budget,
+             unsigned seed, const py::object& redundancy, const py::object& q_ref, bool wide_search) {
+            InverseOptions options = options_of(keep, equivalents, attempts, budget, seed);
+            options.wide_search = wide_search;
+            choose_redundancy(options, redundancy, q_ref);
+            return solve(a, pose_of(pose, "pose"), options);
+          },
+          py::arg("pose"), py::arg("keep_outside_limits") = false, py::arg("offer_equivalents") = false,
+          py::arg("max_attempts") = 64, py::arg("time_budget") = 0.05, py::arg("seed") = 1u, py::kw_only(),
+          py::arg("redundancy") = py::none(), py::arg("q_ref") = py::none(), py::arg("wide_search") = false,
+          "inverse() with options and a report (InverseResult): solutions outside the limits kept and flagged, "
+          "2pi copies on request (at most 10000, else ValueError); for the numeric fallback the restarts, time budget "
+          "(s, "
+          "bounding the search's time) and seed.")
+      .def(
+          "jacobian",
+          [](const SerialArm& a, const py::object& q) {
+            return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.jacobian(joint_vector(q, "q")));
+          },
+          py::arg("q"),
+          "(6, n) geometric Jacobian: rows (v, w), the velocity of the tip frame's origin and the angular "
+          "velocity, both in base coordinates.")
+      .def(
+          "body_jacobian",
+          [](const SerialArm& a, const py::object& q) {
+            return Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::RowMajor>(a.body_jacobian(joint_vector(q, "q")));
+          },
+          py::arg("q"), "(6, n) body Jacobian: the same twist (v, w) in tip coordinates (Pose.log convention).")
+      .def(
+          "torques",
+          [](const SerialArm& a, const py::object& q, const py::object& qd, const py::object& qdd) {
+            return to_vector_array(a.torques(joint_vector(q, "q"), joint_vector(qd, "qd"), joint_vector(qdd, "qdd")));
+          },
+          py::arg("q"), py::arg("qd"), py::arg("qdd"),
+          "(n,) joint torques M(q) qdd + C(q, qd) qd + g(q) (N m), recursive Newton-Euler.")
+      .def(
+          "static_torques",
+          [](const SerialArm& a, const py::object& q) {
+            return to_vector_array(a.static_torques(joint_vector(q, "q")));
+          },
+          py::arg("q"), "(n,) gravity torques g(q) = torques(q, 0, 0) (N m).")
+      .def(
+          "configuration",
+          [](const SerialArm& a, const py::object& q) {
+            const serial::Configuration c = a.configuration(joint_vector(q, "q"));
+            return py::make_tuple(c.shoulder, c.elbow, c.wrist);
+          },
+          py::arg("q"),
+          "(shoulder, elbow, wrist) flags of a 6R arm, each +1, -1 or 0 on the boundary (signs of "
+          "(w - p1).(w2 x w1), w3.((p3 - p2) x (w - p3)), w5.(w4 x w6); see serial_arm.hpp).")
+      .def_static(
+          "nearest",
+          [](const py::object& solutions, const py::object& q_ref) {
+            return to_vector_array(
+                serial::nearest(joint_vectors(solutions, "solutions"), joint_vector(q_ref, "q_ref")));
+          },
+          py::arg("solutions"), py::arg("q_ref"), "The solution closest to q_ref (Euclidean, no wrapping).")
+      .def(
+          "follow",
+          [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start, bool move_redundancy,
+             double gain, double max_rate, double singularity_weight) {
+            const Eigen::VectorXd start = joint_vector(q_start, "q_start");
+            serial::RedundancyRule rule;
+            rule.move = move_redundancy;
+            rule.gain = gain;
+            rule.max_rate = max_rate;
+            rule.singularity_weight = singularity_weight;
+            std::vector<Eigen::VectorXd> path;
+            {
+              py::gil_scoped_release unlocked;
+              path = serial::follow(a, poses, start, {}, rule);
+            }
+            py::array_t<double> out({static_cast<py::ssize_t>(path.size()), static_cast<py::ssize_t>(a.dof())});
+            for (std::size_t k = 0; k < path.size(); ++k)
+              Eigen::Map<Eigen::VectorXd>(out.mutable_data() + k * static_cast<std::size_t>(a.dof()), a.dof()) =
+                  path[k];
+            return out;
+          },
+          py::arg("poses"), py::arg("q_start"), py::kw_only(),
+          py::arg("move_redundancy") = serial::RedundancyRule{}.move, py::arg("gain") = serial::RedundancyRule{}.gain,
+          py::arg("max_rate") = serial::RedundancyRule{}.max_rate,
+          py::arg("singularity_weight") = serial::RedundancyRule{}.singularity_weight,
+          "(N, n) joint path: for each pose the solution nearest to the previous one, from q_start. "
+          "RuntimeError naming the first pose without a solution. A seven-joint arm with a redundancy parameter "
+          "starts at q_start's value and, with move_redundancy, moves it away from joint limits and singular poses "
+          "by at most max_rate rad per radian the other joints travel (doc/inverse-kinematics.md eq. 45); no joint "
+          "steps more than 0.3 rad from one pose to the next (RuntimeError naming the pose instead).")
       .def(
           "joint_velocities",
           [](const SerialArm& a, const py::object& q, const py::object& body_twists) {

@@ -54,14 +54,16 @@ inline Array as_array(const py::handle& obj, const std::string& name, const std:
 template <typename Sizes>
 std::string sizes_string(const Sizes& sizes) {
   std::string out = "(";
-  for (auto it = std::begin(sizes); it != std::end(sizes); ++it) out += (it != std::begin(sizes) ? ", " : "") + std::to_string(*it);
+  for (auto it = std::begin(sizes); it != std::end(sizes); ++it)
+    out += (it != std::begin(sizes) ? ", " : "") + std::to_string(*it);
   return out + (std::size(sizes) == 1 ? ",)" : ")");
 }
 
 //! Whether `a` has exactly the shape `shape`.
 template <typename Shape>
 bool has_shape(const py::array& a, const Shape& shape) {
-  return static_cast<std::size_t>(a.ndim()) == std::size(shape) && std::equal(std::begin(shape), std::end(shape), a.shape());
+  return static_cast<std::size_t>(a.ndim()) == std::size(shape) &&
+         std::equal(std::begin(shape), std::end(shape), a.shape());
 }
 
 //! `obj` as a preallocated array that results are written into: a writeable C-contiguous float64
@@ -74,14 +76,16 @@ py::array output_array(const py::handle& obj, const char* name, const Shapes&...
   const auto refuse = [&](const std::string& got) {
     std::string expected;
     ((expected += (expected.empty() ? "" : " or ") + sizes_string(shapes)), ...);
-    throw py::value_error(std::string(name) + ": expected a writeable C-contiguous float64 array of shape " + expected + ", got " + got);
+    throw py::value_error(std::string(name) + ": expected a writeable C-contiguous float64 array of shape " + expected +
+                          ", got " + got);
   };
   if (!py::isinstance<py::array>(obj)) refuse(std::string(py::str(py::type::handle_of(obj).attr("__name__"))));
   const auto a = py::reinterpret_borrow<py::array>(obj);
   if (!a.dtype().equal(py::dtype::of<double>())) refuse("dtype " + std::string(py::str(a.dtype())));
   if (!(has_shape(a, shapes) || ...)) refuse("shape " + shape_string(a));
   if (!(a.flags() & py::array::c_style)) {
-    refuse("a non-contiguous array (strides " + sizes_string(std::vector<py::ssize_t>(a.strides(), a.strides() + a.ndim())) + ")");
+    refuse("a non-contiguous array (strides " +
+           sizes_string(std::vector<py::ssize_t>(a.strides(), a.strides() + a.ndim())) + ")");
   }
   if (!a.writeable()) refuse("a read-only array");
   return a;

@@ -90,7 +90,8 @@ Profile profile_of_items(const py::tuple& s, Field field) {
   Profile::Parts p;
   const StateField kind_at = field(0, "kind");
   const std::string kind = state_cast<std::string>(s[0], kind_at);
-  if (kind != "scurve" && kind != "trapezoid") throw py::value_error(kind_at.message(s[0], "must be 'scurve' or 'trapezoid'"));
+  if (kind != "scurve" && kind != "trapezoid")
+    throw py::value_error(kind_at.message(s[0], "must be 'scurve' or 'trapezoid'"));
   p.kind = profile_kind(kind);
   const StateField phases_at = field(1, "phases"), times_at = field(2, "times");
   const py::sequence phases = state_sequence(s[1], phases_at);
@@ -98,7 +99,8 @@ Profile profile_of_items(const py::tuple& s, Field field) {
   if (phases.size() > static_cast<std::size_t>(Profile::max_phases))
     throw py::value_error(phases_at.message(s[1], "must hold at most 7 phases"));
   if (times.size() != phases.size() + 1)
-    throw py::value_error(times_at.message(s[2], "must hold one time more than there are phases (" + std::to_string(phases.size()) + ")"));
+    throw py::value_error(times_at.message(
+        s[2], "must hold one time more than there are phases (" + std::to_string(phases.size()) + ")"));
   p.count = static_cast<int>(phases.size());
   for (std::size_t i = 0; i < phases.size(); ++i) {
     const StateField at = phases_at.at(i);
@@ -116,7 +118,9 @@ Profile profile_of_items(const py::tuple& s, Field field) {
 
 Profile profile_of(const py::handle& obj, const StateField& where) {
   const py::tuple s = state_fields(obj, 7, where);
-  return inside(where, [&] { return profile_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); }); });
+  return inside(where, [&] {
+    return profile_of_items(s, [&](std::size_t, const char* name) { return where / ("." + std::string(name)); });
+  });
 }
 
 }  // namespace
@@ -142,13 +146,14 @@ Profile profile_from_state(const py::handle& state) {
 
 py::tuple section_state(const Section& section) {
   if (const auto* lin = std::get_if<LinSection>(&section))
-    return py::make_tuple("lin", pose_floats(lin->start), pose_floats(lin->end), to_string(lin->interpolation), floats(lin->pivot));
+    return py::make_tuple("lin", pose_floats(lin->start), pose_floats(lin->end), to_string(lin->interpolation),
+                          floats(lin->pivot));
   if (const auto* arc = std::get_if<ArcSection>(&section))
     return py::make_tuple("arc", pose_floats(arc->start), floats(arc->center), floats(arc->normal), arc->angle,
                           floats(arc->rotation_axis), arc->rotation_angle, floats(arc->pivot));
   if (const auto* b = std::get_if<SlerpBlendSection>(&section))
-    return py::make_tuple("slerp_blend", floats(b->q_start.coeffs()), floats(b->a), floats(b->b), cubic_floats(b->position),
-                          b->v0, b->v1, floats(b->pivot));
+    return py::make_tuple("slerp_blend", floats(b->q_start.coeffs()), floats(b->a), floats(b->b),
+                          cubic_floats(b->position), b->v0, b->v1, floats(b->pivot));
   const CurveSection& c = std::get<CurveSection>(section);
   return py::make_tuple("curve", floats(c.q0.coeffs()), cubic_floats(c.position), cubic_floats(c.rotation), c.v0, c.v1,
                         floats(c.pivot));
@@ -204,28 +209,30 @@ Section section_from_state(const py::handle& state, const StateField& where) {
     b.pivot = state_vector<3>(s[7], where / ".pivot");
     return b;
   }
-  throw py::value_error(kind_at.message(py::reinterpret_borrow<py::tuple>(state)[0], "must be 'lin', 'arc', 'curve' or 'slerp_blend'"));
+  throw py::value_error(
+      kind_at.message(py::reinterpret_borrow<py::tuple>(state)[0], "must be 'lin', 'arc', 'curve' or 'slerp_blend'"));
 }
 
 py::tuple path_state(const Path& path) {
   py::list limits;
   for (const MoveLimits& l : path.section_limits()) limits.append(py::make_tuple(l.velocity, l.acceleration));
-  return py::make_tuple(sections_state(path.sections()), path.first_move_size(), path.last_move_size(), py::tuple(limits),
-                        py::tuple(py::cast(path.move_starts())));
+  return py::make_tuple(sections_state(path.sections()), path.first_move_size(), path.last_move_size(),
+                        py::tuple(limits), py::tuple(py::cast(path.move_starts())));
 }
 
 Path path_from_state(const py::object& state) {
   const py::tuple s = state_tuple(state, 5, "Path");
   const StateField limits_at("Path", 3, "section_limits");
-  const std::vector<MoveLimits> limits = each<MoveLimits>(s[3], limits_at, [](const py::handle& item, const StateField& at) {
-    const py::tuple l = state_fields(item, 2, at);
-    return MoveLimits{state_cast<std::optional<double>>(l[0], at / ".velocity"),
-                      state_cast<std::optional<double>>(l[1], at / ".acceleration")};
-  });
+  const std::vector<MoveLimits> limits =
+      each<MoveLimits>(s[3], limits_at, [](const py::handle& item, const StateField& at) {
+        const py::tuple l = state_fields(item, 2, at);
+        return MoveLimits{state_cast<std::optional<double>>(l[0], at / ".velocity"),
+                          state_cast<std::optional<double>>(l[1], at / ".acceleration")};
+      });
   const std::vector<Section> sections = sections_from_state(s[0], StateField("Path", 0, "sections"));
-  const std::vector<std::size_t> move_starts = each<std::size_t>(
-      s[4], StateField("Path", 4, "move_starts"),
-      [&](const py::handle& x, const StateField& at) { return state_count(x, at, sections.size()); });
+  const std::vector<std::size_t> move_starts =
+      each<std::size_t>(s[4], StateField("Path", 4, "move_starts"),
+                        [&](const py::handle& x, const StateField& at) { return state_count(x, at, sections.size()); });
   return Path::from_sections(sections, state_item<double>(s, 1, "Path", "first_move_size"),
                              state_item<double>(s, 2, "Path", "last_move_size"), limits, move_starts);
 }
@@ -250,7 +257,8 @@ TimeLaw time_law_from_state(const py::handle& state, const StateField& where) {
     const bool cut = py::isinstance<py::tuple>(pieces[k]) && py::len(pieces[k]) == 3;
     const py::tuple p = state_fields(pieces[k], cut ? 3 : 2, at);
     if (cut)
-      law.append_cut(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"), state_number(p[2], at / ".end_time"));
+      law.append_cut(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"),
+                     state_number(p[2], at / ".end_time"));
     else
       law.append(profile_of(p[0], at / ".profile"), state_number(p[1], at / ".start_s"));
   }
@@ -265,7 +273,8 @@ py::tuple trajectory_state(const Trajectory& trajectory) {
   for (const SpeedLimit& l : trajectory.speed_limits())
     limits.append(py::make_tuple(l.start_s, l.length, l.limit, l.acceleration, l.ceiling));
   const std::optional<TimeLawLimits>& law_limits = trajectory.limits();
-  const py::object limits_of_law = law_limits ? py::object(py::make_tuple(law_limits->acceleration, py::cast(law_limits->jerk))) : py::none();
+  const py::object limits_of_law =
+      law_limits ? py::object(py::make_tuple(law_limits->acceleration, py::cast(law_limits->jerk))) : py::none();
   const std::vector<double>& lengths = trajectory.section_lengths();
   const std::vector<double>& rests = trajectory.rest_positions();
   py::list stops, sources;
@@ -273,8 +282,8 @@ py::tuple trajectory_state(const Trajectory& trajectory) {
   for (const SectionSource& source : trajectory.section_sources())
     sources.append(py::make_tuple(source.section, source.tau_start, source.tau_end));
   return py::make_tuple(sections_state(trajectory.path().sections()), py::tuple(py::cast(lengths)),
-                        time_law_state(trajectory.time_law()), py::tuple(limits), py::tuple(py::cast(rests)), py::tuple(stops),
-                        py::tuple(sources), limits_of_law, trajectory.override_factor());
+                        time_law_state(trajectory.time_law()), py::tuple(limits), py::tuple(py::cast(rests)),
+                        py::tuple(stops), py::tuple(sources), limits_of_law, trajectory.override_factor());
 }
 
 namespace {
@@ -287,17 +296,20 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
   // The constructor checks everything else; the lengths must pair with the sections before
   // SampledPath divides by them.
   if (lengths.size() != sections.size())
-    throw py::value_error(field(1, "section_lengths").message(s[1], "must hold one length per section (" +
-                                                                        std::to_string(sections.size()) + ")"));
+    throw py::value_error(
+        field(1, "section_lengths")
+            .message(s[1], "must hold one length per section (" + std::to_string(sections.size()) + ")"));
   for (std::size_t k = 0; k < lengths.size(); ++k)
-    if (!(lengths[k] > 0.0)) throw py::value_error(field(1, "section_lengths").at(k).message(py::float_(lengths[k]), "must be > 0"));
+    if (!(lengths[k] > 0.0))
+      throw py::value_error(field(1, "section_lengths").at(k).message(py::float_(lengths[k]), "must be > 0"));
   const std::vector<SpeedLimit> limits =
       each<SpeedLimit>(s[3], field(3, "speed_limits"), [](const py::handle& item, const StateField& at) {
         // (start_s, length, limit), and since the events (acceleration, ceiling).
         const bool own = py::isinstance<py::tuple>(item) && py::len(item) == 5;
         const py::tuple l = state_fields(item, own ? 5 : 3, at);
-        return SpeedLimit{state_number(l[0], at / ".start_s"), state_number(l[1], at / ".length"), state_number(l[2], at / ".limit"),
-                          own ? state_number(l[3], at / ".acceleration") : 0.0, own ? state_number(l[4], at / ".ceiling") : 0.0};
+        return SpeedLimit{state_number(l[0], at / ".start_s"), state_number(l[1], at / ".length"),
+                          state_number(l[2], at / ".limit"), own ? state_number(l[3], at / ".acceleration") : 0.0,
+                          own ? state_number(l[4], at / ".ceiling") : 0.0};
       });
   std::vector<Stop> stops = each<Stop>(s[5], field(5, "stops"), [](const py::handle& item, const StateField& at) {
     const py::tuple t = state_fields(item, 2, at);
@@ -317,14 +329,15 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
   if (s.size() == 9) {
     if (!s[7].is_none()) {
       const py::tuple l = state_fields(s[7], 2, field(7, "limits"));
-      law_limits = TimeLawLimits{state_number(l[0], field(7, "limits") / ".acceleration"),
-                                 l[1].is_none() ? std::nullopt : std::optional<double>(state_number(l[1], field(7, "limits") / ".jerk"))};
+      law_limits = TimeLawLimits{
+          state_number(l[0], field(7, "limits") / ".acceleration"),
+          l[1].is_none() ? std::nullopt : std::optional<double>(state_number(l[1], field(7, "limits") / ".jerk"))};
     }
     override_factor = state_number(s[8], field(8, "override_factor"));
   }
-  return Trajectory(SampledPath(std::move(sections), std::move(lengths)), time_law_from_state(s[2], field(2, "time_law")),
-                    limits, numbers(s[4], field(4, "rest_positions")), std::move(stops), std::move(sources), law_limits,
-                    override_factor);
+  return Trajectory(SampledPath(std::move(sections), std::move(lengths)),
+                    time_law_from_state(s[2], field(2, "time_law")), limits, numbers(s[4], field(4, "rest_positions")),
+                    std::move(stops), std::move(sources), law_limits, override_factor);
 }
 
 // The items of a Trajectory state: 9, or 7 from before the events.

@@ -30,7 +30,9 @@ class StateField {
   StateField operator/(const std::string& sub) const { return StateField(type_, index_, name_ + sub); }
   StateField at(std::size_t k) const { return *this / ("[" + std::to_string(k) + "]"); }
   const std::string& type() const noexcept { return type_; }
-  std::string argument() const { return type_ + ".__setstate__: state[" + std::to_string(index_) + "] (" + name_ + ")"; }
+  std::string argument() const {
+    return type_ + ".__setstate__: state[" + std::to_string(index_) + "] (" + name_ + ")";
+  }
   //! "<argument> = <repr of value>: <reason>".
   std::string message(const py::handle& value, const std::string& reason) const {
     return argument() + " = " + shown(value) + ": " + reason;
@@ -97,8 +99,9 @@ T state_cast(const py::handle& item, const StateField& where) {
     if (!py::isinstance<py::int_>(item) || py::isinstance<py::bool_>(item))
       throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>()));
   }
-  if constexpr (!std::is_arithmetic_v<T> && !std::is_same_v<T, std::string> && !std::is_same_v<T, std::optional<double>> &&
-                !std::is_base_of_v<Eigen::EigenBase<T>, T> && !std::is_same_v<T, std::vector<bool>>) {
+  if constexpr (!std::is_arithmetic_v<T> && !std::is_same_v<T, std::string> &&
+                !std::is_same_v<T, std::optional<double>> && !std::is_base_of_v<Eigen::EigenBase<T>, T> &&
+                !std::is_same_v<T, std::vector<bool>>) {
     // A bound class: an instance made by __new__ alone has no value to copy.
     if (py::isinstance<T>(item) && !detail::holds_value<T>(item))
       throw py::type_error(where.message(item, "must be " + detail::expected_python_type<T>() + " that holds a value"));
@@ -153,7 +156,8 @@ inline std::size_t state_count(const py::handle& item, const StateField& where, 
 template <int N>
 Eigen::Matrix<double, N, 1> state_vector(const py::handle& item, const StateField& where) {
   const std::string floats = N == Eigen::Dynamic ? "floats" : std::to_string(N) + " floats";
-  const bool sequence = py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item) || py::isinstance<py::array>(item);
+  const bool sequence =
+      py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item) || py::isinstance<py::array>(item);
   if (!sequence) throw py::type_error(where.message(item, "must be a tuple of " + floats));
   const Array a = Array::ensure(item);
   if (!a) throw py::type_error(where.message(item, "must be a tuple of " + floats));
@@ -171,10 +175,11 @@ inline py::sequence state_sequence(const py::handle& item, const StateField& whe
 
 //! A tuple of `size` items at `where`: TypeError if it is no tuple, ValueError if its length differs.
 inline py::tuple state_fields(const py::handle& item, std::size_t size, const StateField& where) {
-  if (!py::isinstance<py::tuple>(item)) throw py::type_error(where.message(item, "must be a tuple of " + std::to_string(size) + " items"));
+  if (!py::isinstance<py::tuple>(item))
+    throw py::type_error(where.message(item, "must be a tuple of " + std::to_string(size) + " items"));
   if (py::len(item) != size)
-    throw py::value_error(where.message(item, "must be a tuple of " + std::to_string(size) + " items, not " +
-                                                  std::to_string(py::len(item))));
+    throw py::value_error(where.message(
+        item, "must be a tuple of " + std::to_string(size) + " items, not " + std::to_string(py::len(item))));
   return py::reinterpret_borrow<py::tuple>(item);
 }
 
@@ -184,7 +189,8 @@ inline py::tuple state_tuple(const py::handle& state, std::size_t size, const st
   const std::string expected = "expected a tuple of " + std::to_string(size) + " items, got ";
   if (!py::isinstance<py::tuple>(state))
     throw py::type_error(type + ".__setstate__: state: " + expected + echoed(std::string(py::repr(state))));
-  if (py::len(state) != size) throw py::value_error(type + ".__setstate__: state: " + expected + echoed(std::string(py::repr(state))));
+  if (py::len(state) != size)
+    throw py::value_error(type + ".__setstate__: state: " + expected + echoed(std::string(py::repr(state))));
   return py::reinterpret_borrow<py::tuple>(state);
 }
 
@@ -219,22 +225,24 @@ auto named_unpickling(const std::string& type, Make make) {
 //! copyreg call on a fresh instance made by __new__).
 template <typename T, typename... Options, typename Get, typename Set>
 void def_pickle(py::class_<T, Options...>& cls, const std::string& type, Get get, Set set) {
-  cls.def(py::pickle(get, [type, set](const py::object& state) { return detail::named_unpickling(type, [&] { return set(state); }); }));
+  cls.def(py::pickle(get, [type, set](const py::object& state) {
+    return detail::named_unpickling(type, [&] { return set(state); });
+  }));
   const py::object construct = cls.attr("__setstate__");
   const py::cpp_function guarded(
       [construct, type](const py::handle& self, const py::object& state) {
         if (py::isinstance<T>(self) && detail::holds_value<T>(self)) {
           throw py::type_error(type + ".__setstate__: the object already holds a " + type +
-                               " (a state makes a new object: pickle.loads, copy.copy, or " + type + ".__new__(" + type +
-                               ") first)");
+                               " (a state makes a new object: pickle.loads, copy.copy, or " + type + ".__new__(" +
+                               type + ") first)");
         }
         construct(self, state);
       },
       py::name("__setstate__"), py::is_method(cls), py::arg("state"));
   // Named __setstate__, pybind11 would treat this method as a constructor too and skip it for a
   // live object: it is a plain method, which calls the constructor itself.
-  py::detail::function_record_ptr_from_PyObject(PyCFunction_GET_SELF(py::detail::get_function(guarded).ptr()))->is_constructor =
-      false;
+  py::detail::function_record_ptr_from_PyObject(PyCFunction_GET_SELF(py::detail::get_function(guarded).ptr()))
+      ->is_constructor = false;
   cls.attr("__setstate__") = guarded;
 }
 

@@ -30,7 +30,8 @@ bool spans_plane(const Hexapod::Joints& joints) {
   const Eigen::Vector3d centroid = joints.rowwise().mean();
   const Hexapod::Joints centred = joints.colwise() - centroid;
   // Eigenvalues of the scatter matrix are the squared singular values, ascending.
-  const Eigen::Vector3d s2 = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose()).eigenvalues();
+  const Eigen::Vector3d s2 =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose()).eigenvalues();
   return s2(2) > 0.0 && s2(1) > 1e-18 * s2(2);
 }
 
@@ -47,7 +48,8 @@ void append_json(const nlohmann::json& value, std::string& out) {
     std::size_t shown = 0;
     for (auto it = value.begin(); it != value.end() && out.size() <= json_preview; ++it, ++shown) {
       if (shown > 0) out += ',';
-      if (value.is_object()) out += nlohmann::json(it.key()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ':';
+      if (value.is_object())
+        out += nlohmann::json(it.key()).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + ':';
       append_json(*it, out);
     }
     if (shown < value.size()) out += ", … " + std::to_string(value.size()) + (value.is_array() ? " items" : " keys");
@@ -79,8 +81,7 @@ Hexapod::Hexapod(const Joints& base_joints, const Joints& platform_joints, const
       home_(home) {
   require_translation(base_joints, "base_joints");
   require_translation(platform_joints, "platform_joints");
-  require(spans_plane(base_joints), "base_joints", base_joints,
-          "must not be collinear (the joints must span a plane)");
+  require(spans_plane(base_joints), "base_joints", base_joints, "must not be collinear (the joints must span a plane)");
   require(spans_plane(platform_joints), "platform_joints", platform_joints,
           "must not be collinear (the joints must span a plane)");
   for (int i = 0; i < 6; ++i) {
@@ -102,8 +103,8 @@ Hexapod Hexapod::symmetric(double base_radius, double base_gap, double platform_
   require_positive(platform_radius, "platform_radius");
   require(std::isfinite(base_gap) && base_gap >= 0.0 && base_gap < 2 * pi / 3, "base_gap", base_gap,
           "must be in [0, 2π/3) rad");
-  require(std::isfinite(platform_gap) && platform_gap >= 0.0 && platform_gap < 2 * pi / 3, "platform_gap",
-          platform_gap, "must be in [0, 2π/3) rad");
+  require(std::isfinite(platform_gap) && platform_gap >= 0.0 && platform_gap < 2 * pi / 3, "platform_gap", platform_gap,
+          "must be in [0, 2π/3) rad");
   require_positive(height, "height");
   require(!(base_gap == 0.0 && platform_gap == 0.0), "base_gap", base_gap,
           "and platform_gap = 0 would make a 3-3 hexapod (legs meeting in pairs at both ends); one gap must be > 0");
@@ -183,8 +184,8 @@ Posed Hexapod::forward(const Legs& legs, const Posed& guess, const ForwardOption
     if (!(rcond >= options.min_rcond)) {
       std::ostringstream out;
       out.precision(6);
-      out << "Hexapod::forward: singular leg Jacobian (reciprocal condition number " << rcond
-          << ") after " << iteration << " iterations, leg length residual " << error << " m";
+      out << "Hexapod::forward: singular leg Jacobian (reciprocal condition number " << rcond << ") after " << iteration
+          << " iterations, leg length residual " << error << " m";
       throw std::runtime_error(out.str());
     }
     const Legs step = scale.asDiagonal() * lu.solve(-residual);
@@ -200,8 +201,8 @@ Posed Hexapod::forward(const Legs& legs, const Posed& guess, const ForwardOption
   if (error <= options.tolerance) return pose;
   std::ostringstream out;
   out.precision(6);
-  out << "Hexapod::forward: no convergence after " << options.max_iterations
-      << " iterations, leg length residual " << error << " m (tolerance " << options.tolerance
+  out << "Hexapod::forward: no convergence after " << options.max_iterations << " iterations, leg length residual "
+      << error << " m (tolerance " << options.tolerance
       << " m); the leg lengths may be unreachable or the guess too far away";
   throw std::runtime_error(out.str());
 }
@@ -238,15 +239,11 @@ Posed Hexapod::forward(const Eigen::VectorXd& q) const {
   return forward(Legs(q));
 }
 
-std::vector<Eigen::VectorXd> Hexapod::inverse(const Posed& pose) const {
-  return {Eigen::VectorXd(leg_lengths(pose))};
-}
+std::vector<Eigen::VectorXd> Hexapod::inverse(const Posed& pose) const { return {Eigen::VectorXd(leg_lengths(pose))}; }
 
 JointLimits Hexapod::joint_limits() const { return {leg_min_, leg_max_, leg_speed_, Eigen::VectorXd()}; }
 
-std::vector<std::string> Hexapod::joint_names() const {
-  return {"leg1", "leg2", "leg3", "leg4", "leg5", "leg6"};
-}
+std::vector<std::string> Hexapod::joint_names() const { return {"leg1", "leg2", "leg3", "leg4", "leg5", "leg6"}; }
 
 Eigen::Matrix<double, 6, 1> xyzuvw_for_new_pivot(const Eigen::Matrix<double, 6, 1>& xyzuvw,
                                                  const Eigen::Vector3d& old_pivot, const Eigen::Vector3d& new_pivot) {
@@ -289,7 +286,8 @@ struct TooDeep {
 };
 
 json parse_bounded(const std::string& text) {
-  require(text.size() <= input_budget::max_hexapod_json_bytes, "description size", static_cast<unsigned long>(text.size()),
+  require(text.size() <= input_budget::max_hexapod_json_bytes, "description size",
+          static_cast<unsigned long>(text.size()),
           "more than " + std::to_string(input_budget::max_hexapod_json_bytes) +
               " bytes, the limit of a hexapod description (doc/input-budget.md)");
   const json::parser_callback_t depth_check = [](int depth, json::parse_event_t event, json&) {
@@ -306,7 +304,8 @@ json parse_bounded(const std::string& text) {
                                              std::to_string(input_budget::max_nesting_depth) +
                                              " deep (doc/input-budget.md)"));
   } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
-    throw std::invalid_argument(describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
+    throw std::invalid_argument(
+        describe("description", std::string("<text>"), std::string("is not JSON: ") + e.what()));
   }
 }
 
@@ -349,8 +348,9 @@ std::string Hexapod::to_json() const {
                       {"version", 1},
                       {"units", "m, m/s"},
                       {"legs", legs},
-                      {"home", {{"translation", to_json_array(home_.translation())},
-                                {"quaternion_wxyz", json::array({q.w(), q.x(), q.y(), q.z()})}}}};
+                      {"home",
+                       {{"translation", to_json_array(home_.translation())},
+                        {"quaternion_wxyz", json::array({q.w(), q.x(), q.y(), q.z()})}}}};
   return description.dump(2);
 }
 
@@ -392,7 +392,8 @@ Hexapod Hexapod::load(const std::string& path) {
   // Read in blocks up to the limit: a larger file is refused without being read to its end.
   std::string text;
   require(input_budget::read_at_most(in, input_budget::max_hexapod_json_bytes, text), "path", path,
-          "is larger than " + std::to_string(input_budget::max_hexapod_json_bytes) + " bytes, the limit of a hexapod description (doc/input-budget.md)");
+          "is larger than " + std::to_string(input_budget::max_hexapod_json_bytes) +
+              " bytes, the limit of a hexapod description (doc/input-budget.md)");
   try {
     return from_json(text);
   } catch (const std::invalid_argument& e) {

@@ -37,7 +37,8 @@ double joint_acceleration_bound(const Section& section, const Hexapod::Joints& p
             return a;
           }
           // Pivot at constant velocity, rotation by θ about a fixed axis: ‖p̈‖ = θ² ρ.
-          const double theta = quaternion_log(Eigen::Quaterniond(s.start.quaternion().conjugate() * s.end.quaternion())).norm();
+          const double theta =
+              quaternion_log(Eigen::Quaterniond(s.start.quaternion().conjugate() * s.end.quaternion())).norm();
           return theta * theta * reach(s.pivot);
         } else if constexpr (std::is_same_v<Kind, ArcSection>) {
           // Centripetal acceleration of the pivot plus that of the rotation about it.
@@ -58,7 +59,8 @@ struct LegSamples {
 };
 
 LegSamples sample_legs(const Hexapod& hexapod, const Section& section, long n) {
-  LegSamples out{Eigen::Matrix<double, 6, Eigen::Dynamic>(6, n + 1), Eigen::Matrix<double, 6, Eigen::Dynamic>(6, n + 1)};
+  LegSamples out{Eigen::Matrix<double, 6, Eigen::Dynamic>(6, n + 1),
+                 Eigen::Matrix<double, 6, Eigen::Dynamic>(6, n + 1)};
   for (long k = 0; k <= n; ++k) {
     const double tau = static_cast<double>(k) / static_cast<double>(n);
     const Posed pose = section_pose(section, tau);
@@ -153,8 +155,8 @@ PlanOptions Hexapod::joint_metric(const Path& path, const Limits& limits) const 
   std::size_t first = 0;
   std::vector<double> scale(needed.size(), 1.0);
   for (std::size_t k = 0; k < needed.size(); ++k) {
-    const bool run_ends = k + 1 == needed.size() ||
-                          !same_direction(section_twist(sections[k], 1.0), section_twist(sections[k + 1], 0.0));
+    const bool run_ends =
+        k + 1 == needed.size() || !same_direction(section_twist(sections[k], 1.0), section_twist(sections[k + 1], 0.0));
     if (!run_ends) {
       scale[k + 1] = scale[k] * section_twist(sections[k + 1], 0.0).vector().norm() /
                      section_twist(sections[k], 1.0).vector().norm();

@@ -25,10 +25,11 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod&
     sample.q = hexapod.leg_lengths(here.pose);
     sample.qd = leg_speeds(here);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
-    sample.qdd = t_after > t_before
-                     ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
-                                       (t_after - t_before))
-                     : Eigen::VectorXd::Zero(6);
+    sample.qdd =
+        t_after > t_before
+            ? Eigen::VectorXd((leg_speeds(trajectory.sample(t_after)) - leg_speeds(trajectory.sample(t_before))) /
+                              (t_after - t_before))
+            : Eigen::VectorXd::Zero(6);
     const std::size_t index = report.samples.size();
     for (int k = 0; k < 6; ++k) {
       const double excess = std::max(hexapod.leg_min()(k) - sample.q(k), sample.q(k) - hexapod.leg_max()(k));
@@ -72,7 +73,8 @@ class HexapodModel final : public JointModel {
     return check_joint_limits(trajectory, hexapod_, options);
   }
   JointBounds bounds(const OptimalRetimeOptions& options) const override {
-    return {hexapod_.leg_speed(), options.joint_acceleration.size() ? options.joint_acceleration : JointBounds::unlimited(6),
+    return {hexapod_.leg_speed(),
+            options.joint_acceleration.size() ? options.joint_acceleration : JointBounds::unlimited(6),
             JointBounds::unlimited(6)};
   }
 
@@ -84,8 +86,8 @@ class HexapodModel final : public JointModel {
 
 std::unique_ptr<JointModel> joint_model(const Hexapod& hexapod) { return std::make_unique<HexapodModel>(hexapod); }
 
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
-                                   const OptimalRetimeOptions& options) {
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const Hexapod& hexapod, const OptimalRetimeOptions& options) {
   return retime_optimal(path, set, limits, HexapodModel(hexapod), hexapod.leg_lengths(hexapod.home()), options);
 }
 

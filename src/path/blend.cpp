@@ -42,16 +42,16 @@ namespace detail {
 // A blend between the end of `path` and the start of `next` (Path::then with a blend), before
 // it is built: where it leaves the path and joins `next`, and its pose curve.
 struct BlendPlan {
-  std::size_t k = 0;           // the section of `path` holding the sub-point KP₁ ...
-  double tau_in = 0.0;         // ... at this τ
-  Section incoming;            // its part up to KP₁
-  std::size_t j = 0;           // the section of `next` holding KP₂ ...
-  double tau_out = 0.0;        // ... at this τ
-  Section outgoing;            // its part from KP₂
-  Eigen::Quaterniond q0;       // orientation at KP₁
-  Cubic3 position, rotation;   // pivot c(v) and rotation vector φ(v), v ∈ [0, 1]
+  std::size_t k = 0;          // the section of `path` holding the sub-point KP₁ ...
+  double tau_in = 0.0;        // ... at this τ
+  Section incoming;           // its part up to KP₁
+  std::size_t j = 0;          // the section of `next` holding KP₂ ...
+  double tau_out = 0.0;       // ... at this τ
+  Section outgoing;           // its part from KP₂
+  Eigen::Quaterniond q0;      // orientation at KP₁
+  Cubic3 position, rotation;  // pivot c(v) and rotation vector φ(v), v ∈ [0, 1]
   Eigen::Vector3d pivot;
-  Eigen::Vector3d corner;      // the pivot at the junction
+  Eigen::Vector3d corner;                  // the pivot at the junction
   std::optional<SlerpBlendSection> slerp;  // with OrientationBlend::nested_slerp: the blend itself
 };
 
@@ -91,7 +91,8 @@ bool plan_blend(const std::vector<Section>& sections, const std::vector<double>&
   // directions matter, the scale is set below).
   const Eigen::Vector3d pivot = pivot_of(plan.incoming);
   const Posed a = section_pose(sections[k], plan.tau_in), b = section_pose(next_sections[j], plan.tau_out);
-  const Twistd twist_a = section_twist(sections[k], plan.tau_in), twist_b = section_twist(next_sections[j], plan.tau_out);
+  const Twistd twist_a = section_twist(sections[k], plan.tau_in),
+               twist_b = section_twist(next_sections[j], plan.tau_out);
   const Eigen::Vector3d c_dot_a = pivot_velocity(a, twist_a, pivot), c_dot_b = pivot_velocity(b, twist_b, pivot);
   const Eigen::Vector3d turn = quaternion_log(Eigen::Quaterniond(a.quaternion().conjugate() * b.quaternion()));
 
@@ -113,7 +114,8 @@ bool plan_blend(const std::vector<Section>& sections, const std::vector<double>&
 
 // The name of a section's kind, for messages.
 const char* kind_name(const Section& section) {
-  if (const auto* lin = std::get_if<LinSection>(&section)) return lin->interpolation == Interpolation::screw ? "screw LIN" : "LIN";
+  if (const auto* lin = std::get_if<LinSection>(&section))
+    return lin->interpolation == Interpolation::screw ? "screw LIN" : "LIN";
   if (std::holds_alternative<ArcSection>(section)) return "CIRC";
   if (std::holds_alternative<CurveSection>(section)) return "curve (SPLINE or blend)";
   return "nested-SLERP blend";
@@ -129,17 +131,18 @@ const LinSection* decoupled_lin(const Section& section) {
 // straight pivot lines and one-axis turns whose tangents point at the corner, so that the blend's
 // end slopes 2(c_m − c₁), 2a and 2(c₂ − c_m), 2b are the neighbours' twists scaled alike (doc/planning.md eq. 18).
 void plan_slerp_blend(const std::vector<Section>& sections, const std::vector<double>& cumulative,
-                      const std::vector<Section>& next_sections, const std::vector<double>& next_cumulative, double before,
-                      double after, detail::BlendPlan& plan) {
+                      const std::vector<Section>& next_sections, const std::vector<double>& next_cumulative,
+                      double before, double after, detail::BlendPlan& plan) {
   const std::size_t k = sections.size() - 1;
   const LinSection* in = decoupled_lin(sections[k]);
   require(in != nullptr, "orientation_blend", std::string("nested_slerp"),
           std::string("needs the path to end in a decoupled LIN section at the via point; it ends in a ") +
               kind_name(sections[k]) + " section");
   const LinSection* out = decoupled_lin(next_sections.front());
-  require(out != nullptr, "next", section_start(next_sections.front()).translation(),
-          std::string("must start with a decoupled LIN section for orientation_blend = nested_slerp; it starts with a ") +
-              kind_name(next_sections.front()) + " section");
+  require(
+      out != nullptr, "next", section_start(next_sections.front()).translation(),
+      std::string("must start with a decoupled LIN section for orientation_blend = nested_slerp; it starts with a ") +
+          kind_name(next_sections.front()) + " section");
   require((in->pivot - out->pivot).norm() <= 1e-12, "next", out->pivot,
           "has another pivot than the path: a nested_slerp blend moves one pivot on its Bézier curve");
   const double size_in = cumulative[k] - (k == 0 ? 0.0 : cumulative[k - 1]), size_out = next_cumulative.front();
@@ -214,7 +217,8 @@ double corner_deviation(const detail::BlendPlan& plan) {
 bool proportional_corner(const Section& last, const Section& first) {
   const auto* in = std::get_if<LinSection>(&last);
   const auto* out = std::get_if<LinSection>(&first);
-  if (!(in && out && in->interpolation == Interpolation::decoupled && out->interpolation == Interpolation::decoupled)) return false;
+  if (!(in && out && in->interpolation == Interpolation::decoupled && out->interpolation == Interpolation::decoupled))
+    return false;
   const Eigen::Vector3d turn_in = in->start.quaternion() * in->twist(0.0).angular;
   const Eigen::Vector3d turn_out = out->start.quaternion() * out->twist(0.0).angular;
   return turn_in.cross(turn_out).norm() <= 1e-12 * turn_in.norm() * turn_out.norm();
@@ -251,7 +255,8 @@ Path& Path::then(const Path& next, double before, double after, double tolerance
   if (&next == this) return then(Path(next), before, after, tolerance, orientation);
   require(std::isfinite(before) && before > 0.0, "before", before, "must be a positive distance (m)");
   require(std::isfinite(after) && after > 0.0, "after", after, "must be a positive distance (m)");
-  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance,
+          "must be in (0, 0.1]");
   require_joins(next);
   require(before <= 0.5 * last_move_size_ * (1.0 + 1e-12), "before", before,
           "exceeds half of the move before the via point (" + std::to_string(0.5 * last_move_size_) +
@@ -295,14 +300,16 @@ void Path::apply_blend(const detail::BlendPlan& plan, const Path& next, double t
   for (std::size_t i = plan.j + 1; i < next.sections_.size(); ++i) append(next.sections_[i], next.limits_[i]);
   const std::size_t dropped = plan.tau_out < 1.0 ? plan.j : plan.j + 1;
   move_starts_.push_back(next_first);
-  for (std::size_t m = 1; m < next.move_starts_.size(); ++m) move_starts_.push_back(next_first + next.move_starts_[m] - dropped);
+  for (std::size_t m = 1; m < next.move_starts_.size(); ++m)
+    move_starts_.push_back(next_first + next.move_starts_[m] - dropped);
   last_move_size_ = next.last_move_size_;
 }
 
 Path Path::blended(double corner_tolerance, std::vector<CornerStop>* stops, double tolerance) const {
   require(std::isfinite(corner_tolerance) && corner_tolerance > 0.0, "corner_tolerance", corner_tolerance,
           "must be a positive distance (m)");
-  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance,
+          "must be in (0, 0.1]");
   // A junction is a corner where the twist direction changes (doc/planning.md eq. 9); within a
   // move none does. A reversal (the direction turns back to within 1e-6 of 180°) has no blend.
   constexpr double direction_tolerance = 1e-6, reversal = -1.0 + 1e-6;

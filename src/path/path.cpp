@@ -19,13 +19,15 @@ using detail::rotation_angle;
 
 void require_pose_distinct(const Posed& a, const Posed& b, const char* what) {
   if (a.is_approx(b, 1e-12)) {
-    throw std::invalid_argument(describe(what, a.translation(), "start and end poses coincide: the move has no length"));
+    throw std::invalid_argument(
+        describe(what, a.translation(), "start and end poses coincide: the move has no length"));
   }
 }
 
 }  // namespace
 
-CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via, const Eigen::Vector3d& end) {
+CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via,
+                                   const Eigen::Vector3d& end) {
   require_finite(start, "start");
   require_finite(via, "via");
   require_finite(end, "end");
@@ -40,7 +42,8 @@ CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Ve
   require(w.norm() > 1e-9 * u.norm() * v.norm(), "via", via,
           "is collinear with the start and end points: no circle passes through them");
   // Circumcentre of the triangle (start, via, end), relative to start.
-  const Eigen::Vector3d offset = (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u)) / (2.0 * w.squaredNorm());
+  const Eigen::Vector3d offset =
+      (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u)) / (2.0 * w.squaredNorm());
   CircleThroughPoints circle;
   circle.center = start + offset;
   circle.normal = w.normalized();
@@ -88,7 +91,8 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
   // The orientation turns about one world axis, shortest way, proportionally to the arc.
   const Eigen::Vector3d rotvec = quaternion_log(Eigen::Quaterniond(b.quaternion() * a.quaternion().conjugate()));
   const double total_rotation = rotvec.norm();
-  const Eigen::Vector3d axis = total_rotation > 0.0 ? Eigen::Vector3d(rotvec / total_rotation) : Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d axis =
+      total_rotation > 0.0 ? Eigen::Vector3d(rotvec / total_rotation) : Eigen::Vector3d::UnitZ();
 
   // Sections so that the arc bound is within `tolerance` of the pivot's speed φρ:
   // (2 + θ/N) · 2 sin(φ/(4N)) ≤ tolerance.
@@ -132,8 +136,10 @@ Path Path::circ(const Posed& a, const Posed& via, const Posed& b, const Eigen::V
 Path Path::from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size,
                          const std::vector<MoveLimits>& section_limits, const std::vector<std::size_t>& move_starts) {
   require(!sections.empty(), "sections", 0L, "must hold at least one section");
-  require(std::isfinite(first_move_size) && first_move_size > 0.0, "first_move_size", first_move_size, "must be finite and > 0");
-  require(std::isfinite(last_move_size) && last_move_size > 0.0, "last_move_size", last_move_size, "must be finite and > 0");
+  require(std::isfinite(first_move_size) && first_move_size > 0.0, "first_move_size", first_move_size,
+          "must be finite and > 0");
+  require(std::isfinite(last_move_size) && last_move_size > 0.0, "last_move_size", last_move_size,
+          "must be finite and > 0");
   Path path;
   for (const Section& section : sections) {
     const std::size_t k = path.sections_.size();
@@ -148,7 +154,8 @@ Path Path::from_sections(const std::vector<Section>& sections, double first_move
   path.first_move_size_ = first_move_size;
   path.last_move_size_ = last_move_size;
   if (!section_limits.empty()) {
-    require(section_limits.size() == sections.size(), "section_limits size", static_cast<unsigned long>(section_limits.size()),
+    require(section_limits.size() == sections.size(), "section_limits size",
+            static_cast<unsigned long>(section_limits.size()),
             "must be the section count " + std::to_string(sections.size()));
     for (std::size_t k = 0; k < section_limits.size(); ++k) {
       section_limits[k].validate("section_limits[" + std::to_string(k) + "]");
@@ -158,8 +165,9 @@ Path Path::from_sections(const std::vector<Section>& sections, double first_move
   if (!move_starts.empty()) {
     require(move_starts.front() == 0, "move_starts[0]", static_cast<unsigned long>(move_starts.front()), "must be 0");
     for (std::size_t m = 1; m < move_starts.size(); ++m) {
-      require(move_starts[m] >= move_starts[m - 1] && move_starts[m] <= sections.size(), "move_starts[" + std::to_string(m) + "]",
-              static_cast<unsigned long>(move_starts[m]), "must not decrease and be at most the section count");
+      require(move_starts[m] >= move_starts[m - 1] && move_starts[m] <= sections.size(),
+              "move_starts[" + std::to_string(m) + "]", static_cast<unsigned long>(move_starts[m]),
+              "must not decrease and be at most the section count");
     }
     path.move_starts_ = move_starts;
   }
@@ -193,19 +201,21 @@ void require_unit(const Eigen::Vector3d& axis, const Name& name) {
 }
 
 void require_unit(const Eigen::Quaterniond& q, const Name& name) {
-  require_lazily(q.coeffs().allFinite() && std::abs(q.norm() - 1.0) <= Posed::stored_quaternion_tolerance(), name, q.coeffs(),
-                 [] { return "must be a unit quaternion (x, y, z, w)"; });
+  require_lazily(q.coeffs().allFinite() && std::abs(q.norm() - 1.0) <= Posed::stored_quaternion_tolerance(), name,
+                 q.coeffs(), [] { return "must be a unit quaternion (x, y, z, w)"; });
 }
 
 void require_angle(double angle, const Name& name) {
-  require_lazily(std::isfinite(angle) && std::abs(angle) <= 2.0 * pi, name, angle, [] { return "must be finite and at most 2 pi rad"; });
+  require_lazily(std::isfinite(angle) && std::abs(angle) <= 2.0 * pi, name, angle,
+                 [] { return "must be finite and at most 2 pi rad"; });
 }
 
 void require_cubic(const Cubic3& c, const Name& name) {
   for (std::size_t k = 0; k < c.a.size(); ++k) {
     const Eigen::Vector3d& x = c.a[k];
-    require_lazily(x.allFinite() && x.cwiseAbs().maxCoeff() <= 1e14, [&] { return name() + ".a[" + std::to_string(k) + "]"; }, x,
-                   [] { return "must have coordinates within ±1e14 (dispkin's numeric range)"; });
+    require_lazily(
+        x.allFinite() && x.cwiseAbs().maxCoeff() <= 1e14, [&] { return name() + ".a[" + std::to_string(k) + "]"; }, x,
+        [] { return "must have coordinates within ±1e14 (dispkin's numeric range)"; });
   }
 }
 
@@ -240,8 +250,10 @@ void require_valid(const Section& section, const Name& name) {
     require_unit(blend.q_start, field(name, ".q_start"));
     // Each turn of the nested SLERP is below π (a blend takes at most half a LIN's turn ≤ π):
     // its logarithms, and so the motion, are smooth only there.
-    require_lazily(blend.a.allFinite() && blend.a.norm() < pi, field(name, ".a"), blend.a, [] { return "must be a turn below pi rad"; });
-    require_lazily(blend.b.allFinite() && blend.b.norm() < pi, field(name, ".b"), blend.b, [] { return "must be a turn below pi rad"; });
+    require_lazily(blend.a.allFinite() && blend.a.norm() < pi, field(name, ".a"), blend.a,
+                   [] { return "must be a turn below pi rad"; });
+    require_lazily(blend.b.allFinite() && blend.b.norm() < pi, field(name, ".b"), blend.b,
+                   [] { return "must be a turn below pi rad"; });
     require_cubic(blend.position, field(name, ".position"));
     require_curve_part(blend.v0, blend.v1, name);
     require_point(blend.pivot, field(name, ".pivot"));
@@ -253,9 +265,9 @@ void require_join(const Posed& end, const Posed& start, const Name& name) {
   const double turn = rotation_angle(end, start);
   const double size = std::max(end.translation().cwiseAbs().maxCoeff(), start.translation().cwiseAbs().maxCoeff());
   if (!(gap <= 1e-9 + 64.0 * std::numeric_limits<double>::epsilon() * size) || !(turn <= 1e-9)) {
-    throw std::invalid_argument(describe(name(), start.translation(),
-                                         "must start where the path ends (gap " + std::to_string(gap) + " m, " +
-                                             std::to_string(turn) + " rad)"));
+    throw std::invalid_argument(describe(
+        name(), start.translation(),
+        "must start where the path ends (gap " + std::to_string(gap) + " m, " + std::to_string(turn) + " rad)"));
   }
 }
 
@@ -339,7 +351,8 @@ namespace {
 double set_acceleration_bound(const MetricSetd& set, const Eigen::Vector3d& pivot, const Eigen::Vector3d& pivot_middle,
                               const MotionBounds& bounds) {
   double best = 0.0;
-  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, bounds));
+  for (const auto& g : set.groups())
+    best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, bounds));
   return best;
 }
 
@@ -383,7 +396,8 @@ SectionBounds LinSection::bounds(const GroupFactors& factors) const {
       length = std::max(length, factors.weight(i) * detail::group_decoupled_length(set.groups()[i], section));
   }
   for (std::size_t i = 0; i < set.groups().size(); ++i)
-    acceleration = std::max(acceleration, detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
+    acceleration = std::max(acceleration,
+                            detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
   return {length, acceleration, motion.omega, motion.omega_dot};
 }
 
@@ -401,7 +415,8 @@ SectionBounds detail::section_bounds(const Section& section, GroupFactors& facto
 double ArcSection::acceleration_bound(const MetricSetd& set) const {
   const double radius = ((start * pivot) - center).norm();
   const double phi = std::abs(angle);
-  return set_acceleration_bound(set, pivot, pose(0.5) * pivot, {phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0});
+  return set_acceleration_bound(set, pivot, pose(0.5) * pivot,
+                                {phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0});
 }
 
 JointPath::JointPath(const Eigen::VectorXd& q_start, const Eigen::VectorXd& q_end) : q_start_(q_start), q_end_(q_end) {

@@ -81,7 +81,8 @@ void Path::cut_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const
 
 Path Path::spline(const std::vector<Posed>& poses, const Eigen::Vector3d& pivot, double tolerance) {
   require_translation(pivot, "pivot");
-  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance, "must be in (0, 0.1]");
+  require(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1, "tolerance", tolerance,
+          "must be in (0, 0.1]");
   const auto n = static_cast<Eigen::Index>(poses.size());
   require(n >= 3, "poses", static_cast<long>(n),
           "key poses given: a SPLINE needs at least three (use Path::lin for two)");

@@ -64,10 +64,10 @@ class MinimumTree {
 // velocity would turn negative whatever the law does).
 struct Stop {
   bool exists = false;
-  Motion start{};                   // the state it stops from
-  Motion peak{};                    // where the acceleration reaches 0 (the start if a ≤ 0)
-  int count = 0;                    // pieces after the peak
-  std::array<Motion, 4> at{};       // at[0] = peak, at[i] the start of piece i, at[count] = rest
+  Motion start{};              // the state it stops from
+  Motion peak{};               // where the acceleration reaches 0 (the start if a ≤ 0)
+  int count = 0;               // pieces after the peak
+  std::array<Motion, 4> at{};  // at[0] = peak, at[i] the start of piece i, at[count] = rest
   std::array<double, 3> duration{};
   std::array<double, 3> jerk{};
 };
@@ -136,9 +136,16 @@ class Staircase {
  public:
   Staircase(const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations, double j,
             bool settle_in_troughs, bool open_end)
-      : open_end_(open_end), j_(j), accel_(accelerations), brake_(accelerations), limit_(segments.size()),
-        start_(segments.size() + 1, 0.0), limits_(limit_values(segments)), accels_(accelerations),
-        troughs_(trough_values(segments, settle_in_troughs)), settle_(settle_in_troughs) {
+      : open_end_(open_end),
+        j_(j),
+        accel_(accelerations),
+        brake_(accelerations),
+        limit_(segments.size()),
+        start_(segments.size() + 1, 0.0),
+        limits_(limit_values(segments)),
+        accels_(accelerations),
+        troughs_(trough_values(segments, settle_in_troughs)),
+        settle_(settle_in_troughs) {
     for (std::size_t k = 0; k < segments.size(); ++k) {
       limit_[k] = segments[k].limit * (1.0 - margin);
       start_[k + 1] = start_[k] + segments[k].length;
@@ -243,7 +250,8 @@ class Staircase {
   // Where the pulse (17) from x down to (w, 0) ends.
   static double pulse_end(const Motion& x, double w, const JerkLimits& lim) {
     const Pulse p = pulse(x.a, w - x.v, lim);
-    Motion y = advance(x, std::abs(p.sign * p.peak - x.a) * lim.jerk_time, p.sign * p.peak >= x.a ? lim.j_max : -lim.j_max);
+    Motion y =
+        advance(x, std::abs(p.sign * p.peak - x.a) * lim.jerk_time, p.sign * p.peak >= x.a ? lim.j_max : -lim.j_max);
     y.a = p.sign * p.peak;
     y = advance(y, p.hold, 0.0);
     return advance(y, p.peak * lim.jerk_time, -p.sign * lim.j_max).s;
@@ -346,8 +354,8 @@ bool append_segment_laws(std::vector<Phase>& phases, double s_end, const Motion&
 // assuming that once it leaves the viable states it does not come back (bisection to 1e-12 of
 // the jerk's time scale a/j).
 // (the first non-viable instant found goes to *edge).
-double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap, double resolution,
-                       double* edge) {
+double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap,
+                       double resolution, double* edge) {
   *edge = cap;
   if (stairs.viable(advance(x, cap, jerk), m)) return cap;
   double lo = 0.0, hi = cap;
@@ -366,10 +374,16 @@ namespace {
 // The law of §8.2 being built, phase by phase (31): the state, its segment, the segment's phases.
 class GreedyLaw {
  public:
-  GreedyLaw(const Staircase& stairs, const std::vector<LimitedSegment>& segments, const std::vector<double>& accelerations,
-            double v_start, double v_end)
-      : stairs_(stairs), segments_(segments), accelerations_(accelerations), j_(stairs.jerk()), v_start_(v_start),
-        v_end_(v_end), open_end_(v_end > 0.0), x_{0.0, v_start, 0.0} {
+  GreedyLaw(const Staircase& stairs, const std::vector<LimitedSegment>& segments,
+            const std::vector<double>& accelerations, double v_start, double v_end)
+      : stairs_(stairs),
+        segments_(segments),
+        accelerations_(accelerations),
+        j_(stairs.jerk()),
+        v_start_(v_start),
+        v_end_(v_end),
+        open_end_(v_end > 0.0),
+        x_{0.0, v_start, 0.0} {
     for (double a : accelerations) a_top_ = std::max(a_top_, a);
     resolution_ = 1e-9 * a_top_ / j_;
     shortest_ = 1e-6 * a_top_ / j_;
@@ -385,7 +399,8 @@ class GreedyLaw {
     // In the last segment, once the stop ends at the end of the path (to 1e-9 of its length), the
     // law is that stop: what is left is rounding, not room to speed up.
     const double length = stairs_.length();
-    if (!open_end_ && m_ + 1 == n && stop.exists && length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) {
+    if (!open_end_ && m_ + 1 == n && stop.exists &&
+        length - stop.at[static_cast<std::size_t>(stop.count)].s <= 1e-9 * length) {
       on_edge_ = true;
       edge_trough_.reset();
     }

@@ -50,7 +50,7 @@ Candidate golden_section(double lo, double hi, int iterations, Candidate best, E
 }  // namespace
 
 AccelerationSteps acceleration_steps(const std::vector<GridPoint>& grid, std::size_t first, std::size_t count,
-                                             const Parameterisation& fastest) {
+                                     const Parameterisation& fastest) {
   AccelerationSteps steps;
   steps.time.resize(count + 1);
   steps.position.resize(count + 1);
@@ -106,7 +106,9 @@ void append_jerk_laws(const SmoothParameter& smooth, std::vector<JerkPhase> phas
     auto section_of = [&](const JerkPhase& p) { return smooth.section_at(advance(p, 0.5 * p.duration).position); };
     const std::size_t section = section_of(cut[first]);
     std::size_t last = first + 1;
-    while (last < cut.size() && last - first < static_cast<std::size_t>(Profile::max_phases) && section_of(cut[last]) == section) ++last;
+    while (last < cut.size() && last - first < static_cast<std::size_t>(Profile::max_phases) &&
+           section_of(cut[last]) == section)
+      ++last;
     const double r = smooth.s_per_sigma(section);
     double durations[Profile::max_phases], jerks[Profile::max_phases];
     for (std::size_t m = first; m < last; ++m) {
@@ -117,8 +119,9 @@ void append_jerk_laws(const SmoothParameter& smooth, std::vector<JerkPhase> phas
     const double end_position = last < cut.size() ? cut[last].position : run_end;
     const double end_speed = last < cut.size() ? cut[last].speed : 0.0;
     const double end_acceleration = last < cut.size() ? cut[last].acceleration : 0.0;
-    laws.push_back(Profile::from_phases(durations, jerks, static_cast<int>(last - first), r * a.speed, r * a.acceleration,
-                                        r * std::max(0.0, end_position - a.position), r * end_speed, r * end_acceleration));
+    laws.push_back(Profile::from_phases(durations, jerks, static_cast<int>(last - first), r * a.speed,
+                                        r * a.acceleration, r * std::max(0.0, end_position - a.position), r * end_speed,
+                                        r * end_acceleration));
     first = last;
   }
 }
@@ -132,9 +135,7 @@ JerkLimitedSolution jerk_limited_solution(const RunProblem& problem, double acce
     if (smooth.ell(k) > 0.0) rho = std::min(rho, 1.0 / smooth.s_per_sigma(k));
   }
   const double top_acceleration = acceleration_limit * rho, run_jerk = jerk_limit * rho;
-  auto top_speed = [](const Parameterisation& p) {
-    return std::sqrt(*std::max_element(p.x.begin(), p.x.end()));
-  };
+  auto top_speed = [](const Parameterisation& p) { return std::sqrt(*std::max_element(p.x.begin(), p.x.end())); };
   // The jerk-limited law under the acceleration cap A ≤ a ρ and the speed cap V: its window
   // and its duration.
   struct Candidate {
@@ -239,7 +240,8 @@ void append_acceleration_laws(const RunProblem& problem, const Parameterisation&
       // The trapezoid between v0 and v1 whose acceleration just covers the distance (a hair
       // above, so that rounding cannot make the law infeasible). |v1 − v0| (v1 + v0), the form
       // of the trapezoid's own check: v1² − v0² cancels when the speeds nearly agree.
-      const double acc = std::max(std::abs(v1 - v0) * (v1 + v0) / (2.0 * distance) * (1.0 + 1e-9), 1e-12 * acceleration_limit);
+      const double acc =
+          std::max(std::abs(v1 - v0) * (v1 + v0) / (2.0 * distance) * (1.0 + 1e-9), 1e-12 * acceleration_limit);
       laws.push_back(Profile::trapezoid(distance, std::max(v0, v1), acc, v0, v1));
       a = b;
     }

@@ -35,7 +35,8 @@ JerkLimitedSolution jerk_limited_solution(const RunProblem& problem, double acce
 //! A run's jerk-limited law in σ (constant-jerk phases ending at rest at `run_end`) as laws in s:
 //! cut where sections begin (ds/dσ changes there: ṡ, s̈, s⃛ are σ̇, σ̈, σ⃛ times the section's ds/dσ),
 //! at most Profile::max_phases phases per law.
-void append_jerk_laws(const SmoothParameter& smooth, std::vector<JerkPhase> phases, double run_end, std::vector<Profile>& laws);
+void append_jerk_laws(const SmoothParameter& smooth, std::vector<JerkPhase> phases, double run_end,
+                      std::vector<Profile>& laws);
 
 //! A run's grid solution (constant σ̈ over each grid interval) as trapezoid laws in s, cut where
 //! sections begin (ṡ = σ̇ ds/dσ).

@@ -9,8 +9,8 @@
 
 namespace dispkin::detail {
 
-GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo,
-                     double hi, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess) {
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
+                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess) {
   auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* start, Eigen::VectorXd& q,
                         Eigen::VectorXd& q1) {
     Posed pose;
@@ -124,8 +124,9 @@ Parameterisation RunProblem::solve(double reach, double run_acceleration, double
   }
   for (std::size_t i = 0; i < run_.count; ++i) {
     if (!(fastest.x[i] + fastest.x[i + 1] > 0.0)) {
-      throw std::runtime_error("the joint limits allow no motion on the path interval " +
-                               interval_text(smooth_.s_of(grid_[run_.first + i].sigma), smooth_.s_of(grid_[run_.first + i + 1].sigma)));
+      throw std::runtime_error(
+          "the joint limits allow no motion on the path interval " +
+          interval_text(smooth_.s_of(grid_[run_.first + i].sigma), smooth_.s_of(grid_[run_.first + i + 1].sigma)));
     }
   }
   return fastest;

@@ -70,8 +70,8 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
   return Profile::from_phases(durations.data(), jerks.data(), count, v0, a0, std::max(s, 0.0), 0.0, 0.0);
 }
 
-std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max, std::optional<double> j_max,
-                                         double v0, double a0, double tolerance) {
+std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max,
+                                         std::optional<double> j_max, double v0, double a0, double tolerance) {
   require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
   double distance = 0.0, a = a_max;
   for (const LimitedSegment& g : segments) {
@@ -80,7 +80,8 @@ std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segm
   }
   std::optional<Profile> stop = fastest_stop(v0, a0, a, j_max);
   const double stop_distance = stop ? stop->distance() : 0.0;
-  require(stop_distance <= distance + tolerance, "v0", v0, "cannot come to rest within the run of " + std::to_string(distance) + " m");
+  require(stop_distance <= distance + tolerance, "v0", v0,
+          "cannot come to rest within the run of " + std::to_string(distance) + " m");
   std::vector<Profile> laws;
   if (stop) laws.push_back(std::move(*stop));
   if (stop_distance < distance - tolerance) {
@@ -108,7 +109,8 @@ std::vector<Profile> staircase_law_from_state(const std::vector<LimitedSegment>&
   // segment i from which the rest of the run comes to rest within its limits.
   std::vector<double> u(n + 1, 0.0);
   for (std::size_t i = n; i-- > 1;)
-    u[i] = reachable_velocity(u[i + 1], std::min(segments[i - 1].limit, segments[i].limit), segments[i].length, accel(i), j_max);
+    u[i] = reachable_velocity(u[i + 1], std::min(segments[i - 1].limit, segments[i].limit), segments[i].length,
+                              accel(i), j_max);
   // The first law takes segments [0, m] as one, under their lowest limits, to u[m + 1]: the
   // fewest segments in which it fits (doc/profiles.md eq. 6).
   double distance = 0.0, v_max = segments[0].limit, a = accel(0);

@@ -25,8 +25,8 @@ std::optional<Profile> fastest_stop(double v0, double a0, double a_max, std::opt
 //! law from a state that every other law keeps above (doc/events.md §1), so it keeps under the
 //! curve wherever any law does. Throws std::invalid_argument if the stop overruns the run
 //! (beyond `tolerance`, m).
-std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max, std::optional<double> j_max,
-                                         double v0, double a0, double tolerance);
+std::vector<Profile> stop_then_staircase(const std::vector<LimitedSegment>& segments, double a_max,
+                                         std::optional<double> j_max, double v0, double a0, double tolerance);
 
 //! The law over a run's staircase `segments` (which ends at rest) from the moving state
 //! (v0, a0) at its start (doc/events.md §3): on the first segments the time-optimal law from the

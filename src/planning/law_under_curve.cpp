@@ -36,8 +36,8 @@ double peak_between(const Profile& law, double t_end, double s0, double s1) {
   return peak;
 }
 
-bool keeps_under_tops(const Profile& law, double t_end, double start_s, double peak, const std::vector<SpeedLimit>& spans,
-                      std::size_t first, double tol_s) {
+bool keeps_under_tops(const Profile& law, double t_end, double start_s, double peak,
+                      const std::vector<SpeedLimit>& spans, std::size_t first, double tol_s) {
   const double s1 = start_s + law.state_at(t_end).s;
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = first; k < spans.size() && spans[k].start_s <= s1 - tol_s; ++k)

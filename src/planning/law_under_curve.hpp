@@ -21,7 +21,7 @@ double peak_between(const Profile& law, double t_end, double s0, double s1);
 //! of several limits, and its peak at the start says nothing of where it meets a lower one; a
 //! law whose peak is under the lowest top it crosses passes without a search. `first`: the
 //! first span it may cross; positions agree to tol_s.
-bool keeps_under_tops(const Profile& law, double t_end, double start_s, double peak, const std::vector<SpeedLimit>& spans,
-                      std::size_t first, double tol_s);
+bool keeps_under_tops(const Profile& law, double t_end, double start_s, double peak,
+                      const std::vector<SpeedLimit>& spans, std::size_t first, double tol_s);
 
 }  // namespace dispkin::detail

@@ -38,11 +38,11 @@ class DecoupledSpeeds {
   Eigen::Vector3d across_at(double t) const noexcept;
 
   const GroupFactors* factors_;
-  Eigen::Vector3d omega_;       // Ω = θ k, body frame of the start
-  Eigen::Vector3d k_;           // unit rotation axis (body); any unit vector without rotation
-  Eigen::Vector3d across_;      // Δc⊥ at τ = 0 (body), and k × Δc⊥
+  Eigen::Vector3d omega_;   // Ω = θ k, body frame of the start
+  Eigen::Vector3d k_;       // unit rotation axis (body); any unit vector without rotation
+  Eigen::Vector3d across_;  // Δc⊥ at τ = 0 (body), and k × Δc⊥
   Eigen::Vector3d across_side_;
-  Eigen::Vector3d pivot_;       // p (body)
+  Eigen::Vector3d pivot_;  // p (body)
   double theta_ = 0.0, along_ = 0.0, across_size_ = 0.0;
   // World view of absolute objects: g(τ) = Δc + Ω_w × (x − c₀) − τ Ω_w × Δc (doc/planning.md eq. 30).
   Eigen::Vector3d delta_c_, omega_world_, w_hat_, pivot_start_, drift_;

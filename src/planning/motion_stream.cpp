@@ -67,7 +67,8 @@ MotionStream::MotionStream(MetricSetd set, Limits limits, ProfileKind profile, d
 }
 
 Path MotionStream::blended_path(const Path& path) const {
-  return options_.corner_tolerance > 0.0 ? path.blended(options_.corner_tolerance, nullptr, options_.blend_tolerance) : path;
+  return options_.corner_tolerance > 0.0 ? path.blended(options_.corner_tolerance, nullptr, options_.blend_tolerance)
+                                         : path;
 }
 
 Trajectory MotionStream::planned(const Path& path) const {
@@ -94,7 +95,8 @@ std::size_t MotionStream::stretch_at(double t, std::size_t hint) const noexcept 
   return next == stretches_.begin() ? 0 : static_cast<std::size_t>(next - stretches_.begin()) - 1;
 }
 
-MotionStream::Stretch MotionStream::stretch(Trajectory trajectory, const Path& path, double start, double s, bool from_rest) {
+MotionStream::Stretch MotionStream::stretch(Trajectory trajectory, const Path& path, double start, double s,
+                                            bool from_rest) {
   Stretch out;
   out.start = start;
   out.s = s;
@@ -105,7 +107,8 @@ MotionStream::Stretch MotionStream::stretch(Trajectory trajectory, const Path& p
   for (std::size_t k = 0; k < trajectory.section_count(); ++k) {
     const std::size_t section = sources.empty() ? k : sources[k].section;
     out.limits.push_back(path.section_limits()[section]);
-    out.moves.push_back(static_cast<std::size_t>(std::upper_bound(move_starts.begin(), move_starts.end(), section) - move_starts.begin()));
+    out.moves.push_back(static_cast<std::size_t>(std::upper_bound(move_starts.begin(), move_starts.end(), section) -
+                                                 move_starts.begin()));
   }
   out.trajectory = std::make_shared<const Trajectory>(std::move(trajectory));
   return out;
@@ -138,7 +141,8 @@ std::optional<MotionStream::Stretch> MotionStream::joined(const Path& extra, dou
     // scale by the ratio of the twists per unit of s (doc/events.md eq. 7).
     const double r = speed_ratio(running, x.s, from_rest);
     const double a = profile_ == ProfileKind::scurve ? r * x.a : 0.0;  // the trapezoid has no acceleration state
-    Stretch out = stretch(from_rest.starting_from(std::max(r * x.v, 0.0), a), path, at, last.s + x.s, x.s == 0.0 && last.from_rest);
+    Stretch out = stretch(from_rest.starting_from(std::max(r * x.v, 0.0), a), path, at, last.s + x.s,
+                          x.s == 0.0 && last.from_rest);
     out.unstarted = last.start == at ? last.unstarted : std::vector<Path>{};
     out.unstarted.push_back(extra);
     return out;
@@ -211,7 +215,8 @@ void MotionStream::resume(double t) {
   require(stopped_, "t", t, "resumes a stopped motion only");
   stopped_ = false;
   Stretch& last = stretches_.back();
-  if (last.trajectory->stopped()) last.trajectory = std::make_shared<const Trajectory>(last.trajectory->resumed_at(t - last.start));
+  if (last.trajectory->stopped())
+    last.trajectory = std::make_shared<const Trajectory>(last.trajectory->resumed_at(t - last.start));
   std::vector<Path> waiting = std::move(waiting_);
   waiting_.clear();
   for (const Path& path : waiting) continue_with(path, t);
@@ -220,13 +225,15 @@ void MotionStream::resume(double t) {
 
 void MotionStream::set_override(double t, double factor) {
   require_time(t);
-  require(factor >= Trajectory::min_override && factor <= Trajectory::max_override, "factor", factor, "must be in [0.001, 10]");
+  require(factor >= Trajectory::min_override && factor <= Trajectory::max_override, "factor", factor,
+          "must be in [0.001, 10]");
   override_ = factor;
   if (stretches_.empty()) return;
   changed_from_ = t;
   for (std::size_t k = stretch_at(t, stretches_.size()); k < stretches_.size(); ++k) {
     Stretch& stretch = stretches_[k];
-    stretch.trajectory = std::make_shared<const Trajectory>(stretch.trajectory->with_override(std::max(t - stretch.start, 0.0), factor));
+    stretch.trajectory =
+        std::make_shared<const Trajectory>(stretch.trajectory->with_override(std::max(t - stretch.start, 0.0), factor));
   }
 }
 

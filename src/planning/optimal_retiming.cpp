@@ -42,8 +42,8 @@ constexpr int candidate_samples_between = 10;
 void require_valid(const OptimalRetimeOptions& options, int dof) {
   require(options.grid_intervals >= 2, "grid_intervals", static_cast<long>(options.grid_intervals), "must be ≥ 2");
   require_positive(options.difference_step, "difference_step");
-  require(options.check_samples_between >= 0, "check_samples_between",
-          static_cast<long>(options.check_samples_between), "must be ≥ 0");
+  require(options.check_samples_between >= 0, "check_samples_between", static_cast<long>(options.check_samples_between),
+          "must be ≥ 0");
   require(options.max_refinements >= 0, "max_refinements", static_cast<long>(options.max_refinements), "must be ≥ 0");
   const Eigen::VectorXd& acceleration = options.joint_acceleration;
   require(acceleration.size() == 0 || acceleration.size() == dof, "joint_acceleration size",
@@ -64,7 +64,8 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
   for (std::size_t r = 0; r + 1 < rests.size(); ++r) {
     const double lo = rests[r], hi = rests[r + 1];
     if (!(hi > lo)) continue;
-    const auto count = static_cast<std::size_t>(std::max(2.0, std::round(options.grid_intervals * (hi - lo) / smooth.length())));
+    const auto count =
+        static_cast<std::size_t>(std::max(2.0, std::round(options.grid_intervals * (hi - lo) / smooth.length())));
     const double h = options.difference_step * (hi - lo) / static_cast<double>(count);
     runs.push_back({grid.size(), count});
     for (std::size_t i = 0; i <= count; ++i) {
@@ -84,15 +85,15 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
 
 // Holding still must be possible everywhere (the KUKA re-timing patent's "cannot be reached by
 // slowing down"): throws std::runtime_error naming the joint and the place where it is not.
-void require_holding_possible(const std::vector<detail::GridPoint>& grid, const JointBounds& bounds, const JointModel& model,
-                              const detail::SmoothParameter& smooth) {
+void require_holding_possible(const std::vector<detail::GridPoint>& grid, const JointBounds& bounds,
+                              const JointModel& model, const detail::SmoothParameter& smooth) {
   for (const detail::GridPoint& p : grid) {
     for (Eigen::Index k = 0; k < p.gravity.size(); ++k) {
       if (std::abs(p.gravity(k)) >= bounds.effort(k)) {
         std::ostringstream message;
-        message << "joint " << model.joint_name(static_cast<int>(k)) << ": the static torque "
-                << std::abs(p.gravity(k)) << " N·m at " << detail::where(std::nan(""), smooth.s_of(p.sigma))
-                << " reaches its effort limit " << bounds.effort(k) << " N·m: no speed makes this path feasible";
+        message << "joint " << model.joint_name(static_cast<int>(k)) << ": the static torque " << std::abs(p.gravity(k))
+                << " N·m at " << detail::where(std::nan(""), smooth.s_of(p.sigma)) << " reaches its effort limit "
+                << bounds.effort(k) << " N·m: no speed makes this path feasible";
         throw std::runtime_error(message.str());
       }
     }
@@ -102,8 +103,8 @@ void require_holding_possible(const std::vector<detail::GridPoint>& grid, const 
 // The dense check of r.trajectory (model.check at samples_between) and its largest ratios to the
 // joint limits, the whole torque against the effort limit. Throws std::runtime_error where a
 // joint leaves its position range (slowing down cannot help).
-void measure_check(OptimalRetimeResult& r, const JointModel& model, const JointBounds& bounds, const Eigen::VectorXd& q_start,
-                   int samples_between) {
+void measure_check(OptimalRetimeResult& r, const JointModel& model, const JointBounds& bounds,
+                   const Eigen::VectorXd& q_start, int samples_between) {
   const int dof = model.dof();
   r.report = model.check(r.trajectory, q_start, samples_between);
   if (r.report.position_excess > 0.0) {
@@ -126,8 +127,9 @@ void measure_check(OptimalRetimeResult& r, const JointModel& model, const JointB
 }
 
 // The fastest timing of `path` for `model` (see the file comment); options already checked.
-OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
-                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
+OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const JointModel& model, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options) {
   require_valid(options, model.dof());
   // The plan gives the DISP velocity-limit curve and the rests (the same for both profiles).
   if (limits.jerk) limits.validate(ProfileKind::scurve);
@@ -142,7 +144,9 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   std::vector<detail::Run> runs;
   const std::vector<detail::GridPoint> grid = joint_grid(smooth, model, options, q_start, runs);
   require_holding_possible(grid, bounds, model, smooth);
-  auto measure = [&](OptimalRetimeResult& r, int samples_between) { measure_check(r, model, bounds, q_start, samples_between); };
+  auto measure = [&](OptimalRetimeResult& r, int samples_between) {
+    measure_check(r, model, bounds, q_start, samples_between);
+  };
 
   OptimalRetimeResult result;
   // The grid solution sits exactly on its limits, and between grid points the coefficients
@@ -165,7 +169,8 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
       };
 
       if (limits.jerk) {
-        const detail::JerkLimitedSolution chosen = detail::jerk_limited_solution(problem, limits.acceleration, *limits.jerk);
+        const detail::JerkLimitedSolution chosen =
+            detail::jerk_limited_solution(problem, limits.acceleration, *limits.jerk);
         const detail::Parameterisation& fastest = chosen.fastest;
         const detail::AccelerationSteps& steps = chosen.steps;
         const double window = chosen.window;
@@ -208,7 +213,8 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
           measure(direct, std::max(options.check_samples_between, candidate_samples_between));
           // The same headroom as the grid laws' own: a law at its limits at the checked samples
           // may exceed them between (measured: 3·10⁻⁵ on a scaled UR5e move).
-          if (std::max({direct.velocity_ratio, direct.acceleration_ratio, direct.torque_ratio}) <= 1.0 - standing_headroom) {
+          if (std::max({direct.velocity_ratio, direct.acceleration_ratio, direct.torque_ratio}) <=
+              1.0 - standing_headroom) {
             direct.jerk_window = 0.0;
             return direct;
           }
@@ -228,20 +234,21 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
 
 }  // namespace
 
-bool JointModel::joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd&, const Eigen::VectorXd& q_ref,
-                                  const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1,
-                                  Eigen::VectorXd&) const {
+bool JointModel::joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd&,
+                                  const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s,
+                                  Eigen::VectorXd& q, Eigen::VectorXd& q1, Eigen::VectorXd&) const {
   joints(pose, per_sigma, q_ref, guess, s, q, q1);
   return false;
 }
 
-std::optional<Trajectory> JointModel::scaled_scurve(const Path&, const MetricSetd&, const Limits&, const Eigen::VectorXd&,
-                                                 double) const {
+std::optional<Trajectory> JointModel::scaled_scurve(const Path&, const MetricSetd&, const Limits&,
+                                                    const Eigen::VectorXd&, double) const {
   return std::nullopt;
 }
 
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
-                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const JointModel& model, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options) {
   require(q_start.size() == model.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the machine's dof " + std::to_string(model.dof()));
   require_finite(q_start, "q_start");

@@ -8,7 +8,8 @@
 
 namespace dispkin {
 
-OverlappedTrajectory::OverlappedTrajectory(Trajectory before, Trajectory after, double overlap, const Eigen::Vector3d& pivot)
+OverlappedTrajectory::OverlappedTrajectory(Trajectory before, Trajectory after, double overlap,
+                                           const Eigen::Vector3d& pivot)
     : before_(std::move(before)), after_(std::move(after)), overlap_(overlap), pivot_(pivot) {
   require_translation(pivot, "pivot");
   const double shorter = std::min(before_.duration(), after_.duration());
@@ -19,9 +20,9 @@ OverlappedTrajectory::OverlappedTrajectory(Trajectory before, Trajectory after, 
   const double gap = (via_.translation() - start.translation()).norm();
   const double turn = quaternion_log(Eigen::Quaterniond(via_.quaternion().conjugate() * start.quaternion())).norm();
   if (gap > 1e-9 || turn > 1e-9) {
-    throw std::invalid_argument(describe("after", start.translation(),
-                                         "must start where `before` ends (gap " + std::to_string(gap) + " m, " +
-                                             std::to_string(turn) + " rad)"));
+    throw std::invalid_argument(describe(
+        "after", start.translation(),
+        "must start where `before` ends (gap " + std::to_string(gap) + " m, " + std::to_string(turn) + " rad)"));
   }
   via_point_ = via_ * pivot_;
 }

@@ -32,7 +32,8 @@ bool continues(const CurveSection& before, const CurveSection& after) {
 }
 bool continues(const SlerpBlendSection& before, const SlerpBlendSection& after) {
   return before.v1 == after.v0 && detail::same_bits(before.q_start.coeffs().data(), after.q_start.coeffs().data(), 4) &&
-         detail::same_bits(before.a.data(), after.a.data(), 3) && detail::same_bits(before.b.data(), after.b.data(), 3) &&
+         detail::same_bits(before.a.data(), after.a.data(), 3) &&
+         detail::same_bits(before.b.data(), after.b.data(), 3) &&
          detail::same_bits(before.position.a[0].data(), after.position.a[0].data(), 12) &&
          detail::same_bits(before.pivot.data(), after.pivot.data(), 3);
 }
@@ -54,7 +55,8 @@ bool moving(const CurveSection& after) {
 bool moving(const SlerpBlendSection& after) { return after.twist(0.0).vector() != Eigen::Matrix<double, 6, 1>::Zero(); }
 bool moving(const ArcSection& after) {
   return after.rotation_angle != 0.0 ||
-         (after.angle != 0.0 && after.normal.cross(after.start * after.pivot - after.center) != Eigen::Vector3d::Zero());
+         (after.angle != 0.0 &&
+          after.normal.cross(after.start * after.pivot - after.center) != Eigen::Vector3d::Zero());
 }
 
 // The twist sizes per unit τ at the end of `before` and the start of `after`, when the junction
@@ -146,7 +148,9 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
     if (v_lim < speed_cap) {
       // v_lim = L √(a / A) (doc/planning.md eq. 11) binds: the fastest object runs at V √(a / A), lowered by
       // the part's largest A from what its gentlest piece would allow (at most the cap).
-      const double best = r.least_acceleration > 0.0 ? std::min(speed_cap, b.length * std::sqrt(acceleration / r.least_acceleration)) : speed_cap;
+      const double best = r.least_acceleration > 0.0
+                              ? std::min(speed_cap, b.length * std::sqrt(acceleration / r.least_acceleration))
+                              : speed_cap;
       loss = (1.0 - v_lim / best) / curvature_ratio_loss;
     } else {
       loss = (b.length - std::max(r.least_middle_speed, floor)) / b.length / cruise_ratio_loss;
@@ -206,7 +210,8 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
   // fastest object is not what binds. Nor where the curvature rule (doc/planning.md eq. 11) holds the speed
   // below the limit (v_lim = L √(a / A) is the same for every piece): there is no cruise at
   // the limit to keep. Nor where the rotational limit (doc/planning.md eq. 36) makes the length.
-  const bool curvature_binds = whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
+  const bool curvature_binds =
+      whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
   const double floor = std::max(minimum, whole.omega * rotation_scale);  // per unit τ of the section
   if (!lin || lin->interpolation != Interpolation::decoupled || floor >= whole.length || curvature_binds) {
     out.push_back(section, {source, 0.0, 1.0}, whole);
@@ -227,8 +232,10 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
   const double travel = ((lin->end * lin->pivot) - (lin->start * lin->pivot)).norm();
   const Eigen::Vector3d pivot_start = lin->start * lin->pivot, pivot_travel = lin->end * lin->pivot - pivot_start;
   std::size_t count = 1;  // pieces emitted or promised
-  const std::size_t expected = static_cast<std::size_t>(std::min(max_split, std::ceil(variation(all) / cruise_ratio_loss)));
-  if (out.size() + expected > out.sections.capacity()) out.reserve(std::max(out.size() + 2 * expected, 2 * out.sections.capacity()));
+  const std::size_t expected =
+      static_cast<std::size_t>(std::min(max_split, std::ceil(variation(all) / cruise_ratio_loss)));
+  if (out.size() + expected > out.sections.capacity())
+    out.reserve(std::max(out.size() + 2 * expected, 2 * out.sections.capacity()));
   Posed piece_start = lin->start;
   // A piece [t0, t1]: the same motion between its ends (the ends shared with the neighbours, the
   // section's own at τ = 0 and 1), its exact peak as length, and the acceleration bound of the
@@ -280,7 +287,8 @@ std::vector<SpeedLimit> speed_limit_segments(const PlannedSections& planned, con
     if (limits.angular_acceleration && bounds.omega_dot > 0.0)
       v_lim = std::min(v_lim, length * std::sqrt(*limits.angular_acceleration / bounds.omega_dot));
     double level = limits.velocity;
-    if (v_lim < limits.velocity) level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
+    if (v_lim < limits.velocity)
+      level = limits.velocity * std::pow(step, std::ceil(std::log(v_lim / limits.velocity) / std::log(step)));
     const double ceiling = level;
     if (move.velocity) level = std::min(level, *move.velocity);
     // The angular acceleration from s̈, |ω_τ| |s̈| / L ≤ α_max, caps the section's path
@@ -314,7 +322,8 @@ void Limits::validate(ProfileKind kind) const {
   require_limit(velocity, "velocity");
   require_limit(acceleration, "acceleration");
   if (kind == ProfileKind::scurve) {
-    if (!jerk) throw std::invalid_argument("jerk is missing: the S-curve profile needs a jerk limit (or use the trapezoid)");
+    if (!jerk)
+      throw std::invalid_argument("jerk is missing: the S-curve profile needs a jerk limit (or use the trapezoid)");
     require_limit(*jerk, "jerk");
   } else if (jerk) {
     throw std::invalid_argument(describe("jerk", *jerk, "is not used by the trapezoidal profile; leave it unset"));
@@ -351,14 +360,16 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   require(!options.joint_metric || options.min_section_lengths.empty(), "min_section_lengths size",
           static_cast<unsigned long>(options.min_section_lengths.size()),
           "must be 0 with a joint_metric (it gives the minimum lengths)");
-  require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity", options.start_velocity,
-          "must be finite and ≥ 0 (m/s)");
-  require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration, "must be finite (m/s²)");
+  require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity",
+          options.start_velocity, "must be finite and ≥ 0 (m/s)");
+  require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration,
+          "must be finite (m/s²)");
   const Path& path = blended ? *blended : given_path;
   const std::vector<Section>& sections = path.sections();
   const std::size_t n = sections.size();
   // A joint metric is per section of the path as planned, so it is evaluated after blending.
-  const std::vector<double> minimum = options.joint_metric ? options.joint_metric(path, limits) : options.min_section_lengths;
+  const std::vector<double> minimum =
+      options.joint_metric ? options.joint_metric(path, limits) : options.min_section_lengths;
   const std::string minimum_name = options.joint_metric ? "joint_metric(path, limits)" : "min_section_lengths";
   if (!(minimum.empty() || minimum.size() == n)) {
     require(false, minimum_name + " size", static_cast<unsigned long>(minimum.size()),
@@ -387,7 +398,8 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   if (limits.angular_velocity) {
     // The rotational limit as one more term of the length (doc/planning.md eq. 36):
     // |ω| = |ω_τ| ṡ / L ≤ ω_max.
-    for (std::size_t k = 0; k < planned.size(); ++k) lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
+    for (std::size_t k = 0; k < planned.size(); ++k)
+      lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
   }
   // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
   // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening (doc/planning.md eq. 6). A piece
@@ -460,7 +472,8 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
     law.end_run();
     const double rest = k + 1 == count ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1);
     rests.push_back(rest);
-    if (k + 1 < count) stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, options.corner_tolerance)});
+    if (k + 1 < count)
+      stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, options.corner_tolerance)});
     first = k + 1;
   }
   Trajectory from_rest(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),

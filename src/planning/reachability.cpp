@@ -36,7 +36,8 @@ void ConvexPolygon::clip(const HalfPlane& h) {
   for (const Eigen::Vector2d& v : kept) {
     if (unique.empty() || (v - unique.back()).lpNorm<Eigen::Infinity>() > tolerance_) unique.push_back(v);
   }
-  while (unique.size() > 1 && (unique.front() - unique.back()).lpNorm<Eigen::Infinity>() <= tolerance_) unique.pop_back();
+  while (unique.size() > 1 && (unique.front() - unique.back()).lpNorm<Eigen::Infinity>() <= tolerance_)
+    unique.pop_back();
   vertices_ = std::move(unique);
 }
 

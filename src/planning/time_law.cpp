@@ -61,7 +61,8 @@ std::vector<double> TimeLaw::characteristic_times() const {
   // Phases of vanishing length (a cruise over 10⁻⁹ of a law's distance, left by rounding) add
   // instants that coincide within 10⁻⁹ of the duration: one of each is kept.
   const double same = 1e-9 * duration();
-  times.erase(std::unique(times.begin(), times.end(), [same](double a, double b) { return b - a <= same; }), times.end());
+  times.erase(std::unique(times.begin(), times.end(), [same](double a, double b) { return b - a <= same; }),
+              times.end());
   return times;
 }
 

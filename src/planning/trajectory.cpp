@@ -29,9 +29,12 @@ void require_sections(const SampledPath& path) {
   for (std::size_t k = 0; k < sections.size(); ++k) {
     require_valid(sections[k], [k] { return indexed("sections", k); });
     const double L = lengths[k];
-    require_lazily(std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), [k] { return indexed("section_lengths", k); }, L,
-                   [] { return "must be finite and > 0, with a finite inverse"; });
-    if (k > 0) require_join(section_end(sections[k - 1]), section_start(sections[k]), [k] { return indexed("sections", k) + ".start"; });
+    require_lazily(
+        std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), [k] { return indexed("section_lengths", k); }, L,
+        [] { return "must be finite and > 0, with a finite inverse"; });
+    if (k > 0)
+      require_join(section_end(sections[k - 1]), section_start(sections[k]),
+                   [k] { return indexed("sections", k) + ".start"; });
   }
   require(std::isfinite(path.length()), "length", path.length(), "must be finite (the sum of the section lengths)");
 }
@@ -42,16 +45,19 @@ void require_speed_limits(const std::vector<SpeedLimit>& limits, double length, 
   for (std::size_t k = 0; k < limits.size(); ++k) {
     const SpeedLimit& l = limits[k];
     const auto name = [k](const char* field) { return [k, field] { return indexed("speed_limits", k) + field; }; };
-    require_lazily(std::isfinite(l.start_s) && l.start_s >= last_end - tol_s && l.start_s <= length + tol_s, name(".start_s"),
-                   l.start_s, [] { return "must lie on the path, after the span before it"; });
-    require_lazily(std::isfinite(l.length) && l.length >= 0.0 && l.start_s + l.length <= length + tol_s, name(".length"), l.length,
-                   [] { return "must be finite, not negative, and end on the path"; });
+    require_lazily(std::isfinite(l.start_s) && l.start_s >= last_end - tol_s && l.start_s <= length + tol_s,
+                   name(".start_s"), l.start_s, [] { return "must lie on the path, after the span before it"; });
+    require_lazily(std::isfinite(l.length) && l.length >= 0.0 && l.start_s + l.length <= length + tol_s,
+                   name(".length"), l.length, [] { return "must be finite, not negative, and end on the path"; });
     // Curvature lowers a limit below the system velocity (never to 0); above 1e12 m/s durations overflow.
-    require_lazily(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name(".limit"), l.limit,
-                   [] { return "must be in (0, 1e12] m/s"; });
-    require_lazily(l.acceleration == 0.0 || (l.acceleration >= numeric_range::min_limit && l.acceleration <= numeric_range::max_limit),
-                   name(".acceleration"), l.acceleration, [] { return "must be 0 (none of its own) or in [1e-12, 1e12] m/s²"; });
-    require_lazily(l.ceiling == 0.0 || (l.ceiling >= l.limit && l.ceiling <= numeric_range::max_limit), name(".ceiling"), l.ceiling,
+    require_lazily(std::isfinite(l.limit) && l.limit > 0.0 && l.limit <= numeric_range::max_limit, name(".limit"),
+                   l.limit, [] { return "must be in (0, 1e12] m/s"; });
+    require_lazily(l.acceleration == 0.0 ||
+                       (l.acceleration >= numeric_range::min_limit && l.acceleration <= numeric_range::max_limit),
+                   name(".acceleration"), l.acceleration,
+                   [] { return "must be 0 (none of its own) or in [1e-12, 1e12] m/s²"; });
+    require_lazily(l.ceiling == 0.0 || (l.ceiling >= l.limit && l.ceiling <= numeric_range::max_limit),
+                   name(".ceiling"), l.ceiling,
                    [&] { return "must be 0 (the limit) or in [limit, 1e12] m/s, the limit being " + number(l.limit); });
     last_end = l.start_s + l.length;
   }
@@ -79,7 +85,8 @@ double peak_until(const Profile& law, double t) {
     peak = std::max(peak, p.start.v);
     if (p.jerk != 0.0) {
       const double at = -p.start.a / p.jerk;  // time into the phase where s̈ = 0
-      if (at > 0.0 && at < p.duration && law.phase_start_time(i) + at < t) peak = std::max(peak, p.start.v + 0.5 * p.start.a * at);
+      if (at > 0.0 && at < p.duration && law.phase_start_time(i) + at < t)
+        peak = std::max(peak, p.start.v + 0.5 * p.start.a * at);
     }
   }
   return peak;
@@ -89,7 +96,8 @@ double peak_until(const Profile& law, double t) {
 
 void Trajectory::require_consistent() const { check(true); }
 
-Trajectory Trajectory::with_events(TimeLaw law, std::vector<double> rests, std::vector<Stop> stops, double factor) const {
+Trajectory Trajectory::with_events(TimeLaw law, std::vector<double> rests, std::vector<Stop> stops,
+                                   double factor) const {
   Trajectory out(*this);  // the copy is not checked again
   out.law_ = std::move(law);
   out.rest_s_ = std::move(rests);
@@ -108,9 +116,10 @@ void Trajectory::check(bool sections) const {
   require_speed_limits(speed_limits_, length, tol_s);
   const std::vector<TimeLaw::Piece>& pieces = law_.pieces();
   require(!pieces.empty(), "time_law pieces", 0L, "must hold at least one law");
-  require_lazily(law_.run_count() >= 1 && law_.run_count() <= pieces.size(), [] { return std::string("time_law runs"); },
-                 static_cast<unsigned long>(law_.run_count()),
-                 [&] { return "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()); });
+  require_lazily(
+      law_.run_count() >= 1 && law_.run_count() <= pieces.size(), [] { return std::string("time_law runs"); },
+      static_cast<unsigned long>(law_.run_count()),
+      [&] { return "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()); });
   std::size_t span = 0;  // the first span the next law may cross
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const TimeLaw::Piece& p = pieces[k];
@@ -123,8 +132,9 @@ void Trajectory::check(bool sections) const {
     // precision (1.6e-8 m/s), not to rounding.
     require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
     // A law cut where another takes over runs for a part of its own duration.
-    require_lazily(!p.cut || (p.end_time > p.start_time && p.end_time - p.start_time < p.profile.duration()), name(" cut time"),
-                   p.end_time, [&] { return "must lie inside the law's own run, after " + number(p.start_time) + " s"; });
+    require_lazily(!p.cut || (p.end_time > p.start_time && p.end_time - p.start_time < p.profile.duration()),
+                   name(" cut time"), p.end_time,
+                   [&] { return "must lie inside the law's own run, after " + number(p.start_time) + " s"; });
     const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.distance(), tol_s, span);
     // A cut law runs up to its cut only: what it would have done after it is not checked.
     const double peak = p.cut ? peak_until(p.profile, p.end_time - p.start_time) : p.profile.peak_velocity();
@@ -137,12 +147,14 @@ void Trajectory::check(bool sections) const {
         const ProfilePhase& phase = p.profile.phase(i);
         const double a = std::max(std::abs(phase.start.a), std::abs(phase.end.a));
         require_lazily(a <= limits_->acceleration * (1.0 + 1e-6), name(" acceleration"), a, [&] {
-          return "must be within the trajectory's acceleration limit " + number(limits_->acceleration) + " m/s² in every phase";
+          return "must be within the trajectory's acceleration limit " + number(limits_->acceleration) +
+                 " m/s² in every phase";
         });
       }
     }
-    require_lazily(speed_limits_.empty() || detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
-                                                                    p.start_s, peak, speed_limits_, span, tol_s),
+    require_lazily(speed_limits_.empty() ||
+                       detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
+                                                p.start_s, peak, speed_limits_, span, tol_s),
                    name(" velocity"), peak,
                    [&] { return std::string("must keep under the velocity limit of every span it crosses"); });
   }
@@ -151,9 +163,11 @@ void Trajectory::check(bool sections) const {
   // The law runs to the path's end, or stops before it at rest (stopped_at).
   // (Messages are made on failure only: events check every trajectory they make.)
   const auto named = [](const char* name) { return [name] { return std::string(name); }; };
-  require_lazily(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, named("time_law distance"), law_end, [&] {
-    return "must be the path length, the sum of the section lengths, " + number(length) + " m (or less, stopped at rest)";
-  });
+  require_lazily(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, named("time_law distance"),
+                 law_end, [&] {
+                   return "must be the path length, the sum of the section lengths, " + number(length) +
+                          " m (or less, stopped at rest)";
+                 });
   if (end_s_ < length) {
     // A stop before the end is a rest of the trajectory, with its reason (stopped_at).
     const auto near = [&](double s) { return std::abs(s - law_end) <= tol_s; };
@@ -163,39 +177,47 @@ void Trajectory::check(bool sections) const {
                      return "must be the path length, the sum of the section lengths, " + number(length) +
                             " m, unless the motion stopped there: a rest position and a stop at that position";
                    });
-    const ProfileState end = last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
+    const ProfileState end =
+        last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
     // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
     double scale_v = last.profile.peak_velocity();
     for (const SpeedLimit& l : speed_limits_) scale_v = std::max(scale_v, l.top());
     const double scale_a = limits_ ? limits_->acceleration : std::abs(end.a);
-    require_lazily(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a, named("time_law end velocity"), end.v,
-                   [&] { return "must be 0 (at rest) where the motion stops before the end of the path, at s = " + number(law_end) + " m"; });
+    require_lazily(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a,
+                   named("time_law end velocity"), end.v, [&] {
+                     return "must be 0 (at rest) where the motion stops before the end of the path, at s = " +
+                            number(law_end) + " m";
+                   });
   }
   if (limits_) {
     require(limits_->acceleration >= numeric_range::min_limit && limits_->acceleration <= numeric_range::max_limit,
             "limits.acceleration", limits_->acceleration, "must be in [1e-12, 1e12] m/s²");
     if (limits_->jerk)
-      require(*limits_->jerk >= numeric_range::min_limit && *limits_->jerk <= numeric_range::max_limit, "limits.jerk", *limits_->jerk,
-              "must be in [1e-12, 1e12] m/s³");
+      require(*limits_->jerk >= numeric_range::min_limit && *limits_->jerk <= numeric_range::max_limit, "limits.jerk",
+              *limits_->jerk, "must be in [1e-12, 1e12] m/s³");
   }
   require_lazily(override_ >= min_override && override_ <= max_override, named("override_factor"), override_,
                  [] { return "must be in [" + number(min_override) + ", " + number(max_override) + "]"; });
   for (std::size_t k = 0; k < rest_s_.size(); ++k) {
     const double s = rest_s_[k];
-    require_lazily(std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
-                   [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
+    require_lazily(
+        std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
+        [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
   }
   for (std::size_t k = 0; k < stops_.size(); ++k)
-    require_lazily(std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
-                   [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
-  require_lazily(sources_.empty() || sources_.size() == path_.section_count(), [] { return std::string("section_sources size"); },
-                 static_cast<unsigned long>(sources_.size()),
-                 [&] { return "must be 0 or the section count " + std::to_string(path_.section_count()); });
+    require_lazily(
+        std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
+        [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
+  require_lazily(
+      sources_.empty() || sources_.size() == path_.section_count(), [] { return std::string("section_sources size"); },
+      static_cast<unsigned long>(sources_.size()),
+      [&] { return "must be 0 or the section count " + std::to_string(path_.section_count()); });
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const SectionSource& source = sources_[k];
-    require_lazily(source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
-                   [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
-                   [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
+    require_lazily(
+        source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
+        [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
+        [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
   }
 }
 

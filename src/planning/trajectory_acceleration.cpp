@@ -37,16 +37,16 @@ Twistd twist_rate(const ArcSection& arc, double tau) noexcept {
 // ω_b = h ω, ω_b′ = h² ω′; v_b = Rᵀ h c′ − ω_b × p gives v_b′ = −ω_b × (Rᵀ h c′) + Rᵀ h² c″ − ω_b′ × p.
 Twistd twist_rate(const CurveSection& curve, double tau) noexcept {
   const double h = curve.span(), v = curve.v0 + tau * h;
-  const Eigen::Vector3d phi = curve.rotation.value(v), phi_1 = curve.rotation.first(v), phi_2 = curve.rotation.second(v);
+  const Eigen::Vector3d phi = curve.rotation.value(v), phi_1 = curve.rotation.first(v),
+                        phi_2 = curve.rotation.second(v);
   const Eigen::Vector3d omega_rate = right_jacobian_times(phi, phi_2) + detail::right_jacobian_rate_times(phi, phi_1);
   Posed at;
   Twistd xi;
   curve.at(tau, at, xi);
   const Eigen::Quaterniond to_body = at.quaternion().conjugate();
   const Eigen::Vector3d angular_rate = h * h * omega_rate;
-  const Eigen::Vector3d linear_rate =
-      -xi.angular.cross(to_body * (h * curve.position.first(v))) + to_body * (h * h * curve.position.second(v)) -
-      angular_rate.cross(curve.pivot);
+  const Eigen::Vector3d linear_rate = -xi.angular.cross(to_body * (h * curve.position.first(v))) +
+                                      to_body * (h * h * curve.position.second(v)) - angular_rate.cross(curve.pivot);
   return Twistd(linear_rate, angular_rate);
 }
 

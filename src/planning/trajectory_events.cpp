@@ -43,7 +43,8 @@ std::vector<LimitedSegment> staircase(const std::vector<SpeedLimit>& spans, doub
 double smallest_acceleration(const std::vector<SpeedLimit>& spans, double s0, double s1, double a_max) {
   double a = a_max;
   for (const SpeedLimit& span : spans)
-    if (span.start_s < s1 && span.start_s + span.length > s0 && span.acceleration > 0.0) a = std::min(a, span.acceleration);
+    if (span.start_s < s1 && span.start_s + span.length > s0 && span.acceleration > 0.0)
+      a = std::min(a, span.acceleration);
   return a;
 }
 
@@ -59,8 +60,9 @@ ProfileState state_at(const TimeLaw& law, double t) {
 
 const TimeLawLimits& limits_of(const std::optional<TimeLawLimits>& limits, const char* what) {
   if (!limits)
-    throw std::invalid_argument(std::string(what) +
-                                ": the trajectory holds no time-law limits (a re-timed or older trajectory): plan it again");
+    throw std::invalid_argument(
+        std::string(what) +
+        ": the trajectory holds no time-law limits (a re-timed or older trajectory): plan it again");
   return *limits;
 }
 
@@ -107,7 +109,8 @@ Trajectory Trajectory::stopped_at(double t) const {
     if (std::none_of(rests.begin(), rests.end(), near))
       rests.insert(std::upper_bound(rests.begin(), rests.end(), s_end), s_end);
     if (std::none_of(stops.begin(), stops.end(), [&](const Stop& other) { return near(other.s); })) {
-      const auto after = std::upper_bound(stops.begin(), stops.end(), s_end, [](double s, const Stop& other) { return s < other.s; });
+      const auto after =
+          std::upper_bound(stops.begin(), stops.end(), s_end, [](double s, const Stop& other) { return s < other.s; });
       stops.insert(after, Stop{s_end, stopped_reason + number(at) + " s"});
     }
   }
@@ -150,12 +153,14 @@ void append_continuation(TimeLaw& law, const ProfileState& x, const std::vector<
     const std::vector<LimitedSegment> segments = staircase(spans, s0, s1, factor);
     if (segments.empty()) continue;
     const bool moving = first && (x.v != 0.0 || (limits.jerk && x.a != 0.0));
-    std::vector<Profile> laws = moving ? detail::staircase_law_from_state(segments, limits.acceleration, limits.jerk, x.v, x.a, tol)
-                                       : velocity_limited_law(segments, limits.acceleration, limits.jerk);
+    std::vector<Profile> laws =
+        moving ? detail::staircase_law_from_state(segments, limits.acceleration, limits.jerk, x.v, x.a, tol)
+               : velocity_limited_law(segments, limits.acceleration, limits.jerk);
     if (moving && !keep_under_curve(laws, s0, spans, tol)) {
       if (above == AboveCurve::refuse)
-        throw std::invalid_argument(describe("state", Eigen::Vector2d(x.v, x.a),
-                                             "lies above the velocity-limit curve ahead: no law from it keeps to the curve"));
+        throw std::invalid_argument(
+            describe("state", Eigen::Vector2d(x.v, x.a),
+                     "lies above the velocity-limit curve ahead: no law from it keeps to the curve"));
       laws = detail::stop_then_staircase(segments, limits.acceleration, limits.jerk, x.v, x.a, tol);
     }
     double s = s0;
@@ -191,7 +196,8 @@ Trajectory Trajectory::resumed_at(double t) const {
   const double tol = 1e-9 * length();
   std::vector<Stop> stops = stops_;
   std::vector<double> rests = rest_s_;
-  const auto ours = std::find_if(stops.begin(), stops.end(), [&](const Stop& x) { return is_stop_of_event(x) && std::abs(x.s - end_s_) <= tol; });
+  const auto ours = std::find_if(stops.begin(), stops.end(),
+                                 [&](const Stop& x) { return is_stop_of_event(x) && std::abs(x.s - end_s_) <= tol; });
   if (ours != stops.end()) {
     stops.erase(ours);
     const auto rest = std::find_if(rests.begin(), rests.end(), [&](double r) { return std::abs(r - end_s_) <= tol; });
@@ -211,8 +217,7 @@ Trajectory Trajectory::with_override(double t, double factor) const {
   const TimeLawLimits& limits = limits_of(limits_, "with_override");
   // A stop keeps braking as fast as it can; the new factor holds from the resumption on. At the
   // end nothing is left to run at it.
-  if (stopped() || t >= duration())
-    return with_events(law_, rest_s_, stops_, factor);
+  if (stopped() || t >= duration()) return with_events(law_, rest_s_, stops_, factor);
   const double at = std::max(t, 0.0);
   const ProfileState x = state_at(law_, at);
   // Within rounding of the end nothing is left to run at it.
@@ -226,9 +231,11 @@ Trajectory Trajectory::starting_from(double velocity, double acceleration) const
   const TimeLawLimits& limits = limits_of(limits_, "starting_from");
   require(std::isfinite(velocity) && velocity >= 0.0, "velocity", velocity, "must be finite and ≥ 0 (m/s)");
   require(std::isfinite(acceleration), "acceleration", acceleration, "must be finite (m/s²)");
-  require(!stopped(), "velocity", velocity, "starts a trajectory that runs to the end of its path: this one was stopped");
+  require(!stopped(), "velocity", velocity,
+          "starts a trajectory that runs to the end of its path: this one was stopped");
   if (!limits.jerk)
-    require(acceleration == 0.0, "acceleration", acceleration, "is not a state of the trapezoid law (s̈ jumps there): it must be 0");
+    require(acceleration == 0.0, "acceleration", acceleration,
+            "is not a state of the trapezoid law (s̈ jumps there): it must be 0");
   require(std::abs(acceleration) <= limits.acceleration * (1.0 + 1e-12), "acceleration", acceleration,
           "must be within the acceleration limit, ±" + number(limits.acceleration) + " m/s²");
   // Above the limit at the start (scaled by the override, doc/events.md eq. 5) the law eases down onto it as
@@ -241,8 +248,8 @@ Trajectory Trajectory::starting_from(double velocity, double acceleration) const
   if (limits.jerk && acceleration < 0.0) {
     const double release = acceleration * acceleration / (2.0 * *limits.jerk);
     require(release <= velocity * (1.0 + 1e-9), "acceleration", acceleration,
-            "brakes harder than the jerk limit " + number(*limits.jerk) + " m/s³ can end before the velocity " + number(velocity) +
-                " m/s reaches 0 (it needs at least " + number(release) + " m/s)");
+            "brakes harder than the jerk limit " + number(*limits.jerk) + " m/s³ can end before the velocity " +
+                number(velocity) + " m/s reaches 0 (it needs at least " + number(release) + " m/s)");
   }
   if (velocity == 0.0 && acceleration == 0.0) return *this;
   // Moving at s = 0: no rest there; the other rests stay.
@@ -251,13 +258,15 @@ Trajectory Trajectory::starting_from(double velocity, double acceleration) const
     if (r > 1e-9 * length()) rests.push_back(r);
   TimeLaw law;
   try {
-    append_continuation(law, ProfileState{0.0, velocity, acceleration, 0.0}, speed_limits_, rests, length(), limits, override_,
-                        AboveCurve::refuse);
+    append_continuation(law, ProfileState{0.0, velocity, acceleration, 0.0}, speed_limits_, rests, length(), limits,
+                        override_, AboveCurve::refuse);
   } catch (const std::invalid_argument&) {
     const double run = rests.empty() ? length() : rests.front();
-    throw std::invalid_argument(describe("velocity", velocity, "with acceleration " + number(acceleration) +
-                                                                   " m/s² cannot keep to the velocity-limit curve of the first run of "
-                                                                   "the path, " + number(run) + " m, and come to rest within it"));
+    throw std::invalid_argument(describe("velocity", velocity,
+                                         "with acceleration " + number(acceleration) +
+                                             " m/s² cannot keep to the velocity-limit curve of the first run of "
+                                             "the path, " +
+                                             number(run) + " m, and come to rest within it"));
   }
   return with_events(std::move(law), std::move(rests), stops_, override_);
 }
@@ -309,16 +318,19 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
   TimeLaw law = motion_until(at, x);
   const std::optional<Splice> splice = splice_point(*this, longer, x.s);
   if (!splice)
-    throw std::invalid_argument(describe("longer", "Trajectory", "must go on from a section start of this path ahead of s = " +
-                                                                    number(x.s) + " m (the position at t = " + number(at) +
-                                                                    " s), at the same pose: it is no plan of this path extended"));
+    throw std::invalid_argument(describe("longer", "Trajectory",
+                                         "must go on from a section start of this path ahead of s = " + number(x.s) +
+                                             " m (the position at t = " + number(at) +
+                                             " s), at the same pose: it is no plan of this path extended"));
   // This path up to the splice, longer's from there on, its positions moved by Δ.
   const std::size_t here = splice->here, there = splice->there;
   const double s_here = here == section_count() ? length() : path_.section_start(here);
   const double shift = s_here - longer.path_.section_start(there), tol = 1e-9 * std::max(length(), longer.length());
   std::vector<Section> sections(path_.sections().begin(), path_.sections().begin() + static_cast<std::ptrdiff_t>(here));
-  std::vector<double> lengths(path_.section_lengths().begin(), path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(here));
-  sections.insert(sections.end(), longer.path_.sections().begin() + static_cast<std::ptrdiff_t>(there), longer.path_.sections().end());
+  std::vector<double> lengths(path_.section_lengths().begin(),
+                              path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(here));
+  sections.insert(sections.end(), longer.path_.sections().begin() + static_cast<std::ptrdiff_t>(there),
+                  longer.path_.sections().end());
   lengths.insert(lengths.end(), longer.path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(there),
                  longer.path_.section_lengths().end());
   std::vector<SectionSource> sources;
@@ -342,7 +354,8 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
   // The rests and stops of this path before the splice (not a stop of an event: the motion goes
   // on from it), longer's from it on.
   const auto event_stop_at = [&](double s) {
-    return std::any_of(stops_.begin(), stops_.end(), [&](const Stop& stop) { return is_stop_of_event(stop) && std::abs(stop.s - s) <= tol; });
+    return std::any_of(stops_.begin(), stops_.end(),
+                       [&](const Stop& stop) { return is_stop_of_event(stop) && std::abs(stop.s - s) <= tol; });
   };
   std::vector<double> rests;
   std::vector<Stop> stops;
@@ -356,8 +369,8 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
     if (stop.s >= s_here - shift - tol) stops.push_back(Stop{stop.s + shift, stop.reason});
   SampledPath spliced(std::move(sections), std::move(lengths));
   append_continuation(law, x, spans, rests, spliced.length(), limits, override_);
-  return Trajectory(std::move(spliced), std::move(law), std::move(spans), std::move(rests), std::move(stops), std::move(sources),
-                    limits_, override_);
+  return Trajectory(std::move(spliced), std::move(law), std::move(spans), std::move(rests), std::move(stops),
+                    std::move(sources), limits_, override_);
 }
 
 }  // namespace dispkin

@@ -51,11 +51,15 @@ std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& s
   u[0] = v_start;
   u[n] = v_end;
   for (std::size_t i = 1; i < n; ++i) u[i] = std::min(segments[i - 1].limit, segments[i].limit);
-  for (std::size_t i = n; i-- > 0;) u[i] = std::min(u[i], detail::reachable_velocity(u[i + 1], u[i], segments[i].length, accel(i), j_max));
-  for (std::size_t i = 0; i < n; ++i) u[i + 1] = std::min(u[i + 1], detail::reachable_velocity(u[i], u[i + 1], segments[i].length, accel(i), j_max));
-  if (std::abs(u[0] - v_start) > 1e-12 * std::max(1.0, v_start) || std::abs(u[n] - v_end) > 1e-12 * std::max(1.0, v_end)) {
-    throw std::invalid_argument(describe("v_end", v_end, "cannot be reached from v_start = " + std::to_string(v_start) +
-                                                             " within the segments' length"));
+  for (std::size_t i = n; i-- > 0;)
+    u[i] = std::min(u[i], detail::reachable_velocity(u[i + 1], u[i], segments[i].length, accel(i), j_max));
+  for (std::size_t i = 0; i < n; ++i)
+    u[i + 1] = std::min(u[i + 1], detail::reachable_velocity(u[i], u[i + 1], segments[i].length, accel(i), j_max));
+  if (std::abs(u[0] - v_start) > 1e-12 * std::max(1.0, v_start) ||
+      std::abs(u[n] - v_end) > 1e-12 * std::max(1.0, v_end)) {
+    throw std::invalid_argument(
+        describe("v_end", v_end,
+                 "cannot be reached from v_start = " + std::to_string(v_start) + " within the segments' length"));
   }
 
   std::vector<Profile> laws;
@@ -96,13 +100,15 @@ std::pair<Profile, Profile> cut_in_cruise(const Profile& law, int cruise) {
     jerks[static_cast<std::size_t>(i)] = law.phase(i).jerk;
   }
   const ProfileState start = law.state_at(0.0), end = law.state_at(law.duration());
-  Profile before = Profile::from_phases(durations.data(), jerks.data(), cruise + 1, start.v, 0.0, s_cut, c.start.v, 0.0);
+  Profile before =
+      Profile::from_phases(durations.data(), jerks.data(), cruise + 1, start.v, 0.0, s_cut, c.start.v, 0.0);
   const int rest = law.phase_count() - cruise;
   for (int i = 0; i < rest; ++i) {
     durations[static_cast<std::size_t>(i)] = i == 0 ? c.duration - half : law.phase(cruise + i).duration;
     jerks[static_cast<std::size_t>(i)] = law.phase(cruise + i).jerk;
   }
-  Profile after = Profile::from_phases(durations.data(), jerks.data(), rest, c.start.v, 0.0, law.distance() - s_cut, end.v, 0.0);
+  Profile after =
+      Profile::from_phases(durations.data(), jerks.data(), rest, c.start.v, 0.0, law.distance() - s_cut, end.v, 0.0);
   return {std::move(before), std::move(after)};
 }
 
@@ -124,7 +130,8 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
   std::vector<Profile> candidates[4];
   // A run of one segment is crossed by its chain law, time-optimal for one segment.
   const bool open_end = run.v_end > 0.0, open_start = run.v_start > 0.0;
-  const bool ends_fit = (!open_end || run.v_end == run.segments.back().limit) && (!open_start || run.v_start == run.segments.front().limit);
+  const bool ends_fit = (!open_end || run.v_end == run.segments.back().limit) &&
+                        (!open_start || run.v_start == run.segments.front().limit);
   // No jerk-limited law is faster than the trapezoid law over the run (§5): where the chain is
   // within 0.1 % of it, at most that much is left to gain: not worth the search.
   const bool worth = run.segments.size() > 1 && ends_fit &&
@@ -135,12 +142,14 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
     const std::vector<double> reversed_accelerations(run.accelerations.rbegin(), run.accelerations.rend());
     int i = 0;
     for (const bool settle : {false, true}) {
-      if (auto forward = detail::carried_acceleration_law(run.segments, run.accelerations, j_max, run.v_start, run.v_end, settle))
+      if (auto forward =
+              detail::carried_acceleration_law(run.segments, run.accelerations, j_max, run.v_start, run.v_end, settle))
         candidates[i] = std::move(*forward);
       ++i;
       // Built from the end and run backwards, it enters the limits ahead as the forward law
       // leaves them behind.
-      if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end, run.v_start, settle))
+      if (auto backward =
+              detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end, run.v_start, settle))
         candidates[i] = detail::reversed_in_time(*backward);
       ++i;
     }
@@ -176,7 +185,8 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   for (std::size_t k = 0; k < segments.size(); ++k) {
     const double own = segments[k].acceleration;
     const double a_k = own > 0.0 ? std::min(own, a_max) : a_max;
-    const std::optional<int> cruise = k + 1 < segments.size() ? cruise_at_limit(chain[k], segments[k].limit) : std::nullopt;
+    const std::optional<int> cruise =
+        k + 1 < segments.size() ? cruise_at_limit(chain[k], segments[k].limit) : std::nullopt;
     if (!cruise) {
       run.segments.push_back(segments[k]);
       run.accelerations.push_back(a_k);

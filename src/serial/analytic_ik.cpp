@@ -82,11 +82,21 @@ const detail::ChainGeometry& checked_geometry(const RevoluteChain& chain) {
 void require_family(const detail::ChainGeometry& g, IkFamily family) {
   const char* why = "";
   switch (family) {
-    case IkFamily::spherical_wrist: why = g.why_not_spherical; break;
-    case IkFamily::three_parallel: why = g.why_not_three_parallel; break;
-    case IkFamily::offset_wrist: why = g.why_not_offset; break;
-    case IkFamily::general: why = "no analytic solver for the general family (use a numeric solver)"; break;
-    case IkFamily::locked_joint: why = "a 7R chain needs a value of its locked joint (locked_joint_inverse)"; break;
+    case IkFamily::spherical_wrist:
+      why = g.why_not_spherical;
+      break;
+    case IkFamily::three_parallel:
+      why = g.why_not_three_parallel;
+      break;
+    case IkFamily::offset_wrist:
+      why = g.why_not_offset;
+      break;
+    case IkFamily::general:
+      why = "no analytic solver for the general family (use a numeric solver)";
+      break;
+    case IkFamily::locked_joint:
+      why = "a 7R chain needs a value of its locked joint (locked_joint_inverse)";
+      break;
   }
   if (*why != '\0')
     throw std::invalid_argument(describe("family", to_string(family), std::string("does not fit the chain: ") + why));
@@ -96,11 +106,16 @@ void require_family(const detail::ChainGeometry& g, IkFamily family) {
 
 std::string to_string(IkFamily family) {
   switch (family) {
-    case IkFamily::spherical_wrist: return "spherical_wrist";
-    case IkFamily::three_parallel: return "three_parallel";
-    case IkFamily::offset_wrist: return "offset_wrist";
-    case IkFamily::general: return "general";
-    case IkFamily::locked_joint: return "locked_joint";
+    case IkFamily::spherical_wrist:
+      return "spherical_wrist";
+    case IkFamily::three_parallel:
+      return "three_parallel";
+    case IkFamily::offset_wrist:
+      return "offset_wrist";
+    case IkFamily::general:
+      return "general";
+    case IkFamily::locked_joint:
+      return "locked_joint";
   }
   return "unknown";
 }

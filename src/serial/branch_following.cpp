@@ -113,17 +113,17 @@ std::optional<Eigen::VectorXd> solution_on_branch(const SerialArm& arm, const Po
 namespace {
 
 // The argument follow() names in its errors: the translation of pose k.
-std::string pose_named(std::size_t k) {
-  return "poses[" + std::to_string(k) + "] translation";
-}
+std::string pose_named(std::size_t k) { return "poses[" + std::to_string(k) + "] translation"; }
 
 }  // namespace
 
-std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
-                                    const InverseOptions& options, const RedundancyRule& redundancy_rule) {
+std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses,
+                                    const Eigen::VectorXd& q_start, const InverseOptions& options,
+                                    const RedundancyRule& redundancy_rule) {
   if (q_start.size() != arm.dof())
-    throw std::invalid_argument(describe("q_start", q_start, "expected " + std::to_string(arm.dof()) +
-                                                                  " joint values, got " + std::to_string(q_start.size())));
+    throw std::invalid_argument(
+        describe("q_start", q_start,
+                 "expected " + std::to_string(arm.dof()) + " joint values, got " + std::to_string(q_start.size())));
   require_finite(q_start, "q_start");
   // inverse_solutions' own checks, which tracking would skip.
   require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
@@ -148,12 +148,14 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   for (std::size_t k = 0; k < poses.size(); ++k) {
     std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, poses[k], previous, rule);
     if (!q)
-      throw std::runtime_error(describe(pose_named(k), poses[k].translation(),
-                                        "has no inverse-kinematics solution within the joint limits" +
-                                            std::string(redundancy.has_parameter() ? " at the redundancy value reached" : "")));
+      throw std::runtime_error(
+          describe(pose_named(k), poses[k].translation(),
+                   "has no inverse-kinematics solution within the joint limits" +
+                       std::string(redundancy.has_parameter() ? " at the redundancy value reached" : "")));
     if (redundancy.has_parameter()) {
-      // The step of eq. 45 from the solution at the previous value; kept only where the branch
-      // goes on at the new value within the joint limits (else the value stays: eq. 41).
+      // The step of doc/inverse-kinematics.md eq. 45 from the solution at the previous value; kept only where the
+      // branch goes on at the new value within the joint limits (else the value stays: doc/inverse-kinematics.md eq.
+      // 41).
       const double delta = detail::parameter_step(arm, *q, (*q - previous).norm(), redundancy_rule);
       const double moved = std::clamp(*rule.options.redundancy + delta, redundancy.lower, redundancy.upper);
       if (moved != *rule.options.redundancy) {
@@ -168,11 +170,11 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
       }
       const double step = (*q - previous).lpNorm<Eigen::Infinity>();
       if (!(step <= max_redundant_step))
-        throw std::runtime_error(describe(
-            pose_named(k), poses[k].translation(),
-            "is reached at the redundancy value reached only by a joint step of " + std::to_string(step) +
-                " rad, more than " + std::to_string(max_redundant_step) +
-                " (the branch ends there, or the poses are too far apart: sample the path more densely)"));
+        throw std::runtime_error(
+            describe(pose_named(k), poses[k].translation(),
+                     "is reached at the redundancy value reached only by a joint step of " + std::to_string(step) +
+                         " rad, more than " + std::to_string(max_redundant_step) +
+                         " (the branch ends there, or the poses are too far apart: sample the path more densely)"));
     }
     previous = std::move(*q);
     path.push_back(previous);

@@ -25,11 +25,12 @@ void chain_pose_and_twist(const RevoluteChain& chain, const double* q, const dou
                           Twistd& body_twist, Eigen::Vector3d* axis_points) noexcept {
   // Spatial velocity field x ↦ v_s + ω_s × x: joint i adds q̇ᵢ ωᵢ′ × (x − pᵢ′) = q̇ᵢ (pᵢ′ × ωᵢ′ + ωᵢ′ × x).
   Eigen::Vector3d v_s = Eigen::Vector3d::Zero(), w_s = Eigen::Vector3d::Zero();
-  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed&) {
-    if (axis_points) axis_points[i] = p;
-    v_s += qd[i] * p.cross(w);
-    w_s += qd[i] * w;
-  });
+  const Posed t =
+      detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed&) {
+        if (axis_points) axis_points[i] = p;
+        v_s += qd[i] * p.cross(w);
+        w_s += qd[i] * w;
+      });
   pose = t * chain.tip_at_zero;
   // Body twist: ω_b = Rᵀ ω_s, v_b = Rᵀ (velocity of the tool origin o) = Rᵀ (v_s + ω_s × o).
   const Eigen::Quaterniond r_inv = pose.quaternion().conjugate();
@@ -44,16 +45,17 @@ Posed jacobian_pass(const RevoluteChain& chain, const double* q, ChainJacobianRe
   // The same pass as chain_pose_and_twist, keeping ωᵢ′ (bottom rows) and pᵢ′ (top rows, until the
   // tool origin o is known and they become ωᵢ′ × (o − pᵢ′)).
   const int n = chain.dof();
-  const Posed t = detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed& motion) {
-    jacobian.block<3, 1>(3, i) = w;
-    jacobian.block<3, 1>(0, i) = p;
-    if (record) {
-      const auto k = static_cast<std::size_t>(i);
-      record->axes[k] = w;
-      record->points[k] = p;
-      record->motions[k] = motion;
-    }
-  });
+  const Posed t =
+      detail::chain_pass(chain, q, [&](int i, const Eigen::Vector3d& w, const Eigen::Vector3d& p, const Posed& motion) {
+        jacobian.block<3, 1>(3, i) = w;
+        jacobian.block<3, 1>(0, i) = p;
+        if (record) {
+          const auto k = static_cast<std::size_t>(i);
+          record->axes[k] = w;
+          record->points[k] = p;
+          record->motions[k] = motion;
+        }
+      });
   if (record) record->joints = n;
   const Posed pose = t * chain.tip_at_zero;
   const Eigen::Vector3d& o = pose.translation();

@@ -44,7 +44,8 @@ struct ChainPassRecord {
 };
 
 //! chain_body_jacobian (chain_kinematics.hpp) that also fills `record`.
-Posed chain_body_jacobian(const RevoluteChain& chain, const double* q, Eigen::Ref<Eigen::Matrix<double, 6, Eigen::Dynamic>> jacobian,
+Posed chain_body_jacobian(const RevoluteChain& chain, const double* q,
+                          Eigen::Ref<Eigen::Matrix<double, 6, Eigen::Dynamic>> jacobian,
                           ChainPassRecord& record) noexcept;
 
 }  // namespace detail

@@ -43,7 +43,8 @@ struct Hermite {
 };
 
 [[noreturn]] void not_followed(double s, const std::string& why) {
-  throw std::invalid_argument(describe("trajectory", s, "the arm cannot follow it on its branch at this path position (m): " + why));
+  throw std::invalid_argument(
+      describe("trajectory", s, "the arm cannot follow it on its branch at this path position (m): " + why));
 }
 
 // The joints of one section on nodes τ_i = i/n, entered at τ = 0 (forward) or τ = 1 (backwards)
@@ -108,8 +109,8 @@ class SectionFollower {
     for (Eigen::Index j = 0; j < q.size(); ++j) {
       if (!(q(j) >= limits_.lower(j) - 1e-9 && q(j) <= limits_.upper(j) + 1e-9)) {
         not_followed(s_at(k, tau), "joint " + std::to_string(j + 1) + " would be at " + std::to_string(q(j)) +
-                                        " rad, outside its range [" + std::to_string(limits_.lower(j)) + ", " +
-                                        std::to_string(limits_.upper(j)) + "]");
+                                       " rad, outside its range [" + std::to_string(limits_.lower(j)) + ", " +
+                                       std::to_string(limits_.upper(j)) + "]");
       }
     }
     return q;
@@ -136,8 +137,8 @@ FollowedTrajectory FollowedTrajectory::from_start(Trajectory trajectory, const S
   return FollowedTrajectory(std::move(trajectory), arm, q_start, false, spacing);
 }
 
-FollowedTrajectory FollowedTrajectory::to_end(Trajectory trajectory, const SerialArm& arm,
-                                              const Eigen::VectorXd& q_end, double spacing) {
+FollowedTrajectory FollowedTrajectory::to_end(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_end,
+                                              double spacing) {
   return FollowedTrajectory(std::move(trajectory), arm, q_end, true, spacing);
 }
 
@@ -159,8 +160,8 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& a
   const Posed reached = chain_pose(chain_, q_given.data());
   require(reached.is_approx(wanted, 1e-9), given, q_given,
           std::string("its forward kinematics must be the trajectory's ") + (backwards ? "end" : "start") +
-              " pose to 1e-9 (translation off by " + std::to_string((reached.translation() - wanted.translation()).norm()) +
-              " m)");
+              " pose to 1e-9 (translation off by " +
+              std::to_string((reached.translation() - wanted.translation()).norm()) + " m)");
 
   const SampledPath& path = trajectory_.path();
   const std::size_t sections = path.section_count();
@@ -176,10 +177,9 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& a
       nodes[k] = follower.follow(k, n, q_in, backwards);
       if (nodes[k].midpoint_error <= midpoint_tolerance) break;
       if (refinement == max_refinements) {
-        not_followed(path.section_start(k), "the joints between nodes " + std::to_string(length / n) +
-                                                " m apart still miss the branch by " +
-                                                std::to_string(nodes[k].midpoint_error) +
-                                                " rad (a branch change or a near-singular pose)");
+        not_followed(path.section_start(k),
+                     "the joints between nodes " + std::to_string(length / n) + " m apart still miss the branch by " +
+                         std::to_string(nodes[k].midpoint_error) + " rad (a branch change or a near-singular pose)");
       }
     }
     midpoint_error_ = std::max(midpoint_error_, nodes[k].midpoint_error);
@@ -207,7 +207,7 @@ JointTrajectorySample FollowedTrajectory::sample(double t) const noexcept {
   const SampledPath& path = trajectory_.path();
   const double duration = trajectory_.duration();
   const double time = t >= duration ? duration : (t > 0.0 ? t : 0.0);  // NaN: the start
-  std::size_t piece = trajectory_.time_law().size();  // no hint: the law Trajectory::sample finds
+  std::size_t piece = trajectory_.time_law().size();                   // no hint: the law Trajectory::sample finds
   const ProfileState state = trajectory_.time_law().state_at(time, piece);
   // The ends are the end nodes exactly (s at the end may round off the last section's length).
   std::size_t k = 0;

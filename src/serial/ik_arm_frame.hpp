@@ -44,7 +44,9 @@ EIGEN_ALWAYS_INLINE PlaneVector operator+(const PlaneVector& a, const PlaneVecto
 EIGEN_ALWAYS_INLINE PlaneVector operator-(const PlaneVector& a, const PlaneVector& b) noexcept {
   return {a.xi - b.xi, a.eta - b.eta};
 }
-EIGEN_ALWAYS_INLINE double dot(const PlaneVector& a, const PlaneVector& b) noexcept { return a.xi * b.xi + a.eta * b.eta; }
+EIGEN_ALWAYS_INLINE double dot(const PlaneVector& a, const PlaneVector& b) noexcept {
+  return a.xi * b.xi + a.eta * b.eta;
+}
 //! The plane's cross product a × b (its component along +y).
 EIGEN_ALWAYS_INLINE double cross(const PlaneVector& a, const PlaneVector& b) noexcept {
   return a.xi * b.eta - a.eta * b.xi;
@@ -58,7 +60,8 @@ EIGEN_ALWAYS_INLINE CosSin add(const CosSin& a, const CosSin& b) noexcept {
   return {a.c * b.c - a.s * b.s, a.s * b.c + a.c * b.s};
 }
 
-//! Appends a solution exact to rounding (measured error 0, doc/inverse-kinematics.md eq. 26), its joints wrapped to (−π, π].
+//! Appends a solution exact to rounding (measured error 0, doc/inverse-kinematics.md eq. 26), its joints wrapped to
+//! (−π, π].
 EIGEN_ALWAYS_INLINE void push_exact(IkSolutionSet& out, const std::array<double, 6>& q) noexcept {
   if (out.count == 8) return;
   const auto k = static_cast<std::size_t>(out.count++);
@@ -88,8 +91,8 @@ inline ArmFrame arm_frame(const RevoluteChain& chain) {
 
 //! A candidate all of whose subproblems are this far inside their solvable range (margin, §2)
 //! is exact to rounding and is kept without measuring its pose error (doc/inverse-kinematics.md
-//! (doc/inverse-kinematics.md eq. 26)); nearer a tangency or a singularity rounding is amplified, and it is measured and
-//! polished.
+//! (doc/inverse-kinematics.md eq. 26)); nearer a tangency or a singularity rounding is amplified, and it is measured
+//! and polished.
 constexpr double well_inside = 1e-4;
 
 //! Joint 1 of the arm frame: the turn about z that brings a point W (arm coordinates) to the
@@ -129,14 +132,14 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
 //! point X carried by joint 3; ‖L₂ + R(σ₃q₃) L₃‖ = ‖w − p₂‖ gives q₃, the plane rotation from
 //! L₂ + R(σ₃q₃) L₃ to w − p₂ gives q₂ (doc/inverse-kinematics.md eq. 32).
 struct PlaneElbow {
-  PlaneVector p2;           //!< axis 2
-  PlaneVector upper;        //!< L₂ = p₃ − p₂
-  PlaneVector fore;         //!< L₃ = X − p₃
-  double half_sum = 0.0;    //!< ½(‖L₂‖² + ‖L₃‖²)
-  double r = 1.0;           //!< ‖L₂‖ ‖L₃‖: subproblem 3's √(A² + B²)
-  CosSin phase;             //!< (A, B) / r: the angle φ of doc/inverse-kinematics.md eq. 4
-  double phase_angle = 0.0; //!< φ
-  double sign3 = 1.0;       //!< σ₃ = ω₃ · ω₂
+  PlaneVector p2;            //!< axis 2
+  PlaneVector upper;         //!< L₂ = p₃ − p₂
+  PlaneVector fore;          //!< L₃ = X − p₃
+  double half_sum = 0.0;     //!< ½(‖L₂‖² + ‖L₃‖²)
+  double r = 1.0;            //!< ‖L₂‖ ‖L₃‖: subproblem 3's √(A² + B²)
+  CosSin phase;              //!< (A, B) / r: the angle φ of doc/inverse-kinematics.md eq. 4
+  double phase_angle = 0.0;  //!< φ
+  double sign3 = 1.0;        //!< σ₃ = ω₃ · ω₂
 };
 
 //! The elbow of `chain` in `frame` for the point `x` carried by joint 3 (base coordinates).
@@ -187,7 +190,9 @@ inline ElbowTurn elbow_turn(const PlaneElbow& e, const PlaneVector& w) noexcept 
 }
 
 //! The joint-3 turn as a plane rotation: R(σ₃ q₃).
-EIGEN_ALWAYS_INLINE CosSin plane_turn3(const PlaneElbow& e, const CosSin& q3) noexcept { return {q3.c, e.sign3 * q3.s}; }
+EIGEN_ALWAYS_INLINE CosSin plane_turn3(const PlaneElbow& e, const CosSin& q3) noexcept {
+  return {q3.c, e.sign3 * q3.s};
+}
 
 //! L₂ + R(σ₃q₃) L₃: where joints 2–3 carry X relative to axis 2 before joint 2 turns.
 EIGEN_ALWAYS_INLINE PlaneVector elbow_reach(const PlaneElbow& e, const CosSin& q3) noexcept {
@@ -199,39 +204,39 @@ EIGEN_ALWAYS_INLINE PlaneVector elbow_reach(const PlaneElbow& e, const CosSin& q
 //! of its closed form in the arm frame (doc/inverse-kinematics.md §10, eqs. 29–34).
 struct OrthoParallel {
   ArmFrame frame;
-  PlaneElbow elbow;                               //!< X = the wrist centre c
-  double lateral = 0.0;                           //!< b: the y coordinate of c in the arm frame
-  Eigen::Vector3d centre_in_tip = Eigen::Vector3d::Zero();  //!< M⁻¹ c: c in the tip frame at q = 0
-  Eigen::Vector3d axis6_in_tip = Eigen::Vector3d::UnitZ();  //!< R_Mᵀ ω₆
-  Eigen::Vector3d axis5_in_tip = Eigen::Vector3d::UnitY();  //!< R_Mᵀ ω₅
-  Eigen::Matrix3d wrist_rows = Eigen::Matrix3d::Identity(); //!< rows ω₄, ω₅, ω₄ × ω₅ (arm coordinates)
-  double sign6 = 1.0;                             //!< σ₆ = ω₄ · ω₆ (±1)
+  PlaneElbow elbow;                                          //!< X = the wrist centre c
+  double lateral = 0.0;                                      //!< b: the y coordinate of c in the arm frame
+  Eigen::Vector3d centre_in_tip = Eigen::Vector3d::Zero();   //!< M⁻¹ c: c in the tip frame at q = 0
+  Eigen::Vector3d axis6_in_tip = Eigen::Vector3d::UnitZ();   //!< R_Mᵀ ω₆
+  Eigen::Vector3d axis5_in_tip = Eigen::Vector3d::UnitY();   //!< R_Mᵀ ω₅
+  Eigen::Matrix3d wrist_rows = Eigen::Matrix3d::Identity();  //!< rows ω₄, ω₅, ω₄ × ω₅ (arm coordinates)
+  double sign6 = 1.0;                                        //!< σ₆ = ω₄ · ω₆ (±1)
 };
 
 //! The constants of `chain` with wrist centre `centre`; false unless axis 1 ⊥ axis 2 to 10⁻¹⁴
 //! (the caller has checked the rest: an exactly fitting parallel_23 spherical wrist that flips).
 bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& centre, OrthoParallel& out);
 
-//! All solutions of the pose by doc/inverse-kinematics.md eqs. 29–34, appended to `out` as exact to rounding (eq. 26). False
-//! when some subproblem is near its tangency, the wrist near its singularity, or a branch misses
-//! the positioning residual of doc/inverse-kinematics.md eq. 26: then nothing is appended and the general path decides.
+//! All solutions of the pose by doc/inverse-kinematics.md eqs. 29–34, appended to `out` as exact to rounding (eq. 26).
+//! False when some subproblem is near its tangency, the wrist near its singularity, or a branch misses the positioning
+//! residual of doc/inverse-kinematics.md eq. 26: then nothing is appended and the general path decides.
 bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolutionSet& out);
 
 //! Three parallel axes (Universal Robots) with axis 1 ⊥ axes 2 ∥ 3 ∥ 4 to rounding: the per-chain
-//! constants of the closed form (doc/inverse-kinematics.md eq. 12) in the arm frame (doc/inverse-kinematics.md §10, eq. 35).
-//! The wrist vectors are kept in the tip frame at q = 0 (rotated by R_Mᵀ), so that a pose enters
-//! through one product to_arm · R_T.
+//! constants of the closed form (doc/inverse-kinematics.md eq. 12) in the arm frame (doc/inverse-kinematics.md §10, eq.
+//! 35). The wrist vectors are kept in the tip frame at q = 0 (rotated by R_Mᵀ), so that a pose enters through one
+//! product to_arm · R_T.
 struct ThreeParallelPlane {
   ArmFrame frame;
-  PlaneElbow elbow;                                          //!< X = p₄
-  double lateral = 0.0;                                      //!< b of c = axes 5 ∩ 6
-  double sign4 = 1.0;                                        //!< σ₄ = ω₄ · ω₂
-  Eigen::Vector3d centre_in_tip = Eigen::Vector3d::Zero();   //!< M⁻¹ c
-  Eigen::Vector3d axis6 = Eigen::Vector3d::UnitZ();          //!< R_Mᵀ ω₆
+  PlaneElbow elbow;                                         //!< X = p₄
+  double lateral = 0.0;                                     //!< b of c = axes 5 ∩ 6
+  double sign4 = 1.0;                                       //!< σ₄ = ω₄ · ω₂
+  Eigen::Vector3d centre_in_tip = Eigen::Vector3d::Zero();  //!< M⁻¹ c
+  Eigen::Vector3d axis6 = Eigen::Vector3d::UnitZ();         //!< R_Mᵀ ω₆
   // q₅ by subproblem 4 (doc/inverse-kinematics.md eq. 8) with h = ω₂, k = ω₅, p = ω₆: A cos q₅ + B sin q₅ = d − K.
-  double q5_offset = 0.0;                                    //!< K = (ω₅·ω₆)(ω₅·ω₂)
-  double q5_r = 1.0;                                         //!< √(A² + B²)
-  CosSin q5_phase;                                           //!< (A, B) / r
+  double q5_offset = 0.0;  //!< K = (ω₅·ω₆)(ω₅·ω₂)
+  double q5_r = 1.0;       //!< √(A² + B²)
+  CosSin q5_phase;         //!< (A, B) / r
   double q5_phase_angle = 0.0;
   //! R(ω₅, −q₅) v = along + cos q₅ normal − sin q₅ cross for v = ω₂, p₄ − c and x (the arm frame's
   //! x axis), all rotated by R_Mᵀ: the vectors joint 5 turns back, in three fixed parts each.
@@ -248,8 +253,8 @@ struct ThreeParallelPlane {
 //! 10⁻¹⁴ and subproblem 4 in q₅ is not degenerate.
 bool make_three_parallel_plane(const RevoluteChain& chain, const Eigen::Vector3d& centre, ThreeParallelPlane& out);
 
-//! All solutions of the pose by doc/inverse-kinematics.md eq. 12 in the arm frame (eq. 35), appended to `out` as exact to
-//! rounding. False (nothing appended) near a tangency or the wrist singularity.
+//! All solutions of the pose by doc/inverse-kinematics.md eq. 12 in the arm frame (eq. 35), appended to `out` as exact
+//! to rounding. False (nothing appended) near a tangency or the wrist singularity.
 bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& pose, IkSolutionSet& out);
 
 }  // namespace detail

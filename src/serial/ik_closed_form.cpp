@@ -86,7 +86,8 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
       q1_of_angle = t[0];
     }
     const Eigen::Vector3d arm_angles(q1_angle, t[1].angle(), t[2].angle());
-    // R_w ω₆ and R_w x₆ with R_w = (R₁R₂R₃)ᵀ R_G (doc/inverse-kinematics.md eq. 11), and e₁e₂e₃ c: rotations of vectors only.
+    // R_w ω₆ and R_w x₆ with R_w = (R₁R₂R₃)ᵀ R_G (doc/inverse-kinematics.md eq. 11), and e₁e₂e₃ c: rotations of vectors
+    // only.
     const auto from_base = [&](const Eigen::Vector3d& v) {
       return rotate(w3, t[2].inverse(), rotate(w2, t[1].inverse(), rotate(w1, t[0].inverse(), v)));
     };
@@ -97,7 +98,8 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
       const Eigen::Vector3d& p1 = chain.points[0];
       const Eigen::Vector3d& p2 = chain.points[1];
       const Eigen::Vector3d& p3 = chain.points[2];
-      const Eigen::Vector3d placed = rotate(w1, t[0], rotate(w2, t[1], rotate(w3, t[2], c - p3) + p3 - p2) + p2 - p1) + p1;
+      const Eigen::Vector3d placed =
+          rotate(w1, t[0], rotate(w2, t[1], rotate(w3, t[2], c - p3) + p3 - p2) + p2 - p1) + p1;
       exact = (placed - g_c).norm() <= exact_position;
     }
     if (!exact) {
@@ -105,7 +107,8 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
       measured = true;
       continue;
     }
-    // Exact to rounding (doc/inverse-kinematics.md eq. 26): q₆ by subproblem 1 for each wrist solution, or the flip (eq. 27).
+    // Exact to rounding (doc/inverse-kinematics.md eq. 26): q₆ by subproblem 1 for each wrist solution, or the flip
+    // (eq. 27).
     const Eigen::Vector3d b6 = from_base(g_x6);
     const auto q6_of = [&](std::size_t l) {
       return subproblem1_cs(w6, x6, rotate(w5, q45.second[l].inverse(), rotate(w4, q45.first[l].inverse(), b6)));

@@ -56,8 +56,8 @@ void validate_chain(const RevoluteChain& chain) {
     throw std::invalid_argument(describe("chain.axes", static_cast<long>(chain.axes.size()),
                                          "analytic IK needs a 6R chain, expected 6 joints"));
   for (std::size_t i = 0; i < 6; ++i) {
-    const bool fine = chain.axes[i].allFinite() && chain.points[i].allFinite() &&
-                      std::abs(chain.axes[i].norm() - 1.0) <= 1e-9;
+    const bool fine =
+        chain.axes[i].allFinite() && chain.points[i].allFinite() && std::abs(chain.axes[i].norm() - 1.0) <= 1e-9;
     if (fine) continue;  // messages are only built on failure: the real-time path checks too
     const std::string index = "[" + std::to_string(i) + "]";
     require_finite(chain.axes[i], "chain.axes" + index);
@@ -170,8 +170,8 @@ ChainGeometry analyse(const RevoluteChain& chain, double tolerance) {
 namespace {
 
 // ‖e₃ x − o‖ = ‖y − o‖ as an equation of q₃ (subproblem 3), o = axes 1 ∩ 2: e₁e₂ fix o.
-Harmonic shoulder_distance_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
-                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept {
+Harmonic shoulder_distance_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                                    const Eigen::Vector3d& y) noexcept {
   const Eigen::Vector3d& o = geometry.shoulder;
   const Eigen::Vector3d& p3 = chain.points[2];
   return subproblem3_harmonic(chain.axes[2], x - p3, o - p3, (y - o).squaredNorm());
@@ -179,8 +179,8 @@ Harmonic shoulder_distance_harmonic(const RevoluteChain& chain, const ChainGeome
 
 }  // namespace
 
-Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
-                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept {
+Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                                    const Eigen::Vector3d& y) noexcept {
   if (geometry.layout == PositionLayout::parallel_23) {
     // e₂e₃ keeps the component along ω₂: ω₂ · e₁⁻¹ y = ω₂ · x (subproblem 4 in −q₁).
     const Eigen::Vector3d& p1 = chain.points[0];
@@ -216,7 +216,7 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
     out.margin.fill(q1.margin);
     if (!q1.exists) return out;
     for (int l1 = 0; l1 < 2; ++l1) {
-      const CosSin minus_q1 = l1 == 0 ? q1.plus : q1.minus;  // the subproblem's angle is −q₁
+      const CosSin minus_q1 = l1 == 0 ? q1.plus : q1.minus;          // the subproblem's angle is −q₁
       const Eigen::Vector3d y1 = rotate(w1, minus_q1, y - p1) + p1;  // e₁⁻¹ y
       const Angles q3 = subproblem3(w3, x - p3, p2 - p3, (y1 - p2).squaredNorm());
       out.margin[static_cast<std::size_t>(2 * l1)] = out.margin[static_cast<std::size_t>(2 * l1 + 1)] =

@@ -79,16 +79,16 @@ struct ChainGeometry {
   Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();  //!< axes 1 ∩ 2
   bool wrist_meets = false;                            //!< axes 4, 5, 6 meet in one point
   Eigen::Vector3d wrist_centre = Eigen::Vector3d::Zero();
-  bool axes_45_meet = false;                           //!< axes 4 and 5 meet (offset wrist)
+  bool axes_45_meet = false;  //!< axes 4 and 5 meet (offset wrist)
   Eigen::Vector3d point_45 = Eigen::Vector3d::Zero();
-  bool three_parallel = false;                         //!< axes 2 ∥ 3 ∥ 4, axes 5 ∩ 6 (UR)
+  bool three_parallel = false;  //!< axes 2 ∥ 3 ∥ 4, axes 5 ∩ 6 (UR)
   Eigen::Vector3d point_56 = Eigen::Vector3d::Zero();
-  IkFamily family = IkFamily::general;                 //!< the recognised family
+  IkFamily family = IkFamily::general;  //!< the recognised family
   // Per-chain constants of the closed forms, worked out once with the geometry.
-  Motion tip_inverse;                                  //!< M⁻¹
-  JointThen tool;                                      //!< e₆(q₆) M split into fixed parts
-  Eigen::Vector3d normal_4 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₄ (x₄ of doc/inverse-kinematics.md eq. 12)
-  Eigen::Vector3d normal_6 = Eigen::Vector3d::UnitX(); //!< a unit vector ⊥ ω₆ (x₆ of doc/inverse-kinematics.md eq. 11)
+  Motion tip_inverse;                                   //!< M⁻¹
+  JointThen tool;                                       //!< e₆(q₆) M split into fixed parts
+  Eigen::Vector3d normal_4 = Eigen::Vector3d::UnitX();  //!< a unit vector ⊥ ω₄ (x₄ of doc/inverse-kinematics.md eq. 12)
+  Eigen::Vector3d normal_6 = Eigen::Vector3d::UnitX();  //!< a unit vector ⊥ ω₆ (x₆ of doc/inverse-kinematics.md eq. 11)
   //! The family's axes meet and are parallel to rounding (exact_fit_tolerance), not merely to the
   //! recognition tolerance: only then is a well-conditioned closed-form candidate exact to
   //! rounding without a check (doc/inverse-kinematics.md §8, eq. 26).
@@ -134,8 +134,8 @@ PositionSolutions solve_position(const RevoluteChain& chain, const ChainGeometry
 //! The positioning stage's first subproblem (q₁ by subproblem 4 for parallel_23, q₃ by
 //! subproblem 3 for intersecting_12; the layout must be one of them): no branch exists where
 //! its discriminant is negative.
-Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry,
-                                    const Eigen::Vector3d& x, const Eigen::Vector3d& y) noexcept;
+Harmonic first_positioning_harmonic(const RevoluteChain& chain, const ChainGeometry& geometry, const Eigen::Vector3d& x,
+                                    const Eigen::Vector3d& y) noexcept;
 
 //! Whether the elbow subproblem (q₃ by subproblem 3) of the parallel_23 layout is an equation
 //! of x and y alone: where axes 1 and 2 meet (the Jaco2). Elsewhere it depends on q₁'s branch.
@@ -176,8 +176,8 @@ inline PoseError motion_error(const Motion& t, const Motion& target) noexcept {
 }
 
 //! Newton's method on the full 6-D pose error (refine_pose, doc/inverse-kinematics.md (eq. 22)
-//! and (doc/inverse-kinematics.md eq. 23)) to rounding, with minimum-norm steps at singular q so that it converges there
-//! too. Returns the final error; q is updated in place and wrapped to (−π, π].
+//! and (doc/inverse-kinematics.md eq. 23)) to rounding, with minimum-norm steps at singular q so that it converges
+//! there too. Returns the final error; q is updated in place and wrapped to (−π, π].
 inline PoseError polish(const RevoluteChain& chain, const Posed& target, Vector6d& q, int max_iterations) noexcept {
   NewtonSettings settings;
   settings.tolerance = 1e-15;

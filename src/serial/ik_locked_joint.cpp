@@ -46,7 +46,8 @@ bool has_closed_form(IkFamily f) { return f == IkFamily::spherical_wrist || f ==
 LockedJoint find_locked_joint(const RevoluteChain& chain) {
   LockedJoint lock;
   if (chain.dof() != 7 || chain.points.size() != 7) return lock;
-  // Locking an end joint moves the rest of the chain rigidly (doc/inverse-kinematics.md eqs. 37, 38): its family is one for all values.
+  // Locking an end joint moves the rest of the chain rigidly (doc/inverse-kinematics.md eqs. 37, 38): its family is one
+  // for all values.
   for (const int joint : {6, 0}) {
     const RevoluteChain rest = rest_of(chain, joint == 6 ? 0 : 1);
     for (const bool from_tip : {false, true}) {
@@ -67,7 +68,8 @@ void locked_joint_inverse(const RevoluteChain& chain, const LockedJoint& lock, d
                           std::vector<Eigen::VectorXd>& out) {
   require_finite(value, "redundancy");
   require(lock.found(), "lock.joint", lock.joint, "no locked joint leaves a closed form");
-  // The pose the 6R chain must reach (doc/inverse-kinematics.md eq. 37 / 38), inverted when it is read from the tip (eq. 39).
+  // The pose the 6R chain must reach (doc/inverse-kinematics.md eq. 37 / 38), inverted when it is read from the tip
+  // (eq. 39).
   const auto j = static_cast<std::size_t>(lock.joint);
   const Posed unlock = rotation_about_line(chain.axes[j], chain.points[j], -value);
   Posed target = lock.joint == 6 ? pose * (chain.tip_at_zero.inverse() * unlock * chain.tip_at_zero) : unlock * pose;

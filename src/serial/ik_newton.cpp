@@ -1,8 +1,8 @@
 // Newton's method on the full pose error (ik_newton.hpp): with the tool pose (R, t) and the
 // geometric Jacobian J of one pass of the product of exponentials (chain_kinematics.hpp),
 //
-//   e = ( t_target − t,  log(R_target Rᵀ) ),     J_i = ( ωᵢ′ × (t − pᵢ′),  ωᵢ′ )        doc/inverse-kinematics.md (eq. 22)
-//   Δq = J⁻¹ e  where J is square and well conditioned,  J⁺ e  otherwise                   doc/inverse-kinematics.md (eq. 23)
+//   e = ( t_target − t,  log(R_target Rᵀ) ),     J_i = ( ωᵢ′ × (t − pᵢ′),  ωᵢ′ )        doc/inverse-kinematics.md (eq.
+//   22) Δq = J⁻¹ e  where J is square and well conditioned,  J⁺ e  otherwise doc/inverse-kinematics.md (eq. 23)
 //
 // (both sides of e are space-frame quantities at the tool origin, the convention of J).
 #include "ik_newton.hpp"
@@ -58,7 +58,8 @@ bool newton_step(const Jacobian& jacobian, const Residual& residual, const Newto
 
 // Jacobian: a 6 × n matrix type holding the chain's J (fixed 6 × 6, bounded, or dynamic).
 template <typename Jacobian>
-PoseError refine(const RevoluteChain& chain, const Posed& target, double* q_out, const NewtonSettings& settings) noexcept {
+PoseError refine(const RevoluteChain& chain, const Posed& target, double* q_out,
+                 const NewtonSettings& settings) noexcept {
   using Joints = Eigen::Matrix<double, Jacobian::ColsAtCompileTime, 1, 0, Jacobian::MaxColsAtCompileTime, 1>;
   const int n = chain.dof();
   Joints q = Eigen::Map<const Eigen::VectorXd>(q_out, n);
@@ -103,7 +104,8 @@ PoseError pose_error(const Posed& pose, const Posed& target) noexcept {
   return e;
 }
 
-PoseError refine_pose(const RevoluteChain& chain, const Posed& target, double* q, const NewtonSettings& settings) noexcept {
+PoseError refine_pose(const RevoluteChain& chain, const Posed& target, double* q,
+                      const NewtonSettings& settings) noexcept {
   const int n = chain.dof();
   if (n == 6) return refine<Eigen::Matrix<double, 6, 6>>(chain, target, q, settings);
   if (n <= max_newton_joints)

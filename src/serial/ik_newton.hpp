@@ -1,7 +1,7 @@
 // Newton's method on the full pose error of a revolute chain (doc/inverse-kinematics.md (eq. 22)
-// and (doc/inverse-kinematics.md eq. 23)): the one refinement of an inverse-kinematics solution in the serial plugin. The
-// analytic solvers finish every candidate with it, the numeric fallback brings its roots down
-// to rounding with it, and following a trajectory's branch tracks the next pose with it.
+// and (doc/inverse-kinematics.md eq. 23)): the one refinement of an inverse-kinematics solution in the serial plugin.
+// The analytic solvers finish every candidate with it, the numeric fallback brings its roots down to rounding with it,
+// and following a trajectory's branch tracks the next pose with it.
 #pragma once
 
 #include <limits>
@@ -48,7 +48,8 @@ struct NewtonSettings {
 //! stops at the tolerance, after max_iterations, at a step that is not finite or too large, at
 //! a singular J that may not take the minimum-norm step, or at the first step after the first
 //! that brings no progress (rounding reached, or no solution near). Returns q's error.
-PoseError refine_pose(const RevoluteChain& chain, const Posed& target, double* q, const NewtonSettings& settings) noexcept;
+PoseError refine_pose(const RevoluteChain& chain, const Posed& target, double* q,
+                      const NewtonSettings& settings) noexcept;
 
 //! Chains up to this many joints are refined in fixed-size storage.
 constexpr int max_newton_joints = 12;

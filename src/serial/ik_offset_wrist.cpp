@@ -65,7 +65,8 @@ Bracket refine_bracket(const OffsetWristSearch& search, std::size_t branch, doub
     double c = iteration % 4 == 3 ? 0.5 * (a + b) : (a * wb - b * wa) / (wb - wa);
     if (!(c > std::min(a, b) && c < std::max(a, b))) c = 0.5 * (a + b);
     double fc;
-    if (!search.evaluate(c, branch, fc) || fc == 0.0) return {c, 0.0, c, 0.0};  // (left the branch: rounding at its end)
+    if (!search.evaluate(c, branch, fc) || fc == 0.0)
+      return {c, 0.0, c, 0.0};  // (left the branch: rounding at its end)
     if ((fc < 0.0) == (fb < 0.0)) {
       b = c;
       fb = wb = fc;
@@ -109,7 +110,7 @@ bool minimise(const OffsetWristSearch& search, std::size_t branch, double sign, 
   double f1 = 0.0, f2 = 0.0;
   if (!search.evaluate(x1, branch, f1) || !search.evaluate(x2, branch, f2)) return false;
   for (int k = 0; k < 60 && hi - lo > 1e-10; ++k) {
-    if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;  // crossed zero: two roots
+    if (sign * f1 <= 0.0 || sign * f2 <= 0.0) break;                                  // crossed zero: two roots
     if (std::min(sign * f1, sign * f2) > touch_tolerance + slope * (hi - lo)) break;  // cannot reach zero
     if (sign * f1 < sign * f2) {
       hi = x2;
@@ -313,8 +314,8 @@ std::vector<Point> branch_end(const OffsetWristSearch& search, std::size_t b, do
   if (points.size() >= 2 && points[1].theta == theta_at(u1) && f_in != 0.0 &&
       search.evaluate(theta_at(u_probe), b, f_probe)) {
     const double sign = f_in < 0.0 ? -1.0 : 1.0;
-    const double h0 = sign * f_in;                                  // > 0
-    const double h1 = sign * (f_probe - f_in) / u_probe;            // slope of |f| in u
+    const double h0 = sign * f_in;                        // > 0
+    const double h1 = sign * (f_probe - f_in) / u_probe;  // slope of |f| in u
     const double h2 = (sign * points[1].value - h0 - h1 * u1) / (u1 * u1);
     const bool heads_to_zero = h1 < 0.0;
     const double u_min = h2 > 0.0 ? -h1 / (2.0 * h2) : u1;
@@ -389,8 +390,16 @@ void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi
   bool found = false;
   for (int k = 0; k < 80 && hi - lo > 1e-13; ++k) {
     double f;
-    if (m1 >= 0.0 && search.evaluate(x1, b, f)) { inside = x1; found = true; break; }
-    if (m2 >= 0.0 && search.evaluate(x2, b, f)) { inside = x2; found = true; break; }
+    if (m1 >= 0.0 && search.evaluate(x1, b, f)) {
+      inside = x1;
+      found = true;
+      break;
+    }
+    if (m2 >= 0.0 && search.evaluate(x2, b, f)) {
+      inside = x2;
+      found = true;
+      break;
+    }
     if (m1 > m2) {
       hi = x2;
       x2 = x1;
@@ -490,7 +499,8 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
       // straddle, from which it is then followed once round.
       double gap_theta = 0.0, gap_margin = 0.0;
       int k = 0;
-      while (k < n && !(dip_at(b, k) && straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin)))
+      while (k < n &&
+             !(dip_at(b, k) && straddled_gap(search, b, theta_of(k - 1), theta_of(k + 1), gap_theta, gap_margin)))
         ++k;
       if (k == n) {
         // Two samples repeated past the turn so that the wrap-around interval and extremum are

@@ -1,10 +1,10 @@
 // The spherical wrist on an ortho-parallel basis (Brandstötter, Angerer and Hofbaur 2014) in the
 // arm frame: axis 1 ⊥ axes 2 ∥ 3, wrist axes 4 ⊥ 5 ⊥ 6 with 4 ∥ 6 at q = 0. The general path
 // (ik_closed_form.cpp, doc/inverse-kinematics.md eq. 11) solves the same subproblems with rotations about general axes;
-// here the positioning stage is the plane problem of doc/inverse-kinematics.md eqs. 30–32 on per-chain constants and the
-// wrist reads its angles off two target vectors in the wrist's own basis (doc/inverse-kinematics.md eqs. 33–34), so a pose
-// costs a few hundred multiplications, six square roots and twenty arctangents for its eight
-// solutions. doc/inverse-kinematics.md §10.
+// here the positioning stage is the plane problem of doc/inverse-kinematics.md eqs. 30–32 on per-chain constants and
+// the wrist reads its angles off two target vectors in the wrist's own basis (doc/inverse-kinematics.md eqs. 33–34), so
+// a pose costs a few hundred multiplications, six square roots and twenty arctangents for its eight solutions.
+// doc/inverse-kinematics.md §10.
 #include "ik_arm_frame.hpp"
 
 namespace dispkin {
@@ -13,7 +13,8 @@ namespace detail {
 
 namespace {
 
-// The positioning residual ‖e₁e₂e₃ c − G c‖ (m) of doc/inverse-kinematics.md eq. 26 below which a branch counts as exact.
+// The positioning residual ‖e₁e₂e₃ c − G c‖ (m) of doc/inverse-kinematics.md eq. 26 below which a branch counts as
+// exact.
 constexpr double exact_position = 4e-15;
 
 // R_z(−q₁) v: a vector of arm coordinates into link 1's frame.
@@ -25,7 +26,6 @@ EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn1(const CosSin& q1, const Eigen::Vecto
 EIGEN_ALWAYS_INLINE Eigen::Vector3d unturn_y(const CosSin& t, const Eigen::Vector3d& v) noexcept {
   return {t.c * v.x() - t.s * v.z(), v.y(), t.c * v.z() + t.s * v.x()};
 }
-
 
 
 }  // namespace
@@ -89,12 +89,14 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
         out.count = start;
         return false;
       }
-      // The wrist (doc/inverse-kinematics.md eq. 33): a = R_w ω₆ and v = R_w ω₅ in the basis (ω₄, ω₅, ω₄ × ω₅), R_w = (R₁R₂R₃)ᵀ R_G.
+      // The wrist (doc/inverse-kinematics.md eq. 33): a = R_w ω₆ and v = R_w ω₅ in the basis (ω₄, ω₅, ω₄ × ω₅), R_w =
+      // (R₁R₂R₃)ᵀ R_G.
       const CosSin q23 = add(q2, plane_turn3(elbow, q3));
       const Eigen::Vector3d a = arm.wrist_rows * unturn_y(q23, h6);
       const Eigen::Vector3d v = arm.wrist_rows * unturn_y(q23, h5);
       const double gamma2 = a.y() * a.y() + a.z() * a.z();
-      if (!(gamma2 >= well_inside * a.squaredNorm())) {  // subproblem 2's margin sin² q₅ (doc/inverse-kinematics.md eq. 26)
+      if (!(gamma2 >=
+            well_inside * a.squaredNorm())) {  // subproblem 2's margin sin² q₅ (doc/inverse-kinematics.md eq. 26)
         out.count = start;
         return false;
       }
@@ -105,7 +107,8 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
           CosSin{a.z() * v.y() - a.y() * v.z(), a.x() * (a.y() * v.y() + a.z() * v.z()) - gamma2 * v.x()}.angle();
       const double q2_angle = q2.angle();
       push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], q4, q5, q6});
-      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], half_turn(q4), -q5, half_turn(q6)});  // doc/inverse-kinematics.md eq. 27
+      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], half_turn(q4), -q5,
+                       half_turn(q6)});  // doc/inverse-kinematics.md eq. 27
     }
   }
   return true;

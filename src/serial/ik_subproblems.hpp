@@ -83,8 +83,8 @@ inline Eigen::Matrix3d rotation(const Eigen::Vector3d& k, double angle) noexcept
 }
 
 //! The (at most two) angles of a scalar subproblem, labelled: `plus` = φ + acos, `minus` =
-//! φ − acos (as cosine and sine; .angle() gives the value). At a tangency both labels hold the same angle (one solution). `free`: every
-//! angle solves it (the geometry is degenerate there); `plus` = `minus` = 0 represents them.
+//! φ − acos (as cosine and sine; .angle() gives the value). At a tangency both labels hold the same angle (one
+//! solution). `free`: every angle solves it (the geometry is degenerate there); `plus` = `minus` = 0 represents them.
 struct Angles {
   CosSin plus;
   CosSin minus;
@@ -172,9 +172,11 @@ inline Angles subproblem3(const Eigen::Vector3d& k, const Eigen::Vector3d& u, co
 inline Harmonic subproblem4_harmonic(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p,
                                      double d) noexcept {
   const double kp = k.dot(p);
-  return {h.dot(p - kp * k), h.dot(k.cross(p)), d - kp * k.dot(h), std::sqrt(h.squaredNorm() * p.squaredNorm()) + 1e-300};
+  return {h.dot(p - kp * k), h.dot(k.cross(p)), d - kp * k.dot(h),
+          std::sqrt(h.squaredNorm() * p.squaredNorm()) + 1e-300};
 }
-inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p, double d) noexcept {
+inline Angles subproblem4(const Eigen::Vector3d& h, const Eigen::Vector3d& k, const Eigen::Vector3d& p,
+                          double d) noexcept {
   return solve_harmonic(subproblem4_harmonic(h, k, p, d));
 }
 
@@ -183,8 +185,8 @@ struct AnglePairs {
   std::array<CosSin, 2> first{};   //!< θ₁ for the labels + and −
   std::array<CosSin, 2> second{};  //!< θ₂ for the labels + and −
   bool exists = false;
-  bool single = false;  //!< tangency: both labels hold the same pair
-  double margin = -1.0; //!< γ² (1 − (k₁·k₂)²) / ‖p‖²: ≥ 0 where solvable
+  bool single = false;   //!< tangency: both labels hold the same pair
+  double margin = -1.0;  //!< γ² (1 − (k₁·k₂)²) / ‖p‖²: ≥ 0 where solvable
 };
 
 //! Subproblem 2: (θ₁, θ₂) with R(k₁, θ₁) R(k₂, θ₂) p = q for non-parallel unit axes through a

@@ -1,8 +1,8 @@
 // Three parallel axes (Universal Robots) in the arm frame, with Hawkins' order of the unknowns
 // (q₁, q₅, q₆, then the planar q₃, q₂ and q₄ as what the parallel axes leave of their sum): the
-// subproblems of doc/inverse-kinematics.md eq. 12 on per-chain constants (doc/inverse-kinematics.md §10, eq. 35). Joint 5's
-// rotations of the fixed wrist vectors are split into three parts once per chain, the pose enters
-// through one 3 × 3 product, and q₄ needs no arctangent of its own.
+// subproblems of doc/inverse-kinematics.md eq. 12 on per-chain constants (doc/inverse-kinematics.md §10, eq. 35). Joint
+// 5's rotations of the fixed wrist vectors are split into three parts once per chain, the pose enters through one 3 × 3
+// product, and q₄ needs no arctangent of its own.
 #include "ik_arm_frame.hpp"
 
 namespace dispkin {
@@ -18,7 +18,6 @@ ThreeParallelPlane::Split split_about(const Eigen::Vector3d& k, const Eigen::Vec
   const double kv = k.dot(v);
   return {kv * k, v - kv * k, k.cross(v)};
 }
-
 
 
 }  // namespace
@@ -59,7 +58,7 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
   // A = to_arm R_T: a vector of the tip frame at q = 0 (R_Mᵀ-rotated) into the arm frame through G.
   const Eigen::Matrix3d into_arm = arm.frame.to_arm * pose.rotation();
   const Eigen::Vector3d w = into_arm * arm.centre_in_tip + arm.frame.point(pose.translation());  // G c
-  const Eigen::Vector3d g6 = into_arm * arm.axis6;                                              // R_G ω₆
+  const Eigen::Vector3d g6 = into_arm * arm.axis6;                                               // R_G ω₆
   const Eigen::Vector3d& k6 = arm.axis6;
   const PlaneElbow& elbow = arm.elbow;
   // q₁: ω₂ · e₁⁻¹ G c = ω₂ · c (doc/inverse-kinematics.md eq. 30).
@@ -77,7 +76,8 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
     }
     const double sd = std::sqrt((1.0 - x) * (1.0 + x));
     const CosSin& p = arm.q5_phase;
-    const std::array<CosSin, 2> q5s{{{p.c * x - p.s * sd, p.s * x + p.c * sd}, {p.c * x + p.s * sd, p.s * x - p.c * sd}}};
+    const std::array<CosSin, 2> q5s{
+        {{p.c * x - p.s * sd, p.s * x + p.c * sd}, {p.c * x + p.s * sd, p.s * x - p.c * sd}}};
     const double half5 = CosSin{x, sd}.angle();
     // R_Gᵀ R₁ ω₂ in the tip frame: Aᵀ (−sin q₁, cos q₁, 0).
     const Eigen::Vector3d t = q1.c * into_arm.row(1).transpose() - q1.s * into_arm.row(0).transpose();
@@ -94,7 +94,8 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
       if (!(h6 > 1e-300)) return general();
       const CosSin q6{cosine / h6, -sine / h6};
       const double q6_angle = q6.angle();
-      // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄: the point y = H p₄ and the turn θ_H of R_H about y (doc/inverse-kinematics.md eq. 35).
+      // H = e₁⁻¹ G e₆⁻¹ e₅⁻¹ = e₂e₃e₄: the point y = H p₄ and the turn θ_H of R_H about y (doc/inverse-kinematics.md
+      // eq. 35).
       const CosSin back6 = q6.inverse();
       const Eigen::Vector3d to_p4 = w + into_arm * rotate(k6, back6, arm.arm_to_p4.back(q5));
       const Eigen::Vector3d hx = into_arm * rotate(k6, back6, arm.arm_x.back(q5));

@@ -135,15 +135,15 @@ Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const SerialArm& arm, cons
   Eigen::PartialPivLU<BodyJacobian> lu(j);
   double rcond = 0.0;
   if (!clears_singularity(j, lu, rcond)) {
-    throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " + std::to_string(rcond) + ")");
+    throw std::runtime_error("the arm is singular at " + where(t, s) + " (rcond of the Jacobian " +
+                             std::to_string(rcond) + ")");
   }
   return lu;
 }
 
 }  // namespace
 
-Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
-                               double t, double s) {
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s) {
   BodyJacobian j;
   FullJacobian full;
   const Eigen::Matrix<double, 6, 1> moving = factorised_jacobian(arm, q, full, j, t, s).solve(body.vector());
@@ -173,8 +173,8 @@ void rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, c
 
 }  // namespace
 
-void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
-                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
+                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
   rates(arm, q, body, body_rate, t, s, qd, qdd, nullptr);
 }
 

@@ -23,15 +23,14 @@ Eigen::VectorXd branch_solution(const SerialArm& arm, const Posed& pose, const E
 
 //! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
 //! joint speeds there are unbounded: slowing down cannot help).
-Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
-                               double t, double s);
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s);
 
 //! q̇ as joint_velocity gives it and, from the same factorisation of J_b(q), the joint
 //! acceleration of the body acceleration `body_rate`: J_b q̈ = ξ̇_b − J̇_b(q, q̇) q̇ (doc/retiming.md
 //! (doc/retiming.md eq. 27)). Per unit of path instead of time (ξ′, ξ″) it gives q′ and q″ (eq. 28). Throws as
 //! joint_velocity.
-void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate,
-                 double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd);
+void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
+                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd);
 
 //! joint_rates followed by the torques τ(q, q̇, q̈) and g(q) (SerialArm::torques) on the pass that
 //! gave J_b: one pass over the chain for all of them.

@@ -44,8 +44,12 @@ struct Turning {
 class OffsetWristSearch {
  public:
   OffsetWristSearch(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose)
-      : chain_(chain), geometry_(geometry), pose_(pose), g_(pose * chain.tip_at_zero.inverse()),
-        g_rotation_(g_.rotation()), cos_45_(chain.axes[3].dot(chain.axes[4])) {
+      : chain_(chain),
+        geometry_(geometry),
+        pose_(pose),
+        g_(pose * chain.tip_at_zero.inverse()),
+        g_rotation_(g_.rotation()),
+        cos_45_(chain.axes[3].dot(chain.axes[4])) {
     // The circle of w = axes 4 ∩ 5: G (R(ω₆, −θ)(w − p₆) + p₆), and R_G R(ω₆, −θ) ω₅, with
     // R(k, −θ) d = (k·d) k + cos θ d⊥ − sin θ k × d.
     const Eigen::Vector3d& k = chain.axes[5];
@@ -112,13 +116,11 @@ class OffsetWristSearch {
                           }),
                           1e-10);
     };
-    std::vector<double> ends = ends_of([&](const Eigen::Vector3d& y) {
-      return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y);
-    });
+    std::vector<double> ends = ends_of(
+        [&](const Eigen::Vector3d& y) { return first_positioning_harmonic(chain_, geometry_, geometry_.point_45, y); });
     if (elbow_independent_of_q1(geometry_)) {
-      const std::vector<double> more = ends_of([&](const Eigen::Vector3d& y) {
-        return elbow_harmonic(chain_, geometry_, geometry_.point_45, y);
-      });
+      const std::vector<double> more =
+          ends_of([&](const Eigen::Vector3d& y) { return elbow_harmonic(chain_, geometry_, geometry_.point_45, y); });
       ends.insert(ends.end(), more.begin(), more.end());
       std::sort(ends.begin(), ends.end());
     }
@@ -135,14 +137,14 @@ class OffsetWristSearch {
     const PositionSolutions arm = position({std::cos(theta), std::sin(theta)});
     if (!arm.exists[branch]) return;
     const Eigen::Vector3d t = arm.angles(branch);
-    const Eigen::Matrix3d r_rem = (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) *
-                                   rotation(chain_.axes[2], t(2)))
-                                      .transpose() *
-                                  g_rotation_ * rotation(chain_.axes[5], -theta);
+    const Eigen::Matrix3d r_rem =
+        (rotation(chain_.axes[0], t(0)) * rotation(chain_.axes[1], t(1)) * rotation(chain_.axes[2], t(2))).transpose() *
+        g_rotation_ * rotation(chain_.axes[5], -theta);
     const Eigen::Vector3d& w4 = chain_.axes[3];
     const Eigen::Vector3d& w5 = chain_.axes[4];
     const double q4 = subproblem1(w4, w5, r_rem * w5);
-    const Eigen::Vector3d x5 = w5.cross(std::abs(w5.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).normalized();
+    const Eigen::Vector3d x5 =
+        w5.cross(std::abs(w5.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).normalized();
     const double q5 = subproblem1(w5, x5, rotation(w4, -q4) * r_rem * x5);
     Vector6d q;
     q << t, q4, q5, theta;
@@ -166,9 +168,9 @@ class OffsetWristSearch {
   Posed g_;
   Eigen::Matrix3d g_rotation_;
   double cos_45_;
-  Turning wrist_point_;   // G (R(ω₆, −θ)(w − p₆) + p₆): where joints 1–3 must put w
-  Turning axis_5_;        // R_G R(ω₆, −θ) ω₅
-  Turning axis_4_in_3_;   // R(ω₃, q₃) ω₄
+  Turning wrist_point_;  // G (R(ω₆, −θ)(w − p₆) + p₆): where joints 1–3 must put w
+  Turning axis_5_;       // R_G R(ω₆, −θ) ω₅
+  Turning axis_4_in_3_;  // R(ω₃, q₃) ω₄
 };
 
 }  // namespace dispkin::serial::detail

@@ -15,11 +15,11 @@ namespace dispkin::serial {
 namespace {
 
 constexpr int initial_sections = 8;
-constexpr int max_depth = 16;             // sections never shorter than 2⁻¹⁶ of the move
-constexpr double floor_fraction = 1e-2;   // V_floor and the least pace: 1 % of the move's fastest
-constexpr double junction_step = 1e-2;    // the planner's junction rule: h/L steps ≤ 1 %
-constexpr double staircase_step = 0.95;   // velocity-limit levels v_sys · 0.95ᵏ
-constexpr double rate_share = 0.9;        // of a joint acceleration limit for Δq r s̈; the rest for Δq m r ṡ²
+constexpr int max_depth = 16;            // sections never shorter than 2⁻¹⁶ of the move
+constexpr double floor_fraction = 1e-2;  // V_floor and the least pace: 1 % of the move's fastest
+constexpr double junction_step = 1e-2;   // the planner's junction rule: h/L steps ≤ 1 %
+constexpr double staircase_step = 0.95;  // velocity-limit levels v_sys · 0.95ᵏ
+constexpr double rate_share = 0.9;       // of a joint acceleration limit for Δq r s̈; the rest for Δq m r ṡ²
 
 struct Cutter {
   const RevoluteChain& chain;
@@ -35,7 +35,8 @@ struct Cutter {
   // Appends [u0, u1] cut until its bound is within the tolerance of its middle speed.
   void cut(const JointSection& section, int depth, std::vector<JointSection>& out) const {
     const double slack = section.length - section.middle_speed;
-    if (depth >= max_depth || slack <= tolerance * std::max(section.middle_speed, floor_pace * (section.u1 - section.u0))) {
+    if (depth >= max_depth ||
+        slack <= tolerance * std::max(section.middle_speed, floor_pace * (section.u1 - section.u0))) {
       out.push_back(section);
       return;
     }
@@ -160,8 +161,8 @@ double speed_level(const SectionPace& pace, const std::vector<double>& dq, const
   const JointSection& section = pace.section;
   const double r_max = pace.r_max;
   // A point accelerates at most at ṡ² (A/L² + |m|) (ptp.hpp).
-  const double bend =
-      (section.acceleration > 0.0 ? section.acceleration / (section.length * section.length) : 0.0) + std::abs(pace.slope);
+  const double bend = (section.acceleration > 0.0 ? section.acceleration / (section.length * section.length) : 0.0) +
+                      std::abs(pace.slope);
   double v = limits.velocity;
   if (bend > 0.0) v = std::min(v, std::sqrt(limits.acceleration / bend));
   for (std::size_t i = 0; i < dq.size(); ++i) {
@@ -177,7 +178,8 @@ double speed_level(const SectionPace& pace, const std::vector<double>& dq, const
   }
   double level = limits.velocity;
   if (v < limits.velocity) {
-    level = limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
+    level =
+        limits.velocity * std::pow(staircase_step, std::ceil(std::log(v / limits.velocity) / std::log(staircase_step)));
     if (level > v) level = v;  // rounding of pow / log: never above the limit
   }
   return level;
@@ -293,7 +295,8 @@ JointTrajectorySample JointTrajectory::sample(double t) const noexcept {
     out.s = law.s;
     out.s_dot = law.v;
     out.s_ddot = law.a;
-    const auto next = std::upper_bound(rates_.begin(), rates_.end(), out.s, [](double x, const SectionRate& r) { return x < r.s; });
+    const auto next =
+        std::upper_bound(rates_.begin(), rates_.end(), out.s, [](double x, const SectionRate& r) { return x < r.s; });
     k = next == rates_.begin() ? 0 : static_cast<std::size_t>(next - rates_.begin()) - 1;
   }
   const JointSection& section = sections_[k];

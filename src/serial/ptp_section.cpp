@@ -40,8 +40,8 @@
 namespace dispkin::serial {
 namespace detail {
 
-JointSection joint_section_bounds(const RevoluteChain& chain, const Eigen::VectorXd& q_a,
-                                  const Eigen::VectorXd& delta, double u0, double u1, const GroupFactors& factors) {
+JointSection joint_section_bounds(const RevoluteChain& chain, const Eigen::VectorXd& q_a, const Eigen::VectorXd& delta,
+                                  double u0, double u1, const GroupFactors& factors) {
   const int n = chain.dof();
   const auto un = static_cast<std::size_t>(n);
   const double h = u1 - u0, um = 0.5 * (u0 + u1);

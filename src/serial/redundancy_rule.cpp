@@ -17,7 +17,7 @@ using Square = Eigen::Matrix<double, 6, 6>;
 // Below this reciprocal condition number of J_b without the parameter's column the self-motion
 // is not taken (the threshold of the followers' Jacobian, joint_following.cpp).
 constexpr double singular_rcond = 1e-10;
-// The step of the central difference of ln det(J_b J_bᵀ) along n (eq. 44's second term): its
+// The step of the central difference of ln det(J_b J_bᵀ) along n (doc/inverse-kinematics.md eq. 44's second term): its
 // error is O(ε²) relative, its rounding O(1e-16 / ε).
 constexpr double slope_step = 1e-6;
 
@@ -28,8 +28,8 @@ double log_manipulability(const SerialArm& arm, const Eigen::VectorXd& q) {
   return det > 0.0 ? std::log(det) : -std::numeric_limits<double>::infinity();
 }
 
-// The joint-limit term of eq. 44 and its slope along n, analytically: each joint with a finite
-// range [l, u] adds h² / ((u − q)(q − l)), h = (u − l)/2: 1 at the range's centre, → ∞ at either end.
+// The joint-limit term of doc/inverse-kinematics.md eq. 44 and its slope along n, analytically: each joint with a
+// finite range [l, u] adds h² / ((u − q)(q − l)), h = (u − l)/2: 1 at the range's centre, → ∞ at either end.
 void limit_term(const JointLimits& limits, const Eigen::VectorXd& q, const Eigen::VectorXd* n, double& value,
                 double& slope) {
   value = slope = 0.0;

@@ -109,8 +109,8 @@ IkFamily SerialArm::family() const noexcept { return model_->family; }
 
 void SerialArm::require_joint_vector(const Eigen::VectorXd& q, const char* name) const {
   if (q.size() != dof())
-    throw std::invalid_argument(describe(name, q, "expected " + std::to_string(dof()) + " joint values, got " +
-                                                      std::to_string(q.size())));
+    throw std::invalid_argument(
+        describe(name, q, "expected " + std::to_string(dof()) + " joint values, got " + std::to_string(q.size())));
   require_finite(q, name);
 }
 
@@ -144,7 +144,8 @@ Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, c
     j.block(0, locked, 6, n - 1 - locked) = j.block(0, locked + 1, 6, n - 1 - locked).eval();
     j.conservativeResize(6, n - 1);
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    svd.setThreshold(std::numeric_limits<double>::epsilon() * static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
+    svd.setThreshold(std::numeric_limits<double>::epsilon() *
+                     static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
     const Eigen::VectorXd moving = svd.solve(body_twist.vector());
     Eigen::VectorXd qd(n);
     qd << moving.head(locked), 0.0, moving.tail(n - 1 - locked);
@@ -152,7 +153,8 @@ Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, c
   }
   // The cut-off of a least-squares solver (LAPACK's gelsd): ε · max(rows, cols) of the largest singular value.
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(j, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  svd.setThreshold(std::numeric_limits<double>::epsilon() * static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
+  svd.setThreshold(std::numeric_limits<double>::epsilon() *
+                   static_cast<double>(std::max<Eigen::Index>(j.rows(), j.cols())));
   return svd.solve(body_twist.vector());
 }
 
@@ -174,13 +176,15 @@ void SerialArm::require_dynamics() const {
 // Recursive Newton–Euler on the product-of-exponentials chain (chain_dynamics.hpp): the pass of
 // forward() and jacobian(), no per-call solver or KDL chain (it matches KDL's ChainIdSolver_RNE to
 // rounding: test_serial_arm.cpp).
-Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) const {
+Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                                   const Eigen::VectorXd& qdd) const {
   require_joint_vector(q, "q");
   require_joint_vector(qd, "qd");
   require_joint_vector(qdd, "qdd");
   require_dynamics();
   Eigen::VectorXd tau(dof());
-  detail::chain_torques(model_->revolute, model_->bodies, gravity_, q.data(), qd.data(), qdd.data(), tau.data(), nullptr);
+  detail::chain_torques(model_->revolute, model_->bodies, gravity_, q.data(), qd.data(), qdd.data(), tau.data(),
+                        nullptr);
   return tau;
 }
 

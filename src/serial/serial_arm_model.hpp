@@ -24,8 +24,8 @@ struct SerialArm::Model {
   std::string robot_name;
   std::string base_link;
   std::string tip_link;
-  std::string urdf;  // the text read: an arm is stored (pickled) as its URDF and its options
-  KDL::Chain chain;                     // fixed segments included; one movable joint per q entry
+  std::string urdf;                      // the text read: an arm is stored (pickled) as its URDF and its options
+  KDL::Chain chain;                      // fixed segments included; one movable joint per q entry
   std::vector<std::string> joint_names;  // order of q
   JointLimits limits;                    // lower/upper ±∞ for continuous joints, velocity/effort +∞ if unstated
   std::vector<BodyInertia> inertias;     // per joint, in its child link's frame
@@ -34,7 +34,7 @@ struct SerialArm::Model {
   std::string impossible_inertia;
   // The same bodies placed at q = 0 in base coordinates, for the torques (chain_dynamics.hpp).
   std::vector<detail::ChainBody> bodies;
-  RevoluteChain revolute;                // chain at q = 0 in product-of-exponentials form
+  RevoluteChain revolute;  // chain at q = 0 in product-of-exponentials form
   IkFamily family = IkFamily::general;
   // A 7R arm of family locked_joint: the joint locked and the 6R chain left (redundancy.hpp),
   // and the parameter as the arm reports it.

@@ -40,7 +40,8 @@ template <typename Vector>
 bool is_duplicate(const std::vector<Eigen::VectorXd>& found, const Eigen::MatrixBase<Vector>& q) {
   for (const Eigen::VectorXd& f : found) {
     bool same = true;
-    for (Eigen::Index i = 0; i < q.size() && same; ++i) same = std::abs(detail::wrap_angle(f(i) - q(i))) <= duplicate_tolerance;
+    for (Eigen::Index i = 0; i < q.size() && same; ++i)
+      same = std::abs(detail::wrap_angle(f(i) - q(i))) <= duplicate_tolerance;
     if (same) return true;
   }
   return false;
@@ -64,10 +65,10 @@ bool polish(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
   return q.allFinite() && arm.forward(q).is_approx(target, inverse_tolerance);
 }
 
-// Newton's method on the full pose error from a start q near a solution (eq. 46): minimum-norm
-// steps, so a redundant arm lands on the solution of its continuum nearest the start (to first
-// order), none longer than half a radian in any joint (a start farther away is not "near").
-// Whether q then reproduces the pose to inverse_tolerance.
+// Newton's method on the full pose error from a start q near a solution (doc/inverse-kinematics.md eq. 46):
+// minimum-norm steps, so a redundant arm lands on the solution of its continuum nearest the start (to first order),
+// none longer than half a radian in any joint (a start farther away is not "near"). Whether q then reproduces the pose
+// to inverse_tolerance.
 bool polish_from(const SerialArm& arm, const Posed& target, Eigen::VectorXd& q) {
   detail::NewtonSettings settings;
   settings.tolerance = 0.1 * inverse_tolerance;
@@ -309,8 +310,8 @@ void add_copies(const SerialArm& arm, const Representatives& kept, const JointLi
   const double count = copy_count(kept.q, kept.inside, limits);
   if (count > static_cast<double>(input_budget::max_ik_solutions)) {
     std::ostringstream why;
-    why << "asks for the 2π copies of the " << kept.q.size() << " solutions inside the joint limits, "
-        << count << " in all, more than " << input_budget::max_ik_solutions
+    why << "asks for the 2π copies of the " << kept.q.size() << " solutions inside the joint limits, " << count
+        << " in all, more than " << input_budget::max_ik_solutions
         << " (doc/input-budget.md); leave it false for the distinct solutions, or narrow the limits";
     throw std::invalid_argument(describe("offer_equivalents", std::string("true"), why.str()));
   }
@@ -381,7 +382,8 @@ InverseResult SerialArm::inverse_solutions(const Posed& pose, const InverseOptio
     // the limits.
     if (options.q_ref) {
       Eigen::VectorXd q = *options.q_ref;
-      if (polish_from(*this, pose, q)) keep_solutions(*this, std::vector<Eigen::VectorXd>{q}, limits, pose, options, kept);
+      if (polish_from(*this, pose, q))
+        keep_solutions(*this, std::vector<Eigen::VectorXd>{q}, limits, pose, options, kept);
     }
     if (kept.q.empty() || options.wide_search) raw = numeric_solutions(*this, model_->chain, limits, pose, options);
     result.complete = false;
@@ -407,9 +409,10 @@ Eigen::VectorXd nearest(const std::vector<Eigen::VectorXd>& solutions, const Eig
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < solutions.size(); ++k) {
     if (solutions[k].size() != q_ref.size())
-      throw std::invalid_argument(describe("q_ref", q_ref, "expected " + std::to_string(solutions[k].size()) +
-                                                                " joint values like the solutions, got " +
-                                                                std::to_string(q_ref.size())));
+      throw std::invalid_argument(describe("q_ref", q_ref,
+                                           "expected " + std::to_string(solutions[k].size()) +
+                                               " joint values like the solutions, got " +
+                                               std::to_string(q_ref.size())));
     const double d = (solutions[k] - q_ref).norm();
     if (d < best_distance) {
       best_distance = d;

@@ -90,8 +90,8 @@ bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1)
 
 }  // namespace
 
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm,
-                                    const Eigen::VectorXd& q_start, const JointCheckOptions& options) {
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
+                                    const JointCheckOptions& options) {
   const std::vector<double> times = checked_times(trajectory, options);
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
@@ -120,8 +120,8 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
       // q̇ and q̈ from one factorisation of J_b (doc/retiming.md eq. 27), τ and g(q) on the pass that gave J_b.
       Eigen::VectorXd torque;
-      detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s, sample.qd,
-                                      sample.qdd, torque, sample.static_torque);
+      detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s,
+                                      sample.qd, sample.qdd, torque, sample.static_torque);
       sample.dynamic_torque = torque - sample.static_torque;
     } else {
       sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
@@ -217,8 +217,8 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
 }
 
 RetimeResult retime_by_scaling(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
-                               const SerialArm& arm, const Eigen::VectorXd& q_start,
-                               const JointCheckOptions& options, int max_iterations, double corner_tolerance) {
+                               const SerialArm& arm, const Eigen::VectorXd& q_start, const JointCheckOptions& options,
+                               int max_iterations, double corner_tolerance) {
   require(max_iterations >= 1, "max_iterations", static_cast<long>(max_iterations), "must be ≥ 1");
   PlanOptions continuous;
   continuous.corner_tolerance = corner_tolerance;
@@ -266,9 +266,9 @@ class SerialModel final : public JointModel {
     q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
     q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
   }
-  bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate, const Eigen::VectorXd& q_ref,
-                        const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1,
-                        Eigen::VectorXd& q2) const override {
+  bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate,
+                        const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q,
+                        Eigen::VectorXd& q1, Eigen::VectorXd& q2) const override {
     constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
     q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
     // q′ and q″ from one factorisation of J_b (doc/retiming.md (eq. 28)).
@@ -276,7 +276,8 @@ class SerialModel final : public JointModel {
     return true;
   }
   void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
-                           Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const override {
+                           Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u,
+                           Eigen::VectorXd& torque_x) const override {
     // g = τ(q, 0, 0), M q′ = τ(q, 0, q′) − g, M q″ + C(q, q′) q′ = τ(q, q′, q″) − g (doc/retiming.md
     // (doc/retiming.md eq. 12)); g comes with the last of them, from the same pass.
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(q.size());
@@ -284,7 +285,8 @@ class SerialModel final : public JointModel {
     torque_u = arm_.torques(q, zero, q1) - gravity;
     torque_x -= gravity;
   }
-  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const override {
+  JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start,
+                         int samples_between) const override {
     JointCheckOptions options;
     options.samples_between = samples_between;
     return check_joint_limits(trajectory, arm_, q_start, options);
@@ -306,7 +308,8 @@ class SerialModel final : public JointModel {
   JointBounds bounds(const OptimalRetimeOptions& options) const override {
     const JointLimits joint = arm_.joint_limits();
     const int n = dof();
-    JointBounds b{joint.velocity, options.joint_acceleration.size() ? options.joint_acceleration : JointBounds::unlimited(n),
+    JointBounds b{joint.velocity,
+                  options.joint_acceleration.size() ? options.joint_acceleration : JointBounds::unlimited(n),
                   JointBounds::unlimited(n)};
     if (options.torque_limits && joint.effort.size() == n) b.effort = joint.effort;
     return b;
@@ -320,9 +323,8 @@ class SerialModel final : public JointModel {
 
 std::unique_ptr<JointModel> joint_model(const SerialArm& arm) { return std::make_unique<SerialModel>(arm); }
 
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const SerialArm& arm, const Eigen::VectorXd& q_start,
-                                   const OptimalRetimeOptions& options) {
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const SerialArm& arm,
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
   require_finite(q_start, "q_start");

@@ -62,7 +62,8 @@ class TrigPolynomial {
   //! A bound on the rounding error of evaluate()'s value: a few ulps of |c₀| + Σ (|aₖ| + |bₖ|).
   double rounding_bound() const noexcept {
     double m = std::abs(c0_);
-    for (int k = 1; k <= degree; ++k) m += std::abs(a_[static_cast<std::size_t>(k)]) + std::abs(b_[static_cast<std::size_t>(k)]);
+    for (int k = 1; k <= degree; ++k)
+      m += std::abs(a_[static_cast<std::size_t>(k)]) + std::abs(b_[static_cast<std::size_t>(k)]);
     return 8.0 * (2 * degree + 1) * 1.1102230246251565e-16 * m;
   }
 
@@ -88,8 +89,9 @@ class TrigPolynomial {
 //! vanishes with the value and the intervals still shrink geometrically. A zero is reported
 //! between two consecutive certified intervals of opposite sign, in the middle of what lies
 //! between them, where p is within rounding of 0 (≈ δ / |p′| rad around a simple zero). Zeros
-//! closer together than `resolution` are not reported; neither are zeros of even multiplicity. Subdivision stops after `max_intervals` intervals: that
-//! bound is reached only by a p that is zero to rounding along an arc (no sign to follow there).
+//! closer together than `resolution` are not reported; neither are zeros of even multiplicity. Subdivision stops after
+//! `max_intervals` intervals: that bound is reached only by a p that is zero to rounding along an arc (no sign to
+//! follow there).
 inline std::vector<double> sign_changes(const TrigPolynomial& p, double resolution, int max_intervals = 4096) {
   constexpr int start = 32;
   const double curvature = p.curvature_bound();
@@ -99,7 +101,8 @@ inline std::vector<double> sign_changes(const TrigPolynomial& p, double resoluti
   };
   std::vector<Interval> pending;  // a stack; the lower half is taken first, so θ increases
   pending.reserve(64);
-  for (int j = start - 1; j >= 0; --j) pending.push_back({-pi + 2.0 * pi * j / start, -pi + 2.0 * pi * (j + 1) / start});
+  for (int j = start - 1; j >= 0; --j)
+    pending.push_back({-pi + 2.0 * pi * j / start, -pi + 2.0 * pi * (j + 1) / start});
   std::vector<double> zeros;
   bool first_sign = false, last_sign = false, any = false;
   double first_lo = 0.0, last_hi = 0.0;

@@ -24,11 +24,11 @@ namespace serial {
 namespace {
 
 [[noreturn]] void refuse(const TiXmlBase& where, const std::string& what, const char* text) {
-  throw std::invalid_argument(describe("URDF line " + std::to_string(where.Row()) + ", column " +
-                                           std::to_string(where.Column()) + ", " + what,
-                                       std::string(text),
-                                       "contains '%' (character references decoded); urdfdom would pass it to "
-                                       "printf as a format (remove it)"));
+  throw std::invalid_argument(
+      describe("URDF line " + std::to_string(where.Row()) + ", column " + std::to_string(where.Column()) + ", " + what,
+               std::string(text),
+               "contains '%' (character references decoded); urdfdom would pass it to "
+               "printf as a format (remove it)"));
 }
 
 bool has_percent(const char* text) { return text != nullptr && std::strchr(text, '%') != nullptr; }

@@ -1,11 +1,10 @@
 // The joint graph of a URDF, read before urdfdom builds its model: a URDF whose joints form a
 // cycle, or give a link two parents, is refused here. urdfdom keeps the last parent joint of a
-// link and drops the others without a word (a three-joint arm became a two-joint one). urdfdom's links own their children (shared_ptr) and point to their
-// parent weakly, so a cycle of joints is a ring of links that own each other. When urdfdom
-// refuses such a document (no root link left) it drops its model with the ring
-// inside, and the links are never freed; the leak is in urdfdom's error path, out of our reach
-// once it has started. Reading the graph first with the XML parser urdfdom itself uses
-// (TinyXML) keeps such documents away from it.
+// link and drops the others without a word (a three-joint arm became a two-joint one). urdfdom's links own their
+// children (shared_ptr) and point to their parent weakly, so a cycle of joints is a ring of links that own each other.
+// When urdfdom refuses such a document (no root link left) it drops its model with the ring inside, and the links are
+// never freed; the leak is in urdfdom's error path, out of our reach once it has started. Reading the graph first with
+// the XML parser urdfdom itself uses (TinyXML) keeps such documents away from it.
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -34,8 +33,8 @@ std::string link_attribute(const TiXmlElement& joint, const char* element) {
 
 void require_joint_tree(const TiXmlElement& robot) {
   std::map<std::string, std::vector<Edge>> children;  // parent link → joints to its children
-  std::map<std::string, std::string> parent_joint;     // child link → the joint to its parent
-  std::string second_parent;  // the first link met with two parent joints, said after any cycle
+  std::map<std::string, std::string> parent_joint;    // child link → the joint to its parent
+  std::string second_parent;                          // the first link met with two parent joints, said after any cycle
   for (const TiXmlElement* joint = robot.FirstChildElement("joint"); joint != nullptr;
        joint = joint->NextSiblingElement("joint")) {
     const char* name = joint->Attribute("name");
@@ -80,8 +79,8 @@ void require_joint_tree(const TiXmlElement& robot) {
         cycle = "\"" + stack[k - 1].link + "\"";
         for (std::size_t i = k; i < stack.size(); ++i) cycle += " -(" + stack[i].via + ")-> \"" + stack[i].link + "\"";
         cycle += " -(" + edge.joint + ")-> \"" + edge.child + "\"";
-        throw std::invalid_argument(describe("link", edge.child,
-                                             "is its own ancestor: the URDF's joints form a cycle " + cycle));
+        throw std::invalid_argument(
+            describe("link", edge.child, "is its own ancestor: the URDF's joints form a cycle " + cycle));
       }
       if (seen == Mark::unseen) {
         mark[edge.child] = Mark::on_stack;

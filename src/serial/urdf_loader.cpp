@@ -126,8 +126,9 @@ KDL::RigidBodyInertia link_inertia(const urdf::Link& link, std::string& impossib
   require_finite(inertia, what + " inertia");
   const std::string why = impossible_inertia(inertia);
   if (impossible.empty() && !why.empty()) {
-    impossible = describe(what + " inertia (ixx, ixy, ixz, iyy, iyz, izz)",
-                          (Eigen::Matrix<double, 6, 1>() << in.ixx, in.ixy, in.ixz, in.iyy, in.iyz, in.izz).finished(), why);
+    impossible =
+        describe(what + " inertia (ixx, ixy, ixz, iyy, iyz, izz)",
+                 (Eigen::Matrix<double, 6, 1>() << in.ixx, in.ixy, in.ixz, in.iyy, in.iyz, in.izz).finished(), why);
   }
   const KDL::Frame origin = checked_frame(in.origin, what + " origin");
   // URDF gives the inertia about the centre of mass in the <inertial><origin> axes; turn it
@@ -136,9 +137,9 @@ KDL::RigidBodyInertia link_inertia(const urdf::Link& link, std::string& impossib
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r(i, j) = origin.M(i, j);
   const Eigen::Matrix3d i_link = r * inertia * r.transpose();
-  return KDL::RigidBodyInertia(in.mass, origin.p,
-                               KDL::RotationalInertia(i_link(0, 0), i_link(1, 1), i_link(2, 2), i_link(0, 1),
-                                                      i_link(0, 2), i_link(1, 2)));
+  return KDL::RigidBodyInertia(
+      in.mass, origin.p,
+      KDL::RotationalInertia(i_link(0, 0), i_link(1, 1), i_link(2, 2), i_link(0, 1), i_link(0, 2), i_link(1, 2)));
 }
 
 // `link` plus every link hanging off it through fixed joints, except `skip` (the next link on
@@ -149,7 +150,8 @@ KDL::RigidBodyInertia rigid_body_inertia(const urdf::Link& link, const std::stri
     if (!joint || joint->type != urdf::Joint::FIXED || joint->child_link_name == skip) continue;
     for (const urdf::LinkSharedPtr& child : link.child_links) {
       if (child && child->name == joint->child_link_name) {
-        const KDL::Frame offset = checked_frame(joint->parent_to_joint_origin_transform, joint_label(*joint) + " origin");
+        const KDL::Frame offset =
+            checked_frame(joint->parent_to_joint_origin_transform, joint_label(*joint) + " origin");
         total = total + offset * rigid_body_inertia(*child, "", impossible);
       }
     }
@@ -211,13 +213,15 @@ Eigen::Vector3d nearest_point_on_line(const Eigen::Vector3d& pa, const Eigen::Ve
 
 }  // namespace
 
-SerialArm SerialArm::from_urdf_file(const std::string& path, const std::string& base_link, const std::string& tip_link) {
+SerialArm SerialArm::from_urdf_file(const std::string& path, const std::string& base_link,
+                                    const std::string& tip_link) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument(describe("path", path, "cannot be opened"));
   // Read in blocks up to the limit: a larger file is refused without being read to its end.
   std::string text;
   require(input_budget::read_at_most(in, input_budget::max_urdf_bytes, text), "path", path,
-          "is larger than " + std::to_string(input_budget::max_urdf_bytes) + " bytes, the limit of a URDF (doc/input-budget.md)");
+          "is larger than " + std::to_string(input_budget::max_urdf_bytes) +
+              " bytes, the limit of a URDF (doc/input-budget.md)");
   try {
     return from_urdf_string(text, base_link, tip_link);
   } catch (const std::invalid_argument& e) {
@@ -232,7 +236,8 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
   require(base_link != tip_link, "tip_link", tip_link, "must differ from base_link");
   std::string messages;
   const urdf::ModelInterfaceSharedPtr urdf = parse(xml, messages);
-  if (!urdf) throw std::invalid_argument("URDF: not a valid robot description" + (messages.empty() ? "" : ": " + messages));
+  if (!urdf)
+    throw std::invalid_argument("URDF: not a valid robot description" + (messages.empty() ? "" : ": " + messages));
 
   const urdf::LinkConstSharedPtr base = urdf->getLink(base_link);
   require(base != nullptr, "base_link", base_link, "is not a link of robot \"" + urdf->getName() + "\"");
@@ -279,7 +284,8 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
 
   int n = 0;
   for (const urdf::Joint* joint : joints) n += joint->type == urdf::Joint::FIXED ? 0 : 1;
-  require(n > 0, "tip_link", tip_link, "has no revolute or continuous joint between it and base_link \"" + base_link + "\"");
+  require(n > 0, "tip_link", tip_link,
+          "has no revolute or continuous joint between it and base_link \"" + base_link + "\"");
   JointLimits& limits = model->limits;
   limits.lower.resize(n);
   limits.upper.resize(n);
@@ -303,8 +309,8 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
     // KDL wants the joint's origin and axis in the parent segment's tip frame: the URDF axis
     // is given in the joint frame, which is the URDF origin transform away.
     const KDL::Vector axis_in_parent = origin.M * KDL::Vector(unit.x(), unit.y(), unit.z());
-    model->chain.addSegment(
-        KDL::Segment(child.name, KDL::Joint(joint.name, origin.p, axis_in_parent, KDL::Joint::RotAxis), origin, inertia));
+    model->chain.addSegment(KDL::Segment(
+        child.name, KDL::Joint(joint.name, origin.p, axis_in_parent, KDL::Joint::RotAxis), origin, inertia));
     model->joint_names.push_back(joint.name);
     read_limits(joint, i, limits);
     ++i;

@@ -37,23 +37,36 @@ struct NumberAttribute {
 
 // The numeric attributes of URDF 1.0 (wiki.ros.org/urdf/XML/link, /joint) that urdfdom reads.
 constexpr NumberAttribute numbers[] = {
-    {"origin", "xyz", 3, Kind::coordinate},           {"origin", "rpy", 3, Kind::coordinate},
-    {"axis", "xyz", 3, Kind::coordinate},             {"mass", "value", 1, Kind::non_negative},
-    {"inertia", "ixx", 1, Kind::coordinate},          {"inertia", "ixy", 1, Kind::coordinate},
-    {"inertia", "ixz", 1, Kind::coordinate},          {"inertia", "iyy", 1, Kind::coordinate},
-    {"inertia", "iyz", 1, Kind::coordinate},          {"inertia", "izz", 1, Kind::coordinate},
-    {"limit", "lower", 1, Kind::joint_limit},         {"limit", "upper", 1, Kind::joint_limit},
-    {"limit", "effort", 1, Kind::non_negative},       {"limit", "velocity", 1, Kind::non_negative},
-    {"dynamics", "damping", 1, Kind::coordinate},     {"dynamics", "friction", 1, Kind::coordinate},
+    {"origin", "xyz", 3, Kind::coordinate},
+    {"origin", "rpy", 3, Kind::coordinate},
+    {"axis", "xyz", 3, Kind::coordinate},
+    {"mass", "value", 1, Kind::non_negative},
+    {"inertia", "ixx", 1, Kind::coordinate},
+    {"inertia", "ixy", 1, Kind::coordinate},
+    {"inertia", "ixz", 1, Kind::coordinate},
+    {"inertia", "iyy", 1, Kind::coordinate},
+    {"inertia", "iyz", 1, Kind::coordinate},
+    {"inertia", "izz", 1, Kind::coordinate},
+    {"limit", "lower", 1, Kind::joint_limit},
+    {"limit", "upper", 1, Kind::joint_limit},
+    {"limit", "effort", 1, Kind::non_negative},
+    {"limit", "velocity", 1, Kind::non_negative},
+    {"dynamics", "damping", 1, Kind::coordinate},
+    {"dynamics", "friction", 1, Kind::coordinate},
     {"safety_controller", "soft_lower_limit", 1, Kind::joint_limit},
     {"safety_controller", "soft_upper_limit", 1, Kind::joint_limit},
     {"safety_controller", "k_position", 1, Kind::coordinate},
     {"safety_controller", "k_velocity", 1, Kind::coordinate},
-    {"calibration", "rising", 1, Kind::coordinate},   {"calibration", "falling", 1, Kind::coordinate},
-    {"mimic", "multiplier", 1, Kind::coordinate},     {"mimic", "offset", 1, Kind::coordinate},
-    {"box", "size", 3, Kind::coordinate},             {"cylinder", "radius", 1, Kind::coordinate},
-    {"cylinder", "length", 1, Kind::coordinate},      {"sphere", "radius", 1, Kind::coordinate},
-    {"capsule", "radius", 1, Kind::coordinate},       {"capsule", "length", 1, Kind::coordinate},
+    {"calibration", "rising", 1, Kind::coordinate},
+    {"calibration", "falling", 1, Kind::coordinate},
+    {"mimic", "multiplier", 1, Kind::coordinate},
+    {"mimic", "offset", 1, Kind::coordinate},
+    {"box", "size", 3, Kind::coordinate},
+    {"cylinder", "radius", 1, Kind::coordinate},
+    {"cylinder", "length", 1, Kind::coordinate},
+    {"sphere", "radius", 1, Kind::coordinate},
+    {"capsule", "radius", 1, Kind::coordinate},
+    {"capsule", "length", 1, Kind::coordinate},
     {"mesh", "scale", 3, Kind::coordinate},
 };
 
@@ -118,11 +131,14 @@ std::string impossible_inertia(const Eigen::Matrix3d& inertia) {
   // Principal moments this far (relative to the largest) below zero or below the triangle
   // inequality are rounding of the printed digits; URDF exporters print six or more.
   constexpr double rounding = 1e-6;
-  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::Vector3d moments =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly).eigenvalues();
   const double slack = rounding * moments.cwiseAbs().maxCoeff();
-  if (moments(0) < -slack) return "is not positive semidefinite (a principal moment is " + std::to_string(moments(0)) + " kg m²)";
+  if (moments(0) < -slack)
+    return "is not positive semidefinite (a principal moment is " + std::to_string(moments(0)) + " kg m²)";
   if (moments(0) + moments(1) < moments(2) - slack)
-    return "is not the inertia of a body: its principal moments break the triangle inequality (the two smaller must add up "
+    return "is not the inertia of a body: its principal moments break the triangle inequality (the two smaller must "
+           "add up "
            "to at least the largest)";
   return "";
 }

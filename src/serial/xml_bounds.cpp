@@ -79,9 +79,9 @@ class Scanner {
         continue;
       }
       if (c == '=' && ++attributes > input_budget::max_xml_attributes) {
-        throw std::invalid_argument(describe("URDF element at", where(line, column),
-                                             "has more than " + std::to_string(input_budget::max_xml_attributes) +
-                                                 " attributes (doc/input-budget.md)"));
+        throw std::invalid_argument(describe(
+            "URDF element at", where(line, column),
+            "has more than " + std::to_string(input_budget::max_xml_attributes) + " attributes (doc/input-budget.md)"));
       }
       closed_here = c == '/';
       step();
@@ -89,9 +89,9 @@ class Scanner {
     if (i_ < xml_.size()) step();  // '>'
     if (closed_here) return;
     if (++depth_ > input_budget::max_nesting_depth) {
-      throw std::invalid_argument(describe("URDF element at", where(line, column),
-                                           "nests deeper than " + std::to_string(input_budget::max_nesting_depth) +
-                                               " elements (doc/input-budget.md)"));
+      throw std::invalid_argument(describe(
+          "URDF element at", where(line, column),
+          "nests deeper than " + std::to_string(input_budget::max_nesting_depth) + " elements (doc/input-budget.md)"));
     }
   }
 
@@ -106,7 +106,8 @@ class Scanner {
 
 void require_bounded_xml(const std::string& xml) {
   require(xml.size() <= input_budget::max_urdf_bytes, "URDF size", static_cast<unsigned long>(xml.size()),
-          "more than " + std::to_string(input_budget::max_urdf_bytes) + " bytes, the limit of a URDF (doc/input-budget.md)");
+          "more than " + std::to_string(input_budget::max_urdf_bytes) +
+              " bytes, the limit of a URDF (doc/input-budget.md)");
   Scanner(xml).run();
 }
 

@@ -10,12 +10,14 @@ int main() {
   dispkin::MetricSetd set;
   set.add_relative(dispkin::convex_hull_vertices(dispkin::shapes::icosphere(1.0, 2)));
   const dispkin::Posed a;
-  const dispkin::Posed b = dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0, 0, 0, 0.5).finished());
+  const dispkin::Posed b =
+      dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0, 0, 0, 0.5).finished());
   const double length = dispkin::section_length(set, a, b, dispkin::Interpolation::screw);
   // The hexapod plugin: legs of the home pose, and its JSON description read back.
   const auto hexapod = dispkin::hexapod::Hexapod::symmetric(0.2, 0.1, 0.1, 0.1, 0.2, 0.15, 0.35, 0.01);
   const auto again = dispkin::hexapod::Hexapod::from_json(hexapod.to_json());
-  const auto legs = again.inverse(dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0.2, 0, 0, 0).finished()));
+  const auto legs =
+      again.inverse(dispkin::Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0, 0, 0.2, 0, 0, 0).finished()));
   if (legs.size() != 1 || legs[0].size() != 6 || !(legs[0].minCoeff() > 0.15 && legs[0].maxCoeff() < 0.35)) return 2;
 #if defined(DISPKIN_HAS_SERIAL)
   // The serial-arm plugin (urdfdom and KDL linked privately into dispkin::serial): a one-joint

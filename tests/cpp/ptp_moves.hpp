@@ -14,10 +14,12 @@ namespace dispkin {
 namespace testing {
 
 inline serial::SerialArm ur5e_arm() {
-  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link", "tool0");
+  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf",
+                                           "base_link", "tool0");
 }
 inline serial::SerialArm kr6_arm() {
-  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_kr6_like_dh.urdf", "base_link", "flange");
+  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_kr6_like_dh.urdf",
+                                           "base_link", "flange");
 }
 
 // Uniform joint values inside the arm's limits, clipped to [−π, π] (wider ranges add nothing new).

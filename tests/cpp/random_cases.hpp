@@ -20,7 +20,9 @@ inline unsigned long env_or(const char* name, unsigned long fallback) {
 }
 
 //! Cases per sweep: DISPKIN_TEST_COUNT, else `fallback` (the CI size).
-inline int case_count(int fallback) { return static_cast<int>(env_or("DISPKIN_TEST_COUNT", static_cast<unsigned long>(fallback))); }
+inline int case_count(int fallback) {
+  return static_cast<int>(env_or("DISPKIN_TEST_COUNT", static_cast<unsigned long>(fallback)));
+}
 
 //! The message of the std::invalid_argument that `f` throws, or "<no exception>".
 template <typename F>
@@ -50,7 +52,9 @@ class Random {
 
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine_); }
-  Eigen::Vector3d vector(double scale) { return Eigen::Vector3d(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale)); }
+  Eigen::Vector3d vector(double scale) {
+    return Eigen::Vector3d(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale));
+  }
   Eigen::Vector3d unit_vector() {
     std::normal_distribution<double> n(0.0, 1.0);
     Eigen::Vector3d v(n(engine_), n(engine_), n(engine_));
@@ -76,7 +80,8 @@ class Random {
     if (integer(0, 1)) {
       for (int i = integer(1, 4); i > 0; --i) set.add_absolute(vector(1.0), with_groups ? integer(0, 1) : 0);
     }
-    if (integer(0, 1)) set.add_sphere(vector(0.3), uniform(0.0, 0.2), integer(0, 1) ? Frame::relative : Frame::absolute);
+    if (integer(0, 1))
+      set.add_sphere(vector(0.3), uniform(0.0, 0.2), integer(0, 1) ? Frame::relative : Frame::absolute);
     if (with_groups && integer(0, 1)) {
       set.add_relative(vector(0.5), 1);
       set.set_group_speed(1, uniform(0.2, 2.0));

@@ -31,8 +31,10 @@ inline Path random_path(Random& rnd, int family, const V& offset = V::Zero()) {
       // The pivot on an arc through two random points; random orientations at via and end.
       auto with_pivot_at = [&](const Eigen::Quaterniond& q, const V& point) { return Posed(q, point - q * pivot); };
       const V start = a * pivot;
-      const Posed via = with_pivot_at(rnd.rotation(), start + V(rnd.uniform(0.1, 0.3), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
-      const Posed b = with_pivot_at(rnd.rotation(), start + V(rnd.uniform(-0.3, -0.1), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
+      const Posed via = with_pivot_at(rnd.rotation(),
+                                      start + V(rnd.uniform(0.1, 0.3), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
+      const Posed b = with_pivot_at(rnd.rotation(),
+                                    start + V(rnd.uniform(-0.3, -0.1), rnd.uniform(0.1, 0.3), rnd.uniform(-0.1, 0.1)));
       return Path::circ(a, via, b, pivot, 1e-2);
     }
     case 3: {
@@ -50,12 +52,15 @@ inline Path random_path(Random& rnd, int family, const V& offset = V::Zero()) {
       const Posed b = rnd.nearby(a, 0.3, 1.0), c = rnd.nearby(b, 0.3, 1.0), d = rnd.nearby(c, 0.3, 1.0);
       // Blends of 10–40 % of each move's geometric size (pivot travel + 0.1 m/rad).
       auto size = [&](const Posed& p, const Posed& q) {
-        return ((q * pivot) - (p * pivot)).norm() + 0.1 * quaternion_log(Eigen::Quaterniond(p.quaternion().conjugate() * q.quaternion())).norm();
+        return ((q * pivot) - (p * pivot)).norm() +
+               0.1 * quaternion_log(Eigen::Quaterniond(p.quaternion().conjugate() * q.quaternion())).norm();
       };
       const double ab = size(a, b), bc = size(b, c), cd = size(c, d);
       Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
-      path.then(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * ab, rnd.uniform(0.1, 0.4) * bc, 1e-2)
-          .then(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * bc, rnd.uniform(0.1, 0.4) * cd, 1e-2);
+      path.then(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * ab,
+                rnd.uniform(0.1, 0.4) * bc, 1e-2)
+          .then(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.4) * bc,
+                rnd.uniform(0.1, 0.4) * cd, 1e-2);
       return path;
     }
   }
@@ -68,10 +73,10 @@ inline Path random_slerp_blended_chain(Random& rnd, double tolerance = 1e-2) {
   const V pivot = rnd.vector(0.1);
   const Posed b = rnd.nearby(a, 0.3, 1.0), c = rnd.nearby(b, 0.3, 1.0), d = rnd.nearby(c, 0.3, 1.0);
   Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
-  path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp,
-                     tolerance)
-      .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp,
-                     tolerance);
+  path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5),
+                     OrientationBlend::nested_slerp, tolerance)
+      .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5),
+                     OrientationBlend::nested_slerp, tolerance);
   return path;
 }
 
@@ -102,7 +107,8 @@ inline MetricSetd random_set(Random& rnd, double v_sys) {
   for (int k = rnd.integer(3, 6); k > 0; --k) tool.push_back(rnd.vector(0.3));
   set.add_relative(tool);
   if (rnd.integer(0, 1)) set.add_absolute(rnd.vector(1.0), 0);
-  if (rnd.integer(0, 1)) set.add_sphere(rnd.vector(0.2), rnd.uniform(0.01, 0.2), rnd.integer(0, 1) ? Frame::relative : Frame::absolute);
+  if (rnd.integer(0, 1))
+    set.add_sphere(rnd.vector(0.2), rnd.uniform(0.01, 0.2), rnd.integer(0, 1) ? Frame::relative : Frame::absolute);
   if (rnd.integer(0, 1)) {
     set.add_relative(rnd.vector(0.5), 1);
     set.add_sphere(rnd.vector(1.0), 0.05, Frame::absolute, 1);
@@ -133,7 +139,8 @@ inline double chord_speed_ratio(const Traj& traj, const MetricSetd& set, double 
     for (const V& r : g.relative_points) speed = std::max(speed, ((q * r) - (p * r)).norm() / dt);
     for (const V& x : g.absolute_points) speed = std::max(speed, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
     for (const auto& s : g.relative_spheres) speed = std::max(speed, sphere_speed(xi, s.center, s.radius));
-    for (const auto& s : g.absolute_spheres) speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
+    for (const auto& s : g.absolute_spheres)
+      speed = std::max(speed, sphere_speed(xi, V(p.inverse() * s.center), s.radius));
     worst = std::max(worst, speed / limit);
   }
   return worst;

@@ -12,8 +12,8 @@
 namespace dispkin::testing {
 
 inline serial::SerialArm ur5e() {
-  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf", "base_link",
-                                           "tool0");
+  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf",
+                                           "base_link", "tool0");
 }
 
 inline MetricSetd tool() {

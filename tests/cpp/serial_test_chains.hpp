@@ -135,7 +135,8 @@ inline serial::RevoluteChain chain_from_modified_dh(const std::vector<DhRow>& ro
   serial::RevoluteChain chain;
   Posed frame;
   const auto rx_tx = [](const DhRow& r) {
-    return Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.alpha, Eigen::Vector3d::UnitX())), Eigen::Vector3d::Zero()) *
+    return Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.alpha, Eigen::Vector3d::UnitX())),
+                            Eigen::Vector3d::Zero()) *
            Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(r.a, 0.0, 0.0));
   };
   for (const DhRow& r : rows) {
@@ -143,10 +144,12 @@ inline serial::RevoluteChain chain_from_modified_dh(const std::vector<DhRow>& ro
     chain.axes.push_back(frame.rotation().col(2));
     chain.points.push_back(frame.translation());
     frame = frame *
-            Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.offset, Eigen::Vector3d::UnitZ())), Eigen::Vector3d::Zero()) *
+            Posed::unchecked(Eigen::Quaterniond(Eigen::AngleAxisd(r.offset, Eigen::Vector3d::UnitZ())),
+                             Eigen::Vector3d::Zero()) *
             Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, r.d));
   }
-  chain.tip_at_zero = frame * rx_tx(flange) * Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, flange.d));
+  chain.tip_at_zero =
+      frame * rx_tx(flange) * Posed::unchecked(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.0, 0.0, flange.d));
   return chain;
 }
 
@@ -177,8 +180,12 @@ inline serial::RevoluteChain kuka_iiwa14() {
 
 //! Every test robot, by name.
 inline std::vector<NamedChain> named_test_chains() {
-  return {{"kuka_kr6_r900", kuka_kr6_r900()}, {"abb_irb120", abb_irb120()},   {"abb_irb6640", abb_irb6640()},
-          {"ur5", ur5()},                     {"ur10e", ur10e()},             {"jaco2_j2n6s300", kinova_jaco2_j2n6s300()}};
+  return {{"kuka_kr6_r900", kuka_kr6_r900()},
+          {"abb_irb120", abb_irb120()},
+          {"abb_irb6640", abb_irb6640()},
+          {"ur5", ur5()},
+          {"ur10e", ur10e()},
+          {"jaco2_j2n6s300", kinova_jaco2_j2n6s300()}};
 }
 
 }  // namespace dispkin::testing

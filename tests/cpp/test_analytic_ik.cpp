@@ -147,9 +147,15 @@ void round_trip(const testing::NamedChain& named, int count, unsigned long salt)
   ::testing::Test::RecordProperty(named.name + "_worst_gap", std::to_string(worst_gap));
 }
 
-TEST(AnalyticIk, RoundTripKukaKr6) { round_trip({"kuka_kr6_r900", testing::kuka_kr6_r900()}, testing::case_count(10000), 611); }
-TEST(AnalyticIk, RoundTripAbbIrb120) { round_trip({"abb_irb120", testing::abb_irb120()}, testing::case_count(10000), 612); }
-TEST(AnalyticIk, RoundTripAbbIrb6640) { round_trip({"abb_irb6640", testing::abb_irb6640()}, testing::case_count(10000), 613); }
+TEST(AnalyticIk, RoundTripKukaKr6) {
+  round_trip({"kuka_kr6_r900", testing::kuka_kr6_r900()}, testing::case_count(10000), 611);
+}
+TEST(AnalyticIk, RoundTripAbbIrb120) {
+  round_trip({"abb_irb120", testing::abb_irb120()}, testing::case_count(10000), 612);
+}
+TEST(AnalyticIk, RoundTripAbbIrb6640) {
+  round_trip({"abb_irb6640", testing::abb_irb6640()}, testing::case_count(10000), 613);
+}
 TEST(AnalyticIk, RoundTripUr5) { round_trip({"ur5", testing::ur5()}, testing::case_count(10000), 614); }
 TEST(AnalyticIk, RoundTripUr10e) { round_trip({"ur10e", testing::ur10e()}, testing::case_count(10000), 615); }
 TEST(AnalyticIk, RoundTripJaco2) {
@@ -178,7 +184,8 @@ void expect_recovered(const RevoluteChain& chain, const std::vector<double>& val
 }
 
 // q among the offset-wrist search's solutions of its own pose to 1e-8 rad, at each sample count.
-void expect_found_by_search(const RevoluteChain& chain, const Eigen::VectorXd& q, std::initializer_list<int> sample_counts) {
+void expect_found_by_search(const RevoluteChain& chain, const Eigen::VectorXd& q,
+                            std::initializer_list<int> sample_counts) {
   const Posed pose = serial::forward(chain, q);
   for (int samples : sample_counts) {
     serial::OffsetWristOptions options;
@@ -240,10 +247,10 @@ TEST(AnalyticIk, Jaco2IslandBetweenElbowAndShoulderEnds) {
 }
 
 TEST(AnalyticIk, NearSingularCasesOfTheTenToTheSixSweep) {
-  expect_recovered(testing::abb_irb6640(), {2.565125829596667, 2.1784534595310143, 1.7442027598209684, -1.2371096416500587,
-                                            -0.0010193461385461511, 2.542921501272037});
-  expect_recovered(testing::ur10e(), {0.79550211916179192, 0.081528709381517572, -3.1025192361107496, -0.48995297551697314,
-                                      -1.7766982119133321, -2.9535425524234951});
+  expect_recovered(testing::abb_irb6640(), {2.565125829596667, 2.1784534595310143, 1.7442027598209684,
+                                            -1.2371096416500587, -0.0010193461385461511, 2.542921501272037});
+  expect_recovered(testing::ur10e(), {0.79550211916179192, 0.081528709381517572, -3.1025192361107496,
+                                      -0.48995297551697314, -1.7766982119133321, -2.9535425524234951});
 }
 
 // ---- an independent oracle: EAIK's solution counts (tests/data/analytic_ik_reference.txt) ----
@@ -392,7 +399,8 @@ TEST(AnalyticIk, WristCentreOnAxisOneStillSolved) {
       Eigen::VectorXd q = random_q(random);
       // The wrist centre (axes 4 ∩ 5 ∩ 6, a fixed point of link 3) expressed by its signed
       // distance from axis 1 along the arm plane's horizontal direction.
-      const Eigen::Vector3d centre = chain.points[3] + chain.axes[3] * (chain.points[4] - chain.points[3]).dot(chain.axes[3]);
+      const Eigen::Vector3d centre =
+          chain.points[3] + chain.axes[3] * (chain.points[4] - chain.points[3]).dot(chain.axes[3]);
       auto signed_distance = [&](double q3) {
         Eigen::VectorXd r = q;
         r(2) = q3;
@@ -473,15 +481,15 @@ TEST(AnalyticIk, BadInputIsRefusedNamingTheArgument) {
             std::string::npos);
   RevoluteChain long_axis = testing::ur5();
   long_axis.axes[2] *= 1.5;
-  EXPECT_NE(testing::message_of([&] { analytic_inverse(long_axis, IkFamily::three_parallel, pose); })
-                .find("chain.axes[2]"),
-            std::string::npos);
+  EXPECT_NE(
+      testing::message_of([&] { analytic_inverse(long_axis, IkFamily::three_parallel, pose); }).find("chain.axes[2]"),
+      std::string::npos);
   EXPECT_NE(testing::message_of([&] { recognise(long_axis); }).find("chain.axes[2]"), std::string::npos);
   RevoluteChain nan_point = testing::ur5();
   nan_point.points[4].x() = std::nan("");
-  EXPECT_NE(testing::message_of([&] { analytic_inverse(nan_point, IkFamily::three_parallel, pose); })
-                .find("chain.points[4]"),
-            std::string::npos);
+  EXPECT_NE(
+      testing::message_of([&] { analytic_inverse(nan_point, IkFamily::three_parallel, pose); }).find("chain.points[4]"),
+      std::string::npos);
   RevoluteChain missing_point = testing::ur5();
   missing_point.points.pop_back();
   EXPECT_NE(testing::message_of([&] { recognise(missing_point); }).find("chain.points"), std::string::npos);
@@ -490,11 +498,13 @@ TEST(AnalyticIk, BadInputIsRefusedNamingTheArgument) {
       testing::message_of([&] { analytic_inverse(testing::ur5(), IkFamily::spherical_wrist, pose); });
   EXPECT_NE(mismatch.find("family"), std::string::npos) << mismatch;
   EXPECT_NE(mismatch.find("do not meet"), std::string::npos) << mismatch;
-  EXPECT_NE(testing::message_of([&] { analytic_inverse(testing::kuka_kr6_r900(), IkFamily::three_parallel, pose); })
-                .find("family"),
+  EXPECT_NE(testing::message_of([&] {
+              analytic_inverse(testing::kuka_kr6_r900(), IkFamily::three_parallel, pose);
+            }).find("family"),
             std::string::npos);
-  EXPECT_NE(testing::message_of([&] { analytic_inverse(testing::kuka_kr6_r900(), IkFamily::offset_wrist, pose); })
-                .find("spherical"),
+  EXPECT_NE(testing::message_of([&] {
+              analytic_inverse(testing::kuka_kr6_r900(), IkFamily::offset_wrist, pose);
+            }).find("spherical"),
             std::string::npos);
   EXPECT_NE(testing::message_of([&] { analytic_inverse(testing::ur5(), IkFamily::general, pose); }).find("family"),
             std::string::npos);
@@ -505,8 +515,9 @@ TEST(AnalyticIk, BadInputIsRefusedNamingTheArgument) {
             std::string::npos);
   serial::OffsetWristOptions few;
   few.samples = 4;
-  EXPECT_NE(testing::message_of([&] { serial::offset_wrist_inverse(testing::kinova_jaco2_j2n6s300(), pose, few); })
-                .find("options.samples"),
+  EXPECT_NE(testing::message_of([&] {
+              serial::offset_wrist_inverse(testing::kinova_jaco2_j2n6s300(), pose, few);
+            }).find("options.samples"),
             std::string::npos);
   EXPECT_NE(testing::message_of([&] { recognise(testing::ur5(), 0.0); }).find("tolerance"), std::string::npos);
 }
@@ -524,7 +535,8 @@ TEST(AnalyticIk, FixedSizeOverloadMatches) {
       set.count = 3;  // stale content is discarded
       analytic_inverse(named.chain, family, pose, set);
       ASSERT_EQ(set.count, static_cast<int>(list.size())) << named.name;
-      for (int i = 0; i < set.count; ++i) EXPECT_EQ(Eigen::VectorXd(set.q[static_cast<std::size_t>(i)]), list[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < set.count; ++i)
+        EXPECT_EQ(Eigen::VectorXd(set.q[static_cast<std::size_t>(i)]), list[static_cast<std::size_t>(i)]);
     }
   }
 }

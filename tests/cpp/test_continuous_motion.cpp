@@ -57,7 +57,8 @@ std::vector<Posed> random_pose_list(Random& rnd, int count, double step, double 
 
 Path lins_through(const std::vector<Posed>& poses, const V& pivot = V::Zero()) {
   Path path = Path::lin(poses[0], poses[1], Interpolation::decoupled, pivot);
-  for (std::size_t i = 2; i < poses.size(); ++i) path.then(Path::lin(poses[i - 1], poses[i], Interpolation::decoupled, pivot));
+  for (std::size_t i = 2; i < poses.size(); ++i)
+    path.then(Path::lin(poses[i - 1], poses[i], Interpolation::decoupled, pivot));
   return path;
 }
 
@@ -99,7 +100,8 @@ TEST(ContinuousMotion, BlendedPoseListIsOneContinuousRun) {
     const MetricSetd set = random_set(rnd, v);
     const std::vector<Posed> poses = random_pose_list(rnd, 21, 0.3, 0.8);
     double shortest = 1e300;
-    for (std::size_t k = 1; k < poses.size(); ++k) shortest = std::min(shortest, (poses[k].translation() - poses[k - 1].translation()).norm());
+    for (std::size_t k = 1; k < poses.size(); ++k)
+      shortest = std::min(shortest, (poses[k].translation() - poses[k - 1].translation()).norm());
     const Path path = lins_through(poses);
     const ProfileKind kind = i % 2 ? ProfileKind::scurve : ProfileKind::trapezoid;
     Limits limits{v, rnd.uniform(0.5, 3.0), std::nullopt};
@@ -156,7 +158,8 @@ TEST(ContinuousMotion, PolylineOfACircleRunsLikeTheCirc) {
   EXPECT_LE(traj.duration(), 1.05 * circ.duration());
   double deviation = 0.0;
   for (int i = 0; i <= 20000; ++i) {
-    deviation = std::max(deviation, polyline_distance(traj.sample(traj.duration() * i / 20000).pose.translation(), points));
+    deviation =
+        std::max(deviation, polyline_distance(traj.sample(traj.duration() * i / 20000).pose.translation(), points));
   }
   EXPECT_LE(deviation, options.corner_tolerance * (1.0 + 1e-9));
   EXPECT_LE(worst_speed_ratio(traj, set, limits.velocity, 20000), 1.0 + 1e-6);
@@ -242,12 +245,14 @@ TEST(ContinuousMotion, RotationalLimitHoldsAndBinds) {
     const Trajectory traj = plan(path, set, limits, ProfileKind::trapezoid);
     const int steps = 4000;
     const double dt = traj.duration() / steps;
-    for (int k = 0; k < steps; ++k) ASSERT_LE(chord_angular_speed(traj, k * dt, dt), *limits.angular_velocity * (1.0 + 1e-6)) << i;
+    for (int k = 0; k < steps; ++k)
+      ASSERT_LE(chord_angular_speed(traj, k * dt, dt), *limits.angular_velocity * (1.0 + 1e-6)) << i;
     ASSERT_LE(worst_speed_ratio(traj, set, v, steps), 1.0 + 1e-6) << "case " << i;
     if (i % 2) {
       for (const double t : cruise_times(traj, 400)) {
         const double h = traj.duration() * 1e-6;
-        const double binding = std::max(chord_speed_ratio(traj, set, v, t, h), chord_angular_speed(traj, t, h) / *limits.angular_velocity);
+        const double binding =
+            std::max(chord_speed_ratio(traj, set, v, t, h), chord_angular_speed(traj, t, h) / *limits.angular_velocity);
         ASSERT_GE(binding, 0.995) << "case " << i;
       }
     }
@@ -284,7 +289,8 @@ TEST(ContinuousMotion, ToolCentrePointWithARotationalLimit) {
   tcp.add_relative(V::Zero());
   const Posed a, b(Eigen::Quaterniond(Eigen::AngleAxisd(1.5, V(0.2, 0.3, 1.0).normalized())), V(0.2, 0.1, 0.0));
   Limits limits{0.2, 2.0, std::nullopt};
-  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), tcp, limits, ProfileKind::trapezoid); }).find("not well-formed"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), tcp, limits, ProfileKind::trapezoid); }).find("not well-formed"),
+            std::string::npos);
   limits.angular_velocity = 0.5;
   for (const Path& path : {Path::lin(a, b), Path::lin(a, Posed(b.quaternion(), V::Zero()))}) {
     const Trajectory traj = plan(path, tcp, limits, ProfileKind::trapezoid);
@@ -298,7 +304,8 @@ TEST(ContinuousMotion, ToolCentrePointWithARotationalLimit) {
     EXPECT_LE(worst_speed_ratio(traj, tcp, 0.2, 20000), 1.0 + 1e-6);
     EXPECT_GE(peak, 0.995);
   }
-  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), MetricSetd(), limits, ProfileKind::trapezoid); }).find("empty"), std::string::npos);
+  EXPECT_NE(message_of([&] { plan(Path::lin(a, b), MetricSetd(), limits, ProfileKind::trapezoid); }).find("empty"),
+            std::string::npos);
 }
 
 TEST(ContinuousMotionBadInput, NamesTheArgument) {
@@ -309,8 +316,9 @@ TEST(ContinuousMotionBadInput, NamesTheArgument) {
   PlanOptions options;
   for (const double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
     options.corner_tolerance = bad;
-    EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, std::nullopt}, ProfileKind::trapezoid, options); })
-                  .find("corner_tolerance"),
+    EXPECT_NE(message_of([&] {
+                plan(path, set, Limits{0.1, 1.0, std::nullopt}, ProfileKind::trapezoid, options);
+              }).find("corner_tolerance"),
               std::string::npos);
   }
   for (const double bad : {0.0, -0.1, std::nan("")}) {
@@ -319,10 +327,12 @@ TEST(ContinuousMotionBadInput, NamesTheArgument) {
     EXPECT_NE(message_of([&] { p.with_limits({std::nullopt, bad}); }).find("acceleration"), std::string::npos);
     Limits limits{0.1, 1.0, std::nullopt};
     limits.angular_velocity = bad;
-    EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::trapezoid); }).find("angular_velocity"), std::string::npos);
+    EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::trapezoid); }).find("angular_velocity"),
+              std::string::npos);
     limits.angular_velocity.reset();
     limits.angular_acceleration = bad;
-    EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::trapezoid); }).find("angular_acceleration"), std::string::npos);
+    EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::trapezoid); }).find("angular_acceleration"),
+              std::string::npos);
   }
 }
 

@@ -86,7 +86,8 @@ TEST(ConvexHull, ReducedSetMeasuresExactlyAsTheCloud) {
       const V pivot = rnd.vector(0.2);
       ASSERT_DOUBLE_EQ(disp_distance(reduced, a, b, 1.0), disp_distance(cloud, a, b, 1.0));
       for (const auto kind : {Interpolation::screw, Interpolation::decoupled})
-        ASSERT_DOUBLE_EQ(section_length(reduced, a, b, kind, pivot, 1.0), section_length(cloud, a, b, kind, pivot, 1.0));
+        ASSERT_DOUBLE_EQ(section_length(reduced, a, b, kind, pivot, 1.0),
+                         section_length(cloud, a, b, kind, pivot, 1.0));
     }
   }
 }

@@ -64,7 +64,8 @@ TEST(Spline, PositionIsC2AndAngularVelocityContinuousAtKeys) {
     const Path path = Path::spline(keys, pivot);
     const auto starts = piece_starts(path);
     auto h = [&](std::size_t k) {
-      return ((keys[k + 1] * pivot) - (keys[k] * pivot)).norm() + metres_per_radian * angle_between(keys[k], keys[k + 1]);
+      return ((keys[k + 1] * pivot) - (keys[k] * pivot)).norm() +
+             metres_per_radian * angle_between(keys[k], keys[k + 1]);
     };
     for (std::size_t k = 0; k + 2 < keys.size(); ++k) {
       const CurveSection& a = *starts[k];
@@ -91,7 +92,8 @@ TEST(Spline, AntipodalKeyQuaternionsDoNotFlip) {
   const Posed a(q, V(0, 0, 0)), b(Eigen::Quaterniond(-q.coeffs()), V(0.2, 0.1, 0)), c(q, V(0.4, 0, 0));
   const Path path = Path::spline({a, b, c});
   double largest_turn = 0;
-  for (const Section& s : path.sections()) largest_turn = std::max(largest_turn, angle_between(section_start(s), section_end(s)));
+  for (const Section& s : path.sections())
+    largest_turn = std::max(largest_turn, angle_between(section_start(s), section_end(s)));
   EXPECT_LT(largest_turn, 1e-9);  // the orientation never moves: −q is the same rotation
 }
 
@@ -102,9 +104,11 @@ TEST(Spline, AntipodalKeyQuaternionsDoNotFlip) {
 // range); the spline's own check still stops unchecked ones.
 TEST(Spline, KeyPosesBeyondDoubleRangeAreRefused) {
   const Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
-  EXPECT_NE(message_of([&] { Posed(q, V(1e200, 0, 0)); }).find("must have coordinates within ±1e12 m"), std::string::npos);
+  EXPECT_NE(message_of([&] { Posed(q, V(1e200, 0, 0)); }).find("must have coordinates within ±1e12 m"),
+            std::string::npos);
   const std::string m = message_of([&] {
-    Path::spline({Posed::unchecked(q, V(1e200, 0, 0)), Posed::unchecked(q, V(0, 0, 0)), Posed::unchecked(q, V(0, 1e200, 0))});
+    Path::spline(
+        {Posed::unchecked(q, V(1e200, 0, 0)), Posed::unchecked(q, V(0, 0, 0)), Posed::unchecked(q, V(0, 1e200, 0))});
   });
   EXPECT_EQ(m, "poses[1] = (0, 0, 0): is too far from the key pose before it: their distance overflows");
 }
@@ -156,7 +160,8 @@ TEST(CurveSection, TightForAToolNearThePivot) {
     const Path path = Path::spline(random_keys(rnd, 4));
     for (const Section& s : path.sections()) {
       double fastest = 0;
-      for (int k = 0; k <= 20; ++k) fastest = std::max(fastest, max_point_speed(set, section_pose(s, k / 20.0), section_twist(s, k / 20.0)));
+      for (int k = 0; k <= 20; ++k)
+        fastest = std::max(fastest, max_point_speed(set, section_pose(s, k / 20.0), section_twist(s, k / 20.0)));
       ASSERT_LE(section_length(s, set), fastest * (1 + 3e-3));
     }
   }
@@ -180,8 +185,9 @@ TEST(Blend, StaysNearTheCornerAndJoinsWithoutKinks) {
     const Posed a = rnd.pose(0.5);
     const Posed via = rnd.nearby(a, 0.4, 1.0), b = rnd.nearby(via, 0.4, 1.0);
     const Path second = Path::lin(via, b);
-    const double limit = 0.5 * std::min((via.translation() - a.translation()).norm() + metres_per_radian * angle_between(a, via),
-                                        (b.translation() - via.translation()).norm() + metres_per_radian * angle_between(via, b));
+    const double limit =
+        0.5 * std::min((via.translation() - a.translation()).norm() + metres_per_radian * angle_between(a, via),
+                       (b.translation() - via.translation()).norm() + metres_per_radian * angle_between(via, b));
     const double before = rnd.uniform(0.05, 1.0) * limit, after = rnd.uniform(0.05, 1.0) * limit;
     Path path = Path::lin(a, via);
     path.then(second, before, after);
@@ -194,18 +200,21 @@ TEST(Blend, StaysNearTheCornerAndJoinsWithoutKinks) {
       if (std::holds_alternative<CurveSection>(s[k])) {
         // Within the blend the pivot stays within max(before, after) of the corner.
         for (int j = 0; j <= 10; ++j)
-          ASSERT_LE((section_pose(s[k], j / 10.0).translation() - via.translation()).norm(), std::max(before, after) * (1 + 1e-9));
+          ASSERT_LE((section_pose(s[k], j / 10.0).translation() - via.translation()).norm(),
+                    std::max(before, after) * (1 + 1e-9));
       }
     }
   }
 }
 
 TEST(Blend, ViaPointThatOnlyRotates) {
-  const Posed a = at(0, 0, 0), via = at(0, 0, 0, 1.0, V::UnitZ()), b = at(0, 0, 0, 1.0, V::UnitZ()) * at(0, 0, 0, 1.0, V::UnitX());
+  const Posed a = at(0, 0, 0), via = at(0, 0, 0, 1.0, V::UnitZ()),
+              b = at(0, 0, 0, 1.0, V::UnitZ()) * at(0, 0, 0, 1.0, V::UnitX());
   Path path = Path::lin(a, via);
   path.then(Path::lin(via, b), 0.02);
   ASSERT_TRUE(path.end().is_approx(b, 1e-12));
-  for (std::size_t k = 0; k + 1 < path.size(); ++k) ASSERT_LE(direction_jump(path.sections()[k], path.sections()[k + 1]), 1e-9);
+  for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    ASSERT_LE(direction_jump(path.sections()[k], path.sections()[k + 1]), 1e-9);
   for (const Section& s : path.sections()) ASSERT_LE(section_pose(s, 0.5).translation().norm(), 1e-12);
 }
 
@@ -213,10 +222,12 @@ TEST(Blend, TooLargeOrNotPositiveIsRefused) {
   const Posed a = at(0, 0, 0), via = at(0.2, 0, 0), b = at(0.2, 0.1, 0);
   Path path = Path::lin(a, via);
   EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), 0.06); }).find("half of the move after"), std::string::npos);
-  EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), 0.11, 0.04); }).find("half of the move before"), std::string::npos);
+  EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), 0.11, 0.04); }).find("half of the move before"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), -0.01); }).find("before"), std::string::npos);
   EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), std::nan("")); }).find("before = nan"), std::string::npos);
-  EXPECT_NE(message_of([&] { path.then(Path::lin(b, a), 0.01); }).find("must start where the path ends"), std::string::npos);
+  EXPECT_NE(message_of([&] { path.then(Path::lin(b, a), 0.01); }).find("must start where the path ends"),
+            std::string::npos);
   EXPECT_EQ(path.size(), 1u);  // a refused blend leaves the path as it was
 }
 

@@ -136,9 +136,9 @@ void check_sphere_formula(unsigned long salt, int cases, int samples) {
   Random rnd(salt);
   for (int i = 0; i < cases; ++i) {
     Twistd xi(rnd.vector(1.0), rnd.vector(3.0));
-    if (i % 10 == 0) xi.angular.setZero();                              // pure translation
-    if (i % 10 == 1) xi.linear = xi.angular * rnd.uniform(-1, 1);       // a pure screw along ω
-    if (i % 10 == 2) xi.linear = xi.angular.cross(rnd.vector(1.0));     // a pure rotation
+    if (i % 10 == 0) xi.angular.setZero();                           // pure translation
+    if (i % 10 == 1) xi.linear = xi.angular * rnd.uniform(-1, 1);    // a pure screw along ω
+    if (i % 10 == 2) xi.linear = xi.angular.cross(rnd.vector(1.0));  // a pure rotation
     const V center = rnd.vector(0.5);
     const double radius = rnd.uniform(0.01, 1.0);
     const double exact = sphere_speed(xi, center, radius);

@@ -68,7 +68,8 @@ TEST(Frames, IdentityFramesCommandThePlatformItself) {
 
 // Brute force: the fastest of the given points, relative ones at r (‖v + ω × r‖), absolute ones
 // at their current body position T⁻¹ a.
-double brute_force(const std::vector<V>& relative, const std::vector<V>& absolute, const Posed& pose, const Twistd& xi) {
+double brute_force(const std::vector<V>& relative, const std::vector<V>& absolute, const Posed& pose,
+                   const Twistd& xi) {
   double best = 0.0;
   for (const V& r : relative) best = std::max(best, (xi.linear + xi.angular.cross(r)).norm());
   for (const V& a : absolute) {
@@ -94,9 +95,12 @@ TEST(Frames, GeneratedIcosahedraMatchBruteForceOverTheirPoints) {
     for (int k = 0; k < 12; ++k) {
       const double s1 = k & 1 ? -1 : 1, s2 = k & 2 ? -1 : 1;
       V u;
-      if (k < 4) u = V(0, s1, s2 * phi);
-      else if (k < 8) u = V(s1, s2 * phi, 0);
-      else u = V(s2 * phi, 0, s1);
+      if (k < 4)
+        u = V(0, s1, s2 * phi);
+      else if (k < 8)
+        u = V(s1, s2 * phi, 0);
+      else
+        u = V(s2 * phi, 0, s1);
       u.normalize();
       relative.push_back(frames.tool() * (tool_radius * vertex_radius * u));
       absolute.push_back(frames.work() * (work_radius * vertex_radius * u));
@@ -157,7 +161,8 @@ TEST(FramesBadInput, RadiusAndGroup) {
   EXPECT_NE(message_of([&] { frames.add_tool_envelope(set, 0.0); }).find("radius = 0"), std::string::npos);
   EXPECT_NE(message_of([&] { frames.add_work_envelope(set, std::nan(""), Envelope::sphere); }).find("radius = nan"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { frames.add_tool_envelope(set, -1.0, Envelope::sphere); }).find("radius = -1"), std::string::npos);
+  EXPECT_NE(message_of([&] { frames.add_tool_envelope(set, -1.0, Envelope::sphere); }).find("radius = -1"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { frames.add_tool_envelope(set, 0.1, Envelope::icosahedron, -1); }).find("group = -1"),
             std::string::npos);
   Vector6 bad = Vector6::Zero();

@@ -23,8 +23,8 @@ using hexapod::TrajectoryCheck;
 using hexapod::WorkspaceCheck;
 using hexapod::xyzuvw_for_new_pivot;
 using testing::message_of;
-using testing::runtime_message_of;
 using testing::Random;
+using testing::runtime_message_of;
 using Legs = Hexapod::Legs;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 constexpr double pi = 3.14159265358979323846;
@@ -130,8 +130,14 @@ TEST(Hexapod, SymmetricSixSixLayoutHasTheJointsAtTheStatedAngles) {
     const double platform_angle[2] = {c - pi / 3 + gp / 2, c + pi / 3 - gp / 2};
     for (int j = 0; j < 2; ++j) {
       const int i = 2 * k + j;
-      EXPECT_LT((h.base_joints().col(i) - Eigen::Vector3d(0.2 * std::cos(base_angle[j]), 0.2 * std::sin(base_angle[j]), 0)).norm(), 1e-15);
-      EXPECT_LT((h.platform_joints().col(i) - Eigen::Vector3d(0.1 * std::cos(platform_angle[j]), 0.1 * std::sin(platform_angle[j]), 0)).norm(), 1e-15);
+      EXPECT_LT(
+          (h.base_joints().col(i) - Eigen::Vector3d(0.2 * std::cos(base_angle[j]), 0.2 * std::sin(base_angle[j]), 0))
+              .norm(),
+          1e-15);
+      EXPECT_LT((h.platform_joints().col(i) -
+                 Eigen::Vector3d(0.1 * std::cos(platform_angle[j]), 0.1 * std::sin(platform_angle[j]), 0))
+                    .norm(),
+                1e-15);
     }
   }
   // Leg 1 (base at +gb/2) and leg 2 (base at 120° − gb/2) end at the same platform pair.
@@ -150,10 +156,13 @@ TEST(Hexapod, SymmetricSixThreeLayoutJoinsPlatformJointsInPairs) {
   EXPECT_LT((h.platform_joints().col(1) - h.platform_joints().col(2)).norm(), 1e-16);
   EXPECT_LT((h.platform_joints().col(3) - h.platform_joints().col(4)).norm(), 1e-16);
   EXPECT_LT((h.platform_joints().col(5) - h.platform_joints().col(0)).norm(), 1e-15);
-  EXPECT_LT((h.platform_joints().col(1) - Eigen::Vector3d(0.1 * std::cos(pi / 3), 0.1 * std::sin(pi / 3), 0)).norm(), 1e-15);
-  EXPECT_LT((h.platform_joints().col(0) - Eigen::Vector3d(0.1 * std::cos(-pi / 3), 0.1 * std::sin(-pi / 3), 0)).norm(), 1e-15);
+  EXPECT_LT((h.platform_joints().col(1) - Eigen::Vector3d(0.1 * std::cos(pi / 3), 0.1 * std::sin(pi / 3), 0)).norm(),
+            1e-15);
+  EXPECT_LT((h.platform_joints().col(0) - Eigen::Vector3d(0.1 * std::cos(-pi / 3), 0.1 * std::sin(-pi / 3), 0)).norm(),
+            1e-15);
   // A 6-3 hexapod is not singular at home: forward kinematics still converges.
-  const Posed target = h.home() * Posed::exp(Twistd(Eigen::Vector3d(0.01, -0.005, 0.01), Eigen::Vector3d(0.02, 0.01, -0.03)));
+  const Posed target =
+      h.home() * Posed::exp(Twistd(Eigen::Vector3d(0.01, -0.005, 0.01), Eigen::Vector3d(0.02, 0.01, -0.03)));
   EXPECT_TRUE(h.forward(h.leg_lengths(target)).is_approx(target, 1e-12));
 }
 
@@ -288,7 +297,8 @@ TEST(HexapodTrajectory, LegSpeedGroupHoldsEveryLegToItsSpeedLimit) {
     }
     // The analytic leg speed J ξ agrees with finite differences of the leg lengths.
     const double t = rnd.uniform(0.1, 0.9) * trajectory.duration(), dt = 1e-6;
-    const Legs numeric = (h.leg_lengths(trajectory.sample(t + dt).pose) - h.leg_lengths(trajectory.sample(t - dt).pose)) / (2 * dt);
+    const Legs numeric =
+        (h.leg_lengths(trajectory.sample(t + dt).pose) - h.leg_lengths(trajectory.sample(t - dt).pose)) / (2 * dt);
     const TrajectorySample s = trajectory.sample(t);
     ASSERT_LT((h.leg_jacobian(s.pose) * s.body_twist.vector() - numeric).cwiseAbs().maxCoeff(), 1e-9);
   }
@@ -387,7 +397,8 @@ Legs dense_leg_rates(const Hexapod& h, const Section& section, int n) {
   Legs best = Legs::Zero();
   for (int k = 0; k <= n; ++k) {
     const double tau = static_cast<double>(k) / n;
-    best = best.cwiseMax((h.leg_jacobian(section_pose(section, tau)) * section_twist(section, tau).vector()).cwiseAbs());
+    best =
+        best.cwiseMax((h.leg_jacobian(section_pose(section, tau)) * section_twist(section, tau).vector()).cwiseAbs());
   }
   return best;
 }
@@ -399,7 +410,8 @@ TEST(HexapodJointMetric, LegRateIsTheDerivativeOfTheLegLengthAlongTheSection) {
     const Path path = random_hexapod_path(h, rnd, c);
     for (const Section& section : some_sections(path, 10)) {
       const double tau = rnd.uniform(0.01, 0.99), d = 1e-6;
-      const Legs numeric = (h.leg_lengths(section_pose(section, tau + d)) - h.leg_lengths(section_pose(section, tau - d))) / (2 * d);
+      const Legs numeric =
+          (h.leg_lengths(section_pose(section, tau + d)) - h.leg_lengths(section_pose(section, tau - d))) / (2 * d);
       const Legs exact = h.leg_jacobian(section_pose(section, tau)) * section_twist(section, tau).vector();
       ASSERT_LT((exact - numeric).cwiseAbs().maxCoeff(), 1e-8) << "case " << c;
     }
@@ -422,7 +434,8 @@ TEST(HexapodJointMetric, BoundIsNeverBelowTheDenseMaximumAndWithinTheTolerance) 
       for (int i = 0; i < 6; ++i) {
         ASSERT_GE(bound(i), dense(i)) << "case " << c << " leg " << i;
         // Tight: within the stated tolerance of the section's demand (plus what 20000 samples miss).
-        ASSERT_LE(bound(i), dense(i) + tolerance * demand * h.leg_speed()(i) * (1 + 1e-3) + 1e-12) << "case " << c << " leg " << i;
+        ASSERT_LE(bound(i), dense(i) + tolerance * demand * h.leg_speed()(i) * (1 + 1e-3) + 1e-12)
+            << "case " << c << " leg " << i;
       }
       ++sections;
     }
@@ -443,7 +456,8 @@ TEST(HexapodJointMetric, SectionLengthsScaleWithTheSystemVelocity) {
   ASSERT_EQ(slow.size(), path.size());
   for (std::size_t k = 0; k < path.size(); ++k) {
     EXPECT_NEAR(fast[k], 2 * slow[k], 1e-15 * fast[k]);
-    EXPECT_NEAR(slow[k], 0.05 * (h.leg_rate_bounds(path.sections()[k]).array() / h.leg_speed().array()).maxCoeff(), 1e-15);
+    EXPECT_NEAR(slow[k], 0.05 * (h.leg_rate_bounds(path.sections()[k]).array() / h.leg_speed().array()).maxCoeff(),
+                1e-15);
   }
   // A single section: joint_metric's lengths are exactly the leg lengths.
   const Path lin = Path::lin(reachable_pose(h, rnd), reachable_pose(h, rnd));
@@ -457,7 +471,8 @@ TEST(HexapodJointMetric, CircIsOnePieceAndKeepsTheLegs) {
   const auto shifted = [&](double x, double y) {
     return h.home() * Posed::exp(Twistd(Eigen::Vector3d(x, y, 0.0), Eigen::Vector3d(0.0, 0.0, 0.05)));
   };
-  const Path arc = Path::circ(shifted(0.02, 0.0), shifted(0.0, 0.02), shifted(-0.02, 0.0), Eigen::Vector3d::Zero(), 0.01);
+  const Path arc =
+      Path::circ(shifted(0.02, 0.0), shifted(0.0, 0.02), shifted(-0.02, 0.0), Eigen::Vector3d::Zero(), 0.01);
   ASSERT_GT(arc.size(), 5u);
   const Limits limits{0.1, 1.0, 20.0};
   const PlanOptions options = h.joint_metric(arc, limits);
@@ -471,7 +486,8 @@ TEST(HexapodJointMetric, CircIsOnePieceAndKeepsTheLegs) {
   MetricSetd with_group = tool_points();
   h.add_leg_speed_group(with_group, 1);
   const Trajectory rule_a = plan(arc, with_group, limits);
-  std::printf("CIRC of %zu sections: rule (b) %.3f s, rule (a) %.3f s\n", arc.size(), trajectory.duration(), rule_a.duration());
+  std::printf("CIRC of %zu sections: rule (b) %.3f s, rule (a) %.3f s\n", arc.size(), trajectory.duration(),
+              rule_a.duration());
 }
 
 // PlanOptions::joint_metric is evaluated on the path as planned: with corners blended it plans
@@ -484,14 +500,16 @@ TEST(HexapodJointMetric, OptionsEvaluateItOnTheBlendedPath) {
   };
   // A right-angle corner (blended) and a reversal (not blendable).
   Path path = Path::lin(shifted(0.0, 0.0), shifted(0.02, 0.0));
-  path.then(Path::lin(shifted(0.02, 0.0), shifted(0.02, 0.02))).then(Path::lin(shifted(0.02, 0.02), shifted(0.02, 0.0)));
+  path.then(Path::lin(shifted(0.02, 0.0), shifted(0.02, 0.02)))
+      .then(Path::lin(shifted(0.02, 0.02), shifted(0.02, 0.0)));
   const Limits limits{0.1, 1.0, 20.0};
   PlanOptions options;
   options.corner_tolerance = 0.005;
   options.joint_metric = h.joint_metric();
   const Trajectory planned = plan(path, tool_points(), limits, ProfileKind::scurve, options);
   const Path blended = path.blended(options.corner_tolerance);
-  const Trajectory reference = plan(blended, tool_points(), limits, ProfileKind::scurve, h.joint_metric(blended, limits));
+  const Trajectory reference =
+      plan(blended, tool_points(), limits, ProfileKind::scurve, h.joint_metric(blended, limits));
   EXPECT_EQ(planned.duration(), reference.duration());
   EXPECT_EQ(planned.section_lengths(), reference.section_lengths());
   ASSERT_EQ(planned.stops().size(), 1u);
@@ -499,8 +517,9 @@ TEST(HexapodJointMetric, OptionsEvaluateItOnTheBlendedPath) {
   // Its lengths and min_section_lengths are one or the other.
   options.min_section_lengths.assign(path.size(), 0.0);
   options.corner_tolerance = 0.0;
-  EXPECT_NE(message_of([&] { plan(path, tool_points(), limits, ProfileKind::scurve, options); }).find("with a joint_metric"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { plan(path, tool_points(), limits, ProfileKind::scurve, options); }).find("with a joint_metric"),
+      std::string::npos);
 }
 
 TEST(HexapodJointMetric, PlannedTrajectoriesKeepEveryLegWithinItsSpeed) {
@@ -513,7 +532,8 @@ TEST(HexapodJointMetric, PlannedTrajectoriesKeepEveryLegWithinItsSpeed) {
     const Path path = random_hexapod_path(h, rnd, c);
     const Trajectory trajectory = plan(path, set, limits, ProfileKind::scurve, h.joint_metric(path, limits));
     const TrajectoryCheck check = h.check_trajectory(trajectory, trajectory.duration() / 20000);
-    for (int i = 0; i < 6; ++i) ASSERT_LE(check.max_speed(i), h.leg_speed()(i) * (1 + 1e-9)) << "case " << c << " leg " << i;
+    for (int i = 0; i < 6; ++i)
+      ASSERT_LE(check.max_speed(i), h.leg_speed()(i) * (1 + 1e-9)) << "case " << c << " leg " << i;
     for (const LegExcursion& e : check.excursions) ASSERT_NE(e.kind, LegExcursion::Kind::speed) << "case " << c;
     fastest_without = std::max(fastest_without, h.check_trajectory(plan(path, set, limits), 1e-3).max_speed.maxCoeff());
   }
@@ -549,7 +569,8 @@ TEST(HexapodJointMetric, NeverSlowerThanTheLegSpeedGroupOnSingleMoves) {
   double sum_ratio = 0.0, smallest = 1e300, largest = 0.0;
   const int n = testing::case_count(200) / 4 + 3;
   for (int c = 0; c < n; ++c) {
-    const Path path = Path::lin(reachable_pose(h, rnd), reachable_pose(h, rnd), c % 2 ? Interpolation::screw : Interpolation::decoupled);
+    const Path path = Path::lin(reachable_pose(h, rnd), reachable_pose(h, rnd),
+                                c % 2 ? Interpolation::screw : Interpolation::decoupled);
     MetricSetd with_group = tool_points();
     h.add_leg_speed_group(with_group, 1);
     const double a = plan(path, with_group, limits).duration();
@@ -559,21 +580,26 @@ TEST(HexapodJointMetric, NeverSlowerThanTheLegSpeedGroupOnSingleMoves) {
     smallest = std::min(smallest, b / a);
     largest = std::max(largest, b / a);
   }
-  std::printf("rule (b) / rule (a) duration over %d random LIN moves: mean %.4f, min %.4f, max %.4f\n", n, sum_ratio / n,
-              smallest, largest);
+  std::printf("rule (b) / rule (a) duration over %d random LIN moves: mean %.4f, min %.4f, max %.4f\n", n,
+              sum_ratio / n, smallest, largest);
 }
 
 TEST(HexapodJointMetricBadInput, ToleranceAndSystemVelocity) {
   const Hexapod h = test_hexapod();
-  const Path path = Path::lin(h.home(), h.home() * Posed::exp(Twistd(Eigen::Vector3d(0, 0, 0.01), Eigen::Vector3d::Zero())));
-  EXPECT_NE(message_of([&] { h.leg_rate_bounds(path.sections().front(), 0.0); }).find("tolerance = 0: must be in (0, 1]"),
-            std::string::npos);
+  const Path path =
+      Path::lin(h.home(), h.home() * Posed::exp(Twistd(Eigen::Vector3d(0, 0, 0.01), Eigen::Vector3d::Zero())));
+  EXPECT_NE(
+      message_of([&] { h.leg_rate_bounds(path.sections().front(), 0.0); }).find("tolerance = 0: must be in (0, 1]"),
+      std::string::npos);
   EXPECT_NE(message_of([&] { h.leg_rate_bounds(path.sections().front(), std::nan("")); }).find("tolerance = nan"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { h.leg_rate_bounds(path.sections().front(), 2.0); }).find("tolerance = 2"), std::string::npos);
+  EXPECT_NE(message_of([&] { h.leg_rate_bounds(path.sections().front(), 2.0); }).find("tolerance = 2"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { h.leg_section_lengths(path, 0.0); }).find("system_velocity = 0"), std::string::npos);
   EXPECT_NE(message_of([&] { h.leg_section_lengths(path, -1.0); }).find("system_velocity = -1"), std::string::npos);
-  EXPECT_NE(message_of([&] { h.joint_metric(path, Limits{std::nan(""), 1.0, 1.0}); }).find("system_velocity = nan"),
+  EXPECT_NE(message_of([&] {
+              h.joint_metric(path, Limits{std::nan(""), 1.0, 1.0});
+            }).find("system_velocity = nan"),
             std::string::npos);
 }
 
@@ -623,8 +649,9 @@ TEST(HexapodJson, MissingKeyIsNamed) {
 
 TEST(HexapodJson, MisspeltKeyIsNamed) {
   const std::string text = edited("\"speed\"", "\"sped\"");
-  EXPECT_EQ(message_of([&] { Hexapod::from_json(text); })
-                .rfind("legs[0].sped = 0.01: unknown key (allowed here: base, platform, min, max, speed)", 0),
+  EXPECT_EQ(message_of([&] {
+              Hexapod::from_json(text);
+            }).rfind("legs[0].sped = 0.01: unknown key (allowed here: base, platform, min, max, speed)", 0),
             0u)
       << message_of([&] { Hexapod::from_json(text); });
 }
@@ -645,7 +672,8 @@ TEST(HexapodJson, WrongVectorLengthIsNamed) {
 
 TEST(HexapodJson, WrongLegCountIsNamed) {
   const std::string text = R"({"format": "dispkin.hexapod", "version": 1, "legs": []})";
-  EXPECT_NE(message_of([&] { Hexapod::from_json(text); }).find("legs = \"[]\": must be an array of 6"), std::string::npos);
+  EXPECT_NE(message_of([&] { Hexapod::from_json(text); }).find("legs = \"[]\": must be an array of 6"),
+            std::string::npos);
 }
 
 TEST(HexapodJson, WrongFormatIsNamed) {
@@ -659,7 +687,8 @@ TEST(HexapodJson, UnknownVersionIsNamed) {
 }
 
 TEST(HexapodJson, DescriptionThatIsNotAnObjectIsRefused) {
-  EXPECT_EQ(message_of([&] { Hexapod::from_json("[1, 2]"); }).rfind("description = \"[1,2]\": must be a JSON object", 0), 0u);
+  EXPECT_EQ(
+      message_of([&] { Hexapod::from_json("[1, 2]"); }).rfind("description = \"[1,2]\": must be a JSON object", 0), 0u);
 }
 
 TEST(HexapodJson, TextThatIsNotJsonIsRefused) {
@@ -683,8 +712,9 @@ TEST(HexapodJson, BadGeometryInAFileIsNamedWithThePath) {
 }
 
 TEST(HexapodJson, UnreadableFileIsNamed) {
-  EXPECT_NE(message_of([&] { Hexapod::load("/nonexistent/hexapod.json"); }).find("path = \"/nonexistent/hexapod.json\""),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { Hexapod::load("/nonexistent/hexapod.json"); }).find("path = \"/nonexistent/hexapod.json\""),
+      std::string::npos);
 }
 
 // --- bad geometry, one kind per test ------------------------------------------------------------
@@ -739,13 +769,20 @@ TEST(HexapodGeometry, NonPositiveLegSpeedIsRefused) {
 }
 
 TEST(HexapodGeometry, SymmetricGeneratorRefusesANonPositiveRadius) {
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(-0.1, 0.2, 0.1, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("base_radius = -0.1", 0), 0u);
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 0.2, 0.0, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("platform_radius = 0", 0), 0u);
+  EXPECT_EQ(
+      message_of([] { Hexapod::symmetric(-0.1, 0.2, 0.1, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("base_radius = -0.1", 0),
+      0u);
+  EXPECT_EQ(
+      message_of([] { Hexapod::symmetric(0.1, 0.2, 0.0, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("platform_radius = 0", 0),
+      0u);
 }
 
 TEST(HexapodGeometry, SymmetricGeneratorRefusesAGapOutsideZeroTo120Degrees) {
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 2.1, 0.1, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("base_gap = 2.1", 0), 0u);
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, -0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("platform_gap = -0.2", 0), 0u);
+  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 2.1, 0.1, 0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("base_gap = 2.1", 0),
+            0u);
+  EXPECT_EQ(
+      message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, -0.2, 0.2, 0.1, 0.3, 0.01); }).rfind("platform_gap = -0.2", 0),
+      0u);
 }
 
 TEST(HexapodGeometry, SymmetricGeneratorRefusesANonPositiveHeight) {
@@ -753,14 +790,18 @@ TEST(HexapodGeometry, SymmetricGeneratorRefusesANonPositiveHeight) {
 }
 
 TEST(HexapodGeometry, SymmetricGeneratorRefusesTheThreeThreeLayout) {
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 0.0, 0.1, 0.0, 0.2, 0.1, 0.3, 0.01); })
-                .rfind("base_gap = 0: and platform_gap = 0 would make a 3-3 hexapod", 0),
+  EXPECT_EQ(message_of([] {
+              Hexapod::symmetric(0.1, 0.0, 0.1, 0.0, 0.2, 0.1, 0.3, 0.01);
+            }).rfind("base_gap = 0: and platform_gap = 0 would make a 3-3 hexapod", 0),
             0u);
 }
 
 TEST(HexapodGeometry, SymmetricGeneratorChecksTheLegLimits) {
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, 0.2, 0.2, 0.3, 0.3, 0.01); }).rfind("leg_max[0] = 0.3", 0), 0u);
-  EXPECT_EQ(message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, 0.2, 0.2, 0.1, 0.3, -0.01); }).rfind("leg_speed[0] = -0.01", 0), 0u);
+  EXPECT_EQ(
+      message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, 0.2, 0.2, 0.3, 0.3, 0.01); }).rfind("leg_max[0] = 0.3", 0), 0u);
+  EXPECT_EQ(
+      message_of([] { Hexapod::symmetric(0.1, 0.2, 0.1, 0.2, 0.2, 0.1, 0.3, -0.01); }).rfind("leg_speed[0] = -0.01", 0),
+      0u);
 }
 
 }  // namespace

@@ -53,8 +53,8 @@ std::vector<Case> ortho_parallel_arms() {
   const Posed base(Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, -2.0, 0.5).normalized())),
                    Eigen::Vector3d(0.3, -1.2, 0.45));
   // A KR6-like table with joint offsets and a lateral (b) offset on joint 2; joint 5's offset is π
-  // (axis 6 against axis 4 at q = 0: an offset that bends the wrist there leaves the flip of doc/inverse-kinematics.md eq. 27
-  // and this fast path out).
+  // (axis 6 against axis 4 at q = 0: an offset that bends the wrist there leaves the flip of doc/inverse-kinematics.md
+  // eq. 27 and this fast path out).
   const RevoluteChain offsets = testing::chain_from_dh({{0.025, -testing::half_pi, 0.400, 0.3},
                                                         {0.455, 0.0, 0.06, -testing::half_pi + 0.2},
                                                         {0.035, -testing::half_pi, 0.0, -0.4},
@@ -101,7 +101,8 @@ void expect_same_sets(const RevoluteChain& chain, const IkSolutionSet& fast, con
   const double pose_precision = 8.0 * std::numeric_limits<double>::epsilon() * testing::link_length_sum(chain);
   const auto bound = [&](const Vector6d& q) {
     const double sigma_min =
-        Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(testing::space_jacobian(chain, Eigen::VectorXd(q))).singularValues()(5);
+        Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>>(testing::space_jacobian(chain, Eigen::VectorXd(q)))
+            .singularValues()(5);
     return std::max(1e-10, pose_precision / sigma_min);
   };
   for (int i = 0; i < fast.count; ++i) {
@@ -139,8 +140,8 @@ struct Comparison {
     }
     ++poses;
     expect_same_sets(chain, a, b, what, joints);
-    // Every solution reproduces the pose to ik_pose_tolerance; one kept as exact (error 0, doc/inverse-kinematics.md eq. 26),
-    // which includes every one of the fast path, to 1e-12.
+    // Every solution reproduces the pose to ik_pose_tolerance; one kept as exact (error 0, doc/inverse-kinematics.md
+    // eq. 26), which includes every one of the fast path, to 1e-12.
     for (int i = 0; i < a.count; ++i) {
       const detail::PoseError e = detail::pose_error(serial::forward(chain, Eigen::VectorXd(a[i])), pose);
       EXPECT_LE(e.worst(), a.error[static_cast<std::size_t>(i)] == 0.0 ? 1e-12 : serial::ik_pose_tolerance)

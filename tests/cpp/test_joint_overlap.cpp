@@ -14,10 +14,10 @@
 namespace dispkin {
 namespace {
 
-using serial::SerialArm;
 using serial::JointTrajectory;
 using serial::JointTrajectorySample;
 using serial::OverlappedJointTrajectory;
+using serial::SerialArm;
 using testing::message_of;
 using testing::Random;
 
@@ -83,15 +83,18 @@ TEST(JointOverlap, BadInputIsRefused) {
   Random rnd(4202);
   const SerialArm arm = testing::ur5e_arm();
   TwoMoves m = two_moves(rnd, arm);
-  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, m.after, -0.1); }).find("overlap = -0.1"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, m.after, -0.1); }).find("overlap = -0.1"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, m.after, 1e6); }).find("overlap"), std::string::npos);
   EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, m.after, std::nan("")); }).find("overlap = nan"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.after, m.after, 0.1); }).find("must start where"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.after, m.after, 0.1); }).find("must start where"),
+            std::string::npos);
   const SerialArm other = testing::kr6_arm();
-  const JointTrajectory elsewhere =
-      plan(JointPath(m.before.end(), testing::random_joints(rnd, other)), tool_set(), limits_at(0.5), ProfileKind::scurve, other);
-  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, elsewhere, 0.1); }).find("same arm"), std::string::npos);
+  const JointTrajectory elsewhere = plan(JointPath(m.before.end(), testing::random_joints(rnd, other)), tool_set(),
+                                         limits_at(0.5), ProfileKind::scurve, other);
+  EXPECT_NE(message_of([&] { OverlappedJointTrajectory(m.before, elsewhere, 0.1); }).find("same arm"),
+            std::string::npos);
 }
 
 }  // namespace

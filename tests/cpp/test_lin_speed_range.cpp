@@ -66,10 +66,18 @@ TEST(LinSpeedRange, LowerBoundIsExactForOneObject) {
   for (int i = 0; i < 200; ++i) {
     MetricSetd set;
     switch (i % 4) {
-      case 0: set.add_relative(rnd.vector(0.3)); break;
-      case 1: set.add_sphere(rnd.vector(0.3), rnd.uniform(0.01, 0.2), Frame::relative); break;
-      case 2: set.add_absolute(rnd.vector(1.0)); break;
-      default: set.add_sphere(rnd.vector(1.0), rnd.uniform(0.01, 0.2), Frame::absolute); break;
+      case 0:
+        set.add_relative(rnd.vector(0.3));
+        break;
+      case 1:
+        set.add_sphere(rnd.vector(0.3), rnd.uniform(0.01, 0.2), Frame::relative);
+        break;
+      case 2:
+        set.add_absolute(rnd.vector(1.0));
+        break;
+      default:
+        set.add_sphere(rnd.vector(1.0), rnd.uniform(0.01, 0.2), Frame::absolute);
+        break;
     }
     const Posed a = rnd.pose(0.5);
     const LinSection lin{a, rnd.nearby(a, 0.4, 2.5), Interpolation::decoupled, rnd.vector(0.1)};

@@ -24,7 +24,8 @@ double nearest_distance(const std::vector<Eigen::VectorXd>& solutions, const Eig
   double best = INFINITY;
   for (const Eigen::VectorXd& s : solutions) {
     double worst = 0.0;
-    for (Eigen::Index i = 0; i < q.size(); ++i) worst = std::max(worst, std::abs(std::remainder(s(i) - q(i), 2.0 * M_PI)));
+    for (Eigen::Index i = 0; i < q.size(); ++i)
+      worst = std::max(worst, std::abs(std::remainder(s(i) - q(i), 2.0 * M_PI)));
     best = std::min(best, worst);
   }
   return best;
@@ -100,9 +101,8 @@ TEST(LockedJoint, RoundTripsOnRandomSrsArms) {
 TEST(LockedJoint, ABadValueIsNamed) {
   const serial::RevoluteChain chain = dispkin::testing::franka_panda();
   std::vector<Eigen::VectorXd> out;
-  const std::string why = dispkin::testing::message_of([&] {
-    serial::locked_joint_inverse(chain, serial::find_locked_joint(chain), NAN, chain.tip_at_zero, out);
-  });
+  const std::string why = dispkin::testing::message_of(
+      [&] { serial::locked_joint_inverse(chain, serial::find_locked_joint(chain), NAN, chain.tip_at_zero, out); });
   EXPECT_NE(why.find("redundancy"), std::string::npos) << why;
 }
 

@@ -50,7 +50,8 @@ TEST(MetricSet, MixedSetsNeedOnePartWellFormedOnItsOwn) {
   EXPECT_FALSE(mixed.is_well_formed());
   const Posed a = Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 1.5, 0, -0.2, 0, 0, 0).finished());
   // The demonstration of why: a turn about the x axis through all three points has length 0.
-  const Posed b = a * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitX())), V(0, 0.2 * std::sin(0.5), 0.2 * (1 - std::cos(0.5))));
+  const Posed b = a * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitX())),
+                            V(0, 0.2 * std::sin(0.5), 0.2 * (1 - std::cos(0.5))));
   MetricSetd unchecked_rel;  // same geometry, evaluated piecewise
   EXPECT_NEAR(((b * V(0, 0, 0.2)) - (a * V(0, 0, 0.2))).norm(), 0.0, 1e-12);
   EXPECT_NEAR((b.inverse() * V(1, 0, 0) - a.inverse() * V(1, 0, 0)).norm(), 0.0, 1e-12);
@@ -126,8 +127,9 @@ TEST(MetricSetBadInput, GroupLimitNeedsTheSystemVelocity) {
   // A given system velocity is checked even where no group needs it.
   MetricSetd plain;
   plain.add_sphere(V::Zero(), 0.1);
-  EXPECT_NE(message_of([&] { section_length(plain, Posed(), Posed(), Interpolation::screw, V::Zero(), 0.0); })
-                .find("system_velocity = 0"),
+  EXPECT_NE(message_of([&] {
+              section_length(plain, Posed(), Posed(), Interpolation::screw, V::Zero(), 0.0);
+            }).find("system_velocity = 0"),
             std::string::npos);
   EXPECT_NE(message_of([&] { max_point_speed(plain, Posed(), Twistd(), std::nan("")); }).find("system_velocity = nan"),
             std::string::npos);

@@ -20,12 +20,12 @@
 namespace dispkin {
 namespace {
 
-using serial::SerialArm;
 using serial::FollowedTrajectory;
 using serial::JointTrajectory;
 using serial::JointTrajectorySample;
 using serial::JointVector;
 using serial::OverlappedMixedTrajectory;
+using serial::SerialArm;
 using testing::message_of;
 using testing::Random;
 
@@ -117,7 +117,8 @@ TEST(FollowedTrajectory, ReproducesTheCartesianPosesByForwardKinematics) {
           const double t = f.duration() * i / 50.0, h = 1e-5;
           const JointTrajectorySample l = f.sample(t - h), m = f.sample(t), r = f.sample(t + h);
           ASSERT_LE(largest((joints(r.q) - joints(l.q)) / (2 * h) - joints(m.qd)), 1e-6) << "t = " << t;
-          ASSERT_LE(largest((joints(r.qd) - joints(l.qd)) / (2 * h) - joints(m.qdd)), 1e-3 * (1.0 + largest(joints(m.qdd))))
+          ASSERT_LE(largest((joints(r.qd) - joints(l.qd)) / (2 * h) - joints(m.qdd)),
+                    1e-3 * (1.0 + largest(joints(m.qdd))))
               << "t = " << t;
         }
       }
@@ -152,7 +153,8 @@ void check_overlap(const OverlappedMixedTrajectory& o, const SerialArm& arm, dou
         ASSERT_EQ(joints(s.q), joints(own.q)) << "t = " << t;
       } else {
         const double local = first ? t : t - begin;
-        ASSERT_TRUE(arm.forward(joints(s.q)).is_approx(o.cartesian().trajectory().sample(local).pose, 1e-9)) << "t = " << t;
+        ASSERT_TRUE(arm.forward(joints(s.q)).is_approx(o.cartesian().trajectory().sample(local).pose, 1e-9))
+            << "t = " << t;
       }
       continue;
     }
@@ -217,14 +219,16 @@ TEST(MixedOverlap, BadInputIsRefused) {
   EXPECT_NE(message_of([&] { FollowedTrajectory::to_end(lin, ur, q); }).find("q_end = "), std::string::npos);
   EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, Eigen::VectorXd::Zero(5)); }).find("q_start = 5"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 0.0); }).find("spacing = 0"), std::string::npos);
-  EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 1e-9); }).find("spacing = 1e-09"), std::string::npos);
+  EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 0.0); }).find("spacing = 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, 1e-9); }).find("spacing = 1e-09"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { FollowedTrajectory::from_start(lin, ur, q, std::nan("")); }).find("spacing = nan"),
             std::string::npos);
   // Out of reach on the way: a LIN 3 m long.
   const Posed far = at_q * Posed(Eigen::Quaterniond::Identity(), Eigen::Vector3d(3.0, 0.0, 0.0));
-  const std::string out_of_reach =
-      message_of([&] { FollowedTrajectory::from_start(plan(Path::lin(at_q, far), tool_set(), limits_at(0.5)), ur, q); });
+  const std::string out_of_reach = message_of(
+      [&] { FollowedTrajectory::from_start(plan(Path::lin(at_q, far), tool_set(), limits_at(0.5)), ur, q); });
   EXPECT_NE(out_of_reach.find("trajectory = "), std::string::npos) << out_of_reach;
   EXPECT_NE(out_of_reach.find("no inverse-kinematics solution"), std::string::npos) << out_of_reach;
   // A joint limit on the way: the same LIN on an arm whose joint 1 may barely move.
@@ -244,13 +248,16 @@ TEST(MixedOverlap, BadInputIsRefused) {
   EXPECT_NE(singular.find("singular"), std::string::npos) << singular;
 
   // The overlap: its range, the joints where the moves meet, the arm.
-  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(ptp, followed, -0.1); }).find("overlap = -0.1"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(ptp, followed, -0.1); }).find("overlap = -0.1"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(ptp, followed, 1e6); }).find("overlap"), std::string::npos);
   EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(ptp, followed, std::nan("")); }).find("overlap = nan"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(followed, ptp, 0.1); }).find("must start where"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(followed, ptp, 0.1); }).find("must start where"),
+            std::string::npos);
   const JointTrajectory kr_ptp = plan(JointPath(other, q), tool_set(), limits_at(0.5), ProfileKind::scurve, kr);
-  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(kr_ptp, followed, 0.1); }).find("arm the PTP move"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedMixedTrajectory(kr_ptp, followed, 0.1); }).find("arm the PTP move"),
+            std::string::npos);
   EXPECT_NO_THROW(OverlappedMixedTrajectory(ptp, followed, 0.1));
 }
 

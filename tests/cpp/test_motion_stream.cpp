@@ -213,8 +213,9 @@ TEST(MotionStream, ForgetsWhatItRanBeforeATime) {
   EXPECT_EQ(kept.leg_count(), stream.leg_count());
   // Before the cut: the state where the first stretch kept starts, at most the cut.
   EXPECT_LE(kept.sample(0.0).s, kept.sample(cut).s);
-  kept.append(Path::lin(path.back().end(), Posed(Eigen::Matrix3d::Identity(), path.back().end().translation() + V(0.1, 0, 0))),
-              stream.duration() - 0.5);
+  kept.append(
+      Path::lin(path.back().end(), Posed(Eigen::Matrix3d::Identity(), path.back().end().translation() + V(0.1, 0, 0))),
+      stream.duration() - 0.5);
   EXPECT_GT(kept.duration(), stream.duration());
 }
 
@@ -225,12 +226,18 @@ TEST(MotionStream, RefusesWithAClearMessage) {
   EXPECT_NE(message_of([&] { stream.stop(0.0); }).find("nothing was appended yet"), std::string::npos);
   stream.append(path[0], 1.0);
   EXPECT_NE(message_of([&] { stream.append(path[2], 1.5); }).find("path.start"), std::string::npos);
-  EXPECT_NE(message_of([&] { stream.append(path[1], 0.5); }).find("t = 0.5: must be finite and not before the last request"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { stream.append(path[1], 0.5); }).find("t = 0.5: must be finite and not before the last request"),
+      std::string::npos);
   EXPECT_NE(message_of([&] { stream.resume(1.6); }).find("resumes a stopped motion only"), std::string::npos);
   EXPECT_NE(message_of([&] { stream.set_override(1.7, 0.0); }).find("factor = 0"), std::string::npos);
-  EXPECT_NE(message_of([] { MotionStream(tool_set(), Limits{0.2, 1.0, std::nullopt}); }).find("jerk"), std::string::npos);
-  EXPECT_NE(message_of([] { MotionStream(tool_set(), Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, -1.0); }).find("corner_tolerance = -1"),
+  EXPECT_NE(message_of([] {
+              MotionStream(tool_set(), Limits{0.2, 1.0, std::nullopt});
+            }).find("jerk"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              MotionStream(tool_set(), Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, -1.0);
+            }).find("corner_tolerance = -1"),
             std::string::npos);
   // Before the first move a default sample.
   EXPECT_EQ(MotionStream(tool_set(), Limits{0.2, 1.0, 10.0}).sample(1.0).s, 0.0);

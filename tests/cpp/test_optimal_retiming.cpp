@@ -59,7 +59,8 @@ TEST(Reachability, SlowsDownOnlyWhereALimitBinds) {
   EXPECT_NEAR(p.x[30], 1.0, 1e-12);
   for (int i = 0; i < n; ++i) EXPECT_LE(std::abs(p.u[i]), 1.0 + 1e-12);
 
-  std::vector<detail::GridInterval> blocked{{0.1, detail::ConvexPolygon(1.0, 1.0)}, {0.1, detail::ConvexPolygon(1.0, 1.0)}};
+  std::vector<detail::GridInterval> blocked{{0.1, detail::ConvexPolygon(1.0, 1.0)},
+                                            {0.1, detail::ConvexPolygon(1.0, 1.0)}};
   blocked[1].admissible.clip({0.0, -1.0, -0.5});  // x ≥ 0.5: it could never stop at the end
   EXPECT_EQ(detail::fastest_parameterisation(blocked, 0.0, 0.0).infeasible_interval, 1);
 }
@@ -74,7 +75,8 @@ Move corner_move(const serial::SerialArm& arm) {
   const Move m = lin_move(arm);
   const Posed a = arm.forward(m.q_start);
   const Posed b = section_end(m.path.sections().back());
-  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(-0.4, V::UnitX())) * b.quaternion(), b.translation() + V(-0.1, 0.2, 0.15));
+  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(-0.4, V::UnitX())) * b.quaternion(),
+                b.translation() + V(-0.1, 0.2, 0.15));
   return {m.q_start, Path::lin(a, b).then(Path::lin(b, c))};
 }
 
@@ -93,7 +95,8 @@ Ratios dense_ratios(const Trajectory& traj, const serial::SerialArm& arm, const 
   for (const JointSample& s : r.samples) {
     const Eigen::VectorXd torque = s.static_torque + s.dynamic_torque;
     out.velocity = std::max(out.velocity, (s.qd.cwiseAbs().array() / limits.velocity.array()).maxCoeff());
-    if (acceleration.size()) out.acceleration = std::max(out.acceleration, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
+    if (acceleration.size())
+      out.acceleration = std::max(out.acceleration, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
     out.torque = std::max(out.torque, (torque.cwiseAbs().array() / limits.effort.array()).maxCoeff());
   }
   return out;
@@ -211,8 +214,9 @@ TEST(OptimalRetiming, CoarseGridsAreRefinedUntilTheDenseCheckHolds) {
   const Ratios dense = dense_ratios(r.trajectory, arm, m.q_start, Eigen::VectorXd(), options.check_samples_between);
   EXPECT_LE(std::max(dense.velocity, dense.torque), 1.0);
   options.max_refinements = 0;
-  EXPECT_NE(runtime_message_of([&] { retime_optimal(m.path, tool(), fast, arm, m.q_start, options); })
-                .find("the dense check still finds a joint limit exceeded"),
+  EXPECT_NE(runtime_message_of([&] {
+              retime_optimal(m.path, tool(), fast, arm, m.q_start, options);
+            }).find("the dense check still finds a joint limit exceeded"),
             std::string::npos);
 }
 
@@ -228,8 +232,9 @@ TEST(OptimalRetiming, StaticOverloadIsAnErrorNotATrajectory) {
   xml.replace(at, xml.find('"', at + 13) - at + 1, "<mass value=\"400.0\"");
   const serial::SerialArm heavy = serial::SerialArm::from_urdf_string(xml, "base_link", "tool0");
   const Move m = lin_move(heavy);
-  EXPECT_NE(runtime_message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, std::nullopt}, heavy, m.q_start); })
-                .find("no speed makes this path feasible"),
+  EXPECT_NE(runtime_message_of([&] {
+              retime_optimal(m.path, tool(), Limits{0.2, 1.0, std::nullopt}, heavy, m.q_start);
+            }).find("no speed makes this path feasible"),
             std::string::npos);
 }
 
@@ -247,7 +252,8 @@ HexapodMove hexapod_move() {
   MetricSetd set;
   set.add_relative(shapes::icosahedron(0.03, V(0, 0, 0.02)));
   const Posed a = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.15, V::UnitX())), V(-0.02, 0.01, -0.01));
-  const Posed b = h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
+  const Posed b =
+      h.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(-0.2, V(0.3, 1, 0).normalized())), V(0.03, -0.02, 0.02));
   return {h, set, Path::lin(a, b).then(Path::lin(b, h.home()))};
 }
 
@@ -270,10 +276,11 @@ TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
     const JointLimitReport check = check_joint_limits(r.trajectory, h, dense);
     double acceleration_ratio = 0.0;
     for (const JointSample& s : check.samples) {
-      if (acceleration.size()) acceleration_ratio = std::max(acceleration_ratio, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
+      if (acceleration.size())
+        acceleration_ratio = std::max(acceleration_ratio, (s.qdd.cwiseAbs().array() / acceleration.array()).maxCoeff());
     }
-    std::printf("hexapod: %.4f s, dense leg speed / limit %.6f, leg acceleration / limit %.6f\n", r.trajectory.duration(),
-                check.velocity_factor, acceleration_ratio);
+    std::printf("hexapod: %.4f s, dense leg speed / limit %.6f, leg acceleration / limit %.6f\n",
+                r.trajectory.duration(), check.velocity_factor, acceleration_ratio);
     EXPECT_LE(check.velocity_factor, 1.0);
     EXPECT_LE(acceleration_ratio, 1.0);
     EXPECT_GT(std::max(check.velocity_factor, acceleration_ratio), 0.97);
@@ -287,7 +294,9 @@ TEST(OptimalRetiming, HexapodLegsKeepTheirSpeedsAndLengths) {
   }
   // A leg that leaves its range on the way is named.
   const Posed far = h.home() * Posed(Eigen::Quaterniond::Identity(), V(0.0, 0.0, 0.2));
-  EXPECT_NE(runtime_message_of([&] { retime_optimal(Path::lin(h.home(), far), set, fast, h); }).find("leaves its position range"),
+  EXPECT_NE(runtime_message_of([&] {
+              retime_optimal(Path::lin(h.home(), far), set, fast, h);
+            }).find("leaves its position range"),
             std::string::npos);
 }
 
@@ -302,16 +311,20 @@ TEST(OptimalRetiming, BadOptionsAreNamed) {
   };
   EXPECT_NE(message([](auto& o) { o.grid_intervals = 1; }).find("grid_intervals = 1"), std::string::npos);
   EXPECT_NE(message([](auto& o) { o.difference_step = 0; }).find("difference_step"), std::string::npos);
-  EXPECT_NE(message([](auto& o) { o.check_samples_between = -2; }).find("check_samples_between = -2"), std::string::npos);
-  EXPECT_NE(message([](auto& o) { o.max_refinements = -1; }).find("max_refinements = -1"), std::string::npos);
-  EXPECT_NE(message([](auto& o) { o.joint_acceleration = Eigen::VectorXd::Ones(3); }).find("joint_acceleration size = 3"),
+  EXPECT_NE(message([](auto& o) { o.check_samples_between = -2; }).find("check_samples_between = -2"),
             std::string::npos);
+  EXPECT_NE(message([](auto& o) { o.max_refinements = -1; }).find("max_refinements = -1"), std::string::npos);
+  EXPECT_NE(
+      message([](auto& o) { o.joint_acceleration = Eigen::VectorXd::Ones(3); }).find("joint_acceleration size = 3"),
+      std::string::npos);
   EXPECT_NE(message([](auto& o) {
               o.joint_acceleration = Eigen::VectorXd::Ones(6);
               o.joint_acceleration(2) = std::nan("");
             }).find("joint_acceleration[2]"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), limits, arm, Eigen::VectorXd::Zero(4)); }).find("q_start size = 4"),
+  EXPECT_NE(message_of([&] {
+              retime_optimal(m.path, tool(), limits, arm, Eigen::VectorXd::Zero(4));
+            }).find("q_start size = 4"),
             std::string::npos);
 }
 
@@ -396,12 +409,14 @@ TEST(JerkFilter, WindowKeepsTheJerkWhereTheAccelerationReverses) {
 double largest_sampled_jerk(const Trajectory& traj, double h) {
   std::vector<double> junctions;
   double s = 0.0;
-  for (std::size_t k = 0; k + 1 < traj.section_lengths().size(); ++k) junctions.push_back(s += traj.section_lengths()[k]);
+  for (std::size_t k = 0; k + 1 < traj.section_lengths().size(); ++k)
+    junctions.push_back(s += traj.section_lengths()[k]);
   double largest = 0.0;
   for (double t = 0.0; t + 3.0 * h <= traj.duration(); t += h) {
     double x[4];
     for (int k = 0; k < 4; ++k) x[k] = traj.sample(t + k * h).s;
-    const bool crosses = std::any_of(junctions.begin(), junctions.end(), [&](double at) { return x[0] < at && at < x[3]; });
+    const bool crosses =
+        std::any_of(junctions.begin(), junctions.end(), [&](double at) { return x[0] < at && at < x[3]; });
     if (crosses) continue;
     largest = std::max(largest, std::abs(x[3] - 3.0 * x[2] + 3.0 * x[1] - x[0]) / (h * h * h));
   }
@@ -434,10 +449,11 @@ TEST(JerkLimitedRetiming, KeepsTheJerkAndEveryLimitDensely) {
         Limits unjerked_limits = limits;
         unjerked_limits.jerk.reset();
         const OptimalRetimeResult unjerked = retime_optimal(m.path, set, unjerked_limits, arm, m.q_start, options);
-        std::printf("jerk-limited: %.4f s (unjerked %.4f s, window %.4f s, %d refinements); max sampled jerk %.3f of %.1f; "
-                    "dense ratios v %.6f a %.6f tau %.6f\n",
-                    r.trajectory.duration(), unjerked.trajectory.duration(), r.jerk_window, r.refinements, jerk, *limits.jerk,
-                    dense.velocity, dense.acceleration, dense.torque);
+        std::printf(
+            "jerk-limited: %.4f s (unjerked %.4f s, window %.4f s, %d refinements); max sampled jerk %.3f of %.1f; "
+            "dense ratios v %.6f a %.6f tau %.6f\n",
+            r.trajectory.duration(), unjerked.trajectory.duration(), r.jerk_window, r.refinements, jerk, *limits.jerk,
+            dense.velocity, dense.acceleration, dense.torque);
         EXPECT_LE(jerk, *limits.jerk * (1 + 1e-6));
         EXPECT_LE(dense.velocity, 1.0);
         EXPECT_LE(dense.acceleration, 1.0);
@@ -484,7 +500,8 @@ TEST(JerkLimitedRetiming, PassesTangentJunctionsAtSpeed) {
   const Move m = lin_move(arm);
   const Posed a = arm.forward(m.q_start);
   const Posed b(a.quaternion(), a.translation() + V(0.15, 0.15, 0.0));
-  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(0.3, V::UnitZ())) * a.quaternion(), a.translation() + V(0.3, 0.0, 0.0));
+  const Posed c(Eigen::Quaterniond(Eigen::AngleAxisd(0.3, V::UnitZ())) * a.quaternion(),
+                a.translation() + V(0.3, 0.0, 0.0));
   const Path path = Path::circ(a, b, c);
   const Limits limits{2.0, 20.0, 100.0};
   const OptimalRetimeResult r = retime_optimal(path, tool(), limits, arm, m.q_start);
@@ -536,7 +553,9 @@ TEST(JerkLimitedRetiming, BadJerkIsNamed) {
   const serial::SerialArm arm = ur5e();
   const Move m = lin_move(arm);
   for (const double jerk : {0.0, -1.0, std::nan("")}) {
-    EXPECT_NE(message_of([&] { retime_optimal(m.path, tool(), Limits{0.2, 1.0, jerk}, arm, m.q_start); }).find("jerk"),
+    EXPECT_NE(message_of([&] {
+                retime_optimal(m.path, tool(), Limits{0.2, 1.0, jerk}, arm, m.q_start);
+              }).find("jerk"),
               std::string::npos);
   }
 }

@@ -96,10 +96,14 @@ TEST(Overlap, BadInputIsRefused) {
   Random rnd(403);
   const Moves m = random_moves(rnd, ProfileKind::trapezoid);
   const double shorter = std::min(m.before.duration(), m.after.duration());
-  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, -0.1); }).find("overlap = -0.1"), std::string::npos);
-  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, shorter * 1.01); }).find("shorter move"), std::string::npos);
-  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, std::nan("")); }).find("overlap = nan"), std::string::npos);
-  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.after, m.before, 0.0); }).find("must start where"), std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, -0.1); }).find("overlap = -0.1"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, shorter * 1.01); }).find("shorter move"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.before, m.after, std::nan("")); }).find("overlap = nan"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { OverlappedTrajectory(m.after, m.before, 0.0); }).find("must start where"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ double sampled_speed(const MetricSetd& set, const std::function<Posed(double)>& 
     const double t = i / 2000.0;
     const Posed p = pose(t + h), m = pose(t - h);
     for (const V& r : g.relative_points) best = std::max(best, ((p * r) - (m * r)).norm() / (2 * h));
-    for (const V& x : g.absolute_points) best = std::max(best, ((p.inverse() * x) - (m.inverse() * x)).norm() / (2 * h));
+    for (const V& x : g.absolute_points)
+      best = std::max(best, ((p.inverse() * x) - (m.inverse() * x)).norm() / (2 * h));
   }
   return best;
 }
@@ -106,7 +107,8 @@ TEST(Path, CircFollowsTheArcAndSlerpsTheOrientation) {
       const V rc = c - center;
       double phi = std::atan2(normal.dot(e1.cross(rc)), e1.dot(rc));
       if (phi < -1e-9) phi += 2 * pi;
-      const Eigen::Quaterniond expected = Eigen::Quaterniond(Eigen::AngleAxisd(phi / span * total.norm(), total.normalized())) * qa;
+      const Eigen::Quaterniond expected =
+          Eigen::Quaterniond(Eigen::AngleAxisd(phi / span * total.norm(), total.normalized())) * qa;
       ASSERT_LT(p.quaternion().angularDistance(expected), 1e-9) << "u " << u;
     }
   }
@@ -123,8 +125,10 @@ TEST(Path, CircSectionsJoinWithContinuousVelocity) {
     const Posed end = section_end(sections[k]), next = section_start(sections[k + 1]);
     ASSERT_TRUE(end.is_approx(next, 1e-14)) << "sections join, k = " << k;
     // Velocity per unit τ at the end of k equals that at the start of k + 1 (equal sections).
-    const V v_end = (section_pose(sections[k], 1.0).translation() - section_pose(sections[k], 1.0 - h).translation()) / h;
-    const V v_next = (section_pose(sections[k + 1], h).translation() - section_pose(sections[k + 1], 0.0).translation()) / h;
+    const V v_end =
+        (section_pose(sections[k], 1.0).translation() - section_pose(sections[k], 1.0 - h).translation()) / h;
+    const V v_next =
+        (section_pose(sections[k + 1], h).translation() - section_pose(sections[k + 1], 0.0).translation()) / h;
     ASSERT_LT((v_end - v_next).norm(), 1e-6 * (1 + v_end.norm())) << k;
   }
 }
@@ -147,7 +151,8 @@ TEST(Path, ArcSectionLengthBoundsTheSampledMotion) {
     arc.rotation_angle = i % 5 == 0 ? 0.0 : rnd.uniform(0, 0.5);
     MetricSetd set;
     const bool absolute = i % 3 == 0;
-    for (int k = 0; k < 4; ++k) set.add_points({rnd.vector(absolute ? 1.0 : 0.4)}, absolute ? Frame::absolute : Frame::relative);
+    for (int k = 0; k < 4; ++k)
+      set.add_points({rnd.vector(absolute ? 1.0 : 0.4)}, absolute ? Frame::absolute : Frame::relative);
     const double length = arc.length(set, std::nullopt);
     const double sampled = sampled_speed(set, [&](double t) { return arc.pose(t); });
     ASSERT_GE(length, sampled * (1 - 1e-7)) << "case " << i;
@@ -162,7 +167,8 @@ TEST(Path, CircSectionLengthsAreTight) {
   for (int i = 0; i < 5; ++i) {
     const Posed a = rnd.pose(0.2);
     const Posed via(rnd.rotation(), a.translation() + rnd.vector(0.3));
-    const Posed b(a.quaternion() * Eigen::Quaterniond(Eigen::AngleAxisd(0.7, rnd.unit_vector())), a.translation() + rnd.vector(0.3));
+    const Posed b(a.quaternion() * Eigen::Quaterniond(Eigen::AngleAxisd(0.7, rnd.unit_vector())),
+                  a.translation() + rnd.vector(0.3));
     const double tolerance = 1e-3;
     const Path path = Path::circ(a, via, b, V::Zero(), tolerance);
     MetricSetd set;  // the TCP (the pivot) and a small tool around it
@@ -190,7 +196,8 @@ TEST(Path, SampleSpreadsUOverTheSectionsByTheirSize) {
   // along the second, 0.875 halfway through the turn.
   EXPECT_TRUE(path.sample(0.25).is_approx(a * Posed(Eigen::Quaterniond::Identity(), V(0.1, 0, 0)), 1e-14));
   EXPECT_TRUE(path.sample(0.625).is_approx(b * Posed(Eigen::Quaterniond::Identity(), V(0, 0.05, 0)), 1e-14));
-  EXPECT_TRUE(path.sample(0.875).is_approx(c * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V::Zero()), 1e-14));
+  EXPECT_TRUE(path.sample(0.875).is_approx(c * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.5, V::UnitZ())), V::Zero()),
+                                           1e-14));
   EXPECT_TRUE(path.sample(1.0).is_approx(d, 1e-14));
   EXPECT_TRUE(path.sample(-3.0).is_approx(a, 1e-15));
   EXPECT_TRUE(path.sample(7.0).is_approx(d, 1e-14));
@@ -249,9 +256,13 @@ TEST(PathBadInput, FromSections) {
   const Posed b = Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 1, 0, 0, 0, 0, 0).finished());
   const Posed off = Posed::from_xyzuvw((Eigen::Matrix<double, 6, 1>() << 0.5, 0.5, 0, 0, 0, 0).finished());
   const std::vector<Section> gap{LinSection{a, b}, LinSection{off, a}};
-  EXPECT_NE(message_of([&] { Path::from_sections(gap, 1.0, 1.0); }).find("must start where the path ends"), std::string::npos);
+  EXPECT_NE(message_of([&] { Path::from_sections(gap, 1.0, 1.0); }).find("must start where the path ends"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { Path::from_sections({}, 1.0, 1.0); }).find("sections"), std::string::npos);
-  EXPECT_NE(message_of([&] { Path::from_sections({LinSection{a, b}}, 0.0, 1.0); }).find("first_move_size = 0"), std::string::npos);
+  EXPECT_NE(message_of([&] {
+              Path::from_sections({LinSection{a, b}}, 0.0, 1.0);
+            }).find("first_move_size = 0"),
+            std::string::npos);
 }
 
 TEST(PathBadInput, Arguments) {
@@ -267,7 +278,8 @@ TEST(PathBadInput, Arguments) {
   EXPECT_NE(message_of([&] { Path::lin(a, b, Interpolation::decoupled, V(std::nan(""), 0, 0)); }).find("pivot"),
             std::string::npos);
   Path path = Path::lin(a, b);
-  EXPECT_NE(message_of([&] { path.then(Path::lin(off, a)); }).find("must start where the path ends"), std::string::npos);
+  EXPECT_NE(message_of([&] { path.then(Path::lin(off, a)); }).find("must start where the path ends"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -130,8 +130,9 @@ std::vector<std::string> fingerprints() {
     const Posed b = a * rnd.pose(0.02);
     const Path path = i % 2 ? Path::lin(a, b) : Path::lin(a, b, Interpolation::screw);
     const Limits limits{0.05, 0.5, 5.0};
-    lines.push_back("hexapod " + std::to_string(i) + " " +
-                    compact(fingerprint(plan(path, set, limits, ProfileKind::scurve, hexapod.joint_metric(path, limits)))));
+    lines.push_back(
+        "hexapod " + std::to_string(i) + " " +
+        compact(fingerprint(plan(path, set, limits, ProfileKind::scurve, hexapod.joint_metric(path, limits)))));
   }
   {
     const serial::SerialArm arm = testing::ur5e();
@@ -139,18 +140,24 @@ std::vector<std::string> fingerprints() {
     const Limits fast{1.0, 10.0, std::nullopt};
     OptimalRetimeOptions options;
     options.joint_acceleration = Eigen::VectorXd::Constant(6, 4.0);
-    lines.push_back("retime_optimal " + fingerprint(retime_optimal(move.path, testing::tool(), fast, arm, move.q_start, options).trajectory));
+    lines.push_back(
+        "retime_optimal " +
+        fingerprint(retime_optimal(move.path, testing::tool(), fast, arm, move.q_start, options).trajectory));
     const Limits jerk{1.0, 10.0, 200.0};
-    lines.push_back("retime_optimal_jerk " +
-                    fingerprint(retime_optimal(move.path, testing::tool(), jerk, arm, move.q_start, options).trajectory));
-    const RetimeResult scaled = retime_by_scaling(move.path, testing::tool(), jerk, ProfileKind::scurve, arm, move.q_start);
+    lines.push_back(
+        "retime_optimal_jerk " +
+        fingerprint(retime_optimal(move.path, testing::tool(), jerk, arm, move.q_start, options).trajectory));
+    const RetimeResult scaled =
+        retime_by_scaling(move.path, testing::tool(), jerk, ProfileKind::scurve, arm, move.q_start);
     lines.push_back("retime_by_scaling " + fingerprint(scaled.trajectory));
     const MetricSetd set = testing::random_set(rnd, 0.05);
-    const Path path = Path::lin(hexapod.home(), hexapod.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())),
-                                                                      Eigen::Vector3d(0.02, 0.0, 0.01)));
+    const Path path = Path::lin(
+        hexapod.home(), hexapod.home() * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX())),
+                                               Eigen::Vector3d(0.02, 0.0, 0.01)));
     options.joint_acceleration = Eigen::VectorXd::Constant(6, 0.2);
-    lines.push_back("retime_optimal_hexapod " +
-                    fingerprint(retime_optimal(path, set, Limits{0.05, 0.5, std::nullopt}, hexapod, options).trajectory));
+    lines.push_back(
+        "retime_optimal_hexapod " +
+        fingerprint(retime_optimal(path, set, Limits{0.05, 0.5, std::nullopt}, hexapod, options).trajectory));
   }
   return lines;
 }
@@ -170,7 +177,8 @@ TEST(PlanFingerprint, PlansAreBitForBitTheRecordedOnes) {
   int differing = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (lines[i] == recorded[i]) continue;
-    if (++differing <= 3) ADD_FAILURE() << "line " << i + 1 << " differs:\n  now      " << lines[i] << "\n  recorded " << recorded[i];
+    if (++differing <= 3)
+      ADD_FAILURE() << "line " << i + 1 << " differs:\n  now      " << lines[i] << "\n  recorded " << recorded[i];
   }
   EXPECT_EQ(differing, 0) << "of " << lines.size() << " plans";
 }

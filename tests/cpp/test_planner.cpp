@@ -23,9 +23,9 @@ namespace {
 using V = Eigen::Vector3d;
 using testing::message_of;
 using testing::Random;
+using testing::random_limits;
 using testing::random_path;
 using testing::random_set;
-using testing::random_limits;
 using testing::worst_speed_ratio;
 
 TEST(Planner, TheGuaranteeOnRandomPathsAndSets) {
@@ -97,7 +97,8 @@ TEST(Planner, FastestPointReachesTheLimitWhileCruising) {
     const double t = 0.5 * traj.duration(), dt = 1e-4;
     const Posed p = traj.sample(t).pose, q = traj.sample(t + dt).pose;
     double fastest = 0;
-    for (const V& r : set.groups().front().relative_points) fastest = std::max(fastest, ((q * r) - (p * r)).norm() / dt);
+    for (const V& r : set.groups().front().relative_points)
+      fastest = std::max(fastest, ((q * r) - (p * r)).norm() / dt);
     ASSERT_GE(fastest, 0.999 * limits.velocity);
     ASSERT_LE(fastest, limits.velocity * (1 + 1e-6));
   }
@@ -119,7 +120,8 @@ TEST(Planner, StopsAtCornersAndPassesTangentJunctions) {
   EXPECT_NEAR(traj.sample(first.duration()).s_dot, 0.0, 1e-12);
   EXPECT_NEAR(traj.duration(), first.duration() + Profile::scurve(0.4, 0.1, 0.5, 5.0).duration(), 1e-12);
   // A CIRC's sections are one piece.
-  const Path arc = Path::circ(a, Posed(Eigen::Quaterniond::Identity(), V(0.1, 0.1, 0)), Posed(Eigen::Quaterniond::Identity(), V(0.2, 0, 0)));
+  const Path arc = Path::circ(a, Posed(Eigen::Quaterniond::Identity(), V(0.1, 0.1, 0)),
+                              Posed(Eigen::Quaterniond::Identity(), V(0.2, 0, 0)));
   EXPECT_EQ(plan(arc, set, limits).piece_count(), 1u);
 }
 
@@ -134,11 +136,13 @@ TEST(Planner, ATrajectoryKeepsItsOwnLimitsAndJoinsUp) {
   const double length = traj.length();
   const Trajectory same = traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 0.1, 0.5, 5.0)}, 1));
   EXPECT_EQ(same.duration(), traj.duration());
-  EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 100.0, 500.0, 5000.0)}, 1)); })
-                .find(": must be at most the velocity limit over its span, 0.1 m/s"),
+  EXPECT_NE(message_of([&] {
+              traj.with_time_law(TimeLaw::consecutive({Profile::scurve(length, 100.0, 500.0, 5000.0)}, 1));
+            }).find(": must be at most the velocity limit over its span, 0.1 m/s"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { traj.with_time_law(TimeLaw::consecutive({Profile::scurve(2.0 * length, 0.1, 0.5, 5.0)}, 1)); })
-                .find("time_law distance = "),
+  EXPECT_NE(message_of([&] {
+              traj.with_time_law(TimeLaw::consecutive({Profile::scurve(2.0 * length, 0.1, 0.5, 5.0)}, 1));
+            }).find("time_law distance = "),
             std::string::npos);
   std::vector<Section> sections = traj.path().sections();
   const Posed far = Posed(Eigen::Quaterniond::Identity(), V(8.6, 0, 0));
@@ -251,10 +255,10 @@ TEST(Planner, CursorSamplesEqualPlainSamples) {
     const Trajectory traj = plan(random_path(rnd, i), set, Limits{0.2, 1.0, 10.0});
     const double T = traj.duration();
     std::vector<double> times;
-    for (int k = -5; k <= 1005; ++k) times.push_back(T * k / 1000.0);                  // forwards
-    for (int k = 1000; k >= 0; k -= 7) times.push_back(T * k / 1000.0);                // backwards
-    for (int k = 0; k < 300; ++k) times.push_back(rnd.uniform(-0.1 * T, 1.1 * T));    // random
-    for (double t : traj.characteristic_times()) {                                      // law phases
+    for (int k = -5; k <= 1005; ++k) times.push_back(T * k / 1000.0);               // forwards
+    for (int k = 1000; k >= 0; k -= 7) times.push_back(T * k / 1000.0);             // backwards
+    for (int k = 0; k < 300; ++k) times.push_back(rnd.uniform(-0.1 * T, 1.1 * T));  // random
+    for (double t : traj.characteristic_times()) {                                  // law phases
       times.push_back(t);
       times.push_back(std::nextafter(t, -1.0));
       times.push_back(std::nextafter(t, 2.0 * T + 1.0));
@@ -263,7 +267,9 @@ TEST(Planner, CursorSamplesEqualPlainSamples) {
     times.push_back(std::numeric_limits<double>::infinity());
     times.push_back(-std::numeric_limits<double>::infinity());
     Trajectory::Cursor cursor;
-    for (double t : times) expect_same_sample(traj.sample(t, cursor), traj.sample(t), "case " + std::to_string(i) + " t = " + std::to_string(t));
+    for (double t : times)
+      expect_same_sample(traj.sample(t, cursor), traj.sample(t),
+                         "case " + std::to_string(i) + " t = " + std::to_string(t));
     // A cursor from another trajectory (indices out of range here, or simply wrong).
     for (int k = 0; k < 50; ++k) {
       Trajectory::Cursor foreign;
@@ -282,7 +288,8 @@ TEST(Planner, CursorSamplesEqualPlainSamples) {
 TEST(Planner, MinimumSectionLengthsLengthenSections) {
   MetricSetd set;
   set.add_sphere(V::Zero(), 0.1);
-  const Posed a, b = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0)), c = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0.2, 0));
+  const Posed a, b = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0, 0)),
+                 c = Posed(Eigen::Quaterniond::Identity(), V(0.3, 0.2, 0));
   Path path = Path::lin(a, b);
   path.then(Path::lin(b, c));
   const Limits limits{0.1, 0.5, 5.0};
@@ -292,7 +299,8 @@ TEST(Planner, MinimumSectionLengthsLengthenSections) {
   const Trajectory longer = plan(path, set, limits, ProfileKind::scurve, options);
   EXPECT_DOUBLE_EQ(longer.section_lengths()[0], plain.section_lengths()[0]);
   EXPECT_DOUBLE_EQ(longer.section_lengths()[1], 0.5);
-  EXPECT_NEAR(longer.duration(), Profile::scurve(0.3, 0.1, 0.5, 5.0).duration() + Profile::scurve(0.5, 0.1, 0.5, 5.0).duration(), 1e-12);
+  EXPECT_NEAR(longer.duration(),
+              Profile::scurve(0.3, 0.1, 0.5, 5.0).duration() + Profile::scurve(0.5, 0.1, 0.5, 5.0).duration(), 1e-12);
   EXPECT_GT(longer.duration(), plain.duration());
   // Still on the path, and the sphere is slower than the system velocity on the long section.
   for (int k = 0; k <= 200; ++k) {
@@ -311,18 +319,22 @@ TEST(PlannerBadInput, MinimumSectionLengths) {
   const Limits limits{0.1, 1.0, 1.0};
   PlanOptions options;
   options.min_section_lengths = {0.1, 0.2};
-  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); })
-                .find("min_section_lengths size = 2: must be 0 or the path's section count 1"),
+  EXPECT_NE(message_of([&] {
+              plan(path, set, limits, ProfileKind::scurve, options);
+            }).find("min_section_lengths size = 2: must be 0 or the path's section count 1"),
             std::string::npos);
   options.min_section_lengths = {-0.1};
-  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = -0.1"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = -0.1"),
+      std::string::npos);
   options.min_section_lengths = {std::nan("")};
-  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = nan"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = nan"),
+      std::string::npos);
   options.min_section_lengths = {std::numeric_limits<double>::infinity()};
-  EXPECT_NE(message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = inf"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { plan(path, set, limits, ProfileKind::scurve, options); }).find("min_section_lengths[0] = inf"),
+      std::string::npos);
 }
 
 TEST(PlannerBadInput, Limits) {
@@ -332,8 +344,13 @@ TEST(PlannerBadInput, Limits) {
   EXPECT_NE(message_of([&] { plan(path, set, Limits{0.0, 1.0, 1.0}); }).find("velocity = 0"), std::string::npos);
   EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, -1.0, 1.0}); }).find("acceleration = -1"), std::string::npos);
   EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, std::nan("")}); }).find("jerk = nan"), std::string::npos);
-  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, std::nullopt}); }).find("jerk is missing"), std::string::npos);
-  EXPECT_NE(message_of([&] { plan(path, set, Limits{0.1, 1.0, 2.0}, ProfileKind::trapezoid); }).find("jerk = 2"),
+  EXPECT_NE(message_of([&] {
+              plan(path, set, Limits{0.1, 1.0, std::nullopt});
+            }).find("jerk is missing"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              plan(path, set, Limits{0.1, 1.0, 2.0}, ProfileKind::trapezoid);
+            }).find("jerk = 2"),
             std::string::npos);
   MetricSetd line;
   line.add_relative(std::vector<V>{V::Zero(), V::UnitX()});
@@ -448,7 +465,8 @@ TEST(SectionMotion, CheapFormsOnLongPaths) {
         ASSERT_LE(std::abs(arc->angle), detail::small_angle);
         ASSERT_LE(std::abs(0.5 * arc->rotation_angle), detail::small_angle);
       } else if (const auto* curve = std::get_if<CurveSection>(&section)) {
-        for (double v : {curve->v0, 0.5 * (curve->v0 + curve->v1), curve->v1}) ASSERT_LE(curve->rotation.value(v).norm(), detail::series_angle);
+        for (double v : {curve->v0, 0.5 * (curve->v0 + curve->v1), curve->v1})
+          ASSERT_LE(curve->rotation.value(v).norm(), detail::series_angle);
       }
     }
     Trajectory::Cursor cursor;

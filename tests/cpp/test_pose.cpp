@@ -153,8 +153,8 @@ TEST(Pose, ExpMatchesTheMatrixExponential) {
 
 TEST(Pose, ExpLogRoundTripsAtIdentitySmallAnglesAndNearPi) {
   Random rnd(7);
-  const double angles[] = {0.0, 1e-300, 1e-15, 1e-12, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 2.0, 3.0,
-                           pi - 1e-4, pi - 1e-6, pi - 1e-8, pi - 1e-10};
+  const double angles[] = {0.0, 1e-300, 1e-15, 1e-12, 1e-8,      1e-6,      1e-4,      1e-3,      1e-2,
+                           0.1, 1.0,    2.0,   3.0,   pi - 1e-4, pi - 1e-6, pi - 1e-8, pi - 1e-10};
   for (const double angle : angles) {
     for (int i = 0; i < 500; ++i) {
       const Twistd xi(rnd.vector(1.0), rnd.unit_vector() * angle);

@@ -181,7 +181,9 @@ double direct_change_distance(const Limits& c) {
   return 0.5 * (c.v_start + c.v_end) * time;
 }
 
-bool close(double x, double y, double tolerance) { return std::abs(x - y) <= tolerance * std::max(std::abs(y), 1e-300); }
+bool close(double x, double y, double tolerance) {
+  return std::abs(x - y) <= tolerance * std::max(std::abs(y), 1e-300);
+}
 
 // --- sweeps ------------------------------------------------------------------------------------
 
@@ -221,10 +223,12 @@ TEST(Profile, FromPartsRefusesPartsThatAreNoLaw) {
   EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("phases[2].end (s, v, a) = ("), std::string::npos);
   bad = law.parts();
   bad.peak_velocity = 0.5 * law.peak_velocity();
-  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("must be within [0, peak_velocity = 0.125]"), std::string::npos);
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("must be within [0, peak_velocity = 0.125]"),
+            std::string::npos);
   bad = law.parts();
   bad.distance *= 2.0;
-  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("end.s = 0.3: must be the distance 0.6"), std::string::npos);
+  EXPECT_NE(message_of([&] { Profile::from_parts(bad); }).find("end.s = 0.3: must be the distance 0.6"),
+            std::string::npos);
   Profile::Parts faster = law.parts();
   const double f = 1000.0;
   const auto scale = [f](ProfileState& x) {
@@ -322,7 +326,9 @@ TEST(Profile, ScurveBoundaryVelocitySweep) {
       }
     }
     ASSERT_TRUE(!cruises || p.peak_velocity() == c.v_max || p.peak_velocity() == std::max(c.v_start, c.v_end))
-        << "case " << i << ": cruises " << cruise_time << " s below v_max, peak " << p.peak_velocity() << ", T " << p.duration() << ", S " << c.distance << " v " << c.v_start << " " << c.v_end << " " << c.v_max << " a " << c.a_max << " j " << c.j_max;
+        << "case " << i << ": cruises " << cruise_time << " s below v_max, peak " << p.peak_velocity() << ", T "
+        << p.duration() << ", S " << c.distance << " v " << c.v_start << " " << c.v_end << " " << c.v_max << " a "
+        << c.a_max << " j " << c.j_max;
   }
   EXPECT_GT(planned, n / 2);
   EXPECT_GT(refused, 0);
@@ -456,8 +462,9 @@ TEST(Profile, OverflowingDurationsAreRefused) {
             "v_max = 1e-308: with a_max = 1 over distance = 10: the law's duration overflows the double range "
             "(limits outside dispkin's numeric range [1e-12, 1e12])");
   EXPECT_NE(message_of([] { Profile::trapezoid(1e300, 1e-12, 1.0); }).find("duration overflows"), std::string::npos);
-  EXPECT_NE(message_of([] { Profile::scurve(10.0, 1e-308, 1.0, 1.0); }).find("v_max = 1e-308: with a_max = 1, j_max = 1"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([] { Profile::scurve(10.0, 1e-308, 1.0, 1.0); }).find("v_max = 1e-308: with a_max = 1, j_max = 1"),
+      std::string::npos);
   EXPECT_TRUE(std::isfinite(Profile::scurve(1.0, 1.0, 1e-308, 1e-308).duration()));
 }
 
@@ -511,10 +518,10 @@ TEST(Profile, ScurveStructures) {
     double distance, v_max, a_max, j_max;
     int phases;
   };
-  for (const Expected& e : {Expected{10.0, 1.0, 1.0, 1.0, 5},   // v reached, a just reached (v = a²/j): no hold
-                            Expected{10.0, 1.0, 0.5, 1.0, 7},   // v and a reached
-                            Expected{1.0, 1.0, 0.5, 1.0, 6},    // a reached, v not
-                            Expected{0.1, 1.0, 1.0, 1.0, 4},    // neither
+  for (const Expected& e : {Expected{10.0, 1.0, 1.0, 1.0, 5},     // v reached, a just reached (v = a²/j): no hold
+                            Expected{10.0, 1.0, 0.5, 1.0, 7},     // v and a reached
+                            Expected{1.0, 1.0, 0.5, 1.0, 6},      // a reached, v not
+                            Expected{0.1, 1.0, 1.0, 1.0, 4},      // neither
                             Expected{10.0, 0.1, 1.0, 1.0, 5}}) {  // v reached, a never (v < a²/j)
     const Profile p = Profile::scurve(e.distance, e.v_max, e.a_max, e.j_max);
     EXPECT_EQ(p.phase_count(), e.phases) << e.distance << " " << e.v_max << " " << e.a_max;
@@ -583,32 +590,41 @@ TEST(ProfileErrors, DistanceNotFinite) {
   EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(kInf, 1, 1, 1); }), "distance = inf: must be finite"));
 }
 TEST(ProfileErrors, DistanceNegative) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(-1e-9, 1, 1, 1); }), "distance = -1e-09: must be finite and not negative"));
+  EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(-1e-9, 1, 1, 1); }),
+                          "distance = -1e-09: must be finite and not negative"));
 }
 TEST(ProfileErrors, VelocityLimitNotPositive) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 0, 1); }), "v_max = 0: must be finite and greater than zero"));
+  EXPECT_TRUE(
+      starts_with(message_of([] { Profile::trapezoid(1, 0, 1); }), "v_max = 0: must be finite and greater than zero"));
   EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, kNaN, 1, 1); }), "v_max = nan: "));
 }
 TEST(ProfileErrors, AccelerationLimitNotPositive) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 1, -2); }), "a_max = -2: must be finite and greater than zero"));
+  EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 1, -2); }),
+                          "a_max = -2: must be finite and greater than zero"));
   EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, kInf, 1); }), "a_max = inf: "));
 }
 TEST(ProfileErrors, JerkLimitNotPositive) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, 1, 0); }), "j_max = 0: must be finite and greater than zero"));
+  EXPECT_TRUE(
+      starts_with(message_of([] { Profile::scurve(1, 1, 1, 0); }), "j_max = 0: must be finite and greater than zero"));
   EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, 1, kNaN); }), "j_max = nan: "));
 }
 TEST(ProfileErrors, StartVelocityOutOfRange) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 1, 1, 1.5); }), "v_start = 1.5: must be finite and within [0, v_max = 1]"));
+  EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 1, 1, 1.5); }),
+                          "v_start = 1.5: must be finite and within [0, v_max = 1]"));
   EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, 1, 1, -0.1); }), "v_start = -0.1: "));
 }
 TEST(ProfileErrors, EndVelocityOutOfRange) {
-  EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, 1, 1, 0, kNaN); }), "v_end = nan: must be finite and within [0, v_max = 1]"));
+  EXPECT_TRUE(starts_with(message_of([] { Profile::scurve(1, 1, 1, 1, 0, kNaN); }),
+                          "v_end = nan: must be finite and within [0, v_max = 1]"));
   EXPECT_TRUE(starts_with(message_of([] { Profile::trapezoid(1, 1, 1, 0, 2); }), "v_end = 2: "));
 }
 TEST(ProfileErrors, TrapezoidTooShort) {
   // From 1 to 0 at a = 1 needs 0.5.
   const std::string m = message_of([] { Profile::trapezoid(0.4, 1, 1, 1, 0); });
-  EXPECT_TRUE(starts_with(m, "distance = 0.4: too short to change the velocity from v_start = 1 to v_end = 0 under a_max = 1: it needs at least 0.5")) << m;
+  EXPECT_TRUE(starts_with(m,
+                          "distance = 0.4: too short to change the velocity from v_start = 1 to v_end = 0 under a_max "
+                          "= 1: it needs at least 0.5"))
+      << m;
 }
 // Subnormal boundary velocities (fuzzed in strict mode): S = 0 between boundary velocities of
 // 1.4e-308 and 2.8e-309 m/s at a_max = 5.5e-299 — the distance the change needs, 6e-318 m,
@@ -618,8 +634,10 @@ TEST(ProfileErrors, ZeroDistanceBetweenDifferentTinyVelocities) {
   const double a = 5.4502595765602775e-299, v0 = 1.3906733001411379e-308, v1 = 2.7894907876201549e-309;
   for (const bool scurve : {false, true}) {
     const std::string message = message_of([&] {
-      if (scurve) Profile::scurve(0.0, 0.5, a, 1.0, v0, v1);
-      else Profile::trapezoid(0.0, 0.5, a, v0, v1);
+      if (scurve)
+        Profile::scurve(0.0, 0.5, a, 1.0, v0, v1);
+      else
+        Profile::trapezoid(0.0, 0.5, a, v0, v1);
     });
     EXPECT_EQ(message.rfind("distance = 0: too short to change the velocity from v_start = 1.39067330014e-308", 0), 0u)
         << message;
@@ -629,7 +647,10 @@ TEST(ProfileErrors, ZeroDistanceBetweenDifferentTinyVelocities) {
 TEST(ProfileErrors, ScurveTooShort) {
   // From 0 to 1 at a = j = 1 needs (0 + 1)/2 · (1/1 + 1/1) = 1.
   const std::string m = message_of([] { Profile::scurve(0.9, 1, 1, 1, 0, 1); });
-  EXPECT_TRUE(starts_with(m, "distance = 0.9: too short to change the velocity from v_start = 0 to v_end = 1 under a_max = 1, j_max = 1: it needs at least 1")) << m;
+  EXPECT_TRUE(starts_with(m,
+                          "distance = 0.9: too short to change the velocity from v_start = 0 to v_end = 1 under a_max "
+                          "= 1, j_max = 1: it needs at least 1"))
+      << m;
 }
 
 // from_phases: the phases of an S-curve with boundary velocities give back the same law; phases
@@ -680,16 +701,20 @@ TEST(Profile, FromPhasesRebuildsALaw) {
   EXPECT_EQ(one.state_at(0.0).v, 0.0);
   EXPECT_EQ(one.state_at(one.duration()).s, one.distance());
 
-  EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.31, 0.05, 0.0); }).find("do not lead"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.31, 0.05, 0.0); }).find("do not lead"),
+      std::string::npos);
   const double dip_d[] = {2.0}, dip_j[] = {2.0};  // ṡ = (t − 1)² − 0.01: below 0 around t = 1
-  EXPECT_NE(message_of([&] { Profile::from_phases(dip_d, dip_j, 1, 0.99, -2.0, 2.0 / 3.0 - 0.02, 0.99, 2.0); }).find("negative"),
+  EXPECT_NE(message_of([&] {
+              Profile::from_phases(dip_d, dip_j, 1, 0.99, -2.0, 2.0 / 3.0 - 0.02, 0.99, 2.0);
+            }).find("negative"),
             std::string::npos);
   EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, 0, 0.1, 0.0, 0.3, 0.05, 0.0); }).find("count = 0"),
             std::string::npos);
   durations[1] = kNaN;
-  EXPECT_NE(message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.3, 0.05, 0.0); }).find("durations[1]"),
-            std::string::npos);
+  EXPECT_NE(
+      message_of([&] { Profile::from_phases(durations, jerks, n, 0.1, 0.0, 0.3, 0.05, 0.0); }).find("durations[1]"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ struct State {
 
 std::string describe_case(const State& c) {
   char text[400];
-  std::snprintf(text, sizeof text, "distance=%.17g v_max=%.17g a_max=%.17g j_max=%.17g v_start=%.17g a_start=%.17g v_end=%.17g",
+  std::snprintf(text, sizeof text,
+                "distance=%.17g v_max=%.17g a_max=%.17g j_max=%.17g v_start=%.17g a_start=%.17g v_end=%.17g",
                 c.distance, c.v_max, c.a_max, c.j_max, c.v_start, c.a_start, c.v_end);
   return text;
 }
@@ -54,18 +55,36 @@ State random_state(Random& random, bool beyond) {
     c.a_start = c.a_max * random.uniform(-1.0, 1.0);
     c.v_end = c.v_max * random.uniform(0.0, 1.0);
     switch (random.integer(0, 6)) {
-      case 0: c.v_end = c.v_max; break;
-      case 1: c.v_end = 0.0; break;
-      case 2: c.a_start = random.integer(0, 1) ? c.a_max : -c.a_max; break;
-      case 3: c.v_start = 0.0; c.a_start = std::abs(c.a_start); break;
-      case 4: c.v_start = c.v_max - c.a_start * std::abs(c.a_start) / (2.0 * c.j_max); break;  // v_n = v_max
-      default: break;
+      case 0:
+        c.v_end = c.v_max;
+        break;
+      case 1:
+        c.v_end = 0.0;
+        break;
+      case 2:
+        c.a_start = random.integer(0, 1) ? c.a_max : -c.a_max;
+        break;
+      case 3:
+        c.v_start = 0.0;
+        c.a_start = std::abs(c.a_start);
+        break;
+      case 4:
+        c.v_start = c.v_max - c.a_start * std::abs(c.a_start) / (2.0 * c.j_max);
+        break;  // v_n = v_max
+      default:
+        break;
     }
     if (beyond) {
       switch (random.integer(0, 2)) {
-        case 0: c.v_start = c.v_max * random.uniform(1.0, 3.0); break;
-        case 1: c.a_start = c.a_max * random.uniform(1.0, 3.0) * (random.integer(0, 1) ? 1.0 : -1.0); break;
-        default: c.a_start = std::abs(c.a_start); c.v_start = c.v_max - c.a_start * c.a_start / c.j_max * random.uniform(0.0, 0.5);
+        case 0:
+          c.v_start = c.v_max * random.uniform(1.0, 3.0);
+          break;
+        case 1:
+          c.a_start = c.a_max * random.uniform(1.0, 3.0) * (random.integer(0, 1) ? 1.0 : -1.0);
+          break;
+        default:
+          c.a_start = std::abs(c.a_start);
+          c.v_start = c.v_max - c.a_start * c.a_start / c.j_max * random.uniform(0.0, 0.5);
       }
     }
     const double v_n = natural_velocity(c.v_start, c.a_start, c.j_max);
@@ -94,10 +113,12 @@ double needed_distance(const std::string& message) {
   // only while it falls to it.
   const double v_bound = std::max({c.v_max, c.v_start, natural_velocity(c.v_start, std::max(c.a_start, 0.0), c.j_max)});
   const double v_scale = v_bound + a_bound * T;
-  const double v_tol = 1e-9 * v_scale, a_tol = 1e-9 * (a_bound + c.j_max * T), s_tol = 1e-9 * (c.distance + v_scale * T);
+  const double v_tol = 1e-9 * v_scale, a_tol = 1e-9 * (a_bound + c.j_max * T),
+               s_tol = 1e-9 * (c.distance + v_scale * T);
 
   const ProfileState first = p.state_at(0.0), last = p.state_at(T);
-  if (first.s != 0.0 || std::abs(first.v - c.v_start) > 1e-12 * v_scale || std::abs(first.a - c.a_start) > 1e-12 * a_bound)
+  if (first.s != 0.0 || std::abs(first.v - c.v_start) > 1e-12 * v_scale ||
+      std::abs(first.a - c.a_start) > 1e-12 * a_bound)
     return fail("start state");
   if (last.s != c.distance || last.v != c.v_end || last.a != 0.0) return fail("end state (state_at(T))");
   // The last phase reaches the end state (not only the state held after the law).
@@ -306,11 +327,16 @@ TEST(ProfileFromState, BadInput) {
   const auto starts = [](const std::string& m, const std::string& prefix) { return m.rfind(prefix, 0) == 0; };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(starts(message_of([&] { Profile::from_state(nan, 1, 1, 1); }), "distance = nan: must be finite"));
-  EXPECT_TRUE(starts(message_of([] { Profile::from_state(-1, 1, 1, 1); }), "distance = -1: must be finite and not negative"));
-  EXPECT_TRUE(starts(message_of([] { Profile::from_state(1, 0, 1, 1); }), "v_max = 0: must be finite and greater than zero"));
-  EXPECT_TRUE(starts(message_of([] { Profile::from_state(1, 1, -1, 1); }), "a_max = -1: must be finite and greater than zero"));
-  EXPECT_TRUE(starts(message_of([&] { Profile::from_state(1, 1, 1, nan); }), "j_max = nan: must be finite and greater than zero"));
-  EXPECT_TRUE(starts(message_of([] { Profile::from_state(1, 1, 1, 1, -0.5); }), "v_start = -0.5: must be finite and not negative"));
+  EXPECT_TRUE(
+      starts(message_of([] { Profile::from_state(-1, 1, 1, 1); }), "distance = -1: must be finite and not negative"));
+  EXPECT_TRUE(
+      starts(message_of([] { Profile::from_state(1, 0, 1, 1); }), "v_max = 0: must be finite and greater than zero"));
+  EXPECT_TRUE(
+      starts(message_of([] { Profile::from_state(1, 1, -1, 1); }), "a_max = -1: must be finite and greater than zero"));
+  EXPECT_TRUE(starts(message_of([&] { Profile::from_state(1, 1, 1, nan); }),
+                     "j_max = nan: must be finite and greater than zero"));
+  EXPECT_TRUE(starts(message_of([] { Profile::from_state(1, 1, 1, 1, -0.5); }),
+                     "v_start = -0.5: must be finite and not negative"));
   EXPECT_TRUE(starts(message_of([&] { Profile::from_state(1, 1, 1, 1, 0.5, nan); }), "a_start = nan: must be finite"));
   EXPECT_TRUE(starts(message_of([] { Profile::from_state(1, 1, 1, 1, 0.5, 0.0, 1.5); }),
                      "v_end = 1.5: must be finite and within [0, v_max = 1]"));
@@ -363,8 +389,9 @@ TEST(ProfileFromState, TrapezoidBrakesFromAboveTheLimit) {
   const std::string m = message_of([] { Profile::trapezoid_from_state(1.0, 1.0, 1.0, 2.0, 0.0); });
   EXPECT_EQ(m.rfind("distance = 1: too short", 0), 0u) << m;
   EXPECT_NE(m.find("it needs at least 2, 1 more"), std::string::npos) << m;
-  EXPECT_EQ(message_of([] { Profile::trapezoid_from_state(1.0, 1.0, 1.0, -1.0, 0.0); })
-                .rfind("v_start = -1: must be finite and not negative", 0),
+  EXPECT_EQ(message_of([] {
+              Profile::trapezoid_from_state(1.0, 1.0, 1.0, -1.0, 0.0);
+            }).rfind("v_start = -1: must be finite and not negative", 0),
             0u);
 }
 

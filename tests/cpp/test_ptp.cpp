@@ -17,11 +17,11 @@
 namespace dispkin {
 namespace {
 
-using serial::SerialArm;
 using serial::JointSection;
 using serial::JointTrajectory;
 using serial::JointTrajectorySample;
 using serial::PtpOptions;
+using serial::SerialArm;
 using testing::Random;
 using testing::random_set;
 using testing::worst_speed_ratio;
@@ -74,11 +74,12 @@ TEST(Ptp, SectionBoundNeverBelowDenseMaximumAndTight) {
         const JointSection& s = traj.sections()[k];
         const double dense = dense_section_maximum(arm, traj, s, set, v, 64);
         EXPECT_LE(dense, s.length * (1.0 + 1e-12)) << "case " << c << " section " << k;
-        EXPECT_GT(s.u1 - s.u0, std::ldexp(1.0, -16)) << "case " << c << " section " << k << ": cut down to the smallest span";
+        EXPECT_GT(s.u1 - s.u0, std::ldexp(1.0, -16))
+            << "case " << c << " section " << k << ": cut down to the smallest span";
         if (s.middle_speed > 0.02 * pace * (s.u1 - s.u0)) {
-          EXPECT_LE(s.length, dense * (1.0 + PtpOptions{}.tolerance + 1e-12)) << "case " << c << " section " << k << " of " << traj.sections().size()
-                                                            << ", span " << s.u1 - s.u0 << ", middle " << s.middle_speed
-                                                            << ", pace " << pace;
+          EXPECT_LE(s.length, dense * (1.0 + PtpOptions{}.tolerance + 1e-12))
+              << "case " << c << " section " << k << " of " << traj.sections().size() << ", span " << s.u1 - s.u0
+              << ", middle " << s.middle_speed << ", pace " << pace;
           ++checked_tight;
         }
       }
@@ -201,11 +202,13 @@ TEST(Ptp, JointLimitsHoldAndBind) {
         // at most δ q̈max (a step of 1 % of 0.3 rad/s would be 5·10⁴ times that).
         const double delta = 1e-7;
         const JointTrajectorySample next = traj.sample(i * dt + delta);
-        EXPECT_LE((next.qd - s.qd).cwiseAbs().maxCoeff(), delta * 0.6 * (1.0 + 1e-6) + 1e-12) << "case " << c << " t " << i * dt;
+        EXPECT_LE((next.qd - s.qd).cwiseAbs().maxCoeff(), delta * 0.6 * (1.0 + 1e-6) + 1e-12)
+            << "case " << c << " t " << i * dt;
         if (i > 0 && i < steps) {
           const JointTrajectorySample before = traj.sample((i - 0.5) * dt), after = traj.sample((i + 0.5) * dt);
           // q̇ is the derivative of q: the central difference over dt errs by at most dt q̈max / 2.
-          EXPECT_LE((Eigen::VectorXd(after.q - before.q) / dt - Eigen::VectorXd(s.qd)).cwiseAbs().maxCoeff(), 0.5 * dt * 0.6 + 1e-9);
+          EXPECT_LE((Eigen::VectorXd(after.q - before.q) / dt - Eigen::VectorXd(s.qd)).cwiseAbs().maxCoeff(),
+                    0.5 * dt * 0.6 + 1e-9);
         }
       }
       // Across section junctions in particular: find when u passes u0 of every tenth section.
@@ -231,7 +234,8 @@ TEST(Ptp, EndsAreReachedExactlyAtRest) {
   for (int c = 0; c < 20; ++c) {
     const JointPath move = testing::random_ptp(rnd, arm);
     const JointTrajectory traj = plan(move, random_set(rnd, 0.5), scurve_limits(0.5), ProfileKind::scurve, arm);
-    const JointTrajectorySample a = traj.sample(0.0), b = traj.sample(traj.duration()), late = traj.sample(traj.duration() + 1.0);
+    const JointTrajectorySample a = traj.sample(0.0), b = traj.sample(traj.duration()),
+                                late = traj.sample(traj.duration() + 1.0);
     EXPECT_EQ(Eigen::VectorXd(a.q), move.start());
     EXPECT_EQ(Eigen::VectorXd(b.q), move.end());
     EXPECT_EQ(Eigen::VectorXd(late.q), move.end());
@@ -246,7 +250,8 @@ TEST(Ptp, EndsAreReachedExactlyAtRest) {
 TEST(Ptp, BodyTwistIsTheDerivativeOfThePose) {
   Random rnd(840);
   const SerialArm arm = testing::ur5e_arm();
-  const JointTrajectory traj = plan(testing::random_ptp(rnd, arm), random_set(rnd, 0.5), scurve_limits(0.5), ProfileKind::scurve, arm);
+  const JointTrajectory traj =
+      plan(testing::random_ptp(rnd, arm), random_set(rnd, 0.5), scurve_limits(0.5), ProfileKind::scurve, arm);
   const double dt = traj.duration() * 1e-6;
   for (int i = 1; i < 100; ++i) {
     const double t = traj.duration() * i / 100.0;
@@ -270,7 +275,9 @@ TEST(Ptp, BadInputIsRefusedWithClearErrors) {
       EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
     }
   };
-  throws_with([&] { plan(JointPath(Eigen::VectorXd::Zero(5), Eigen::VectorXd::Ones(5)), set, ok, ProfileKind::scurve, arm); }, "q_a size");
+  throws_with(
+      [&] { plan(JointPath(Eigen::VectorXd::Zero(5), Eigen::VectorXd::Ones(5)), set, ok, ProfileKind::scurve, arm); },
+      "q_a size");
   throws_with([&] { JointPath(q0, Eigen::VectorXd::Ones(5)); }, "q_end size");
   Eigen::VectorXd nan = q1;
   nan(2) = std::nan("");
@@ -288,10 +295,12 @@ TEST(Ptp, BadInputIsRefusedWithClearErrors) {
   throws_with([&] { plan(JointPath(q0, q1), set, ok, ProfileKind::scurve, arm, bad_tolerance); }, "tolerance");
   PtpOptions bad_acceleration;
   bad_acceleration.joint_acceleration = Eigen::VectorXd::Ones(3);
-  throws_with([&] { plan(JointPath(q0, q1), set, ok, ProfileKind::scurve, arm, bad_acceleration); }, "joint_acceleration size");
+  throws_with([&] { plan(JointPath(q0, q1), set, ok, ProfileKind::scurve, arm, bad_acceleration); },
+              "joint_acceleration size");
   bad_acceleration.joint_acceleration = Eigen::VectorXd::Ones(6);
   bad_acceleration.joint_acceleration(4) = 0.0;
-  throws_with([&] { plan(JointPath(q0, q1), set, ok, ProfileKind::scurve, arm, bad_acceleration); }, "joint_acceleration[4]");
+  throws_with([&] { plan(JointPath(q0, q1), set, ok, ProfileKind::scurve, arm, bad_acceleration); },
+              "joint_acceleration[4]");
   MetricSetd single;
   single.add_relative(Eigen::Vector3d(0.1, 0, 0));
   throws_with([&] { plan(JointPath(q0, q1), single, ok, ProfileKind::scurve, arm); }, "");

@@ -17,8 +17,8 @@ namespace {
 std::atomic<long> eigen_assert_failures{0};
 }  // namespace
 #define EIGEN_RUNTIME_NO_MALLOC
-#define eigen_assert(x) \
-  do {                  \
+#define eigen_assert(x)                \
+  do {                                 \
     if (!(x)) ++eigen_assert_failures; \
   } while (false)
 #include "dispkin/planning/motion_stream.hpp"
@@ -96,9 +96,12 @@ TEST(Realtime, CounterSeesAllocations) {
 
 TEST(Realtime, ProfileSamplingDoesNotAllocate) {
   const Profile profiles[] = {
-      Profile::trapezoid(1.0, 1.0, 2.0),         Profile::trapezoid(0.3, 1.0, 2.0, 0.5, 0.2),
-      Profile::scurve(1.0, 1.0, 2.0, 5.0),       Profile::scurve(1e-6, 1.0, 2.0, 5.0),
-      Profile::scurve(2.0, 1.0, 2.0, 5.0, 0.7, 0.1), Profile::scurve(0.0, 1.0, 2.0, 5.0),
+      Profile::trapezoid(1.0, 1.0, 2.0),
+      Profile::trapezoid(0.3, 1.0, 2.0, 0.5, 0.2),
+      Profile::scurve(1.0, 1.0, 2.0, 5.0),
+      Profile::scurve(1e-6, 1.0, 2.0, 5.0),
+      Profile::scurve(2.0, 1.0, 2.0, 5.0, 0.7, 0.1),
+      Profile::scurve(0.0, 1.0, 2.0, 5.0),
   };
   constexpr int kTimes = 100000;
   std::vector<double> times(kTimes);
@@ -139,7 +142,8 @@ TEST(Realtime, TrajectorySamplingDoesNotAllocate) {
   // After events (doc/events.md): a stop, an override, a stop resumed; their cut laws included.
   const Trajectory chained = trajectories[3], blended_traj = trajectories[4], screw = trajectories[1];
   trajectories.push_back(chained.stopped_at(0.4 * chained.duration()));
-  trajectories.push_back(chained.with_override(0.3 * chained.duration(), 0.5).with_override(0.6 * chained.duration(), 1.0));
+  trajectories.push_back(
+      chained.with_override(0.3 * chained.duration(), 0.5).with_override(0.6 * chained.duration(), 1.0));
   trajectories.push_back(blended_traj.stopped_at(0.5 * blended_traj.duration()).resumed_at(blended_traj.duration()));
   trajectories.push_back(screw.stopped_at(0.5 * screw.duration()));
   constexpr int kTimes = 20000;
@@ -222,7 +226,8 @@ TEST(Realtime, SlerpBlendSamplingDoesNotAllocate) {
   const Trajectory traj = plan(path, set, Limits{0.1, 0.5, 5.0});
   double checksum = 0.0;
   const long allocated = allocations_during([&] {
-    for (int i = 0; i < 20000; ++i) checksum += traj.sample(traj.duration() * (1.2 * i / 20000 - 0.1)).body_twist.angular.norm();
+    for (int i = 0; i < 20000; ++i)
+      checksum += traj.sample(traj.duration() * (1.2 * i / 20000 - 0.1)).body_twist.angular.norm();
   });
   EXPECT_EQ(allocated, 0) << "Trajectory::sample allocated on a nested-SLERP blend";
   EXPECT_EQ(eigen_assert_failures.load(), 0);
@@ -257,7 +262,8 @@ TEST(Realtime, PlanningALinAllocatesAFixedNumberOfBlocks) {
     counts.push_back(n);
     pieces.push_back(trajectory.path().section_count());
   }
-  for (std::size_t i = 0; i < counts.size(); ++i) EXPECT_LE(counts[i], 32) << "a LIN cut into " << pieces[i] << " pieces";
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    EXPECT_LE(counts[i], 32) << "a LIN cut into " << pieces[i] << " pieces";
   EXPECT_EQ(pieces.front(), 1u);
   EXPECT_GT(pieces.back(), 50u);  // the cut is exercised
 }
@@ -361,7 +367,8 @@ TEST(Realtime, MixedOverlapSamplingDoesNotAllocate) {
                                     Eigen::Vector3d(0.06, -0.04, 0.05));
   const JointTrajectory to_via = plan(JointPath(q_a, via), set, limits, ProfileKind::scurve, arm);
   const JointTrajectory from_via = plan(JointPath(via, q_a), set, limits, ProfileKind::scurve, arm);
-  const FollowedTrajectory lin_out = FollowedTrajectory::from_start(plan(Path::lin(at_via, away), set, limits), arm, via);
+  const FollowedTrajectory lin_out =
+      FollowedTrajectory::from_start(plan(Path::lin(at_via, away), set, limits), arm, via);
   const FollowedTrajectory lin_in = FollowedTrajectory::to_end(plan(Path::lin(away, at_via), set, limits), arm, via);
   const OverlappedMixedTrajectory ptp_lin(to_via, lin_out, 0.5 * std::min(to_via.duration(), lin_out.duration()));
   const OverlappedMixedTrajectory lin_ptp(lin_in, from_via, 0.5 * std::min(lin_in.duration(), from_via.duration()));

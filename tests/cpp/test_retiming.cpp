@@ -63,7 +63,8 @@ TEST(Retiming, JointAccelerationsAreTheDerivativeOfTheJointVelocities) {
       const auto step = std::lower_bound(marks.begin(), marks.end(), a.time);
       if (step != marks.end() && *step <= b.time) continue;
       const SampledPath& sections = traj.path();
-      if (sections.section_at(a.s, sections.section_count()) != sections.section_at(b.s, sections.section_count())) continue;
+      if (sections.section_at(a.s, sections.section_count()) != sections.section_at(b.s, sections.section_count()))
+        continue;
       const Eigen::VectorXd numeric = (b.qd - a.qd) / (b.time - a.time);
       ASSERT_LE((numeric - r.samples[k].qdd).norm(), 2e-2 * (1 + numeric.norm())) << "t = " << r.samples[k].time;
       ++compared;
@@ -77,8 +78,8 @@ TEST(Retiming, JointAccelerationsAreTheDerivativeOfTheJointVelocities) {
 TEST(Retiming, CheckedTorquesAreTheArmsTorques) {
   const serial::SerialArm arm = ur5e();
   const Move m = lin_move(arm);
-  const JointLimitReport r = check_joint_limits(plan(m.path, tool(), Limits{0.5, 4.0, std::nullopt}, ProfileKind::trapezoid),
-                                                arm, m.q_start);
+  const JointLimitReport r =
+      check_joint_limits(plan(m.path, tool(), Limits{0.5, 4.0, std::nullopt}, ProfileKind::trapezoid), arm, m.q_start);
   ASSERT_GT(r.samples.size(), 20u);
   for (const JointSample& sample : r.samples) {
     EXPECT_EQ(sample.static_torque, arm.static_torques(sample.q)) << "t = " << sample.time;
@@ -95,7 +96,9 @@ TEST(Retiming, SingularJacobianIsAnErrorNamingThePlace) {
   q << 0.3, -1.2, 1.5, -1.9, 0.0, 0.2;
   const Posed a = arm.forward(q);
   const Path path = Path::lin(a, Posed(a.quaternion(), a.translation() + V(0.05, 0.02, 0.0)));
-  const std::string message = runtime_message_of([&] { check_joint_limits(plan(path, tool(), Limits{0.2, 1.0, 10.0}), arm, q); });
+  const std::string message = runtime_message_of([&] {
+    check_joint_limits(plan(path, tool(), Limits{0.2, 1.0, 10.0}), arm, q);
+  });
   EXPECT_NE(message.find("singular"), std::string::npos) << message;
   EXPECT_NE(message.find("t = 0"), std::string::npos) << message;
 }
@@ -122,8 +125,8 @@ TEST(Retiming, ScalingConvergesAndKeepsTheLimitsDensely) {
     const JointLimitReport check = dense(r.trajectory, arm, m.q_start);
     std::printf("FVEL %.4f -> %.4f (dense %.4f), FACC %.4f -> %.4f (dense %.4f), %d plans, %.3f s -> %.3f s\n",
                 before.velocity_factor, r.report.velocity_factor, check.velocity_factor, before.acceleration_factor,
-                r.report.acceleration_factor, check.acceleration_factor, r.iterations, plan(m.path, set, fast).duration(),
-                r.trajectory.duration());
+                r.report.acceleration_factor, check.acceleration_factor, r.iterations,
+                plan(m.path, set, fast).duration(), r.trajectory.duration());
     EXPECT_LE(check.velocity_factor, 1.0 + 1e-3);
     EXPECT_LE(check.acceleration_factor, 1.0 + 1e-2);
     // One of the two binds: the scaled move is not needlessly slow.
@@ -146,16 +149,20 @@ TEST(Retiming, BadInputAndImpossibleMovesAreNamed) {
   const Trajectory traj = plan(m.path, tool(), Limits{0.2, 1.0, 10.0});
   JointCheckOptions bad;
   bad.samples_between = -1;
-  EXPECT_NE(message_of([&] { check_joint_limits(traj, arm, m.q_start, bad); }).find("samples_between = -1"), std::string::npos);
-  EXPECT_NE(message_of([&] { check_joint_limits(traj, arm, Eigen::VectorXd::Zero(5)); }).find("q_start size = 5"), std::string::npos);
-  EXPECT_NE(message_of([&] { retime_by_scaling(m.path, tool(), Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, arm, m.q_start, {}, 0); })
-                .find("max_iterations = 0"),
+  EXPECT_NE(message_of([&] { check_joint_limits(traj, arm, m.q_start, bad); }).find("samples_between = -1"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { check_joint_limits(traj, arm, Eigen::VectorXd::Zero(5)); }).find("q_start size = 5"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              retime_by_scaling(m.path, tool(), Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, arm, m.q_start, {}, 0);
+            }).find("max_iterations = 0"),
             std::string::npos);
   // Out of reach: a LIN that leaves the workspace.
   const Posed a = arm.forward(m.q_start);
   const Path away = Path::lin(a, Posed(a.quaternion(), a.translation() + V(2.0, 0, 0)));
-  EXPECT_NE(runtime_message_of([&] { check_joint_limits(plan(away, tool(), Limits{0.2, 1.0, 10.0}), arm, m.q_start); })
-                .find("has no inverse-kinematics solution"),
+  EXPECT_NE(runtime_message_of([&] {
+              check_joint_limits(plan(away, tool(), Limits{0.2, 1.0, 10.0}), arm, m.q_start);
+            }).find("has no inverse-kinematics solution"),
             std::string::npos);
 }
 

@@ -67,7 +67,8 @@ double sampled_section_speed(const MetricSetd& set, const Section& s) {
   const auto& g = set.groups().front();
   for (const auto& rd : g.relative_points) {
     const VL r = rd.cast<Real>();
-    best = std::max(best, sampled_max([&](Real t) { return ((s.at(t + h) * r) - (s.at(t - h) * r)).norm() / (2 * h); }));
+    best =
+        std::max(best, sampled_max([&](Real t) { return ((s.at(t + h) * r) - (s.at(t - h) * r)).norm() / (2 * h); }));
   }
   for (const auto& xd : g.absolute_points) {
     const VL x = xd.cast<Real>();
@@ -119,10 +120,18 @@ TEST(SectionLength, ScrewRelativePoints) { check_against_sampling(Interpolation:
 TEST(SectionLength, ScrewAbsolutePoints) { check_against_sampling(Interpolation::screw, Frame::absolute, false, 72); }
 TEST(SectionLength, ScrewRelativeSphere) { check_against_sampling(Interpolation::screw, Frame::relative, true, 73); }
 TEST(SectionLength, ScrewAbsoluteSphere) { check_against_sampling(Interpolation::screw, Frame::absolute, true, 74); }
-TEST(SectionLength, DecoupledRelativePoints) { check_against_sampling(Interpolation::decoupled, Frame::relative, false, 75); }
-TEST(SectionLength, DecoupledAbsolutePoints) { check_against_sampling(Interpolation::decoupled, Frame::absolute, false, 76); }
-TEST(SectionLength, DecoupledRelativeSphere) { check_against_sampling(Interpolation::decoupled, Frame::relative, true, 77); }
-TEST(SectionLength, DecoupledAbsoluteSphere) { check_against_sampling(Interpolation::decoupled, Frame::absolute, true, 78); }
+TEST(SectionLength, DecoupledRelativePoints) {
+  check_against_sampling(Interpolation::decoupled, Frame::relative, false, 75);
+}
+TEST(SectionLength, DecoupledAbsolutePoints) {
+  check_against_sampling(Interpolation::decoupled, Frame::absolute, false, 76);
+}
+TEST(SectionLength, DecoupledRelativeSphere) {
+  check_against_sampling(Interpolation::decoupled, Frame::relative, true, 77);
+}
+TEST(SectionLength, DecoupledAbsoluteSphere) {
+  check_against_sampling(Interpolation::decoupled, Frame::absolute, true, 78);
+}
 
 // A screw section moves every object at constant speed: the fastest moves at exactly L.
 TEST(SectionLength, ScrewSpeedsAreConstantAlongTheSection) {

@@ -1,6 +1,6 @@
 // Serial-arm plugin tests: URDF loading rules, FK against the DH table and the product-of-
-// exponentials chain, the Jacobian against finite differences, joint velocities by it, dynamics against a hand-derived two-link model,
-// inverse kinematics (analytic family or numeric fallback), solution choice, bad URDFs.
+// exponentials chain, the Jacobian against finite differences, joint velocities by it, dynamics against a hand-derived
+// two-link model, inverse kinematics (analytic family or numeric fallback), solution choice, bad URDFs.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -106,7 +106,8 @@ TEST(SerialArmKinematics, PlanarForwardIsTheTextbookFormula) {
   for (int k = 0; k < 100; ++k) {
     const Eigen::VectorXd q = random_q(random, arm);
     const double a = q(0) + q(1);
-    const Eigen::Vector3d p(0.8 * std::cos(q(0)) + 0.6 * std::cos(a), 0.0, 0.3 + 0.8 * std::sin(q(0)) + 0.6 * std::sin(a));
+    const Eigen::Vector3d p(0.8 * std::cos(q(0)) + 0.6 * std::cos(a), 0.0,
+                            0.3 + 0.8 * std::sin(q(0)) + 0.6 * std::sin(a));
     const Posed t = arm.forward(q);
     EXPECT_LE((t.translation() - p).norm(), 1e-14);
     // Axes along −y: the tool's x axis is (cos a, 0, sin a).
@@ -152,7 +153,8 @@ TEST(SerialArmKinematics, Ur5eAtZeroMatchesTheDhTable) {
   // With all joints at 0 the standard-DH UR5e reaches x = a2 + a3, y = −(d4 + d6), z = d1 − d5
   // (flange), and tool0 is 0.05 further along the flange's z, which points along −y.
   const Posed t = ur5e().forward(Eigen::VectorXd::Zero(6));
-  EXPECT_LE((t.translation() - Eigen::Vector3d(-0.425 - 0.3922, -(0.1333 + 0.0996 + 0.05), 0.1625 - 0.0997)).norm(), 1e-12);
+  EXPECT_LE((t.translation() - Eigen::Vector3d(-0.425 - 0.3922, -(0.1333 + 0.0996 + 0.05), 0.1625 - 0.0997)).norm(),
+            1e-12);
 }
 
 TEST(SerialArmKinematics, JacobianIsTheTipOriginVelocityInBaseCoordinates) {
@@ -209,7 +211,8 @@ TEST(SerialArmKinematics, JointVelocityInvertsTheBodyJacobian) {
 
 // The two-link arm in the vertical plane, derived by hand (Lagrange): link i has mass mᵢ,
 // centre of mass cᵢ along it and inertia Iᵢ about the joint axis through the centre of mass.
-Eigen::Vector2d two_link_torques(const Eigen::Vector2d& q, const Eigen::Vector2d& qd, const Eigen::Vector2d& qdd, double g) {
+Eigen::Vector2d two_link_torques(const Eigen::Vector2d& q, const Eigen::Vector2d& qd, const Eigen::Vector2d& qdd,
+                                 double g) {
   const double l1 = 0.8;
   // Body 1: link1 (2 kg, c 0.4, I 0.11) + sensor (0.5 kg at 0.2).
   const double m1 = 2.5;
@@ -239,7 +242,10 @@ TEST(SerialArmDynamics, TwoLinkArmMatchesTheHandDerivedModel) {
     const Eigen::Vector2d qdd(random.uniform(-10, 10), random.uniform(-10, 10));
     const Eigen::VectorXd tau = arm.torques(q, qd, qdd);
     EXPECT_LE((tau - two_link_torques(q, qd, qdd, 9.81)).cwiseAbs().maxCoeff(), 1e-11);
-    EXPECT_LE((arm.static_torques(q) - arm.torques(q, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero())).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_LE((arm.static_torques(q) - arm.torques(q, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              0.0);
     EXPECT_LE((arm.static_torques(q) - two_link_torques(q, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), 9.81))
                   .cwiseAbs()
                   .maxCoeff(),
@@ -259,7 +265,8 @@ TEST(SerialArmDynamics, GravityIsConfigurable) {
   // Gravity along the joint axes does no work on a planar arm.
   arm.set_gravity(Eigen::Vector3d(0, 9.81, 0));
   EXPECT_LE(arm.static_torques(q).cwiseAbs().maxCoeff(), 1e-14);
-  EXPECT_NE(message_of([&] { arm.set_gravity(Eigen::Vector3d(0, 0, std::nan(""))); }).find("gravity"), std::string::npos);
+  EXPECT_NE(message_of([&] { arm.set_gravity(Eigen::Vector3d(0, 0, std::nan(""))); }).find("gravity"),
+            std::string::npos);
 }
 
 TEST(SerialArmDynamics, Ur5eStaticTorquesAreTheZeroVelocityTorques) {
@@ -301,7 +308,8 @@ TEST(SerialArmDynamics, TorquesAreKdlsRecursiveNewtonEuler) {
             << arm.robot_name() << " q " << q.transpose();
         const Eigen::VectorXd zero = Eigen::VectorXd::Zero(arm.dof());
         const Eigen::VectorXd kdl_static = detail::torques_by_kdl(arm, q, zero, zero);
-        EXPECT_LE((arm.static_torques(q) - kdl_static).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + kdl_static.cwiseAbs().maxCoeff()))
+        EXPECT_LE((arm.static_torques(q) - kdl_static).cwiseAbs().maxCoeff(),
+                  1e-12 * (1.0 + kdl_static.cwiseAbs().maxCoeff()))
             << arm.robot_name();
       }
     }
@@ -337,7 +345,8 @@ TEST(SerialArmDynamics, JointPowerIsTheRateOfKineticPlusPotentialEnergy) {
       return 0.5 * qd.dot(m * qd);
     };
     for (int k = 0; k < 50; ++k) {
-      const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, n, 2.0), qdd = random_vector(random, n, 10.0);
+      const Eigen::VectorXd q = random_q(random, arm), qd = random_vector(random, n, 2.0),
+                            qdd = random_vector(random, n, 10.0);
       const double h = 1e-5;
       auto energy_at = [&](double t) { return kinetic_energy(q + t * qd + 0.5 * t * t * qdd, qd + t * qdd); };
       const double kinetic_rate = (energy_at(h) - energy_at(-h)) / (2.0 * h);
@@ -358,7 +367,8 @@ TEST(SerialArmKinematics, VelocityProductIsTheRateOfTheBodyJacobian) {
       const Eigen::Matrix<double, 6, 1> expected =
           (arm.body_jacobian(q + h * qd) - arm.body_jacobian(q - h * qd)) / (2.0 * h) * qd;
       const Eigen::Matrix<double, 6, Eigen::Dynamic> jb = arm.body_jacobian(q);
-      EXPECT_LE((chain_velocity_product(jb, qd.data()).vector() - expected).cwiseAbs().maxCoeff(), 1e-7) << arm.robot_name();
+      EXPECT_LE((chain_velocity_product(jb, qd.data()).vector() - expected).cwiseAbs().maxCoeff(), 1e-7)
+          << arm.robot_name();
     }
   }
 }
@@ -412,7 +422,8 @@ TEST(SerialArmInverse, General6RNumericFallbackFindsTheSolutions) {
     text.replace(at, from.size(), to);
   };
   replace("<origin xyz=\"-0.425 0 0\" rpy=\"0 0 0\"/>", "<origin xyz=\"-0.425 0.03 0\" rpy=\"0.3 0 0\"/>");
-  replace("<origin xyz=\"0 0 0.1333\" rpy=\"1.5707963267948966 0 0\"/>", "<origin xyz=\"0.02 0 0.1333\" rpy=\"1.3 0 0\"/>");
+  replace("<origin xyz=\"0 0 0.1333\" rpy=\"1.5707963267948966 0 0\"/>",
+          "<origin xyz=\"0.02 0 0.1333\" rpy=\"1.3 0 0\"/>");
   const SerialArm arm = SerialArm::from_urdf_string(text, "base_link", "tool0");
   ASSERT_EQ(arm.family(), IkFamily::general);
   InverseOptions options;
@@ -496,7 +507,8 @@ TEST(SerialArmDynamics, TorquesFromTwoThreadsAreThoseOfOne) {
   const auto run = [&](int t) {
     for (int pass = 0; pass < 50; ++pass)
       for (std::size_t k = 0; k < states.size(); ++k)
-        if (arm.torques(states[k][0], states[k][1], states[k][2]) != expected[k]) ++differing[static_cast<std::size_t>(t)];
+        if (arm.torques(states[k][0], states[k][1], states[k][2]) != expected[k])
+          ++differing[static_cast<std::size_t>(t)];
   };
   std::thread first(run, 0);
   std::thread second(run, 1);
@@ -529,11 +541,13 @@ TEST(SerialArmInverse, EverySolutionReproducesThePoseAndNoneRepeats) {
         for (std::size_t a = 0; a < result.solutions.size(); ++a) {
           const Eigen::VectorXd& s = result.solutions[a];
           EXPECT_TRUE(arm.forward(s).is_approx(pose, inverse_tolerance)) << arm.robot_name() << " " << s.transpose();
-          const bool inside = ((s - limits.lower).array() >= -1e-10).all() && ((limits.upper - s).array() >= -1e-10).all();
+          const bool inside =
+              ((s - limits.lower).array() >= -1e-10).all() && ((limits.upper - s).array() >= -1e-10).all();
           EXPECT_EQ(inside, static_cast<bool>(result.within_limits[a])) << s.transpose();
           for (std::size_t b = 0; b < a; ++b) {
             double apart = 0.0;
-            for (int i = 0; i < 6; ++i) apart = std::max(apart, std::abs(std::remainder(s(i) - result.solutions[b](i), 2 * pi)));
+            for (int i = 0; i < 6; ++i)
+              apart = std::max(apart, std::abs(std::remainder(s(i) - result.solutions[b](i), 2 * pi)));
             EXPECT_GT(apart, 1e-7) << "solutions " << b << " and " << a << " are one: " << s.transpose();
           }
         }
@@ -691,7 +705,8 @@ TEST(SerialArmChoice, FollowTrackingPicksTheNearestAnalyticSolution) {
         const JointLimits limits = arm.joint_limits();
         for (const Eigen::VectorXd& j : joints)
           inside = inside && (j.array() >= limits.lower.array()).all() && (j.array() <= limits.upper.array()).all();
-        for (std::size_t k = 0; inside && k < poses.size(); ++k) EXPECT_LE((path[k] - joints[k]).cwiseAbs().maxCoeff(), 1e-9);
+        for (std::size_t k = 0; inside && k < poses.size(); ++k)
+          EXPECT_LE((path[k] - joints[k]).cwiseAbs().maxCoeff(), 1e-9);
       }
     }
   }
@@ -748,7 +763,8 @@ TEST(SerialArmErrors, DamagedUrdfTextIsRefusedOrLoadedNeverACrash) {
   const char garbage[] = {'<', '>', '"', '/', 'x', '-', '9', ' ', '\0'};
   for (int k = 0; k < 300; ++k) {
     std::string damaged = text;
-    damaged[static_cast<std::size_t>(random.integer(0, static_cast<int>(text.size()) - 1))] = garbage[random.integer(0, 8)];
+    damaged[static_cast<std::size_t>(random.integer(0, static_cast<int>(text.size()) - 1))] =
+        garbage[random.integer(0, 8)];
     attempt(damaged);
   }
   EXPECT_GT(refused, 0);
@@ -795,8 +811,9 @@ TEST(SerialArmErrors, JointCycleIsRefusedBeforeUrdfdomReadsIt) {
 // text is now handed over with NULs appended: refused, no overflow (under `make sanitize` an
 // over-read fails this test).
 TEST(SerialArmErrors, TextEndingInsideAUtf8SequenceIsRefusedWithoutOverread) {
-  std::ifstream in(std::string(DISPKIN_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_urdf/finding_12_utf8_lead_byte_at_end.urdf",
-                   std::ios::binary);
+  std::ifstream in(
+      std::string(DISPKIN_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_urdf/finding_12_utf8_lead_byte_at_end.urdf",
+      std::ios::binary);
   ASSERT_TRUE(in.good());
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text = text.substr(text.find('\n') + 1);  // the fuzzer's "@base tip" line
@@ -827,17 +844,20 @@ TEST(SerialArmErrors, PercentSignOutsideCommentsIsRefused) {
   // without end, a hexadecimal multiplier that wraps at 2³².
   for (const char* reference : {"&#37;n 0 0", "&#x25;n 0 0", "&#037;n 0 0", "&#00000000000000000000000000037;n 0 0",
                                 "&#x100000025;n 0 0", "&#xFFFFFFFF00000025;n 0 0"}) {
-    EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with(reference), "base_link", "tool0"); })
-                  .find("<origin> attribute \"xyz\" = \"%n 0 0\": contains '%'"),
+    EXPECT_NE(message_of([&] {
+                SerialArm::from_urdf_string(with(reference), "base_link", "tool0");
+              }).find("<origin> attribute \"xyz\" = \"%n 0 0\": contains '%'"),
               std::string::npos)
         << reference;
   }
   // "&#X…;" is no reference to TinyXML (only a lower-case x marks hexadecimal): a parse error.
-  EXPECT_NE(message_of([&] { SerialArm::from_urdf_string(with("&#X0025;s 0 0"), "base_link", "tool0"); })
-                .find("not a valid robot description"),
+  EXPECT_NE(message_of([&] {
+              SerialArm::from_urdf_string(with("&#X0025;s 0 0"), "base_link", "tool0");
+            }).find("not a valid robot description"),
             std::string::npos);
   // In a comment (before the robot, or spanning lines) a '%' is fine; the arm loads.
-  const SerialArm ok = SerialArm::from_urdf_string(with("0 0 0.5", "<!-- 100% \n scale: 50% -->\n"), "base_link", "tool0");
+  const SerialArm ok =
+      SerialArm::from_urdf_string(with("0 0 0.5", "<!-- 100% \n scale: 50% -->\n"), "base_link", "tool0");
   EXPECT_EQ(ok.dof(), 1);
   EXPECT_NEAR(ok.forward(Eigen::VectorXd::Zero(1)).translation().z(), 0.5, 1e-15);
 }
@@ -850,9 +870,11 @@ TEST(SerialArmErrors, BadLinksAndArguments) {
             std::string::npos);
   EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "link2", "link1"); }).find("not an ancestor"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "link1", "link1"); }).find("must differ"), std::string::npos);
+  EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "link1", "link1"); }).find("must differ"),
+            std::string::npos);
   // A prismatic joint off the path is fine; on the path it is refused.
-  EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "base", "finger"); }).find("finger_joint"), std::string::npos);
+  EXPECT_NE(message_of([&] { SerialArm::from_urdf_file(file, "base", "finger"); }).find("finger_joint"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { SerialArm::from_urdf_string("", "base", "link2"); }).find("URDF"), std::string::npos);
 
   const SerialArm arm = planar();
@@ -860,8 +882,9 @@ TEST(SerialArmErrors, BadLinksAndArguments) {
             std::string::npos);
   EXPECT_NE(message_of([&] { arm.forward(Eigen::Vector2d(0, std::nan(""))); }).find("q = "), std::string::npos);
   EXPECT_NE(message_of([&] { arm.jacobian(Eigen::VectorXd::Zero(1)); }).find("q = "), std::string::npos);
-  EXPECT_NE(message_of([&] { arm.torques(Eigen::Vector2d::Zero(), Eigen::VectorXd::Zero(1), Eigen::Vector2d::Zero()); })
-                .find("qd = "),
+  EXPECT_NE(message_of([&] {
+              arm.torques(Eigen::Vector2d::Zero(), Eigen::VectorXd::Zero(1), Eigen::Vector2d::Zero());
+            }).find("qd = "),
             std::string::npos);
   EXPECT_NE(message_of([&] {
               arm.torques(Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), Eigen::Vector2d(INFINITY, 0));

@@ -85,8 +85,10 @@ TEST(SlerpBlend, JoinsKeepTheTwistDirectionAndThePlannerDoesNotStop) {
     const Posed a = rnd.pose(0.5);
     const Posed b = rnd.nearby(a, 0.4, 1.2), c = rnd.nearby(b, 0.4, 1.2), d = rnd.nearby(c, 0.4, 1.2);
     Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
-    path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp)
-        .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5), OrientationBlend::nested_slerp);
+    path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5),
+                       OrientationBlend::nested_slerp)
+        .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), rnd.uniform(0.1, 0.5),
+                       OrientationBlend::nested_slerp);
     const auto& s = path.sections();
     for (std::size_t k = 0; k + 1 < s.size(); ++k) {
       ASSERT_TRUE(section_end(s[k]).is_approx(section_start(s[k + 1]), 1e-12)) << "gap after section " << k;
@@ -129,8 +131,10 @@ TEST(SlerpBlend, TwistAndItsRateAreExact) {
       const double tau = j / 10.0;
       const Twistd exact = s.twist(tau), rate = s.twist_rate(tau);
       const double scale = 1.0 + exact.vector().norm();
-      worst_twist = std::max(worst_twist, (twist_by_differences(s, tau, 1e-5).vector() - exact.vector()).norm() / scale);
-      const Eigen::Matrix<double, 6, 1> rate_fd = (s.twist(tau + 1e-5).vector() - s.twist(tau - 1e-5).vector()) * (0.5 / 1e-5);
+      worst_twist =
+          std::max(worst_twist, (twist_by_differences(s, tau, 1e-5).vector() - exact.vector()).norm() / scale);
+      const Eigen::Matrix<double, 6, 1> rate_fd =
+          (s.twist(tau + 1e-5).vector() - s.twist(tau - 1e-5).vector()) * (0.5 / 1e-5);
       worst_rate = std::max(worst_rate, (rate_fd - rate.vector()).norm() / (1.0 + rate.vector().norm()));
       // The trajectory's acceleration takes the same rate.
       ASSERT_EQ(section_twist_rate(Section(s), tau).vector(), rate.vector());
@@ -199,7 +203,8 @@ TEST(SlerpBlend, MotionBoundsAreRigorousAndTight) {
     if (rate > 1e-3 * s.span() * s.span()) loosest_rate = std::max(loosest_rate, b.omega_dot / rate);
     if (!whole && omega > 1e-3 * s.span()) loosest_short = std::max(loosest_short, b.omega / omega);
   }
-  std::printf("bound / dense max: |w| %.3g (short parts %.3g), |w'| %.3g\n", loosest_omega, loosest_short, loosest_rate);
+  std::printf("bound / dense max: |w| %.3g (short parts %.3g), |w'| %.3g\n", loosest_omega, loosest_short,
+              loosest_rate);
   // Turns up to π/2 each (the largest a blend makes): |ω| within 2.2× on whole blends and 1.6×
   // on parts up to a tenth (the middle value + half a part at the rate bound), |ω̇| within 12×
   // (measured 2.09, 1.54, 10.4). The rate bound costs sections, not speed: see CutSectionsAreTight.
@@ -225,7 +230,8 @@ TEST(SlerpBlend, SectionLengthBoundsEverySpeed) {
       const Posed p = s.pose(j * dt), q = s.pose((j + 1) * dt);
       for (const auto& g : set.groups()) {
         for (const V& r : g.relative_points) fastest = std::max(fastest, ((q * r) - (p * r)).norm() / dt);
-        for (const V& x : g.absolute_points) fastest = std::max(fastest, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
+        for (const V& x : g.absolute_points)
+          fastest = std::max(fastest, ((q.inverse() * x) - (p.inverse() * x)).norm() / dt);
       }
     }
     ASSERT_GE(length, fastest * (1 - 1e-9)) << "case " << i;
@@ -251,7 +257,8 @@ TEST(SlerpBlend, CutSectionsAreTight) {
       for (int j = 0; j <= n; ++j) {
         const Posed p = s->pose(double(j) / n);
         const Twistd xi = s->twist(double(j) / n);
-        for (const V& r : set.groups()[0].relative_points) fastest = std::max(fastest, (xi.linear + xi.angular.cross(r)).norm());
+        for (const V& r : set.groups()[0].relative_points)
+          fastest = std::max(fastest, (xi.linear + xi.angular.cross(r)).norm());
       }
       loosest = std::max(loosest, s->length(set, std::nullopt) / fastest);
     }
@@ -265,8 +272,10 @@ TEST(SlerpBlend, CutSectionsAreTight) {
     const V pivot = again.vector(0.1);
     const Posed b = again.nearby(a, 0.3, 1.0), c = again.nearby(b, 0.3, 1.0), d = again.nearby(c, 0.3, 1.0);
     Path path = Path::lin(a, b, Interpolation::decoupled, pivot);
-    path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), again.uniform(0.1, 0.5), OrientationBlend::rotation_vector, 1e-3)
-        .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), again.uniform(0.1, 0.5), OrientationBlend::rotation_vector, 1e-3);
+    path.then_weighted(Path::lin(b, c, Interpolation::decoupled, pivot), again.uniform(0.1, 0.5),
+                       OrientationBlend::rotation_vector, 1e-3)
+        .then_weighted(Path::lin(c, d, Interpolation::decoupled, pivot), again.uniform(0.1, 0.5),
+                       OrientationBlend::rotation_vector, 1e-3);
     for (const Section& s : path.sections()) cubic += std::holds_alternative<CurveSection>(s);
   }
   std::printf("the same chains with rotation-vector blends: %zu sections\n", cubic);
@@ -299,31 +308,41 @@ TEST(SlerpBlend, BadInputIsRefused) {
   const Posed a = at(0, 0, 0), via = at(0.2, 0, 0.3), b = at(0.2, 0.2, 0.6), c = at(0.4, 0.3, 0.2);
   const auto nested = OrientationBlend::nested_slerp;
   Path path = Path::lin(a, via);
-  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b), 0.0, nested); }).find("weight = 0"), std::string::npos);
-  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b), 0.6, nested); }).find("weight = 0.6"), std::string::npos);
+  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b), 0.0, nested); }).find("weight = 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b), 0.6, nested); }).find("weight = 0.6"),
+            std::string::npos);
   EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b), std::nan(""), nested); }).find("weight = nan"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { path.then_weighted(Path::circ(via, b, c), 0.3, nested); }).find("next"), std::string::npos);
-  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b, Interpolation::screw), 0.3, nested); }).find("decoupled LIN"),
+  EXPECT_NE(message_of([&] { path.then_weighted(Path::circ(via, b, c), 0.3, nested); }).find("next"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { path.then_weighted(Path::lin(via, b, Interpolation::decoupled, V(0.01, 0, 0)), 0.3, nested); })
-                .find("another pivot"),
+  EXPECT_NE(message_of([&] {
+              path.then_weighted(Path::lin(via, b, Interpolation::screw), 0.3, nested);
+            }).find("decoupled LIN"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              path.then_weighted(Path::lin(via, b, Interpolation::decoupled, V(0.01, 0, 0)), 0.3, nested);
+            }).find("another pivot"),
             std::string::npos);
   Path arc = Path::circ(a, at(0.1, 0.05, 0.1), via);
-  EXPECT_NE(message_of([&] { arc.then_weighted(Path::lin(via, b), 0.3, nested); }).find("orientation_blend"), std::string::npos);
-  EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), 0.5, 0.01, 1e-3, nested); }).find("before"), std::string::npos);
-  EXPECT_NE(message_of([&] { orientation_blend_from_string("slerp"); }).find("orientation_blend = \"slerp\""), std::string::npos);
+  EXPECT_NE(message_of([&] { arc.then_weighted(Path::lin(via, b), 0.3, nested); }).find("orientation_blend"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { path.then(Path::lin(via, b), 0.5, 0.01, 1e-3, nested); }).find("before"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] { orientation_blend_from_string("slerp"); }).find("orientation_blend = \"slerp\""),
+            std::string::npos);
   EXPECT_EQ(path.size(), 1u);  // a refused blend leaves the path as it was
   EXPECT_EQ(orientation_blend_from_string("nested_slerp"), nested);
-  EXPECT_EQ(orientation_blend_from_string(to_string(OrientationBlend::rotation_vector)), OrientationBlend::rotation_vector);
+  EXPECT_EQ(orientation_blend_from_string(to_string(OrientationBlend::rotation_vector)),
+            OrientationBlend::rotation_vector);
 }
 
 // A path with nested-SLERP blends made again from its sections (what a pickle keeps) is the same.
 TEST(SlerpBlend, FromSectionsRoundTrip) {
   Random rnd(4108);
   const Path path = testing::random_slerp_blended_chain(rnd);
-  const Path again = Path::from_sections(path.sections(), path.first_move_size(), path.last_move_size(), path.section_limits(),
-                                         path.move_starts());
+  const Path again = Path::from_sections(path.sections(), path.first_move_size(), path.last_move_size(),
+                                         path.section_limits(), path.move_starts());
   ASSERT_EQ(again.size(), path.size());
   for (int j = 0; j <= 100; ++j) {
     const Posed p = again.sample(j / 100.0), q = path.sample(j / 100.0);

@@ -124,7 +124,7 @@ TEST(Sweep, GuaranteeWithEvents) {
     Trajectory traj = plan(path, set, limits, kind);
     for (int e = 0; e < 3; ++e) {
       const double t = rnd.uniform(0.0, traj.duration() * 1.05);
-      const Trajectory next = traj.stopped() ? traj.resumed_at(t)
+      const Trajectory next = traj.stopped()      ? traj.resumed_at(t)
                               : rnd.integer(0, 1) ? traj.stopped_at(t)
                                                   : traj.with_override(t, rnd.uniform(0.1, 2.0));
       for (int k = 0; k < 4; ++k) {
@@ -146,7 +146,8 @@ TEST(Sweep, GuaranteeWithEvents) {
       Posed expected;
       Twistd twist;
       traj.path_state(traj.end_position(), expected, twist);
-      ASSERT_TRUE(end.pose.is_approx(traj.stopped() ? expected : path.end(), 1e-9)) << "events, case " << i << " event " << e;
+      ASSERT_TRUE(end.pose.is_approx(traj.stopped() ? expected : path.end(), 1e-9))
+          << "events, case " << i << " event " << e;
       ASSERT_LE(std::abs(end.s_dot), 1e-9 * v) << "events, case " << i << " event " << e;
     }
   }
@@ -156,8 +157,8 @@ TEST(Sweep, GuaranteeWithEvents) {
 // Where the request that made `after` from `before` takes over (changed_from): the motion before
 // it is the same, bit for bit, at `probes`; there both give the same pose and body twist, to
 // rounding (a join plans the path ahead afresh, its s in other units, doc/events.md eq. 7).
-void expect_continuous_handover(const MotionStream& before, const MotionStream& after, const std::vector<double>& probes,
-                                const std::string& what) {
+void expect_continuous_handover(const MotionStream& before, const MotionStream& after,
+                                const std::vector<double>& probes, const std::string& what) {
   const double from = after.changed_from();
   for (const double t : probes) {
     if (t >= from) continue;
@@ -214,7 +215,8 @@ TEST(Sweep, StreamsWithRandomRequests) {
       if (moving) {
         std::vector<double> probes{t};
         for (int k = 0; k < 16; ++k) probes.push_back(rnd.uniform(0.0, before.duration()));
-        expect_continuous_handover(before, stream, probes, "stream " + std::to_string(i) + " request " + std::to_string(r));
+        expect_continuous_handover(before, stream, probes,
+                                   "stream " + std::to_string(i) + " request " + std::to_string(r));
       }
       t += rnd.uniform(0.0, 1.2) * std::max(stream.duration() - t, 0.05);
     }
@@ -244,7 +246,8 @@ void profile_sweep(ProfileKind kind, unsigned long salt) {
     const double distance = std::pow(10.0, rnd.uniform(-6.0, 1.0));
     const double v = std::pow(10.0, rnd.uniform(-2.0, 1.0)), a = std::pow(10.0, rnd.uniform(-2.0, 1.0));
     const double j = std::pow(10.0, rnd.uniform(-1.0, 2.0));
-    const Profile law = kind == ProfileKind::scurve ? Profile::scurve(distance, v, a, j) : Profile::trapezoid(distance, v, a);
+    const Profile law =
+        kind == ProfileKind::scurve ? Profile::scurve(distance, v, a, j) : Profile::trapezoid(distance, v, a);
     const ProfileState end = law.state_at(law.duration());
     ASSERT_NEAR(end.s, distance, 1e-9 * std::max(1.0, distance)) << "case " << i;
     ASSERT_NEAR(end.v, 0.0, 1e-9 * v) << "case " << i;

@@ -108,8 +108,10 @@ TEST(TrajectoryEvents, TheFastestStopFromAnyState) {
   set.add_relative(V(0, 0, 0));
   set.add_relative(V(0.1, 0, 0));
   set.add_relative(V(0, 0.1, 0));
-  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(3.0, 0, 0))), set, limits, ProfileKind::scurve);
-  for (double t : {0.05, 0.2, 0.4, 0.7, 1.5, 2.0, traj.duration() - 0.6, traj.duration() - 0.3, traj.duration() - 0.01}) {
+  const Trajectory traj =
+      plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(3.0, 0, 0))), set, limits, ProfileKind::scurve);
+  for (double t :
+       {0.05, 0.2, 0.4, 0.7, 1.5, 2.0, traj.duration() - 0.6, traj.duration() - 0.3, traj.duration() - 0.01}) {
     const TrajectorySample x = traj.sample(t);
     const Trajectory stopped = traj.stopped_at(t);
     // Down to −a_p at −j, hold, up at +j: v0 + (a0² − 2 a_p²) / 2j − a_p T = 0.
@@ -170,14 +172,16 @@ TEST(TrajectoryEvents, AnOverrideHoldsTheScaledLimitsAndComposes) {
           break;
         }
       const TrajectorySample at_t = c.traj.sample(t);
-      const double carried = at_t.s_dot + (c.limits.jerk ? std::max(at_t.s_ddot, 0.0) * at_t.s_ddot / (2.0 * *c.limits.jerk) : 0.0);
+      const double carried =
+          at_t.s_dot + (c.limits.jerk ? std::max(at_t.s_ddot, 0.0) * at_t.s_ddot / (2.0 * *c.limits.jerk) : 0.0);
       const int n = 4000;
       for (int k = 0; k <= n; ++k) {
         const double at = t + (slower.duration() - t) * k / n;
         const TrajectorySample x = slower.sample(at);
         double limit = 0.0;
         for (const SpeedLimit& span : slower.speed_limits())
-          if (x.s >= span.start_s - 1e-9 && x.s <= span.start_s + span.length + 1e-9) limit = std::max(limit, factor * span.limit);
+          if (x.s >= span.start_s - 1e-9 && x.s <= span.start_s + span.length + 1e-9)
+            limit = std::max(limit, factor * span.limit);
         // Above the new limit only while easing down from the state at t.
         ASSERT_LE(x.s_dot, std::max(carried, limit) * (1.0 + 1e-9)) << what << " t " << at;
         if (at >= eased) {
@@ -200,7 +204,8 @@ TEST(TrajectoryEvents, RefusedWithAClearMessage) {
   set.add_relative(V(0, 0, 0));
   set.add_relative(V(0.1, 0, 0));
   set.add_relative(V(0, 0.1, 0));
-  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(1.0, 0, 0))), set, Limits{1.0, 2.0, 10.0}, ProfileKind::scurve);
+  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(1.0, 0, 0))), set,
+                               Limits{1.0, 2.0, 10.0}, ProfileKind::scurve);
   EXPECT_NE(message_of([&] { traj.with_override(0.5, 0.0); }).find("factor = 0"), std::string::npos);
   EXPECT_NE(message_of([&] { traj.with_override(0.5, 11.0); }).find("factor = 11"), std::string::npos);
   EXPECT_NE(message_of([&] { traj.stopped_at(std::nan("")); }).find("t = nan"), std::string::npos);
@@ -213,7 +218,8 @@ TEST(TrajectoryEvents, RefusedWithAClearMessage) {
   ASSERT_TRUE(stopped.stopped());
   EXPECT_EQ(stopped.stops().back().reason.rfind("stopped at t = 0.3", 0), 0u);
   EXPECT_NE(message_of([&] {
-              Trajectory(stopped.path(), stopped.time_law(), stopped.speed_limits(), stopped.rest_positions(), {}, {}, stopped.limits());
+              Trajectory(stopped.path(), stopped.time_law(), stopped.speed_limits(), stopped.rest_positions(), {}, {},
+                         stopped.limits());
             }).find("unless the motion stopped there"),
             std::string::npos);
   const Trajectory resumed = stopped.resumed_at(5.0);
@@ -261,7 +267,8 @@ TEST(TrajectoryEvents, APlanFromAMovingState) {
   moving.start_velocity = 0.2;
   const Trajectory trapezoid = plan(path, set, Limits{0.5, 2.0, std::nullopt}, ProfileKind::trapezoid, moving);
   EXPECT_NEAR(trapezoid.sample(0.0).s_dot, 0.2, 1e-12);
-  EXPECT_NEAR(trapezoid.duration(), Profile::trapezoid_from_state(trapezoid.length(), 0.5, 2.0, 0.2, 0.0).duration(), 1e-12);
+  EXPECT_NEAR(trapezoid.duration(), Profile::trapezoid_from_state(trapezoid.length(), 0.5, 2.0, 0.2, 0.0).duration(),
+              1e-12);
 }
 
 TEST(TrajectoryEvents, AMovingStartIsRefusedWithAClearMessage) {
@@ -272,21 +279,26 @@ TEST(TrajectoryEvents, AMovingStartIsRefusedWithAClearMessage) {
     options.start_velocity = v0;
     options.start_acceleration = a0;
     return message_of([&] {
-      plan(path, set, kind == ProfileKind::scurve ? Limits{0.5, 2.0, 20.0} : Limits{0.5, 2.0, std::nullopt}, kind, options);
+      plan(path, set, kind == ProfileKind::scurve ? Limits{0.5, 2.0, 20.0} : Limits{0.5, 2.0, std::nullopt}, kind,
+           options);
     });
   };
   EXPECT_NE(refused(-0.1, 0.0).find("start_velocity = -0.1"), std::string::npos);
   EXPECT_NE(refused(std::nan(""), 0.0).find("start_velocity = nan"), std::string::npos);
-  EXPECT_NE(refused(0.6, 0.0).find("start_velocity = 0.6: must be at most the velocity limit at the start"), std::string::npos);
-  EXPECT_NE(refused(0.3, 2.5).find("start_acceleration = 2.5: must be within the acceleration limit"), std::string::npos);
-  EXPECT_NE(refused(0.2, 1.0, ProfileKind::trapezoid).find("start_acceleration = 1: is not a state of the trapezoid"), std::string::npos);
+  EXPECT_NE(refused(0.6, 0.0).find("start_velocity = 0.6: must be at most the velocity limit at the start"),
+            std::string::npos);
+  EXPECT_NE(refused(0.3, 2.5).find("start_acceleration = 2.5: must be within the acceleration limit"),
+            std::string::npos);
+  EXPECT_NE(refused(0.2, 1.0, ProfileKind::trapezoid).find("start_acceleration = 1: is not a state of the trapezoid"),
+            std::string::npos);
   // Braking at 2 m/s² with jerk 20 m/s³ needs 0.1 m/s to end before ṡ = 0.
   EXPECT_NE(refused(0.05, -2.0).find("start_acceleration = -2: brakes harder than the jerk limit"), std::string::npos);
   // 0.5 m/s does not come to rest within 3 cm at 2 m/s² (it needs over 6 cm).
   PlanOptions fast;
   fast.start_velocity = 0.5;
   const std::string short_path = message_of([&] {
-    plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(0.03, 0, 0))), set, Limits{0.5, 2.0, 20.0}, ProfileKind::scurve, fast);
+    plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(0.03, 0, 0))), set, Limits{0.5, 2.0, 20.0},
+         ProfileKind::scurve, fast);
   });
   EXPECT_NE(short_path.find("start_velocity = 0.5"), std::string::npos) << short_path;
   EXPECT_NE(short_path.find("first run of the path"), std::string::npos) << short_path;
@@ -296,13 +308,15 @@ TEST(TrajectoryEvents, AMovingStartIsRefusedWithAClearMessage) {
 // at 0.9 m/s into a span of 0.5 m/s is refused, though its peak is under the first span's 1 m/s.
 TEST(TrajectoryEvents, ALawAboveALowerSpanItCrossesIsRefused) {
   const MetricSetd set = three_points();
-  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(2.0, 0, 0))), set, Limits{1.0, 2.0, std::nullopt},
-                               ProfileKind::trapezoid);
+  const Trajectory traj = plan(Path::lin(Posed(), Posed(Eigen::Matrix3d::Identity(), V(2.0, 0, 0))), set,
+                               Limits{1.0, 2.0, std::nullopt}, ProfileKind::trapezoid);
   TimeLaw law;
   law.append(Profile::trapezoid(2.0, 0.9, 2.0), 0.0);
   law.end_run();
   const std::vector<SpeedLimit> spans{{0.0, 1.0, 1.0}, {1.0, 1.0, 0.5}};
-  EXPECT_NE(message_of([&] { Trajectory(traj.path(), law, spans, {0.0, 2.0}); }).find("must keep under the velocity limit of every span"),
+  EXPECT_NE(message_of([&] {
+              Trajectory(traj.path(), law, spans, {0.0, 2.0});
+            }).find("must keep under the velocity limit of every span"),
             std::string::npos);
   // Under the lower span's limit throughout, the same law is accepted.
   const std::vector<SpeedLimit> higher{{0.0, 1.0, 1.0}, {1.0, 1.0, 0.9}};

@@ -54,7 +54,9 @@ TEST(TrigPolynomial, AgreesWithADenseSamplingOnRandomPolynomials) {
   for (int n = 0; n < 200; ++n) {
     const double c0 = coefficient(random), a1 = coefficient(random), b1 = coefficient(random), a2 = coefficient(random),
                  b2 = coefficient(random);
-    auto f = [&](double t) { return c0 + a1 * std::cos(t) + b1 * std::sin(t) + a2 * std::cos(2 * t) + b2 * std::sin(2 * t); };
+    auto f = [&](double t) {
+      return c0 + a1 * std::cos(t) + b1 * std::sin(t) + a2 * std::cos(2 * t) + b2 * std::sin(2 * t);
+    };
     const std::vector<double> zeros = sign_changes(TrigPolynomial::interpolate(f), 1e-10);
     EXPECT_EQ(zeros.size() % 2, 0u) << n;  // a periodic function changes sign an even number of times
     int dense = 0;

@@ -81,7 +81,8 @@ void expect_within_staircase(const std::vector<Profile>& laws, const std::vector
     const double a_k = segments[k].acceleration > 0.0 ? std::min(segments[k].acceleration, a) : a;
     const ProfileState first = p.state_at(0.0);
     ASSERT_NEAR(first.v, before.v, 1e-9) << where << ": velocity jumps before law " << n;
-    ASSERT_NEAR(p.phase_count() > 0 ? p.phase(0).start.a : 0.0, before.a, 1e-6 * a) << where << ": acceleration jumps before law " << n;
+    ASSERT_NEAR(p.phase_count() > 0 ? p.phase(0).start.a : 0.0, before.a, 1e-6 * a)
+        << where << ": acceleration jumps before law " << n;
     for (int m = 0; m <= 64; ++m) {
       const ProfileState st = p.state_at(p.duration() * m / 64.0);
       ASSERT_LE(st.v, segments[k].limit * (1 + 1e-9)) << where << ": law " << n << " in segment " << k;
@@ -177,12 +178,30 @@ TEST(VelocityLimit, ChainKeepsEveryLimitAndJoins) {
 
 TEST(VelocityLimit, BadInputIsRefused) {
   EXPECT_NE(message_of([] { velocity_limited_law({}, 1.0, std::nullopt); }).find("segments"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{1.0, -1.0}}, 1.0, std::nullopt); }).find("segments[0].limit = -1"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{1.0, 1.0}, {0.0, 1.0}}, 1.0, std::nullopt); }).find("segments[1].length = 0"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{1.0, 1.0}}, 0.0, std::nullopt); }).find("a_max = 0"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{1.0, 1.0}}, 1.0, std::nan("")); }).find("j_max = nan"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{1.0, 1.0}}, 1.0, std::nullopt, 2.0); }).find("v_start = 2"), std::string::npos);
-  EXPECT_NE(message_of([] { velocity_limited_law({{0.01, 1.0}}, 1.0, std::nullopt, 1.0, 0.0); }).find("cannot be reached"), std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{1.0, -1.0}}, 1.0, std::nullopt);
+            }).find("segments[0].limit = -1"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{1.0, 1.0}, {0.0, 1.0}}, 1.0, std::nullopt);
+            }).find("segments[1].length = 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{1.0, 1.0}}, 0.0, std::nullopt);
+            }).find("a_max = 0"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{1.0, 1.0}}, 1.0, std::nan(""));
+            }).find("j_max = nan"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{1.0, 1.0}}, 1.0, std::nullopt, 2.0);
+            }).find("v_start = 2"),
+            std::string::npos);
+  EXPECT_NE(message_of([] {
+              velocity_limited_law({{0.01, 1.0}}, 1.0, std::nullopt, 1.0, 0.0);
+            }).find("cannot be reached"),
+            std::string::npos);
 }
 
 // The curvature rule: in a tight blend the path slows down, and no point of the set then

@@ -34,8 +34,12 @@ SCRATCH = pathlib.Path(os.environ.get("FUZZ_LIMITS_SCRATCH", REPO / "build" / "f
 SCRATCH.mkdir(parents=True, exist_ok=True)
 LIMITS_FILE = SCRATCH / "limits.yaml"
 JOB_FILE = SCRATCH / "job.yaml"
-JOB_FILE.write_text((REPO / "examples" / "jobs" / "ur5e_lin_move.yaml").read_text().replace(
-    "urdf: ../../tests/data/urdf/", f"urdf: {REPO / 'tests' / 'data' / 'urdf'}/") + "limits_file: limits.yaml\n")
+JOB_FILE.write_text(
+    (REPO / "examples" / "jobs" / "ur5e_lin_move.yaml")
+    .read_text()
+    .replace("urdf: ../../tests/data/urdf/", f"urdf: {REPO / 'tests' / 'data' / 'urdf'}/")
+    + "limits_file: limits.yaml\n"
+)
 ARM = dispkin.SerialArm.from_urdf(str(REPO / "tests" / "data" / "urdf" / "arm_ur5e_dh.urdf"), "base_link", "tool0")
 
 

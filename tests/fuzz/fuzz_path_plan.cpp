@@ -169,7 +169,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       check_finite(s.s, "Trajectory::sample s");
       check_finite(s.s_dot, "Trajectory::sample s_dot");
       check_finite(s.s_ddot, "Trajectory::sample s_ddot");
-      if (std::isfinite(s.s_dot) && std::isfinite(limits.velocity) && (s.s_dot < -1e-9 * limits.velocity || s.s_dot > limits.velocity * (1.0 + 1e-9)))
+      if (std::isfinite(s.s_dot) && std::isfinite(limits.velocity) &&
+          (s.s_dot < -1e-9 * limits.velocity || s.s_dot > limits.velocity * (1.0 + 1e-9)))
         dispkin::fuzz::out_of_bound("Trajectory::sample s_dot outside [0, v_sys]");
     }
   });

@@ -36,8 +36,10 @@ def _objects():
     a, b, c = _pose(0, 0, 0, 0, 0, 0), _pose(0.3, 0, 0, 0, 0, 10), _pose(0.3, 0.2, 0, 0, 0, 30)
     path = dispkin.Path.lin(a, b, pivot=(0, 0, 0.1))
     path.then(dispkin.Path.circ(b, _pose(0.45, 0.1, 0, 0, 0, 20), c, pivot=(0, 0, 0.1)), blend=0.03)
-    path.then(dispkin.Path.spline([c, _pose(0.15, 0.25, 0.02, 2, 0, 35), _pose(0, 0.2, 0.05, 5, 0, 40)], pivot=(0, 0, 0.1)),
-              blend=0.02)
+    path.then(
+        dispkin.Path.spline([c, _pose(0.15, 0.25, 0.02, 2, 0, 35), _pose(0, 0.2, 0.05, 5, 0, 40)], pivot=(0, 0, 0.1)),
+        blend=0.02,
+    )
     trajectory = dispkin.plan(path, _tool(), dispkin.Limits(0.25, 1.0, 10.0))
     arm = dispkin.SerialArm.from_urdf(str(DATA / "urdf" / "arm_ur5e_dh.urdf"), "base_link", "tool0")
     q0 = np.array([0.0, -1.9, 1.9, -1.57, -1.57, 0.0])
@@ -48,8 +50,9 @@ def _objects():
     far = hexapod.home * dispkin.Pose(translation=(0, 0, 0.2))
     legs = dispkin.MetricSet()
     hexapod.add_leg_speed_group(legs, 0)
-    checked = hexapod.check_trajectory(dispkin.plan(dispkin.Path.lin(hexapod.home, far), legs, dispkin.Limits(0.05, 0.5),
-                                                    "trapezoid"), 1e-3)
+    checked = hexapod.check_trajectory(
+        dispkin.plan(dispkin.Path.lin(hexapod.home, far), legs, dispkin.Limits(0.05, 0.5), "trapezoid"), 1e-3
+    )
     return [
         _pose(0.1, 0.2, 0.3, 10, 20, 30),
         dispkin.WorkToolFrames(_pose(0, 0, 0.2, 0, 0, 10), _pose(0, 0, 0.05, 5, 0, 0)),
@@ -86,7 +89,7 @@ def _plain(x):
 
 OBJECTS = _objects()
 STATES = [(type(o), _plain(o.__getstate__())) for o in OBJECTS]
-HOSTILE_NUMBERS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 0.0, -1.0, 5e-324, 1e300, 2.0 ** 63]
+HOSTILE_NUMBERS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 0.0, -1.0, 5e-324, 1e300, 2.0**63]
 OTHER_TYPES = [None, "x", b"\xff", (), [], 1, True, 1.5, ((),)]
 
 
@@ -125,7 +128,7 @@ def _corrupt(fdp, state):
     elif how == 2:
         new = fdp.PickValueInList(OTHER_TYPES)
     elif how == 3 and isinstance(old, tuple) and old:
-        new = old[:fdp.ConsumeIntInRange(0, len(old) - 1)]  # cut short
+        new = old[: fdp.ConsumeIntInRange(0, len(old) - 1)]  # cut short
     elif how == 4 and isinstance(old, tuple) and old:
         new = old + (old[fdp.ConsumeIntInRange(0, len(old) - 1)],)  # an item repeated
     else:
@@ -147,7 +150,14 @@ def _require_usable(obj):
         if not (math.isfinite(obj.duration) and obj.duration >= 0.0):
             raise AssertionError(f"an unpickled trajectory lasts {obj.duration} s")
         t = np.linspace(0.0, obj.duration, 101)
-        for method in ("sample", "body_twist", "path_position", "path_velocity", "path_acceleration", "body_acceleration"):
+        for method in (
+            "sample",
+            "body_twist",
+            "path_position",
+            "path_velocity",
+            "path_acceleration",
+            "body_acceleration",
+        ):
             if not _finite(getattr(obj, method)(t)):
                 raise AssertionError(f"an unpickled trajectory gives non-finite {method}")
         limits = obj.speed_limits()

@@ -27,9 +27,11 @@ void check_law(const dispkin::Profile& p, double v_max, double a_max, dispkin::f
       return;
     }
     const double slack = 1e-9;
-    if (x.v < -slack * v_max || x.v > v_max * (1 + slack)) dispkin::fuzz::out_of_bound("Profile velocity outside [0, v_max]");
+    if (x.v < -slack * v_max || x.v > v_max * (1 + slack))
+      dispkin::fuzz::out_of_bound("Profile velocity outside [0, v_max]");
     if (std::abs(x.a) > a_max * (1 + slack)) dispkin::fuzz::out_of_bound("Profile acceleration above a_max");
-    if (x.s < -slack * p.distance() || x.s > p.distance() * (1 + slack)) dispkin::fuzz::out_of_bound("Profile position outside [0, S]");
+    if (x.s < -slack * p.distance() || x.s > p.distance() * (1 + slack))
+      dispkin::fuzz::out_of_bound("Profile position outside [0, S]");
   }
 }
 

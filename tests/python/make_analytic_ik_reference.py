@@ -23,26 +23,63 @@ import numpy as np
 
 HALF_PI = math.pi / 2
 
+
 # (a, alpha, d, offset) per joint, as in serial_test_chains.hpp.
 def jaco2():
     aa = math.pi / 6
     k = math.sin(aa) / math.sin(2 * aa)
     d1, d2, d3, d4, d5, d6, e2 = 0.2755, 0.4100, 0.2073, 0.0741, 0.0741, 0.1600, 0.0098
-    return [(0, HALF_PI, d1, 0), (d2, math.pi, 0, 0), (0, HALF_PI, -e2, 0),
-            (0, 2 * aa, -(d3 + k * d4), 0), (0, 2 * aa, -(k * d4 + k * d5), 0), (0, math.pi, -(k * d5 + d6), 0)]
+    return [
+        (0, HALF_PI, d1, 0),
+        (d2, math.pi, 0, 0),
+        (0, HALF_PI, -e2, 0),
+        (0, 2 * aa, -(d3 + k * d4), 0),
+        (0, 2 * aa, -(k * d4 + k * d5), 0),
+        (0, math.pi, -(k * d5 + d6), 0),
+    ]
 
 
 ROBOTS = {
-    "kuka_kr6_r900": [(0.025, -HALF_PI, 0.400, 0), (0.455, 0, 0, -HALF_PI), (0.035, -HALF_PI, 0, 0),
-                      (0, HALF_PI, 0.420, 0), (0, -HALF_PI, 0, 0), (0, 0, 0.080, 0)],
-    "abb_irb120": [(0, -HALF_PI, 0.290, 0), (0.270, 0, 0, -HALF_PI), (0.070, -HALF_PI, 0, 0),
-                   (0, HALF_PI, 0.302, 0), (0, -HALF_PI, 0, 0), (0, 0, 0.072, 0)],
-    "abb_irb6640": [(0.320, -HALF_PI, 0.780, 0), (1.075, 0, 0, -HALF_PI), (0.200, -HALF_PI, 0, 0),
-                    (0, HALF_PI, 1.1425, 0), (0, -HALF_PI, 0, 0), (0, 0, 0.200, 0)],
-    "ur5": [(0, HALF_PI, 0.089159, 0), (-0.425, 0, 0, 0), (-0.39225, 0, 0, 0),
-            (0, HALF_PI, 0.10915, 0), (0, -HALF_PI, 0.09465, 0), (0, 0, 0.0823, 0)],
-    "ur10e": [(0, HALF_PI, 0.1807, 0), (-0.6127, 0, 0, 0), (-0.57155, 0, 0, 0),
-              (0, HALF_PI, 0.17415, 0), (0, -HALF_PI, 0.11985, 0), (0, 0, 0.11655, 0)],
+    "kuka_kr6_r900": [
+        (0.025, -HALF_PI, 0.400, 0),
+        (0.455, 0, 0, -HALF_PI),
+        (0.035, -HALF_PI, 0, 0),
+        (0, HALF_PI, 0.420, 0),
+        (0, -HALF_PI, 0, 0),
+        (0, 0, 0.080, 0),
+    ],
+    "abb_irb120": [
+        (0, -HALF_PI, 0.290, 0),
+        (0.270, 0, 0, -HALF_PI),
+        (0.070, -HALF_PI, 0, 0),
+        (0, HALF_PI, 0.302, 0),
+        (0, -HALF_PI, 0, 0),
+        (0, 0, 0.072, 0),
+    ],
+    "abb_irb6640": [
+        (0.320, -HALF_PI, 0.780, 0),
+        (1.075, 0, 0, -HALF_PI),
+        (0.200, -HALF_PI, 0, 0),
+        (0, HALF_PI, 1.1425, 0),
+        (0, -HALF_PI, 0, 0),
+        (0, 0, 0.200, 0),
+    ],
+    "ur5": [
+        (0, HALF_PI, 0.089159, 0),
+        (-0.425, 0, 0, 0),
+        (-0.39225, 0, 0, 0),
+        (0, HALF_PI, 0.10915, 0),
+        (0, -HALF_PI, 0.09465, 0),
+        (0, 0, 0.0823, 0),
+    ],
+    "ur10e": [
+        (0, HALF_PI, 0.1807, 0),
+        (-0.6127, 0, 0, 0),
+        (-0.57155, 0, 0, 0),
+        (0, HALF_PI, 0.17415, 0),
+        (0, -HALF_PI, 0.11985, 0),
+        (0, 0, 0.11655, 0),
+    ],
     "jaco2_j2n6s300": jaco2(),
 }
 
@@ -110,8 +147,10 @@ def main():
                 error = forward(axes, points, tip, candidate) - pose
                 if np.abs(error).max() > 1e-9:
                     continue
-                if all(np.abs(np.remainder(candidate - other + math.pi, 2 * math.pi) - math.pi).max() > 1e-6
-                       for other in distinct):
+                if all(
+                    np.abs(np.remainder(candidate - other + math.pi, 2 * math.pi) - math.pi).max() > 1e-6
+                    for other in distinct
+                ):
                     distinct.append(candidate)
             lines.append(name + " " + " ".join(repr(float(x)) for x in q) + f" {len(distinct)}")
             kept += 1

@@ -104,7 +104,9 @@ def test_keyword_names_and_defaults():
     s.add_sphere(center=(0, 0, 0), radius=0.2, absolute=True, group=2)
     s.set_group_speed(2, 0.5)
     assert s.groups == [0, 1, 2]
-    np.testing.assert_array_equal(shapes.icosahedron(1.0), shapes.icosahedron(radius=1.0, center=(0, 0, 0), circumscribed=True))
+    np.testing.assert_array_equal(
+        shapes.icosahedron(1.0), shapes.icosahedron(radius=1.0, center=(0, 0, 0), circumscribed=True)
+    )
 
 
 def test_pose_api_shapes_and_dtypes():
@@ -227,5 +229,8 @@ def test_shapes_submodule_wraps_the_core():
 
 def test_module_help_lists_the_signatures():
     text = dispkin.section_length.__doc__
-    assert re.search(r"section_length\(metric_set: .*MetricSet, pose_a: .*Pose, pose_b: .*Pose, interpolation: str = 'decoupled'", text)
+    assert re.search(
+        r"section_length\(metric_set: .*MetricSet, pose_a: .*Pose, pose_b: .*Pose, interpolation: str = 'decoupled'",
+        text,
+    )
     assert "pivot" in inspect.getdoc(dispkin.section_length)

@@ -44,8 +44,10 @@ def job_files(tmp_path, monkeypatch):
         (directory / f"{name}.yaml").write_text(VARIANT.format(name=name, velocity=velocity))
     for source in ("violating_hexapod_too_high.yaml", "bad_negative_velocity.yaml"):
         shutil.copy(DATA / source, directory / source)
-    return [str(directory / name) for name in
-            ("slow.yaml", "fast.yaml", "violating_hexapod_too_high.yaml", "bad_negative_velocity.yaml")]
+    return [
+        str(directory / name)
+        for name in ("slow.yaml", "fast.yaml", "violating_hexapod_too_high.yaml", "bad_negative_velocity.yaml")
+    ]
 
 
 def plan_alone(job_file, outdir):
@@ -116,7 +118,9 @@ def test_batch_exit_status_without_a_failed_job(job_files, tmp_path, capsys):
 
 def test_batch_on_a_dask_cluster_is_planning_each_job_alone(job_files, tmp_path):
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None) as cluster:
+    with distributed.LocalCluster(
+        n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None
+    ) as cluster:
         results = dispkin.batch(job_files, tmp_path / "out", scheduler=cluster.scheduler_address)
     assert [r.status for r in results] == ["planned", "planned", "limits broken", "failed"]
     assert [r.outdir for r in results] == [tmp_path / "out" / r["folder"] for r in read_table(tmp_path / "out")]
@@ -134,7 +138,10 @@ def plan_or_die(job_file, outdir, plot):
 
 
 def test_a_worker_process_that_dies_fails_its_job_alone(job_files, tmp_path):
-    tasks = [(str(pathlib.Path(job).absolute()), str(tmp_path / "out" / str(k)), False) for k, job in enumerate(job_files[:3])]
+    tasks = [
+        (str(pathlib.Path(job).absolute()), str(tmp_path / "out" / str(k)), False)
+        for k, job in enumerate(job_files[:3])
+    ]
     outcomes = dict(batches._run_on_processes(2, plan_or_die)(tasks))
     assert sorted(outcomes) == [0, 1, 2]
     assert outcomes[1]["error"] == "the worker process planning it died: killed (out of memory?) or crashed"

@@ -2,6 +2,7 @@
 repository passes scripts/check-citations.py and benchmarks/results_table.py --check, and each
 reports a citation without a file, an equation or file that does not exist, numbers out of order,
 and a figure its dated entry does not hold, with file and line."""
+
 import pathlib
 import subprocess
 import sys
@@ -37,23 +38,32 @@ DOC = f"# Planning\n\n```text\ns = a + b        (1)\nv = s / t        (2)\n```\n
 
 def test_resolved_citations_pass(tmp_path):
     write(tmp_path, "doc/planning.md", DOC)
-    write(tmp_path, "src/planner.cpp", f"// The sum (doc/planning.md {EQ} 1; its rate {EQ} 2).\n"
-                                       f"// Both (doc/planning.md {EQS} 1–2), wrapped: (doc/planning.md\n// {EQS} 1, 2).\n")
+    write(
+        tmp_path,
+        "src/planner.cpp",
+        f"// The sum (doc/planning.md {EQ} 1; its rate {EQ} 2).\n"
+        f"// Both (doc/planning.md {EQS} 1–2), wrapped: (doc/planning.md\n// {EQS} 1, 2).\n",
+    )
     result = run(CITATIONS, tmp_path)
     assert result.returncode == 0, result.stdout
 
 
 def test_each_bad_citation_is_reported_with_its_line(tmp_path):
     write(tmp_path, "doc/planning.md", DOC)
-    write(tmp_path, "include/dispkin/planner.hpp",
-          f"#pragma once\n//! The sum ({EQ} 1).\n//! (doc/planning.md {EQ} 3)\n//! (doc/missing.md {EQ} 1)\n"
-          f"//! (doc/planning.md {EQS} (1–4))\n")
+    write(
+        tmp_path,
+        "include/dispkin/planner.hpp",
+        f"#pragma once\n//! The sum ({EQ} 1).\n//! (doc/planning.md {EQ} 3)\n//! (doc/missing.md {EQ} 1)\n"
+        f"//! (doc/planning.md {EQS} (1–4))\n",
+    )
     result = run(CITATIONS, tmp_path)
     assert result.returncode == 1
     assert f"include/dispkin/planner.hpp:2: '{EQ} 1' names no file" in result.stdout
     assert f"include/dispkin/planner.hpp:3: '{EQ} 3' of doc/planning.md: no equation (3) there" in result.stdout
     assert f"include/dispkin/planner.hpp:4: '{EQ} 1' cites doc/missing.md, which does not exist" in result.stdout
-    assert f"include/dispkin/planner.hpp:5: '{EQS} (1–4)' of doc/planning.md: no equation (3), (4) there" in result.stdout
+    assert (
+        f"include/dispkin/planner.hpp:5: '{EQS} (1–4)' of doc/planning.md: no equation (3), (4) there" in result.stdout
+    )
 
 
 def test_equations_out_of_order_or_twice_are_reported(tmp_path):

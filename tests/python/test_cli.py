@@ -82,7 +82,9 @@ def test_demo_move_is_the_specified_one():
 
 
 def test_kdl_path_length_is_max_of_translation_and_eqradius_angle():
-    assert cli.kdl_path_length(dispkin.Pose(), dispkin.Pose(translation=(0.3, 0.4, 0.0))) == pytest.approx(0.5, rel=1e-15)
+    assert cli.kdl_path_length(dispkin.Pose(), dispkin.Pose(translation=(0.3, 0.4, 0.0))) == pytest.approx(
+        0.5, rel=1e-15
+    )
     turn = dispkin.Pose.exp([0.0, 0.0, 0.0, 0.0, 0.0, 1.2])
     assert cli.kdl_path_length(dispkin.Pose(), turn, eqradius=0.1) == pytest.approx(0.12, rel=1e-15)
     both = dispkin.Pose(quaternion=turn.quaternion, translation=(0.05, 0.0, 0.0))
@@ -119,7 +121,9 @@ def test_python_dash_m_dispkin_help():
     result = subprocess.run([sys.executable, "-m", "dispkin", "--help"], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0
     assert "usage: dispkin" in result.stdout and "demo" in result.stdout
-    result = subprocess.run([sys.executable, "-m", "dispkin", "demo", "--help"], capture_output=True, text=True, timeout=60)
+    result = subprocess.run(
+        [sys.executable, "-m", "dispkin", "demo", "--help"], capture_output=True, text=True, timeout=60
+    )
     assert result.returncode == 0 and "--moves" in result.stdout and "--seed" in result.stdout
     result = subprocess.run([sys.executable, "-m", "dispkin", "--version"], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0 and result.stdout.strip() == f"dispkin {dispkin.__version__}"
@@ -127,7 +131,9 @@ def test_python_dash_m_dispkin_help():
 
 def test_job_commands_document_every_option():
     for command, options in (("check", ["JOB.yaml"]), ("plan", ["JOB.yaml", "--outdir", "--plot", "OUTDIR"])):
-        result = subprocess.run([sys.executable, "-m", "dispkin", command, "--help"], capture_output=True, text=True, timeout=60)
+        result = subprocess.run(
+            [sys.executable, "-m", "dispkin", command, "--help"], capture_output=True, text=True, timeout=60
+        )
         assert result.returncode == 0
         for option in options:
             assert option in result.stdout, (command, option)

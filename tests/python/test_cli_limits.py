@@ -75,7 +75,10 @@ def test_ur5e_job_too_fast_fails_naming_the_wrist(tmp_path, capsys):
     v = broken[0]
     assert abs(v["value"]) == pytest.approx(np.max(np.abs(qd[:, k])), rel=1e-12) and v["limit"] == limit[k]
     assert document["points"][v["sample"]]["velocities"][k] == v["value"]
-    assert f"velocity of wrist_3_joint: {v['value']:.6g} rad/s at t = {v['time']:.4f} s (sample {v['sample']}), limit 3.14 rad/s" in err
+    assert (
+        f"velocity of wrist_3_joint: {v['value']:.6g} rad/s at t = {v['time']:.4f} s (sample {v['sample']}), limit 3.14 rad/s"
+        in err
+    )
     assert document["dispkin"]["summary"]["binding"].startswith("none: the trajectory breaks limits")
 
 
@@ -127,8 +130,10 @@ def test_joint_accelerations_of_a_limits_file_are_checked_without_retiming(tmp_p
     # written trajectory breaks them and plan says which; re-timed with them, it keeps them.
     names = jobs.load_job(UR5E).joint_names
     moveit = tmp_path / "slow_joint_limits.yaml"
-    moveit.write_text("joint_limits:\n" + "".join(
-        f"  {n}:\n    has_acceleration_limits: true\n    max_acceleration: 0.5\n" for n in names))
+    moveit.write_text(
+        "joint_limits:\n"
+        + "".join(f"  {n}:\n    has_acceleration_limits: true\n    max_acceleration: 0.5\n" for n in names)
+    )
     job_file = with_lines(UR5E, tmp_path, f"limits_file: {moveit}")
     assert plan(job_file, tmp_path / "plain") == EXIT_LIMITS_BROKEN
     err = capsys.readouterr().err
@@ -156,16 +161,30 @@ def test_pilz_limits_file_gives_the_path_limits_and_the_rotational_limit(tmp_pat
     assert all(radius != limits.rotation_sphere_radius for _, radius, _ in job.metric_set.spheres(0))
 
 
-@pytest.mark.parametrize("text, where, reason", [
-    ("retime: {method: fastest}", "retime.method", "'fastest' is not one of 'scaling', 'optimal'"),
-    ("retime: {joint_acceleration: 2}", "retime", "missing required key `method`"),
-    ("retime: {method: optimal, joint_acceleration: [1, 2]}", "retime.joint_acceleration", "expected one value or 6"),
-    ("retime: {method: optimal, joint_acceleration: -1}", "retime.joint_acceleration",
-     "-1: expected a positive number or a list of positive numbers"),
-    ("retime: {method: scaling, joint_acceleration: 2}", "retime.joint_acceleration", "joint accelerations need method: optimal"),
-    ("limits_file: 3", "limits_file", "3: expected a file name or a list of file names"),
-    ("limits_file: nowhere.yaml", "limits_file", "does not exist"),
-])
+@pytest.mark.parametrize(
+    "text, where, reason",
+    [
+        ("retime: {method: fastest}", "retime.method", "'fastest' is not one of 'scaling', 'optimal'"),
+        ("retime: {joint_acceleration: 2}", "retime", "missing required key `method`"),
+        (
+            "retime: {method: optimal, joint_acceleration: [1, 2]}",
+            "retime.joint_acceleration",
+            "expected one value or 6",
+        ),
+        (
+            "retime: {method: optimal, joint_acceleration: -1}",
+            "retime.joint_acceleration",
+            "-1: expected a positive number or a list of positive numbers",
+        ),
+        (
+            "retime: {method: scaling, joint_acceleration: 2}",
+            "retime.joint_acceleration",
+            "joint accelerations need method: optimal",
+        ),
+        ("limits_file: 3", "limits_file", "3: expected a file name or a list of file names"),
+        ("limits_file: nowhere.yaml", "limits_file", "does not exist"),
+    ],
+)
 def test_bad_retime_and_limits_file_are_pointed_errors(tmp_path, text, where, reason):
     job_file = with_lines(UR5E, tmp_path, text)
     line = len(job_file.read_text().splitlines())
@@ -219,8 +238,9 @@ def test_progress_only_on_a_terminal_unless_forced():
 def test_progress_lines_while_sampling(tmp_path, capsys):
     pipe = _Stream(False)
     progress = Progress(pipe, "dispkin plan", interval=0.0)
-    ok = dispkin.commands.run_plan(str(UR5E), str(tmp_path), False, io.StringIO(), allow_violations=True,
-                                   progress=progress, errors=io.StringIO())
+    ok = dispkin.commands.run_plan(
+        str(UR5E), str(tmp_path), False, io.StringIO(), allow_violations=True, progress=progress, errors=io.StringIO()
+    )
     assert ok == 0
     lines = pipe.getvalue().splitlines()
     assert lines[0] == "dispkin plan: planning"
@@ -240,12 +260,20 @@ def test_progress_lines_while_sampling(tmp_path, capsys):
 def test_plan_is_silent_on_stderr_in_a_pipe_by_default(tmp_path):
     import subprocess
 
-    result = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(UR5E), "-o", str(tmp_path), "--allow-violations"],
-                            capture_output=True, text=True, timeout=600)
+    result = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(UR5E), "-o", str(tmp_path), "--allow-violations"],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert result.returncode == 0
     assert "sampling" not in result.stderr and "planning" not in result.stderr
-    result = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(UR5E), "-o", str(tmp_path)],
-                            capture_output=True, text=True, timeout=600)
+    result = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(UR5E), "-o", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert result.returncode == EXIT_LIMITS_BROKEN and "velocity of wrist_3_joint" in result.stderr
 
 
@@ -282,7 +310,9 @@ def dense_states(job, trajectory):
         if part.kind == "path":
             samples = dispkin.check_joint_limits(traj, arm, part.q_start).samples
         else:
-            samples = arm.check_joint_limits(traj, np.linspace(0.0, traj.duration, int(np.ceil(traj.duration / 1e-3)) + 1)).samples
+            samples = arm.check_joint_limits(
+                traj, np.linspace(0.0, traj.duration, int(np.ceil(traj.duration / 1e-3)) + 1)
+            ).samples
         qdd.append(np.abs(samples["qdd"]))
         tau.append(np.abs(samples["static_torque"] + samples["dynamic_torque"]))
     return np.max(np.vstack(qdd), axis=0), np.max(np.vstack(tau), axis=0)
@@ -315,9 +345,17 @@ def summary_of(directory, job_file):
 def test_a_limit_broken_only_between_samples_fails_the_plan(tmp_path, capsys, example, period, kind):
     joint, limit, sampled = limit_between_samples(example, tmp_path, period)[0 if kind == "acceleration" else 1]
     assert sampled < limit
-    flag, key = ("has_acceleration_limits", "max_acceleration") if kind == "acceleration" else ("has_effort_limits", "max_effort")
-    job_file = example_job(example, tmp_path, f"output: {{sample_period: {period}}}",
-                           f"limits_file: {moveit_file(tmp_path, joint, flag, key, limit)}")
+    flag, key = (
+        ("has_acceleration_limits", "max_acceleration")
+        if kind == "acceleration"
+        else ("has_effort_limits", "max_effort")
+    )
+    job_file = example_job(
+        example,
+        tmp_path,
+        f"output: {{sample_period: {period}}}",
+        f"limits_file: {moveit_file(tmp_path, joint, flag, key, limit)}",
+    )
     assert plan(job_file, tmp_path / "out") == EXIT_LIMITS_BROKEN
     captured = capsys.readouterr()
     summary = summary_of(tmp_path / "out", job_file)
@@ -334,8 +372,12 @@ def test_plan_exits_zero_only_when_the_summary_says_within_limits(tmp_path, caps
     joint, _, _ = limit_between_samples(LIN, tmp_path, 0.2)[1]
     job = jobs.load_job(example_job(LIN, tmp_path, "output: {sample_period: 0.2}", name="probe2.yaml"))
     peak = dense_states(job, jobs.plan_job(job))[1][job.joint_names.index(joint)]
-    job_file = example_job(LIN, tmp_path, "output: {sample_period: 0.2}",
-                           f"limits_file: {moveit_file(tmp_path, joint, 'has_effort_limits', 'max_effort', peak * 1.01)}")
+    job_file = example_job(
+        LIN,
+        tmp_path,
+        "output: {sample_period: 0.2}",
+        f"limits_file: {moveit_file(tmp_path, joint, 'has_effort_limits', 'max_effort', peak * 1.01)}",
+    )
     assert plan(job_file, tmp_path / "out") == 0
     captured = capsys.readouterr()
     assert "within limits: True" in captured.out and "LIMIT BROKEN" not in captured.out and captured.err == ""
@@ -349,7 +391,9 @@ def test_a_static_torque_beyond_its_effort_limit_is_a_broken_limit_not_a_traceba
     k = int(np.argmax(holding))
     limit = 0.9 * holding[k]  # the arm cannot even hold itself there, at any speed
     joint = job.joint_names[k]
-    job_file = example_job(LIN, tmp_path, f"limits_file: {moveit_file(tmp_path, joint, 'has_effort_limits', 'max_effort', limit)}")
+    job_file = example_job(
+        LIN, tmp_path, f"limits_file: {moveit_file(tmp_path, joint, 'has_effort_limits', 'max_effort', limit)}"
+    )
     assert plan(job_file, tmp_path / "out") == EXIT_LIMITS_BROKEN
     captured = capsys.readouterr()
     assert f"effort of {joint}: " in captured.err
@@ -357,8 +401,13 @@ def test_a_static_torque_beyond_its_effort_limit_is_a_broken_limit_not_a_traceba
     summary = summary_of(tmp_path / "out", job_file)
     assert summary["joints"]["acceleration_factor"] is None and not summary["within_machine_limits"]
     # Re-timing cannot help: a clear error at the key, not a traceback.
-    retimed = example_job(LIN, tmp_path, f"limits_file: {tmp_path / f'{joint}_max_effort.yaml'}", "retime: {method: scaling}",
-                          name="retimed.yaml")
+    retimed = example_job(
+        LIN,
+        tmp_path,
+        f"limits_file: {tmp_path / f'{joint}_max_effort.yaml'}",
+        "retime: {method: scaling}",
+        name="retimed.yaml",
+    )
     assert plan(retimed, tmp_path / "out2") == 1
     err = capsys.readouterr().err
     assert re.search(rf"retimed\.yaml:\d+:1: retime: planning failed: joint {joint}: the static torque", err), err
@@ -406,8 +455,10 @@ output: {{sample_period: 0.3}}
 @pytest.fixture
 def no_planning(monkeypatch):
     """Fails the test if the job is planned: output errors come before any work."""
+
     def refuse(job):
         raise AssertionError("planned although an output is wrong")
+
     monkeypatch.setattr(jobs, "plan_job", refuse)
 
 
@@ -418,12 +469,15 @@ def output_error(capsys, job_file, outdir, *extra):
     return err
 
 
-@pytest.mark.parametrize("key, value, reason", [
-    ("csv", "..", "'..': a file name, not a path"),
-    ("json", ".", "'.': a file name, not a path"),
-    ("summary", "sub/x.txt", "'sub/x.txt': a file name, not a path"),
-    ("csv", "x" * 300 + ".csv", "longer than 255 bytes, the longest file name"),
-])
+@pytest.mark.parametrize(
+    "key, value, reason",
+    [
+        ("csv", "..", "'..': a file name, not a path"),
+        ("json", ".", "'.': a file name, not a path"),
+        ("summary", "sub/x.txt", "'sub/x.txt': a file name, not a path"),
+        ("csv", "x" * 300 + ".csv", "longer than 255 bytes, the longest file name"),
+    ],
+)
 def test_bad_output_names_are_refused_at_their_key(tmp_path, capsys, no_planning, key, value, reason):
     job_file = example_job(LIN, tmp_path, f"output: {{sample_period: 0.01, {key}: {json.dumps(value)}}}")
     err = output_error(capsys, job_file, tmp_path / "out")
@@ -437,7 +491,9 @@ def test_a_long_job_name_is_refused_at_name(tmp_path, capsys, no_planning):
     assert re.match(rf"dispkin plan: {re.escape(str(job_file))}:\d+:1: name: 'nnn", err), err
     assert "longer than 255 bytes, the longest file name: give a shorter name, or output.csv" in err
     # With its own output names the long name is fine.
-    named = example_job(LIN, tmp_path, "name: " + "n" * 300, "output: {csv: a.csv, json: a.json, summary: a.txt}", name="named.yaml")
+    named = example_job(
+        LIN, tmp_path, "name: " + "n" * 300, "output: {csv: a.csv, json: a.json, summary: a.txt}", name="named.yaml"
+    )
     assert jobs.load_job(named).outputs == {"csv": "a.csv", "json": "a.json", "summary": "a.txt"}
 
 
@@ -472,7 +528,10 @@ def test_the_job_file_is_never_an_output(tmp_path, capsys, no_planning, how):
         (outdir / "alias.yaml").symlink_to(job_file) if how == "symlink" else os.link(job_file, outdir / "alias.yaml")
     before = job_file.read_text()
     err = output_error(capsys, job_file, outdir)
-    assert re.search(r":\d+:\d+: output\.csv: '(job|alias)\.yaml': .* is the job file \(.*job\.yaml\): an input is never overwritten", err), err
+    assert re.search(
+        r":\d+:\d+: output\.csv: '(job|alias)\.yaml': .* is the job file \(.*job\.yaml\): an input is never overwritten",
+        err,
+    ), err
     assert job_file.read_text() == before
 
 
@@ -501,13 +560,24 @@ def test_an_output_that_is_a_fifo_or_a_directory_is_refused_without_hanging(tmp_
     os.mkfifo(out / "job.csv")
     (out / "job.json").mkdir()
     job_file = example_job(LIN, tmp_path, "output: {csv: job.csv}")
-    done = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(job_file), "-o", str(out)], capture_output=True,
-                          text=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(job_file), "-o", str(out)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 1 and "Traceback" not in done.stderr
-    assert "output.csv: 'job.csv': " in done.stderr and "is not a regular file (a FIFO, a device or a socket)" in done.stderr
+    assert (
+        "output.csv: 'job.csv': " in done.stderr
+        and "is not a regular file (a FIFO, a device or a socket)" in done.stderr
+    )
     json_file = example_job(LIN, tmp_path, "output: {json: job.json}", name="other.yaml")
-    done = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(json_file), "-o", str(out)], capture_output=True,
-                          text=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(json_file), "-o", str(out)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 1 and "output.json: 'job.json': " in done.stderr and "is a directory" in done.stderr
 
 
@@ -528,11 +598,17 @@ limits: {velocity: 0.25, acceleration: 1.0, jerk: 10.0}
 
 
 @pytest.mark.parametrize("orientation", ["nested_slerp", "rotation_vector"])
-@pytest.mark.parametrize("blend, reason", [
-    ("blend_weight: 1e-300", "moves[1].blend_weight: 1e-300: must be at least 1e-05: a smaller share puts the blend's ends"),
-    ("blend_weight: 9e-6", "moves[1].blend_weight: 9e-06: must be at least 1e-05"),
-    ("blend: 1e-300", "moves[1].blend: 1e-300: must be at least 1e-09 m, the smallest blend dispkin builds"),
-])
+@pytest.mark.parametrize(
+    "blend, reason",
+    [
+        (
+            "blend_weight: 1e-300",
+            "moves[1].blend_weight: 1e-300: must be at least 1e-05: a smaller share puts the blend's ends",
+        ),
+        ("blend_weight: 9e-6", "moves[1].blend_weight: 9e-06: must be at least 1e-05"),
+        ("blend: 1e-300", "moves[1].blend: 1e-300: must be at least 1e-09 m, the smallest blend dispkin builds"),
+    ],
+)
 def test_blends_too_small_to_build_are_refused_at_their_key(tmp_path, capsys, blend, reason, orientation):
     job_file = tmp_path / "blended.yaml"
     job_file.write_text(BLENDED.replace("BLEND", blend).replace("ORIENTATION", orientation))
@@ -559,36 +635,63 @@ def test_a_planning_failure_names_the_blend_that_has_no_length(tmp_path):
 
     assert planning._failed_at(job, job.parts[0]) == (("moves", 0), None)  # every section has a length
     with pytest.raises(jobs.JobError) as info:
-        planning._planned(job, job.parts[0], lambda: (_ for _ in ()).throw(ValueError("segments[0].length = 0: must be finite")))
-    assert re.match(rf"{re.escape(str(job.file))}:\d+:\d+: moves\[0\]: planning failed: segments\[0\]\.length = 0", str(info.value))
+        planning._planned(
+            job, job.parts[0], lambda: (_ for _ in ()).throw(ValueError("segments[0].length = 0: must be finite"))
+        )
+    assert re.match(
+        rf"{re.escape(str(job.file))}:\d+:\d+: moves\[0\]: planning failed: segments\[0\]\.length = 0", str(info.value)
+    )
 
 
-@pytest.mark.parametrize("limit, unit", [
-    ("angular_velocity: 1e300", "deg/s"), ("angular_velocity: 1e-300", "deg/s"), ("angular_acceleration: 1e300", "deg/s²"),
-])
+@pytest.mark.parametrize(
+    "limit, unit",
+    [
+        ("angular_velocity: 1e300", "deg/s"),
+        ("angular_velocity: 1e-300", "deg/s"),
+        ("angular_acceleration: 1e300", "deg/s²"),
+    ],
+)
 def test_angular_limits_are_refused_in_degrees_at_their_key(tmp_path, limit, unit):
     key, value = limit.split(": ")
     job_file = example_job(LIN, tmp_path, f"limits: {{velocity: 0.25, acceleration: 1.0, jerk: 10.0, {limit}}}")
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(job_file)
-    assert re.match(rf"{re.escape(str(job_file))}:\d+:\d+: limits\.{key}: {re.escape(repr(float(value)))}: "
-                    rf"must be in \[5\.72958e-11, 5\.72958e\+13\] {unit}$", str(info.value)), str(info.value)
+    assert re.match(
+        rf"{re.escape(str(job_file))}:\d+:\d+: limits\.{key}: {re.escape(repr(float(value)))}: "
+        rf"must be in \[5\.72958e-11, 5\.72958e\+13\] {unit}$",
+        str(info.value),
+    ), str(info.value)
 
 
-@pytest.mark.parametrize("key, value, reason", [
-    ("base_gap", "200", "200: must be in [0, 120) deg"),
-    ("platform_gap", "-5", "-5: must be in [0, 120) deg"),
-    ("leg_speed", "1e300", "1e+300: must be in [1e-12, 1e12]"),
-])
+@pytest.mark.parametrize(
+    "key, value, reason",
+    [
+        ("base_gap", "200", "200: must be in [0, 120) deg"),
+        ("platform_gap", "-5", "-5: must be in [0, 120) deg"),
+        ("leg_speed", "1e300", "1e+300: must be in [1e-12, 1e12]"),
+    ],
+)
 def test_a_symmetric_hexapod_is_refused_at_the_key_as_written(tmp_path, key, value, reason):
-    symmetric = {"base_radius": "0.15", "base_gap": "20", "platform_radius": "0.1", "platform_gap": "20", "height": "0.2",
-                 "leg_min": "0.15", "leg_max": "0.32", "leg_speed": "0.01", key: value}
+    symmetric = {
+        "base_radius": "0.15",
+        "base_gap": "20",
+        "platform_radius": "0.1",
+        "platform_gap": "20",
+        "height": "0.2",
+        "leg_min": "0.15",
+        "leg_max": "0.32",
+        "leg_speed": "0.01",
+        key: value,
+    }
     job_file = tmp_path / "hexapod.yaml"
-    job_file.write_text("machine:\n  hexapod:\n    symmetric: {" + ", ".join(f"{k}: {v}" for k, v in symmetric.items()) + "}\n"
-                        "metric_set:\n  points:\n    - relative: [[0, 0, 0.3]]\n"
-                        "moves:\n  - lin: {to: {xyzuvw: [0.01, 0, 0.2, 0, 0, 0]}}\n"
-                        "limits: {velocity: 0.1, acceleration: 0.5, jerk: 5.0}\n")
+    job_file.write_text(
+        "machine:\n  hexapod:\n    symmetric: {" + ", ".join(f"{k}: {v}" for k, v in symmetric.items()) + "}\n"
+        "metric_set:\n  points:\n    - relative: [[0, 0, 0.3]]\n"
+        "moves:\n  - lin: {to: {xyzuvw: [0.01, 0, 0.2, 0, 0, 0]}}\n"
+        "limits: {velocity: 0.1, acceleration: 0.5, jerk: 5.0}\n"
+    )
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(job_file)
-    assert re.match(rf"{re.escape(str(job_file))}:3:\d+: machine\.hexapod\.symmetric\.{key}: {re.escape(reason)}", str(info.value)), \
-        str(info.value)
+    assert re.match(
+        rf"{re.escape(str(job_file))}:3:\d+: machine\.hexapod\.symmetric\.{key}: {re.escape(reason)}", str(info.value)
+    ), str(info.value)

@@ -103,8 +103,12 @@ def test_angular_limit_holds_and_binds():
 @pytest.mark.parametrize("bad", [-1.0, float("nan"), float("inf")])
 def test_bad_corner_tolerance_is_named(bad):
     with pytest.raises(ValueError, match="corner_tolerance"):
-        dispkin.plan(lins([pose_at(0, 0, 0), pose_at(0.1, 0, 0)]), tool_set(), dispkin.Limits(0.1, 1.0, 10.0),
-                     corner_tolerance=bad)
+        dispkin.plan(
+            lins([pose_at(0, 0, 0), pose_at(0.1, 0, 0)]),
+            tool_set(),
+            dispkin.Limits(0.1, 1.0, 10.0),
+            corner_tolerance=bad,
+        )
 
 
 @pytest.mark.parametrize("key", ["velocity", "acceleration"])
@@ -123,7 +127,8 @@ def test_bad_angular_limits_are_named(key):
 def write_pose_list_job(path, count=50, extra_limits="", move_extra=""):
     moves = "\n".join(
         f"  - lin: {{to: {{xyzuvw: [{0.05 * k:.3f}, {0.02 * (k % 2):.3f}, 0, 0, 0, {3.0 * (k % 3):.1f}]}}}}{move_extra}"
-        for k in range(1, count))
+        for k in range(1, count)
+    )
     path.write_text(f"""name: pose_list
 metric_set:
   points:

@@ -24,7 +24,13 @@ def test_spline_passes_through_its_keys_and_is_cut_into_curve_sections():
 
 
 def test_blend_keeps_the_ends_and_runs_through_without_stopping():
-    a, p1, via, p2, b = pose(0, 0), pose(0.3, 0, 0, 0.2), pose(0.45, 0.1, 0, 0.3), pose(0.3, 0.2, 0, 0.4), pose(0, 0.2, 0, 0.5)
+    a, p1, via, p2, b = (
+        pose(0, 0),
+        pose(0.3, 0, 0, 0.2),
+        pose(0.45, 0.1, 0, 0.3),
+        pose(0.3, 0.2, 0, 0.4),
+        pose(0, 0.2, 0, 0.5),
+    )
     path = dispkin.Path.lin(a, p1)
     path.then(dispkin.Path.circ(p1, via, p2), blend=0.05).then(dispkin.Path.lin(p2, b), before=0.04, after=0.06)
     assert path.start.is_approx(a, 1e-12) and path.end.is_approx(b, 1e-12)
@@ -44,10 +50,30 @@ def test_blend_keeps_the_ends_and_runs_through_without_stopping():
         (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0)]), "at least three"),
         (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0), pose(1, 0)]), "poses[2]"),
         (lambda: dispkin.Path.spline([pose(0, 0), pose(1, 0), pose(1, 1)], tolerance=math.nan), "tolerance"),
-        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.06), "half of the move"),
-        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.0), "before"),
-        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), before=0.01), "after is missing"),
-        (lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.01, after=0.01), "either blend"),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(
+                dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.06
+            ),
+            "half of the move",
+        ),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(
+                dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.0
+            ),
+            "before",
+        ),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(
+                dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), before=0.01
+            ),
+            "after is missing",
+        ),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0), pose(0.1, 0)).then(
+                dispkin.Path.lin(pose(0.1, 0), pose(0.1, 0.1)), blend=0.01, after=0.01
+            ),
+            "either blend",
+        ),
     ],
 )
 def test_bad_curves_are_refused(call, message):

@@ -15,11 +15,29 @@ import re
 import dispkin
 from dispkin import _core
 
-PYTHON_MODULES = ["dispkin", "dispkin.jobs", "dispkin.job", "dispkin.job.reader", "dispkin.job.schema", "dispkin.job.model",
-                  "dispkin.job.builder", "dispkin.job.events", "dispkin.job.planning", "dispkin.job.sampling", "dispkin.job.summary",
-                  "dispkin.job.export", "dispkin.job.violations", "dispkin.job.machine_limits", "dispkin.cli", "dispkin.progress",
-                  "dispkin.commands", "dispkin.demo", "dispkin.limits_files", "dispkin.plots",
-                  "dispkin.shapes"]
+PYTHON_MODULES = [
+    "dispkin",
+    "dispkin.jobs",
+    "dispkin.job",
+    "dispkin.job.reader",
+    "dispkin.job.schema",
+    "dispkin.job.model",
+    "dispkin.job.builder",
+    "dispkin.job.events",
+    "dispkin.job.planning",
+    "dispkin.job.sampling",
+    "dispkin.job.summary",
+    "dispkin.job.export",
+    "dispkin.job.violations",
+    "dispkin.job.machine_limits",
+    "dispkin.cli",
+    "dispkin.progress",
+    "dispkin.commands",
+    "dispkin.demo",
+    "dispkin.limits_files",
+    "dispkin.plots",
+    "dispkin.shapes",
+]
 
 
 def undocumented_pybind(name, obj):
@@ -39,7 +57,7 @@ def undocumented_pybind(name, obj):
         end = starts[i + 1].start() if i + 1 < len(starts) else len(text)
         if m.group(0).startswith(f"{short}(*args, **kwargs)") and i + 1 < len(starts):
             continue  # the header of an overloaded function
-        chunks.append(text[m.end():end])
+        chunks.append(text[m.end() : end])
     return "" if all(c.strip() for c in chunks) else "a signature without text"
 
 
@@ -99,13 +117,18 @@ def test_every_public_name_of_the_python_modules_is_documented():
 
 def test_the_check_sees_a_missing_docstring():
     """The signature-stripping rule does not take a bare signature for documentation."""
+
     class Bare:
         __doc__ = "f(self: X, a: int) -> None\n"
+
     class Overloaded:
-        __doc__ = ("f(*args, **kwargs)\nOverloaded function.\n\n1. f(a: int) -> None\n\nFirst.\n\n"
-                   "2. f(a: str) -> None\n\n")
+        __doc__ = (
+            "f(*args, **kwargs)\nOverloaded function.\n\n1. f(a: int) -> None\n\nFirst.\n\n2. f(a: str) -> None\n\n"
+        )
+
     class Documented:
         __doc__ = "f(self: X, a: int) -> None\n\nDoes f.\n"
+
     assert undocumented_pybind("X.f", Bare()) == "a signature without text"
     assert undocumented_pybind("f", Overloaded()) == "a signature without text"
     assert undocumented_pybind("X.f", Documented()) == ""

@@ -39,7 +39,9 @@ for name in sys.argv[2:]:
 @pytest.mark.parametrize("target", ["fuzz_urdf", "fuzz_hexapod_json"])
 def test_the_corpus_loads_or_is_refused_never_a_crash(target):
     files = sorted((CORPUS / target).iterdir())
-    done = subprocess.run([sys.executable, "-c", REPLAY, target, *map(str, files)], capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        [sys.executable, "-c", REPLAY, target, *map(str, files)], capture_output=True, text=True, timeout=300
+    )
     assert done.returncode == 0, done.stderr[-3000:]
     outcome = dict(line.split(" ", 1)[::-1] for line in done.stdout.splitlines())
     assert sorted(outcome) == sorted(f.name for f in files)

@@ -53,7 +53,9 @@ def test_inverse_xyzuvw_rotates_about_the_pivot():
     x = (h.platform_joints - pivot) @ r.T + pivot + v[:3]
     expected = np.linalg.norm(x - h.base_joints, axis=1)
     np.testing.assert_allclose(h.inverse_xyzuvw(v, pivot), expected, rtol=0, atol=1e-14)
-    np.testing.assert_allclose(h.inverse_xyzuvw(np.stack([v, v]), pivot), np.stack([expected, expected]), rtol=0, atol=1e-14)
+    np.testing.assert_allclose(
+        h.inverse_xyzuvw(np.stack([v, v]), pivot), np.stack([expected, expected]), rtol=0, atol=1e-14
+    )
     np.testing.assert_allclose(h.inverse_xyzuvw(v), h.inverse(dispkin.Pose.from_xyzuvw(v)), rtol=0, atol=0)
 
 
@@ -74,7 +76,9 @@ def test_leg_jacobian_maps_body_twists_to_leg_speeds():
     assert j.shape == (6, 6)
     xi = np.array([0.3, -0.2, 0.1, 0.5, -0.4, 0.2])
     step = 1e-6
-    numeric = (h.inverse(pose * dispkin.Pose.exp(step * xi)) - h.inverse(pose * dispkin.Pose.exp(-step * xi))) / (2 * step)
+    numeric = (h.inverse(pose * dispkin.Pose.exp(step * xi)) - h.inverse(pose * dispkin.Pose.exp(-step * xi))) / (
+        2 * step
+    )
     np.testing.assert_allclose(j @ xi, numeric, rtol=0, atol=1e-8)
 
 
@@ -83,7 +87,9 @@ def test_symmetric_layouts():
     assert h.base_joints.shape == (6, 3) and h.platform_joints.shape == (6, 3)
     np.testing.assert_allclose(h.base_joints[0], [0.2 * math.cos(-0.15), 0.2 * math.sin(-0.15), 0.0], atol=1e-15)
     np.testing.assert_allclose(h.platform_joints[1], h.platform_joints[2], atol=1e-16)  # 6-3
-    np.testing.assert_allclose(h.platform_joints[1], [0.1 * math.cos(math.pi / 3), 0.1 * math.sin(math.pi / 3), 0], atol=1e-15)
+    np.testing.assert_allclose(
+        h.platform_joints[1], [0.1 * math.cos(math.pi / 3), 0.1 * math.sin(math.pi / 3), 0], atol=1e-15
+    )
     np.testing.assert_allclose(h.home.translation, [0, 0, 0.25])
     assert h.dof == 6 and h.joint_names == ["leg1", "leg2", "leg3", "leg4", "leg5", "leg6"]
 
@@ -180,7 +186,9 @@ def test_malformed_description_names_the_key(tmp_path):
 )
 def test_bad_constructor_arguments(kwargs, message):
     s = desktop()
-    args = dict(base_joints=s.base_joints, platform_joints=s.platform_joints, leg_min=0.15, leg_max=0.32, leg_speed=0.01)
+    args = dict(
+        base_joints=s.base_joints, platform_joints=s.platform_joints, leg_min=0.15, leg_max=0.32, leg_speed=0.01
+    )
     args.update(kwargs)
     with pytest.raises(ValueError, match=message):
         dispkin.Hexapod(**args)
@@ -195,18 +203,28 @@ def test_bad_constructor_arguments(kwargs, message):
             r"^pose: expected a Pose, a sequence of Poses, or an array of shape \(4, 4\) or \(N, 4, 4\), got shape \(2, 3, 3\)",
         ),
         (lambda h: h.inverse([h.home, "x"]), r"^pose\[1\]: expected an array of shape \(4, 4\)"),
-        (lambda h: h.inverse_xyzuvw(np.zeros(5)), r"^xyzuvw: expected an array of shape \(6,\) or \(N, 6\), got shape \(5,\)"),
+        (
+            lambda h: h.inverse_xyzuvw(np.zeros(5)),
+            r"^xyzuvw: expected an array of shape \(6,\) or \(N, 6\), got shape \(5,\)",
+        ),
         (lambda h: h.inverse_xyzuvw(np.zeros(6), pivot=(0, 0)), r"^pivot: expected an array of shape \(3,\)"),
         (lambda h: h.forward(np.ones(7)), r"^legs: expected an array of shape \(6,\)"),
         (lambda h: h.forward([0.2, math.nan, 0.2, 0.2, 0.2, 0.2]), r"^legs\[1\] = nan"),
         (lambda h: h.check(np.eye(4) * 2), r"^matrix last row = \(0, 0, 0, 2\)"),
-        (lambda h: dispkin.Hexapod.symmetric(0.0, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01), r"^base_radius = 0: must be finite and greater than zero"),
-        (lambda h: dispkin.xyzuvw_for_new_pivot(np.zeros(6), (0, 0, 0), (0, 0, math.inf)), r"^new_pivot = .*must be finite"),
+        (
+            lambda h: dispkin.Hexapod.symmetric(0.0, 0.3, 0.1, 0.3, 0.2, 0.1, 0.3, 0.01),
+            r"^base_radius = 0: must be finite and greater than zero",
+        ),
+        (
+            lambda h: dispkin.xyzuvw_for_new_pivot(np.zeros(6), (0, 0, 0), (0, 0, math.inf)),
+            r"^new_pivot = .*must be finite",
+        ),
     ],
 )
 def test_bad_call_arguments(call, message):
     with pytest.raises(ValueError, match=message):
         call(desktop())
+
 
 def test_leg_speed_group_bounds_every_leg_along_a_planned_trajectory():
     h = desktop()

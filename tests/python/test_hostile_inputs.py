@@ -40,8 +40,9 @@ def run_isolated(code, address_space=None, timeout=120):
     if address_space is not None and not SANITIZED:
         prelude += f"resource.setrlimit(resource.RLIMIT_AS, ({address_space}, {address_space}))\n"
     prelude += "import dispkin, json, sys\n"
-    done = subprocess.run([sys.executable, "-c", prelude + textwrap.dedent(code)], capture_output=True, text=True,
-                          timeout=timeout)
+    done = subprocess.run(
+        [sys.executable, "-c", prelude + textwrap.dedent(code)], capture_output=True, text=True, timeout=timeout
+    )
     return done.returncode, done.stdout, done.stderr
 
 
@@ -107,7 +108,10 @@ limits: {{velocity: 0.1, acceleration: 0.5, jerk: 5.0}}
 
 def planar_urdf(joint_origin="0 0 0.1", inertial=None, robot_attributes=""):
     """A two-joint planar arm (base → l1 → l2), with parts to change."""
-    inertial = inertial or '<inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>'
+    inertial = (
+        inertial
+        or '<inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>'
+    )
     return f"""<robot name="planar"{robot_attributes}>
   <link name="base"/>
   <link name="l1">{inertial}</link>
@@ -122,15 +126,22 @@ def planar_urdf(joint_origin="0 0 0.1", inertial=None, robot_attributes=""):
 @pytest.mark.parametrize("depth", [101, 40_000, 200_000])
 def test_deep_xml_is_refused_before_it_is_parsed(depth, tmp_path):
     deep = tmp_path / "deep.urdf"
-    deep.write_text(planar_urdf().replace('<link name="l2"/>', '<link name="l2">' + "<a>" * depth + "</a>" * depth + "</link>"))
+    deep.write_text(
+        planar_urdf().replace('<link name="l2"/>', '<link name="l2">' + "<a>" * depth + "</a>" * depth + "</link>")
+    )
     message = refusal_in_child(f"dispkin.SerialArm.from_urdf({str(deep)!r}, 'base', 'l2')")
-    assert message.startswith(f'{deep}: URDF element at = "line 4, column ') and "nests deeper than 100 elements" in message
+    assert (
+        message.startswith(f'{deep}: URDF element at = "line 4, column ')
+        and "nests deeper than 100 elements" in message
+    )
 
 
 def test_xml_nesting_up_to_the_limit_is_read():
     # <robot>, <link> and 98 more levels: loaded (urdfdom ignores unknown elements).
     inside = "<a>" * 98 + "</a>" * 98
-    arm = dispkin.SerialArm.from_urdf(planar_urdf().replace('<link name="l2"/>', f'<link name="l2">{inside}</link>'), "base", "l2")
+    arm = dispkin.SerialArm.from_urdf(
+        planar_urdf().replace('<link name="l2"/>', f'<link name="l2">{inside}</link>'), "base", "l2"
+    )
     assert arm.dof == 2
 
 
@@ -155,32 +166,59 @@ def test_a_urdf_beyond_the_size_limit_is_refused_unread(tmp_path):
 INERTIA = '<inertia ixx="{ixx}" ixy="0" ixz="0" iyy="{iyy}" iyz="0" izz="{izz}"/>'
 
 
-@pytest.mark.parametrize("inertial, fragment", [
-    ('<inertial><mass value="nan"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial mass = nan: must be finite (line 3)'),
-    ('<inertial><mass value="inf"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial mass = inf: must be finite (line 3)'),
-    ('<inertial><mass value="1"/>' + INERTIA.format(ixx="nan", iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial inertia ixx = nan: must be finite'),
-    ('<inertial><origin xyz="0 nan 0"/><mass value="1"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial origin xyz = (0, nan, 0): must be finite'),
-    ('<inertial><mass value="1e300"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial mass = 1e+300: must be within ±1e12'),
-    ('<inertial><mass value="heavy"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial mass = "heavy": must be a number (line 3)'),
-    ('<inertial><mass value="-1"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
-     'link "l1" inertial mass = -1: must be finite and not negative'),
-])
+@pytest.mark.parametrize(
+    "inertial, fragment",
+    [
+        (
+            '<inertial><mass value="nan"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial mass = nan: must be finite (line 3)',
+        ),
+        (
+            '<inertial><mass value="inf"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial mass = inf: must be finite (line 3)',
+        ),
+        (
+            '<inertial><mass value="1"/>' + INERTIA.format(ixx="nan", iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial inertia ixx = nan: must be finite',
+        ),
+        (
+            '<inertial><origin xyz="0 nan 0"/><mass value="1"/>'
+            + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1)
+            + "</inertial>",
+            'link "l1" inertial origin xyz = (0, nan, 0): must be finite',
+        ),
+        (
+            '<inertial><mass value="1e300"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial mass = 1e+300: must be within ±1e12',
+        ),
+        (
+            '<inertial><mass value="heavy"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial mass = "heavy": must be a number (line 3)',
+        ),
+        (
+            '<inertial><mass value="-1"/>' + INERTIA.format(ixx=0.1, iyy=0.1, izz=0.1) + "</inertial>",
+            'link "l1" inertial mass = -1: must be finite and not negative',
+        ),
+    ],
+)
 def test_impossible_inertial_numbers_are_refused(inertial, fragment):
     with pytest.raises(ValueError) as info:
         dispkin.SerialArm.from_urdf(planar_urdf(inertial=inertial), "base", "l2")
     assert fragment in str(info.value)
 
 
-@pytest.mark.parametrize("ixx, iyy, izz, fragment", [
-    (-0.1, 0.1, 0.1, "(-0.1, 0, 0, 0.1, 0, 0.1): is not positive semidefinite"),
-    (0.11, 0.003, 0.12, "(0.11, 0, 0, 0.003, 0, 0.12): is not the inertia of a body: its principal moments break the triangle inequality"),
-])
+@pytest.mark.parametrize(
+    "ixx, iyy, izz, fragment",
+    [
+        (-0.1, 0.1, 0.1, "(-0.1, 0, 0, 0.1, 0, 0.1): is not positive semidefinite"),
+        (
+            0.11,
+            0.003,
+            0.12,
+            "(0.11, 0, 0, 0.003, 0, 0.12): is not the inertia of a body: its principal moments break the triangle inequality",
+        ),
+    ],
+)
 def test_impossible_inertias_load_for_kinematics_and_refuse_dynamics(ixx, iyy, izz, fragment):
     # Such inertias are common on links no chain uses (TIAGo's antennas, iCub's head): the
     # arm loads, its kinematics work, and its torques name the link instead of being wrong.
@@ -189,8 +227,12 @@ def test_impossible_inertias_load_for_kinematics_and_refuse_dynamics(ixx, iyy, i
     assert len(arm.inverse(arm.forward([0.3, 0.4]))) > 0
     with pytest.raises(ValueError) as info:
         arm.static_torques([0.3, 0.4])
-    assert str(info.value).startswith('link "l1" inertial inertia (ixx, ixy, ixz, iyy, iyz, izz) = ') and fragment in str(info.value)
-    assert 'the torques of robot "planar" need a rigid body\'s inertia on every link from base_link to tip_link' in str(info.value)
+    assert str(info.value).startswith(
+        'link "l1" inertial inertia (ixx, ixy, ixz, iyy, iyz, izz) = '
+    ) and fragment in str(info.value)
+    assert 'the torques of robot "planar" need a rigid body\'s inertia on every link from base_link to tip_link' in str(
+        info.value
+    )
 
 
 def test_possible_inertias_on_the_edge_are_accepted():
@@ -207,8 +249,10 @@ def test_absurd_joint_origins_are_refused(origin):
 
 
 def test_a_link_with_two_parent_joints_is_refused():
-    second = ('<joint name="j3" type="revolute"><parent link="base"/><child link="l2"/>'
-              '<axis xyz="0 0 1"/><limit lower="-3" upper="3" velocity="1" effort="1"/></joint>')
+    second = (
+        '<joint name="j3" type="revolute"><parent link="base"/><child link="l2"/>'
+        '<axis xyz="0 0 1"/><limit lower="-3" upper="3" velocity="1" effort="1"/></joint>'
+    )
     with pytest.raises(ValueError, match=r'link = "l2": is the child of two joints, "j2" and "j3" \(line \d+\)'):
         dispkin.SerialArm.from_urdf(planar_urdf().replace("</robot>", second + "</robot>"), "base", "l2")
 
@@ -239,8 +283,15 @@ def test_every_example_robot_data_urdf_still_loads():
         try:
             assert dispkin.SerialArm.from_urdf(str(urdf), parent, child).dof == 1, urdf
         except ValueError as error:  # refused by an older rule (e.g. a revolute joint with lower = upper)
-            for new_check in ("URDF element at", "must be a number", "must be within ±1e12", "must be finite (line",
-                              "is the child of two joints", "nests deeper", "attributes"):
+            for new_check in (
+                "URDF element at",
+                "must be a number",
+                "must be within ±1e12",
+                "must be finite (line",
+                "is the child of two joints",
+                "nests deeper",
+                "attributes",
+            ):
                 assert new_check not in str(error), str(error)
             continue
         checked += 1
@@ -276,12 +327,15 @@ def test_inverse_returns_the_distinct_solutions_nearest_zero(bound):
 
 def test_wide_limits_take_neither_time_nor_memory():
     # ±100 rad: 8 solutions × 32⁶ copies = 8.6e9 were enumerated (23.6 GB, killed).
-    message = refusal_in_child(f"""
+    message = refusal_in_child(
+        f"""
         arm = dispkin.SerialArm.from_urdf({UR5E!r}, "base_link", "tool0").with_joint_limits(lower=[-100] * 6, upper=[100] * 6)
         pose = arm.forward({Q.tolist()})
         assert len(arm.inverse(pose)) == 8
         arm.inverse(pose, offer_equivalents=True)
-        """, address_space=1 << 31)
+        """,
+        address_space=1 << 31,
+    )
     assert "offer_equivalents = \"true\": asks for the 2π copies of the 8 solutions inside the joint limits" in message
     assert "more than 10000" in message
 
@@ -327,8 +381,10 @@ def long_chain_urdf(joints):
     parts = ['<robot name="chain"><link name="l0"/>']
     for k in range(1, joints + 1):
         axis = "0 0 1" if k % 2 else "0 1 0"
-        parts.append(f'<link name="l{k}"/><joint name="j{k}" type="revolute"><parent link="l{k - 1}"/><child link="l{k}"/>'
-                     f'<origin xyz="{1.0 / joints} 0 0"/><axis xyz="{axis}"/><limit lower="-3" upper="3" velocity="1" effort="1"/></joint>')
+        parts.append(
+            f'<link name="l{k}"/><joint name="j{k}" type="revolute"><parent link="l{k - 1}"/><child link="l{k}"/>'
+            f'<origin xyz="{1.0 / joints} 0 0"/><axis xyz="{axis}"/><limit lower="-3" upper="3" velocity="1" effort="1"/></joint>'
+        )
     parts.append("</robot>")
     return "".join(parts)
 
@@ -368,8 +424,9 @@ def test_cli_refuses_every_malformed_job_with_file_line_column(job, tmp_path):
 
 def test_the_alias_bomb_is_refused_within_a_small_memory():
     bomb = DATA / "jobs" / "bad_alias_bomb.yaml"
-    status, out, err = run_isolated(f"from dispkin import cli; sys.exit(cli.main(['check', {str(bomb)!r}]))",
-                                    address_space=1 << 30)
+    status, out, err = run_isolated(
+        f"from dispkin import cli; sys.exit(cli.main(['check', {str(bomb)!r}]))", address_space=1 << 30
+    )
     assert status == 1 and "Traceback" not in err, err[-2000:]
     assert "the job expands to more than 500000 values" in err
 
@@ -380,7 +437,11 @@ def test_yaml_nesting_up_to_the_limit_is_read(tmp_path):
     job.write_text("name: " + "[" * 31 + "x" + "]" * 31 + "\n")
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(job)
-    assert "nest deeper" not in str(info.value) and "name: [[[" in str(info.value) and "is not of type 'string'" in str(info.value)
+    assert (
+        "nest deeper" not in str(info.value)
+        and "name: [[[" in str(info.value)
+        and "is not of type 'string'" in str(info.value)
+    )
 
 
 def test_integers_up_to_2_to_the_53_are_numbers(tmp_path):
@@ -395,7 +456,13 @@ def test_integers_up_to_2_to_the_53_are_numbers(tmp_path):
 
 
 def many_blended_moves(count):
-    lines = ["metric_set:", "  points:", "    - {shape: sphere, radius: 0.1}", "start: {xyzuvw: [0, 0, 0, 0, 0, 0]}", "moves:"]
+    lines = [
+        "metric_set:",
+        "  points:",
+        "    - {shape: sphere, radius: 0.1}",
+        "start: {xyzuvw: [0, 0, 0, 0, 0, 0]}",
+        "moves:",
+    ]
     for k in range(1, count + 1):
         x, y = 0.05 * ((k + 1) // 2), 0.05 * (k // 2)
         blend = ", blend: 0.01" if k > 1 else ""
@@ -408,12 +475,18 @@ def many_blended_moves(count):
 def test_ten_thousand_blended_moves_plan(tmp_path):
     job = tmp_path / "many.yaml"
     job.write_text(many_blended_moves(10_000))
-    done = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(job), "-o", str(tmp_path)], capture_output=True,
-                          text=True, timeout=600)
+    done = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(job), "-o", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert done.returncode == 0 and "Traceback" not in done.stderr, done.stderr[-3000:]
     assert (tmp_path / "many.csv").exists()
     first = done.stdout.splitlines()[0]
-    assert first.startswith("job many: 10000 move(s) (lin, lin (blend 0.01 m),") and "… 9980 more), machine: none" in first
+    assert (
+        first.startswith("job many: 10000 move(s) (lin, lin (blend 0.01 m),") and "… 9980 more), machine: none" in first
+    )
 
 
 # --- 11. retime(method="scaling") and joint accelerations -------------------------------------
@@ -425,7 +498,9 @@ def test_scaling_retime_refuses_joint_accelerations_it_would_ignore():
     path = dispkin.Path.lin(a, dispkin.Pose(a.quaternion, a.translation + np.array([0.05, 0, 0])))
     points = dispkin.MetricSet()
     points.add_relative(np.eye(3))
-    with pytest.raises(ValueError, match=r"joint_acceleration = \(1, 1, 1, 1, 1, 1\): is not a limit of method=\"scaling\""):
+    with pytest.raises(
+        ValueError, match=r"joint_acceleration = \(1, 1, 1, 1, 1, 1\): is not a limit of method=\"scaling\""
+    ):
         dispkin.retime(path, points, dispkin.Limits(0.1, 1.0, 10.0), arm, Q, joint_acceleration=np.ones(6))
 
 
@@ -451,7 +526,9 @@ def test_a_many_legged_description_under_the_size_limit_is_not_echoed():
     with pytest.raises(ValueError) as info:
         dispkin.Hexapod.from_json(json.dumps(d))
     message = str(info.value)
-    assert message.startswith('legs = "[{"base":') and message.endswith(', … 6000 items]": must be an array of 6 leg objects')
+    assert message.startswith('legs = "[{"base":') and message.endswith(
+        ', … 6000 items]": must be an array of 6 leg objects'
+    )
     assert len(message) < 300
 
 
@@ -475,7 +552,9 @@ def test_leg_speeds_outside_the_numeric_range_are_refused_at_load(speed, shown):
 def test_a_misspelt_leg_key_is_refused_by_name():
     d = hexapod_description()
     d["legs"][2]["sped"] = d["legs"][2].pop("speed")
-    with pytest.raises(ValueError, match=r"^legs\[2\]\.sped = 0\.01: unknown key \(allowed here: base, platform, min, max, speed\)"):
+    with pytest.raises(
+        ValueError, match=r"^legs\[2\]\.sped = 0\.01: unknown key \(allowed here: base, platform, min, max, speed\)"
+    ):
         dispkin.Hexapod.from_json(json.dumps(d))
 
 
@@ -486,7 +565,9 @@ def test_a_misspelt_leg_key_is_refused_by_name():
 def test_a_nearly_collinear_via_beyond_the_end_is_refused(offset):
     a, end = dispkin.Pose(), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0])
     via = dispkin.Pose.from_xyzuvw([0.2, offset, 0, 0, 0, 0])
-    with pytest.raises(ValueError, match=r"^via = \(0\.2, .*\): is almost collinear with the start and end points and outside"):
+    with pytest.raises(
+        ValueError, match=r"^via = \(0\.2, .*\): is almost collinear with the start and end points and outside"
+    ):
         dispkin.Path.circ(a, via, end)
 
 
@@ -577,7 +658,9 @@ def test_a_huge_limits_file_is_refused_unread_within_a_small_memory(tmp_path):
 
 @pytest.mark.parametrize("kind", ["fifo", "directory", "device"])
 def test_a_limits_file_that_is_no_regular_file_is_named_for_what_it_is(tmp_path, kind):
-    target = {"fifo": tmp_path / "fifo.yaml", "directory": tmp_path / "dir.yaml", "device": pathlib.Path("/dev/zero")}[kind]
+    target = {"fifo": tmp_path / "fifo.yaml", "directory": tmp_path / "dir.yaml", "device": pathlib.Path("/dev/zero")}[
+        kind
+    ]
     if kind == "fifo":
         os.mkfifo(target)
     elif kind == "directory":
@@ -593,14 +676,18 @@ def test_a_job_file_that_is_no_regular_file_is_named_for_what_it_is(tmp_path, ki
     target = tmp_path / "job.yaml"
     os.mkfifo(target) if kind == "fifo" else target.mkdir()
     for command in ("check", "plan"):
-        status, err = cli_in_child([command, str(target)] + (["-o", str(tmp_path / "out")] if command == "plan" else []), timeout=60)
+        status, err = cli_in_child(
+            [command, str(target)] + (["-o", str(tmp_path / "out")] if command == "plan" else []), timeout=60
+        )
         assert status == 1
         assert (": is a directory, not a job file" if kind == "directory" else ": is not a regular file") in err
 
 
 def test_huge_integers_and_latin1_in_a_limits_file_are_dispkins_own_errors(tmp_path):
     big = tmp_path / "big.yaml"
-    big.write_text("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: " + "9" * 4000 + "\n")
+    big.write_text(
+        "joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: " + "9" * 4000 + "\n"
+    )
     status, err = cli_in_child(["check", str(lin_job_with(tmp_path, f"limits_file: {big}"))])
     assert status == 1 and f"{big}:4:5: joint_limits.elbow_joint.max_velocity = an integer of 13288 bits" in err
     latin = tmp_path / "latin.yaml"
@@ -612,13 +699,18 @@ def test_huge_integers_and_latin1_in_a_limits_file_are_dispkins_own_errors(tmp_p
 def test_an_effort_limit_the_static_torque_breaks_is_reported_not_raised(tmp_path):
     moveit = tmp_path / "weak.yaml"
     moveit.write_text("joint_limits:\n  shoulder_lift_joint:\n    has_effort_limits: true\n    max_effort: 5.0\n")
-    status, err = cli_in_child(["plan", str(lin_job_with(tmp_path, f"limits_file: {moveit}")), "-o", str(tmp_path / "out")])
+    status, err = cli_in_child(
+        ["plan", str(lin_job_with(tmp_path, f"limits_file: {moveit}")), "-o", str(tmp_path / "out")]
+    )
     assert status == 3 and "effort of shoulder_lift_joint: " in err
 
 
 def test_a_job_value_its_tag_cannot_make_is_refused_at_its_place(tmp_path):
     job = tmp_path / "tagged.yaml"
-    job.write_text((DATA.parent.parent / "examples" / "jobs" / "blended_tool_move.yaml").read_text()
-                   .replace("velocity: 0.25", "velocity: !!float quick", 1))
+    job.write_text(
+        (DATA.parent.parent / "examples" / "jobs" / "blended_tool_move.yaml")
+        .read_text()
+        .replace("velocity: 0.25", "velocity: !!float quick", 1)
+    )
     status, err = cli_in_child(["check", str(job)])
     assert status == 1 and re.search(rf"{re.escape(str(job))}:\d+:\d+: not valid YAML: 'quick' is no float", err), err

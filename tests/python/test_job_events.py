@@ -111,10 +111,17 @@ def test_stop_resume_and_override_in_the_written_samples(tmp_path, capsys):
     # The summary lists the events, in the JSON and in the text.
     assert [r["kind"] for r in summary["events"]] == ["stop", "resume", "override"]
     assert summary["events"][1]["factor"] == 1.0 and summary["events"][2] == {
-        "at": override.at, "kind": "override", "path_position": pytest.approx(float(final.path_position(override.at)), abs=1e-15),
-        "path_velocity": pytest.approx(float(final.path_velocity(override.at)), abs=1e-15), "factor": 0.5, "while_stopped": False}
-    assert (f"event 0 at t = 0.4000 s: stop from s = {record['path_position']:.6f} m at {record['path_velocity']:.6f} m/s, "
-            f"at rest at s = {record['stop_position']:.6f} m after {record['stop_duration']:.4f} s") in out
+        "at": override.at,
+        "kind": "override",
+        "path_position": pytest.approx(float(final.path_position(override.at)), abs=1e-15),
+        "path_velocity": pytest.approx(float(final.path_velocity(override.at)), abs=1e-15),
+        "factor": 0.5,
+        "while_stopped": False,
+    }
+    assert (
+        f"event 0 at t = 0.4000 s: stop from s = {record['path_position']:.6f} m at {record['path_velocity']:.6f} m/s, "
+        f"at rest at s = {record['stop_position']:.6f} m after {record['stop_duration']:.4f} s"
+    ) in out
     assert "event 1 at t = 0.9000 s: resume from s = " in out
     assert "event 2 at t = 1.3000 s: speed override 0.5 × the velocity-limit curve as planned" in out
     assert "STOPPED" not in out
@@ -135,8 +142,10 @@ def test_a_job_whose_events_end_stopped_says_where(tmp_path, capsys):
     assert final.stopped and summary["completed"] is False
     assert summary["end_position"] == final.end_position < summary["length"]
     share = 100 * final.end_position / final.length
-    assert (f"ends STOPPED at s = {final.end_position:.6f} m of the path's {final.length:.6f} m ({share:.1f} %): "
-            "the motion does not reach the end of its path") in out
+    assert (
+        f"ends STOPPED at s = {final.end_position:.6f} m of the path's {final.length:.6f} m ({share:.1f} %): "
+        "the motion does not reach the end of its path"
+    ) in out
     assert summary["stops"] == [{"s": final.end_position, "reason": "stopped at t = 0.5 s"}]
     v = table[:, header.index("path_velocity_mps")]
     assert table[-1, 0] == final.duration and v[-1] == 0.0
@@ -159,8 +168,10 @@ def test_a_stopped_blended_path_lists_only_the_stops_it_reaches(tmp_path, capsys
 def test_override_above_one_speeds_up_a_slowed_move_up_to_the_system_velocity(tmp_path):
     """A move's own velocity (half the system velocity) slows it; an override of 3 runs it at the
     system velocity, its ceiling, never faster."""
-    base = BASE.replace("  - lin: {to: {xyzuvw: [0.05, 0.02, 0, 10, 0, 30]}}\n",
-                        "  - lin: {to: {xyzuvw: [0.3, 0, 0, 0, 0, 0]}}\n    velocity: 0.05\n")
+    base = BASE.replace(
+        "  - lin: {to: {xyzuvw: [0.05, 0.02, 0, 10, 0, 30]}}\n",
+        "  - lin: {to: {xyzuvw: [0.3, 0, 0, 0, 0, 0]}}\n    velocity: 0.05\n",
+    )
     slow = jobs.plan_job(jobs.load_job(job_with(tmp_path, base=base, name="slow.yaml")))
     job = jobs.load_job(job_with(tmp_path, "events:", "  - {at: 0.5, override: 3}", base=base, name="fast.yaml"))
     fast = jobs.plan_job(job)
@@ -172,8 +183,15 @@ def test_override_above_one_speeds_up_a_slowed_move_up_to_the_system_velocity(tm
 
 
 def test_an_override_while_stopped_holds_from_the_resumption(tmp_path):
-    job = jobs.load_job(job_with(tmp_path, "events:", "  - {at: 0.5, stop: true}", "  - {at: 1.0, override: 0.2}",
-                                 "  - {at: 1.5, resume: true}"))
+    job = jobs.load_job(
+        job_with(
+            tmp_path,
+            "events:",
+            "  - {at: 0.5, stop: true}",
+            "  - {at: 1.0, override: 0.2}",
+            "  - {at: 1.5, resume: true}",
+        )
+    )
     final = jobs.plan_job(job)
     records = jobs.describe_events(job, final)
     assert records[1]["while_stopped"] and records[2]["factor"] == 0.2
@@ -182,16 +200,27 @@ def test_an_override_while_stopped_holds_from_the_resumption(tmp_path):
     assert final.override_factor == 0.2 and not final.stopped
 
 
-@pytest.mark.parametrize("events", [
-    [(0.5, "stop", None), (0.9, "resume", None), (1.1, "override", 0.3)],
-    [(0.5, "stop", None), (0.6, "resume", None)],                       # resumed while braking
-    [(0.3, "override", 0.5), (0.3, "stop", None), (0.3, "resume", None)],  # three at one instant
-    [(0.0, "override", 0.5), (1.0, "stop", None), (1.5, "override", 2.0), (2.0, "resume", None), (2.2, "stop", None)],
-])
+@pytest.mark.parametrize(
+    "events",
+    [
+        [(0.5, "stop", None), (0.9, "resume", None), (1.1, "override", 0.3)],
+        [(0.5, "stop", None), (0.6, "resume", None)],  # resumed while braking
+        [(0.3, "override", 0.5), (0.3, "stop", None), (0.3, "resume", None)],  # three at one instant
+        [
+            (0.0, "override", 0.5),
+            (1.0, "stop", None),
+            (1.5, "override", 2.0),
+            (2.0, "resume", None),
+            (2.2, "stop", None),
+        ],
+    ],
+)
 def test_described_events_are_those_applied_one_by_one(tmp_path, events):
     """The summary measures each stop on the trajectory after all events: the same numbers as
     the stop applied in its turn (the motion before an event is kept bit for bit)."""
-    lines = ["events:"] + [f"  - {{at: {at}, {kind}: {'true' if factor is None else factor}}}" for at, kind, factor in events]
+    lines = ["events:"] + [
+        f"  - {{at: {at}, {kind}: {'true' if factor is None else factor}}}" for at, kind, factor in events
+    ]
     job = jobs.load_job(job_with(tmp_path, *lines))
     trajectory = dispkin.plan(job.path, job.metric_set, job.limits, job.profile)
     expected = []
@@ -199,7 +228,11 @@ def test_described_events_are_those_applied_one_by_one(tmp_path, events):
         if kind == "stop":
             trajectory = trajectory.stopped_at(at)
             braking = max(trajectory.duration - at, 0.0)
-            resume = next(e[0] for e in events[k:] if e[1] == "resume") if any(e[1] == "resume" for e in events[k:]) else None
+            resume = (
+                next(e[0] for e in events[k:] if e[1] == "resume")
+                if any(e[1] == "resume" for e in events[k:])
+                else None
+            )
             expected.append((trajectory.end_position, braking, resume is None or resume >= at + braking))
         elif kind == "resume":
             trajectory = trajectory.resumed_at(at)
@@ -208,13 +241,17 @@ def test_described_events_are_those_applied_one_by_one(tmp_path, events):
     final = jobs.plan_job(job)
     assert final.duration == trajectory.duration and final.end_position == trajectory.end_position
     records = jobs.describe_events(job, final)
-    assert [(r["stop_position"], r["stop_duration"], r["came_to_rest"]) for r in records if r["kind"] == "stop"] == expected
+    assert [
+        (r["stop_position"], r["stop_duration"], r["came_to_rest"]) for r in records if r["kind"] == "stop"
+    ] == expected
 
 
 def test_the_exit_status_keeps_its_rules(tmp_path, capsys):
     """A job whose trajectory breaks a joint limit still does with a stop and a resumption
     (status 3), and keeps it at a low enough override from the start (status 0)."""
-    broken = arm_job(VIOLATING, tmp_path, "events:", "  - {at: 0.3, stop: true}", "  - {at: 1.0, resume: true}", name="broken.yaml")
+    broken = arm_job(
+        VIOLATING, tmp_path, "events:", "  - {at: 0.3, stop: true}", "  - {at: 1.0, resume: true}", name="broken.yaml"
+    )
     assert cli.main(["plan", str(broken), "-o", str(tmp_path / "a")]) == EXIT_LIMITS_BROKEN
     assert "velocity of wrist_3_joint" in capsys.readouterr().err
     slowed = arm_job(VIOLATING, tmp_path, "events:", "  - {at: 0, override: 0.3}", name="slowed.yaml")
@@ -226,16 +263,21 @@ def test_the_exit_status_keeps_its_rules(tmp_path, capsys):
 def test_check_validates_and_lists_the_events(tmp_path, capsys):
     assert cli.main(["check", str(EXAMPLE)]) == 0
     out = capsys.readouterr().out
-    assert ("  events: stop at t = 0.4 s, resume at t = 0.9 s, override 0.5 at t = 1.3 s "
-            "(applied in this order to the planned trajectory)") in out
+    assert (
+        "  events: stop at t = 0.4 s, resume at t = 0.9 s, override 0.5 at t = 1.3 s "
+        "(applied in this order to the planned trajectory)"
+    ) in out
 
 
 def test_the_override_range_is_the_library_s():
     low, high = jobs.OVERRIDE_RANGE
     metric_set = dispkin.MetricSet()
     metric_set.add_sphere([0, 0, 0], 0.1)
-    trajectory = dispkin.plan(dispkin.Path.lin(dispkin.Pose(), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0])), metric_set,
-                              dispkin.Limits(0.1, 1.0, 10.0))
+    trajectory = dispkin.plan(
+        dispkin.Path.lin(dispkin.Pose(), dispkin.Pose.from_xyzuvw([0.1, 0, 0, 0, 0, 0])),
+        metric_set,
+        dispkin.Limits(0.1, 1.0, 10.0),
+    )
     for factor in (low, high):
         assert trajectory.with_override(0.2, factor).override_factor == factor
     for factor in (low * 0.999, high * 1.001):
@@ -243,41 +285,83 @@ def test_the_override_range_is_the_library_s():
             trajectory.with_override(0.2, factor)
 
 
-
 # --- bad events ------------------------------------------------------------------------------
 
 # (events lines, key path, line, fragment of the reason): refused by `dispkin check` and `dispkin plan`.
 BAD_EVENTS = {
-    "out of order": (["  - {at: 2, stop: true}", "  - {at: 1, resume: true}"], "events[1].at", 11,
-                     "1: before the event before it (events[0].at = 2): give the events in time order"),
+    "out of order": (
+        ["  - {at: 2, stop: true}", "  - {at: 1, resume: true}"],
+        "events[1].at",
+        11,
+        "1: before the event before it (events[0].at = 2): give the events in time order",
+    ),
     "resume without a stop": (["  - {at: 1, resume: true}"], "events[0].resume", 10, "true: no stop before it"),
-    "two stops in a row": (["  - {at: 0.5, stop: true}", "  - {at: 1, stop: true}"], "events[1].stop", 11,
-                           "true: the motion is already stopped, by events[0] at t = 0.5 s"),
-    "a stop, a resume, two stops": (["  - {at: 0.2, stop: true}", "  - {at: 0.4, resume: true}", "  - {at: 0.5, stop: true}",
-                                     "  - {at: 0.6, override: 0.5}", "  - {at: 0.7, stop: true}"], "events[4].stop", 14,
-                                    "already stopped, by events[2]"),
+    "two stops in a row": (
+        ["  - {at: 0.5, stop: true}", "  - {at: 1, stop: true}"],
+        "events[1].stop",
+        11,
+        "true: the motion is already stopped, by events[0] at t = 0.5 s",
+    ),
+    "a stop, a resume, two stops": (
+        [
+            "  - {at: 0.2, stop: true}",
+            "  - {at: 0.4, resume: true}",
+            "  - {at: 0.5, stop: true}",
+            "  - {at: 0.6, override: 0.5}",
+            "  - {at: 0.7, stop: true}",
+        ],
+        "events[4].stop",
+        14,
+        "already stopped, by events[2]",
+    ),
     "override 0": (["  - {at: 0.5, override: 0}"], "events[0].override", 10, "0: must be in [0.001, 10]"),
     "override 20": (["  - {at: 0.5, override: 20}"], "events[0].override", 10, "20: must be in [0.001, 10]"),
     "override negative": (["  - {at: 0.5, override: -0.5}"], "events[0].override", 10, "-0.5: must be in [0.001, 10]"),
-    "unknown key": (["  - {at: 0.5, stop: true, speed: 2}"], "events[0].speed", 10,
-                    "unknown key (allowed here: at, override, resume, stop)"),
+    "unknown key": (
+        ["  - {at: 0.5, stop: true, speed: 2}"],
+        "events[0].speed",
+        10,
+        "unknown key (allowed here: at, override, resume, stop)",
+    ),
     "at not a number": (["  - {at: soon, stop: true}"], "events[0].at", 10, "'soon' is not of type 'number'"),
-    "override not a number": (["  - {at: 1, override: half}"], "events[0].override", 10, "'half' is not of type 'number'"),
-    "stop: false": (["  - {at: 1, stop: false}"], "events[0].stop", 10, "false: a `stop` event is written `stop: true`"),
-    "resume: false": (["  - {at: 0.5, stop: true}", "  - {at: 1, resume: false}"], "events[1].resume", 11,
-                      "false: a `resume` event is written `resume: true`"),
+    "override not a number": (
+        ["  - {at: 1, override: half}"],
+        "events[0].override",
+        10,
+        "'half' is not of type 'number'",
+    ),
+    "stop: false": (
+        ["  - {at: 1, stop: false}"],
+        "events[0].stop",
+        10,
+        "false: a `stop` event is written `stop: true`",
+    ),
+    "resume: false": (
+        ["  - {at: 0.5, stop: true}", "  - {at: 1, resume: false}"],
+        "events[1].resume",
+        11,
+        "false: a `resume` event is written `resume: true`",
+    ),
     "stop: 1": (["  - {at: 1, stop: 1}"], "events[0].stop", 10, "1 is not of type 'boolean'"),
     "negative at": (["  - {at: -1, stop: true}"], "events[0].at", 10, "-1 is less than the minimum of 0"),
     "NaN at": (["  - {at: .nan, stop: true}"], "events[0].at", 10, "nan: must be finite"),
     "infinite at": (["  - {at: .inf, override: 0.5}"], "events[0].at", 10, "inf: must be finite"),
-    "two kinds in one event": (["  - {at: 1, stop: true, override: 0.5}"], "events[0]", 10,
-                               "expected exactly one of `stop` | `resume` | `override`; found `at`, `stop`, `override`"),
+    "two kinds in one event": (
+        ["  - {at: 1, stop: true, override: 0.5}"],
+        "events[0]",
+        10,
+        "expected exactly one of `stop` | `resume` | `override`; found `at`, `stop`, `override`",
+    ),
     "no kind": (["  - {at: 1}"], "events[0]", 10, "expected exactly one of `stop` | `resume` | `override`; found `at`"),
     "no time": (["  - {stop: true}"], "events[0]", 10, "missing required key `at`"),
     "not a list": ([" {at: 1, stop: true}"], "events", 9, "is not of type 'array'"),
     "an empty list": ([" []"], "events", 9, "expected at least 1 item(s), got 0"),
-    "more events than the limit": ([f"  - {{at: {k}, override: 0.5}}" for k in range(input_budget.MAX_EVENTS + 1)], "events", 9,
-                                   f"{input_budget.MAX_EVENTS + 1} events, more than {input_budget.MAX_EVENTS}"),
+    "more events than the limit": (
+        [f"  - {{at: {k}, override: 0.5}}" for k in range(input_budget.MAX_EVENTS + 1)],
+        "events",
+        9,
+        f"{input_budget.MAX_EVENTS + 1} events, more than {input_budget.MAX_EVENTS}",
+    ),
 }
 
 
@@ -307,18 +391,36 @@ def test_bad_events_are_refused_at_their_key_and_line(tmp_path, capsys, case):
 # (events lines, key path, line, fragment): valid for `dispkin check`, refused by `dispkin plan`
 # once the motion is planned.
 BAD_WHEN_PLANNED = {
-    "a stop after the motion has ended": (["  - {at: 50, stop: true}"], "events[0].at", 10,
-                                          "50: the motion ends at t = 1.38066 s; a stop at or after its end changes nothing"),
-    "an override after the motion has ended": (["  - {at: 0.5, override: 0.5}", "  - {at: 20, override: 1}"], "events[1].at", 11,
-                                               "20: the motion ends at t = 1.96132 s with the events before it; a speed override at or after its end"),
-    "a resume of a stop at the end of the path": (["  - {at: 1.1, stop: true}", "  - {at: 2, resume: true}"], "events[1].resume", 11,
-                                                   "true: nothing to resume: the stop of events[0] (t = 1.1 s) comes to rest at the "
-                                                   "end of the path"),
-    "a stop before the motion starts, never resumed": (["  - {at: 0, stop: true}"], "events[0].at", 10,
-                                                       "0: the stop comes before the motion starts and no resumption follows"),
-    "a resume a million seconds later": (["  - {at: 0.5, stop: true}", "  - {at: 1.0e6, resume: true}"], "events[1].at", 11,
-                                         "with this event the motion lasts 1e+06 s, 1e+08 samples of 0.01 s (output.sample_period), "
-                                         "more than 10000000"),
+    "a stop after the motion has ended": (
+        ["  - {at: 50, stop: true}"],
+        "events[0].at",
+        10,
+        "50: the motion ends at t = 1.38066 s; a stop at or after its end changes nothing",
+    ),
+    "an override after the motion has ended": (
+        ["  - {at: 0.5, override: 0.5}", "  - {at: 20, override: 1}"],
+        "events[1].at",
+        11,
+        "20: the motion ends at t = 1.96132 s with the events before it; a speed override at or after its end",
+    ),
+    "a resume of a stop at the end of the path": (
+        ["  - {at: 1.1, stop: true}", "  - {at: 2, resume: true}"],
+        "events[1].resume",
+        11,
+        "true: nothing to resume: the stop of events[0] (t = 1.1 s) comes to rest at the end of the path",
+    ),
+    "a stop before the motion starts, never resumed": (
+        ["  - {at: 0, stop: true}"],
+        "events[0].at",
+        10,
+        "0: the stop comes before the motion starts and no resumption follows",
+    ),
+    "a resume a million seconds later": (
+        ["  - {at: 0.5, stop: true}", "  - {at: 1.0e6, resume: true}"],
+        "events[1].at",
+        11,
+        "with this event the motion lasts 1e+06 s, 1e+08 samples of 0.01 s (output.sample_period), more than 10000000",
+    ),
 }
 
 
@@ -338,11 +440,25 @@ def test_events_that_find_nothing_to_act_on_are_refused_when_planned(tmp_path, c
 def test_events_are_refused_where_the_trajectory_takes_none(tmp_path, capsys):
     """A job with PTP moves (planned part by part) and a re-timed job (its law keeps to joint
     limits): refused at `events`, by `dispkin check` too, saying why."""
-    ptp = arm_job(ROOT / "examples" / "jobs" / "ur5e_ptp_and_lin.yaml", tmp_path, "events:", "  - {at: 0.5, stop: true}", name="ptp.yaml")
-    retimed = arm_job(ROOT / "examples" / "jobs" / "ur5e_lin_move.yaml", tmp_path, "retime: {method: optimal}", "events:",
-                      "  - {at: 0.5, override: 0.5}", name="retimed.yaml")
-    for job_file, reason in ((ptp, "moves[0] is a PTP move, so this job is planned part by part"),
-                             (retimed, "a re-timed trajectory (`retime`) keeps to the joint limits")):
+    ptp = arm_job(
+        ROOT / "examples" / "jobs" / "ur5e_ptp_and_lin.yaml",
+        tmp_path,
+        "events:",
+        "  - {at: 0.5, stop: true}",
+        name="ptp.yaml",
+    )
+    retimed = arm_job(
+        ROOT / "examples" / "jobs" / "ur5e_lin_move.yaml",
+        tmp_path,
+        "retime: {method: optimal}",
+        "events:",
+        "  - {at: 0.5, override: 0.5}",
+        name="retimed.yaml",
+    )
+    for job_file, reason in (
+        (ptp, "moves[0] is a PTP move, so this job is planned part by part"),
+        (retimed, "a re-timed trajectory (`retime`) keeps to the joint limits"),
+    ):
         line = job_file.read_text().splitlines().index("events:") + 1
         assert cli.main(["check", str(job_file)]) == 1
         err = capsys.readouterr().err
@@ -351,10 +467,16 @@ def test_events_are_refused_where_the_trajectory_takes_none(tmp_path, capsys):
 
 def test_a_bad_event_is_no_traceback_on_the_command_line(tmp_path):
     job_file = bad_job(tmp_path, BAD_EVENTS["two stops in a row"][0])
-    result = subprocess.run([sys.executable, "-m", "dispkin", "plan", str(job_file), "-o", str(tmp_path / "out")],
-                            capture_output=True, text=True, timeout=600)
+    result = subprocess.run(
+        [sys.executable, "-m", "dispkin", "plan", str(job_file), "-o", str(tmp_path / "out")],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert result.returncode == 1 and "Traceback" not in result.stderr
-    assert result.stderr.startswith(f"dispkin plan: {job_file}:11:13: events[1].stop: true: the motion is already stopped")
+    assert result.stderr.startswith(
+        f"dispkin plan: {job_file}:11:13: events[1].stop: true: the motion is already stopped"
+    )
 
 
 def test_the_summary_lines_quoted_in_the_docs_are_the_code_s(tmp_path, capsys):
@@ -369,8 +491,14 @@ def test_the_summary_lines_quoted_in_the_docs_are_the_code_s(tmp_path, capsys):
     for line in blocks[0]:
         assert line.strip() == "..." or line in out.splitlines(), line
     stop_only = arm_job(EXAMPLE, tmp_path, name="stop_only.yaml")
-    stop_only.write_text("\n".join(line for line in stop_only.read_text().splitlines()
-                                   if "resume: true" not in line and "override: 0.5" not in line) + "\n")
+    stop_only.write_text(
+        "\n".join(
+            line
+            for line in stop_only.read_text().splitlines()
+            if "resume: true" not in line and "override: 0.5" not in line
+        )
+        + "\n"
+    )
     assert cli.main(["plan", str(stop_only), "-o", str(tmp_path / "stop")]) == 0
     out = capsys.readouterr().out
     assert blocks[1] == [out.splitlines()[2]]

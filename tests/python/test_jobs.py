@@ -45,10 +45,18 @@ BAD_JOBS = {
     "bad_no_start.yaml": ("(job)", 1, "missing required key `start`"),
     "bad_group_without_points.yaml": ("metric_set.groups[0].group", 5, "no points belong to this group"),
     "bad_degenerate_circ.yaml": ("moves[0].circ", 6, ""),
-    "bad_hexapod_two_sources.yaml": ("machine.hexapod", 2, "expected exactly one of `file` | `description` | `symmetric`"),
+    "bad_hexapod_two_sources.yaml": (
+        "machine.hexapod",
+        2,
+        "expected exactly one of `file` | `description` | `symmetric`",
+    ),
     "bad_output_path.yaml": ("output.csv", 9, "a file name, not a path"),
     "bad_not_a_mapping.yaml": ("(job)", 1, "a job is a mapping"),
-    "bad_center_and_centre.yaml": ("metric_set.points[1].centre", 5, "`centre` is an alias of `center`: give one of them, not both"),
+    "bad_center_and_centre.yaml": (
+        "metric_set.points[1].centre",
+        5,
+        "`centre` is an alias of `center`: give one of them, not both",
+    ),
     "bad_center_on_points.yaml": ("metric_set.points[0].center", 4, "a parameter of shapes only"),
     "bad_deep_nesting.yaml": ("(job)", 4, "mappings and lists nest deeper than 32 levels"),
     "bad_alias_bomb.yaml": ("(job)", 7, "the job expands to more than 500000 values"),
@@ -106,7 +114,11 @@ def test_schema_is_shipped_and_valid():
 
 def test_yaml_floats_with_exponent_are_numbers(tmp_path):
     job = tmp_path / "exp.yaml"
-    job.write_text((EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml").read_text().replace("acceleration: 1.0", "acceleration: 1e0"))
+    job.write_text(
+        (EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml")
+        .read_text()
+        .replace("acceleration: 1.0", "acceleration: 1e0")
+    )
     assert jobs.load_job(job).limits.acceleration == 1.0
 
 
@@ -127,6 +139,7 @@ def test_libyaml_reads_what_pyyaml_reads_with_the_same_places(monkeypatch):
     # same line and column for every key of every example job.
     import yaml
     from dispkin.job import reader
+
     assert yaml.__with_libyaml__ and reader._FastLoader is not None and issubclass(reader._FastLoader, yaml.CSafeLoader)
     fast = [reader.Source(job) for job in EXAMPLE_JOBS]
     monkeypatch.setattr(reader, "_FastLoader", None)
@@ -139,10 +152,17 @@ def test_unknown_numeric_key_is_a_job_error(tmp_path):
     # Found by tests/fuzz/fuzz_jobs.py: unknown keys were sorted for the message, and a YAML key
     # that is a number cannot be compared with the names (TypeError).
     job = tmp_path / "number_key.yaml"
-    job.write_text((EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml").read_text().replace("acceleration: 1.0", "acceleration: 1.0, 0: 1, zz: 2"))
+    job.write_text(
+        (EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml")
+        .read_text()
+        .replace("acceleration: 1.0", "acceleration: 1.0, 0: 1, zz: 2")
+    )
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(job)
-    assert "limits.0: unknown key (allowed here: acceleration, angular_acceleration, angular_velocity, corner_tolerance, jerk, profile, velocity)" in str(info.value)
+    assert (
+        "limits.0: unknown key (allowed here: acceleration, angular_acceleration, angular_velocity, corner_tolerance, jerk, profile, velocity)"
+        in str(info.value)
+    )
 
 
 # --- valid jobs ------------------------------------------------------------------------------
@@ -169,8 +189,14 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     if job.has_ptp or job.events:
         traj = jobs.plan_job(job)
     else:
-        traj = dispkin.plan(job.path, job.metric_set, job.limits, job.profile, joint_metric=job.hexapod if job.joint_metric else None,
-                            corner_tolerance=job.corner_tolerance)
+        traj = dispkin.plan(
+            job.path,
+            job.metric_set,
+            job.limits,
+            job.profile,
+            joint_metric=job.hexapod if job.joint_metric else None,
+            corner_tolerance=job.corner_tolerance,
+        )
     t = table[:, 0]
     assert t[0] == 0.0 and t[-1] == pytest.approx(traj.duration, rel=1e-15)
     np.testing.assert_allclose(np.diff(t)[:-1], job.sample_period, rtol=1e-9)
@@ -197,7 +223,10 @@ def test_example_job_round_trips_through_the_cli(job_file, tmp_path, capsys):
     np.testing.assert_allclose(document["dispkin"]["poses_xyzuvw"], expected, atol=1e-12)
     # The fastest point never exceeds its group's limit, and the path velocity matches.
     twists = traj.body_twist(t)
-    fastest = [dispkin.max_point_speed(job.metric_set, dispkin.Pose.from_matrix(m), xi, job.limits.velocity) for m, xi in zip(poses, twists)]
+    fastest = [
+        dispkin.max_point_speed(job.metric_set, dispkin.Pose.from_matrix(m), xi, job.limits.velocity)
+        for m, xi in zip(poses, twists)
+    ]
     assert max(fastest) <= job.limits.velocity * (1 + 1e-6)
     np.testing.assert_allclose(table[:, header.index("path_velocity_mps")], traj.path_velocity(t), atol=1e-15)
     for group, g in document["dispkin"]["summary"]["groups"].items():
@@ -236,8 +265,11 @@ def test_joint_velocities_and_accelerations_are_the_derivatives(name):
     samples = jobs.sample_job(job, traj, period=dt)
     inner = slice(2, -2)
     steps = np.abs(np.diff(samples.accelerations, axis=0)).max() if job.has_ptp else 0.0
-    np.testing.assert_allclose(samples.velocities[inner], finite_difference(samples.positions, samples.time)[inner],
-                               atol=1e-4 * np.abs(samples.velocities).max() + 0.25 * dt * steps)
+    np.testing.assert_allclose(
+        samples.velocities[inner],
+        finite_difference(samples.positions, samples.time)[inner],
+        atol=1e-4 * np.abs(samples.velocities).max() + 0.25 * dt * steps,
+    )
     check = np.zeros(len(samples.time), dtype=bool)
     check[inner] = True
     if job.has_ptp:
@@ -246,18 +278,27 @@ def test_joint_velocities_and_accelerations_are_the_derivatives(name):
             if part.kind == "ptp":
                 check &= ~np.convolve(which == k, np.ones(5), mode="same").astype(bool)
         assert check.sum() > 100
-    np.testing.assert_allclose(samples.accelerations[check], finite_difference(samples.velocities, samples.time)[check],
-                               atol=2e-2 * np.abs(samples.accelerations).max())
+    np.testing.assert_allclose(
+        samples.accelerations[check],
+        finite_difference(samples.velocities, samples.time)[check],
+        atol=2e-2 * np.abs(samples.accelerations).max(),
+    )
 
 
 def test_ur_job_is_the_python_example_move():
     job = jobs.load_job(ROOT / "examples" / "jobs" / "ur5e_lin_move.yaml")
     arm = job.arm
     start = arm.forward(job.q_start)
-    goal = dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1)) * start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])
+    goal = (
+        dispkin.Pose((1, 0, 0, 0), (0.2, 0.1, -0.1))
+        * start
+        * dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, math.radians(30)])
+    )
     assert job.path.start.is_approx(start, 1e-12) and job.path.end.is_approx(goal, 1e-12)
     samples = jobs.sample_job(job, jobs.plan_job(job))
-    torques = [arm.torques(q, qd, qdd) for q, qd, qdd in zip(samples.positions, samples.velocities, samples.accelerations)]
+    torques = [
+        arm.torques(q, qd, qdd) for q, qd, qdd in zip(samples.positions, samples.velocities, samples.accelerations)
+    ]
     np.testing.assert_allclose(samples.effort, torques, rtol=1e-12, atol=1e-12)
 
 
@@ -278,8 +319,10 @@ def test_hexapod_from_file_and_inline_description_match_symmetric(tmp_path):
 
 def test_blend_removes_the_stops_and_matches_the_api():
     job = jobs.load_job(ROOT / "examples" / "jobs" / "blended_tool_move.yaml")
+
     def pose(x, y, yaw):
         return dispkin.Pose.from_xyzuvw([x, y, 0, 0, 0, math.radians(yaw)])
+
     path = dispkin.Path.lin(pose(0, 0, 0), pose(0.3, 0, 10))
     path.then(dispkin.Path.circ(pose(0.3, 0, 10), pose(0.45, 0.1, 20), pose(0.3, 0.2, 30)), blend=0.03)
     path.then(dispkin.Path.lin(pose(0.3, 0.2, 30), pose(0, 0.2, 40)), blend=0.03)
@@ -305,11 +348,18 @@ limits: {velocity: 0.25, acceleration: 1.0, jerk: 10.0}
 
 def test_blend_weight_and_nested_slerp_match_the_api(tmp_path):
     """`blend_weight` and `orientation_blend` of a move are Path.then's weight and orientation_blend."""
+
     def pose(x, y, u, w):
         return dispkin.Pose.from_xyzuvw([x, y, 0, math.radians(u), 0, math.radians(w)])
-    for keys, kwargs in (("blend_weight: 0.3", {"weight": 0.3}),
-                         ("blend_weight: 0.3\n    orientation_blend: nested_slerp", {"weight": 0.3, "orientation_blend": "nested_slerp"}),
-                         ("blend: 0.05\n    orientation_blend: nested_slerp", {"blend": 0.05, "orientation_blend": "nested_slerp"})):
+
+    for keys, kwargs in (
+        ("blend_weight: 0.3", {"weight": 0.3}),
+        (
+            "blend_weight: 0.3\n    orientation_blend: nested_slerp",
+            {"weight": 0.3, "orientation_blend": "nested_slerp"},
+        ),
+        ("blend: 0.05\n    orientation_blend: nested_slerp", {"blend": 0.05, "orientation_blend": "nested_slerp"}),
+    ):
         (tmp_path / "job.yaml").write_text(NESTED_SLERP_JOB.replace("BLEND", keys))
         job = jobs.load_job(tmp_path / "job.yaml")
         path = dispkin.Path.lin(pose(0, 0, 0, 0), pose(0.3, 0, 0, 20))
@@ -321,12 +371,15 @@ def test_blend_weight_and_nested_slerp_match_the_api(tmp_path):
         assert ("nested SLERP" in job.moves[1].blend_text()) == ("nested_slerp" in keys)
 
 
-@pytest.mark.parametrize("keys, key, message", [
-    ("blend: 0.05\n    blend_weight: 0.3", "moves[1].blend_weight", "not both"),
-    ("orientation_blend: nested_slerp", "moves[1].orientation_blend", "no blend to shape"),
-    ("blend_weight: 0.7", "moves[1].blend_weight", "0.7"),
-    ("blend_weight: 0.3\n    orientation_blend: slerpy", "moves[1].orientation_blend", "slerpy"),
-])
+@pytest.mark.parametrize(
+    "keys, key, message",
+    [
+        ("blend: 0.05\n    blend_weight: 0.3", "moves[1].blend_weight", "not both"),
+        ("orientation_blend: nested_slerp", "moves[1].orientation_blend", "no blend to shape"),
+        ("blend_weight: 0.7", "moves[1].blend_weight", "0.7"),
+        ("blend_weight: 0.3\n    orientation_blend: slerpy", "moves[1].orientation_blend", "slerpy"),
+    ],
+)
 def test_blend_weight_and_orientation_blend_errors_name_the_key(tmp_path, keys, key, message):
     (tmp_path / "job.yaml").write_text(NESTED_SLERP_JOB.replace("BLEND", keys))
     with pytest.raises(jobs.JobError) as error:
@@ -344,15 +397,21 @@ def test_center_is_the_spelling_and_centre_its_alias(tmp_path):
         center, centre = jobs.load_job(ROOT / "examples" / "jobs" / example), jobs.load_job(tmp_path / example)
         assert center.metric_set.groups == centre.metric_set.groups
         for group in center.metric_set.groups:
-            np.testing.assert_array_equal(center.metric_set.relative_points(group), centre.metric_set.relative_points(group))
-            assert [(c.tolist(), r, a) for c, r, a in center.metric_set.spheres(group)] == \
-                [(c.tolist(), r, a) for c, r, a in centre.metric_set.spheres(group)]
+            np.testing.assert_array_equal(
+                center.metric_set.relative_points(group), centre.metric_set.relative_points(group)
+            )
+            assert [(c.tolist(), r, a) for c, r, a in center.metric_set.spheres(group)] == [
+                (c.tolist(), r, a) for c, r, a in centre.metric_set.spheres(group)
+            ]
         assert jobs.plan_job(center).duration == jobs.plan_job(centre).duration
     # The centre is used, whichever the spelling: a tool tip 0.2 m off the flange is slower to turn.
     job = (ROOT / "examples" / "jobs" / "blended_tool_move.yaml").read_text()
     for key in ("center", "centre"):
         (tmp_path / f"{key}.yaml").write_text(job.replace("center: [0, 0, 0.2]", f"{key}: [0, 0, 0.5]"))
-        assert jobs.plan_job(jobs.load_job(tmp_path / f"{key}.yaml")).duration > jobs.plan_job(jobs.load_job(ROOT / "examples" / "jobs" / "blended_tool_move.yaml")).duration
+        assert (
+            jobs.plan_job(jobs.load_job(tmp_path / f"{key}.yaml")).duration
+            > jobs.plan_job(jobs.load_job(ROOT / "examples" / "jobs" / "blended_tool_move.yaml")).duration
+        )
 
 
 def test_time_from_start_carries_nanoseconds():
@@ -375,7 +434,9 @@ def test_user_guide_minimal_job_runs_as_documented(tmp_path, capsys, monkeypatch
     for name in ("lin.csv", "lin.json", "lin.summary.txt", "lin.png"):
         assert (tmp_path / "out" / name).stat().st_size > 0
     # The error quoted in the user guide is the one the code gives.
-    quoted = re.search(r"`lin\.yaml:11:3: (limits\.velocty: unknown key \(allowed here: [^)]*\))`", readme.replace("\n", " "))
+    quoted = re.search(
+        r"`lin\.yaml:11:3: (limits\.velocty: unknown key \(allowed here: [^)]*\))`", readme.replace("\n", " ")
+    )
     with pytest.raises(jobs.JobError) as info:
         jobs.load_job(BAD / "bad_unknown_key.yaml")
     assert str(info.value).endswith(":11:3: " + quoted.group(1))
@@ -453,8 +514,11 @@ def test_ptp_job_csv_and_json_carry_the_joint_line(tmp_path, capsys):
 def test_ptp_move_to_a_pose_in_the_work_frame(tmp_path):
     text = (ROOT / "examples" / "jobs" / "ur5e_ptp_and_lin.yaml").read_text()
     job_file = tmp_path / "job.yaml"
-    job_file.write_text(text.replace("urdf: ../../tests/data/urdf/", f"urdf: {ROOT / 'tests' / 'data' / 'urdf'}/")
-                        .replace("metric_set:", "frames:\n  work: {xyzuvw: [0.1, 0, 0, 0, 0, 0]}\nmetric_set:", 1))
+    job_file.write_text(
+        text.replace("urdf: ../../tests/data/urdf/", f"urdf: {ROOT / 'tests' / 'data' / 'urdf'}/").replace(
+            "metric_set:", "frames:\n  work: {xyzuvw: [0.1, 0, 0, 0, 0, 0]}\nmetric_set:", 1
+        )
+    )
     job = jobs.load_job(job_file)
     target = job.frames.platform_pose(dispkin.Pose.from_xyzuvw(_xyzuvw_radians(job, 2)))
     assert job.arm.forward(job.parts[-1].path.end).is_approx(target, 1e-9)

@@ -44,7 +44,9 @@ def test_joints_add_during_the_overlap_and_the_pose_is_the_arms():
     t = np.linspace(0.0, o.duration, 501)
     begin = before.duration - overlap
     later = np.clip(t - begin, 0.0, None)
-    expected = before.joint_positions(t) + np.where((t > begin)[:, None], after.joint_positions(later) - after.start, 0.0)
+    expected = before.joint_positions(t) + np.where(
+        (t > begin)[:, None], after.joint_positions(later) - after.start, 0.0
+    )
     np.testing.assert_allclose(o.joint_positions(t), expected, atol=1e-12)
     expected_qd = before.joint_velocities(t) + np.where((t > begin)[:, None], after.joint_velocities(later), 0.0)
     np.testing.assert_allclose(o.joint_velocities(t), expected_qd, atol=1e-12)

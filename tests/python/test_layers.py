@@ -1,6 +1,7 @@
 """The layer check (scripts/check-layers.py, doc/architecture.md): the repository passes it, and
 an include that points up or across a plugin, or a namespace that is not its folder's, is reported
 with its file and line."""
+
 import pathlib
 import subprocess
 import sys
@@ -51,8 +52,11 @@ def test_namespaces_that_follow_their_folders_pass(tmp_path):
     write(tmp_path, "include/dispkin/pose.hpp", "namespace dispkin {\nnamespace detail {\n}\n}  // namespace dispkin\n")
     write(tmp_path, "src/path/path.cpp", "namespace dispkin {\nnamespace {\n}  // namespace\n}  // namespace dispkin\n")
     write(tmp_path, "include/dispkin/serial/ptp.hpp", "namespace dispkin {\nnamespace serial {\n}\n}\n")
-    write(tmp_path, "src/serial/ptp.cpp", '// namespace dispkin {\nconst char* s = "namespace dispkin {";\n'
-          "namespace dispkin::serial::detail {\n}\n")
+    write(
+        tmp_path,
+        "src/serial/ptp.cpp",
+        '// namespace dispkin {\nconst char* s = "namespace dispkin {";\nnamespace dispkin::serial::detail {\n}\n',
+    )
     write(tmp_path, "src/hexapod/hexapod.cpp", "namespace dispkin::hexapod {\nnamespace {\n}\n}\n")
     assert run(tmp_path).returncode == 0
 
@@ -61,8 +65,10 @@ def test_a_plugin_file_in_the_core_namespace_is_reported_with_its_line(tmp_path)
     write(tmp_path, "include/dispkin/hexapod/hexapod.hpp", "#pragma once\n\nnamespace dispkin {\nclass Hexapod;\n}\n")
     result = run(tmp_path)
     assert result.returncode == 1
-    assert ("include/dispkin/hexapod/hexapod.hpp:3: the hexapod layer opens namespace dispkin, "
-            "not one inside dispkin::hexapod") in result.stdout
+    assert (
+        "include/dispkin/hexapod/hexapod.hpp:3: the hexapod layer opens namespace dispkin, "
+        "not one inside dispkin::hexapod"
+    ) in result.stdout
 
 
 def test_a_core_file_in_a_plugin_namespace_is_reported(tmp_path):

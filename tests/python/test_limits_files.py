@@ -8,8 +8,12 @@ import numpy as np
 import pytest
 
 import dispkin
-from dispkin.limits_files import (LimitsFileError, apply_moveit_joint_limits, read_moveit_joint_limits,
-                                  read_pilz_cartesian_limits)
+from dispkin.limits_files import (
+    LimitsFileError,
+    apply_moveit_joint_limits,
+    read_moveit_joint_limits,
+    read_pilz_cartesian_limits,
+)
 
 pytestmark = pytest.mark.skipif(not hasattr(dispkin, "SerialArm"), reason="built without the serial-arm plugin")
 
@@ -48,8 +52,16 @@ def test_applied_limits_replace_the_urdf_ones_and_bind_in_the_retiming():
     path = dispkin.Path.lin(a, dispkin.Pose(turned.quaternion, a.translation + np.array([0.25, -0.1, -0.1])))
     tool = dispkin.MetricSet()
     tool.add_relative(dispkin.shapes.icosahedron(0.05, [0, 0, 0.1]))
-    result = dispkin.retime(path, tool, dispkin.Limits(3.0, 300.0), updated, Q0, profile="trapezoid", method="optimal",
-                            joint_acceleration=acceleration)
+    result = dispkin.retime(
+        path,
+        tool,
+        dispkin.Limits(3.0, 300.0),
+        updated,
+        Q0,
+        profile="trapezoid",
+        method="optimal",
+        joint_acceleration=acceleration,
+    )
     dense = dispkin.check_joint_limits(result.trajectory, updated, Q0, samples_between=20).samples
     assert np.all(np.abs(dense["qd"]) <= after.velocity)
     assert np.all(np.abs(dense["qdd"][:, :3]) <= acceleration[:3])
@@ -57,20 +69,37 @@ def test_applied_limits_replace_the_urdf_ones_and_bind_in_the_retiming():
     assert ratio > 0.97  # the file's limits are the ones that bind
 
 
-@pytest.mark.parametrize("text, message", [
-    ("joint_limits: 3", "joint_limits: missing"),
-    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n", "joint_limits.elbow_joint.max_velocity: missing"),
-    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: -1\n",
-     "joint_limits.elbow_joint.max_velocity = -1: must be > 0"),
-    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: yes please\n",
-     "joint_limits.elbow_joint.has_velocity_limits = 'yes please': must be true or false"),
-    ("joint_limits:\n  elbow_joint:\n    has_acceleration_limits: true\n    max_acceleration: .nan\n",
-     "joint_limits.elbow_joint.max_acceleration = nan: must be finite"),
-    ("joint_limits:\n  elbow_joint:\n    has_position_limits: true\n    min_position: 1\n    max_position: 1\n",
-     "must have min_position < max_position"),
-    ("default_velocity_scaling_factor: 2\njoint_limits: {}\n", "default_velocity_scaling_factor = 2: must be in (0, 1]"),
-    ("joint_limits: [", "not valid YAML"),
-])
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("joint_limits: 3", "joint_limits: missing"),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n",
+            "joint_limits.elbow_joint.max_velocity: missing",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: -1\n",
+            "joint_limits.elbow_joint.max_velocity = -1: must be > 0",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_velocity_limits: yes please\n",
+            "joint_limits.elbow_joint.has_velocity_limits = 'yes please': must be true or false",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_acceleration_limits: true\n    max_acceleration: .nan\n",
+            "joint_limits.elbow_joint.max_acceleration = nan: must be finite",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_position_limits: true\n    min_position: 1\n    max_position: 1\n",
+            "must have min_position < max_position",
+        ),
+        (
+            "default_velocity_scaling_factor: 2\njoint_limits: {}\n",
+            "default_velocity_scaling_factor = 2: must be in (0, 1]",
+        ),
+        ("joint_limits: [", "not valid YAML"),
+    ],
+)
 def test_bad_moveit_files_name_the_key(tmp_path, text, message):
     file = tmp_path / "joint_limits.yaml"
     file.write_text(text)
@@ -84,7 +113,9 @@ def test_a_joint_the_arm_does_not_have_is_an_error(tmp_path):
     file.write_text("joint_limits:\n  elbow:\n    has_velocity_limits: true\n    max_velocity: 1.0\n")
     with pytest.raises(LimitsFileError, match=r"joint_limits\.elbow: not a joint of the arm"):
         apply_moveit_joint_limits(ur5e(), file)
-    with pytest.raises(LimitsFileError, match="missing.yaml: the limits file cannot be read: No such file or directory"):
+    with pytest.raises(
+        LimitsFileError, match="missing.yaml: the limits file cannot be read: No such file or directory"
+    ):
         read_moveit_joint_limits(tmp_path / "missing.yaml")
 
 
@@ -103,8 +134,10 @@ def test_pilz_limits_and_the_rotation_sphere():
     path = dispkin.Path.lin(start, start * dispkin.Pose.from_xyzuvw([0, 0, 0, 0.0, 0.0, 2.5]))
     traj = dispkin.plan(path, tool, pilz.limits(jerk=20.0, angular=False))
     poses = traj.sample(np.linspace(0, traj.duration, 2001))
-    angles = [np.arccos(np.clip((np.trace(np.linalg.inv(a[:3, :3]) @ b[:3, :3]) - 1) / 2, -1, 1))
-              for a, b in zip(poses[:-1], poses[1:])]
+    angles = [
+        np.arccos(np.clip((np.trace(np.linalg.inv(a[:3, :3]) @ b[:3, :3]) - 1) / 2, -1, 1))
+        for a, b in zip(poses[:-1], poses[1:])
+    ]
     omega = np.array(angles) / (traj.duration / 2000)
     assert omega.max() <= pilz.max_rot_vel * (1 + 1e-3) and omega.max() > 0.99 * pilz.max_rot_vel
 
@@ -125,13 +158,24 @@ def test_pilz_angular_limit_binds_on_a_combined_move():
     assert max(omega.max() / pilz.max_rot_vel, speed.max() / pilz.max_trans_vel) >= 0.995
 
 
-@pytest.mark.parametrize("text, message", [
-    ("cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: 5\n  max_rot_vel: 1\n",
-     "cartesian_limits.max_trans_dec = 5: must be < 0"),
-    ("cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: -5\n", "cartesian_limits.max_rot_vel: missing"),
-    ("max_trans_vel: fast\nmax_trans_acc: 2\nmax_trans_dec: -5\nmax_rot_vel: 1\n", "max_trans_vel = 'fast': must be a number"),
-    ("- 1\n- 2\n", "cartesian_limits: missing"),
-])
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        (
+            "cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: 5\n  max_rot_vel: 1\n",
+            "cartesian_limits.max_trans_dec = 5: must be < 0",
+        ),
+        (
+            "cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: -5\n",
+            "cartesian_limits.max_rot_vel: missing",
+        ),
+        (
+            "max_trans_vel: fast\nmax_trans_acc: 2\nmax_trans_dec: -5\nmax_rot_vel: 1\n",
+            "max_trans_vel = 'fast': must be a number",
+        ),
+        ("- 1\n- 2\n", "cartesian_limits: missing"),
+    ],
+)
 def test_bad_pilz_files_name_the_key(tmp_path, text, message):
     file = tmp_path / "cartesian_limits.yaml"
     file.write_text(text)
@@ -150,7 +194,9 @@ def test_errors_name_the_line_and_column_of_the_key(tmp_path):
         read_moveit_joint_limits(file)
     assert str(error.value) == f"{file}:4:5: joint_limits.elbow_joint.max_velocity = -1: must be > 0"
     pilz = tmp_path / "cartesian_limits.yaml"
-    pilz.write_text("cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: -5\n  max_rot_vel: 1e300\n")
+    pilz.write_text(
+        "cartesian_limits:\n  max_trans_vel: 1\n  max_trans_acc: 2\n  max_trans_dec: -5\n  max_rot_vel: 1e300\n"
+    )
     with pytest.raises(LimitsFileError) as error:
         read_pilz_cartesian_limits(pilz)
     assert str(error.value).startswith(f"{pilz}:5:3: cartesian_limits.max_rot_vel = 1e+300: must be in [1e-12, 1e+12]")
@@ -162,17 +208,31 @@ def test_numbers_are_yaml_1_2_as_in_job_files(tmp_path):
     assert read_moveit_joint_limits(file).joints["elbow_joint"].max_velocity == 2.0
 
 
-@pytest.mark.parametrize("text, message", [
-    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 400 + "\n",
-     ":4:5: joint_limits.elbow_joint.max_velocity = an integer of 1329 bits: must be within ±2^53"),
-    ("joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 4400 + "\n",
-     ":4:19: (limits file): a value of 4401 characters, more than 4096"),
-    ("joint_limits: " + "[" * 1000 + "]" * 1000 + "\n", ":1:46: (limits file): mappings and lists nest deeper than 32 levels"),
-    ("joint_limits:\n  elbow_joint:\n    has_effort_limits: true\n    max_effort: 1e300\n",
-     ":4:5: joint_limits.elbow_joint.max_effort = 1e+300: must be in [1e-12, 1e+12] in magnitude"),
-    ("joint_limits:\n  elbow_joint: &e {has_velocity_limits: true, max_velocity: *e}\n",
-     ":2:61: (limits file): the alias *e is inside its own anchor: a limits file is a tree, not a cycle"),
-])
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        (
+            "joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 400 + "\n",
+            ":4:5: joint_limits.elbow_joint.max_velocity = an integer of 1329 bits: must be within ±2^53",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_velocity_limits: true\n    max_velocity: 1" + "0" * 4400 + "\n",
+            ":4:19: (limits file): a value of 4401 characters, more than 4096",
+        ),
+        (
+            "joint_limits: " + "[" * 1000 + "]" * 1000 + "\n",
+            ":1:46: (limits file): mappings and lists nest deeper than 32 levels",
+        ),
+        (
+            "joint_limits:\n  elbow_joint:\n    has_effort_limits: true\n    max_effort: 1e300\n",
+            ":4:5: joint_limits.elbow_joint.max_effort = 1e+300: must be in [1e-12, 1e+12] in magnitude",
+        ),
+        (
+            "joint_limits:\n  elbow_joint: &e {has_velocity_limits: true, max_velocity: *e}\n",
+            ":2:61: (limits file): the alias *e is inside its own anchor: a limits file is a tree, not a cycle",
+        ),
+    ],
+)
 def test_hostile_moveit_files_are_refused_at_their_place(tmp_path, text, message):
     file = tmp_path / "joint_limits.yaml"
     file.write_text(text)
@@ -182,10 +242,16 @@ def test_hostile_moveit_files_are_refused_at_their_place(tmp_path, text, message
     assert len(str(error.value)) < 1000
 
 
-@pytest.mark.parametrize("data, where", [
-    (b"joint_limits:\n  elbow_joint: # d\xe9mo\n    has_velocity_limits: true\n", ":2:19: the limits file is not UTF-8 text: byte 0xe9"),
-    ("joint_limits: {}\n".encode("utf-16"), ":1:1: the limits file is not UTF-8 text: byte 0xff"),
-])
+@pytest.mark.parametrize(
+    "data, where",
+    [
+        (
+            b"joint_limits:\n  elbow_joint: # d\xe9mo\n    has_velocity_limits: true\n",
+            ":2:19: the limits file is not UTF-8 text: byte 0xe9",
+        ),
+        ("joint_limits: {}\n".encode("utf-16"), ":1:1: the limits file is not UTF-8 text: byte 0xff"),
+    ],
+)
 def test_bytes_that_are_not_utf8_are_refused_at_their_line_and_column(tmp_path, data, where):
     file = tmp_path / "joint_limits.yaml"
     file.write_bytes(data)

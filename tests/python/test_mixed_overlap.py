@@ -45,11 +45,17 @@ def check_overlap(robot, o, before, after, lin, lin_offset):
     inside = ((t > begin) & (t < before.duration))[:, None]
     via = after.joint_positions(0.0)
     np.testing.assert_array_equal(via, before.joint_positions(before.duration))
-    expected = np.where(inside, before.joint_positions(t) + after.joint_positions(later) - via,
-                        np.where((t <= begin)[:, None], before.joint_positions(t), after.joint_positions(later)))
+    expected = np.where(
+        inside,
+        before.joint_positions(t) + after.joint_positions(later) - via,
+        np.where((t <= begin)[:, None], before.joint_positions(t), after.joint_positions(later)),
+    )
     np.testing.assert_allclose(o.joint_positions(t), expected, rtol=0, atol=1e-12)
-    expected_qd = np.where(inside, before.joint_velocities(t) + after.joint_velocities(later),
-                           np.where((t <= begin)[:, None], before.joint_velocities(t), after.joint_velocities(later)))
+    expected_qd = np.where(
+        inside,
+        before.joint_velocities(t) + after.joint_velocities(later),
+        np.where((t <= begin)[:, None], before.joint_velocities(t), after.joint_velocities(later)),
+    )
     np.testing.assert_allclose(o.joint_velocities(t), expected_qd, rtol=0, atol=1e-12)
     # Outside the overlap the LIN's own poses, by forward kinematics of the joints, to 1e-9.
     poses = o.sample(t)

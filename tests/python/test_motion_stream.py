@@ -84,14 +84,21 @@ def test_stop_resume_override_and_a_late_move():
     assert max_point_speed(stream, points) <= 0.2 * (1 + 1e-6)
 
 
-@pytest.mark.parametrize("call, error, message", [
-    (lambda s, p: s.stop(0.0), ValueError, "nothing was appended yet"),
-    (lambda s, p: (s.append(p[0], 1.0), s.append(p[0], 2.0)), ValueError, "path.start"),
-    (lambda s, p: (s.append(p[0], 1.0), s.append(p[1], 0.5)), ValueError, r"t = 0\.5: must be finite and not before the last request"),
-    (lambda s, p: (s.append(p[0], 1.0), s.resume(1.5)), ValueError, "resumes a stopped motion only"),
-    (lambda s, p: s.set_override(0.0, 0.0), ValueError, r"factor = 0: must be in \[0\.001, 10\]"),
-    (lambda s, p: s.append(p[0], math.nan), ValueError, "t = nan"),
-])
+@pytest.mark.parametrize(
+    "call, error, message",
+    [
+        (lambda s, p: s.stop(0.0), ValueError, "nothing was appended yet"),
+        (lambda s, p: (s.append(p[0], 1.0), s.append(p[0], 2.0)), ValueError, "path.start"),
+        (
+            lambda s, p: (s.append(p[0], 1.0), s.append(p[1], 0.5)),
+            ValueError,
+            r"t = 0\.5: must be finite and not before the last request",
+        ),
+        (lambda s, p: (s.append(p[0], 1.0), s.resume(1.5)), ValueError, "resumes a stopped motion only"),
+        (lambda s, p: s.set_override(0.0, 0.0), ValueError, r"factor = 0: must be in \[0\.001, 10\]"),
+        (lambda s, p: s.append(p[0], math.nan), ValueError, "t = nan"),
+    ],
+)
 def test_bad_requests_are_refused_naming_the_argument(call, error, message):
     stream = dispkin.MotionStream(tool()[0], dispkin.Limits(0.2, 1.0, 10.0))
     with pytest.raises(error, match=message):

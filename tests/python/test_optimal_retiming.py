@@ -48,7 +48,9 @@ def toppra_duration(arm, s, q, grid, with_torque):
     spline = toppra.SplineInterpolator(s, q)
     constraints = [toppra.constraint.JointVelocityConstraint(np.column_stack([-limits.velocity, limits.velocity]))]
     if not with_torque:
-        constraints.append(toppra.constraint.JointAccelerationConstraint(np.column_stack([-ACCELERATION, ACCELERATION])))
+        constraints.append(
+            toppra.constraint.JointAccelerationConstraint(np.column_stack([-ACCELERATION, ACCELERATION]))
+        )
     else:
         constraints.append(
             toppra.constraint.JointTorqueConstraint(
@@ -57,8 +59,9 @@ def toppra_duration(arm, s, q, grid, with_torque):
                 np.zeros(6),
             )
         )
-    instance = toppra.algorithm.TOPPRA(constraints, spline, gridpoints=np.linspace(s[0], s[-1], grid + 1),
-                                       parametrizer="ParametrizeConstAccel")
+    instance = toppra.algorithm.TOPPRA(
+        constraints, spline, gridpoints=np.linspace(s[0], s[-1], grid + 1), parametrizer="ParametrizeConstAccel"
+    )
     return instance.compute_trajectory(0, 0).duration
 
 
@@ -68,8 +71,17 @@ def test_duration_within_two_percent_of_toppra(kind, with_torque):
     arm, path, tool = arm_and_path(kind)
     s, q = joint_path(arm, path, tool)
     # Joint velocities with joint accelerations, or joint velocities with torques.
-    ours = dispkin.retime(path, tool, FREE, arm, Q0, profile="trapezoid", method="optimal",
-                          joint_acceleration=None if with_torque else ACCELERATION, torque_limits=with_torque)
+    ours = dispkin.retime(
+        path,
+        tool,
+        FREE,
+        arm,
+        Q0,
+        profile="trapezoid",
+        method="optimal",
+        joint_acceleration=None if with_torque else ACCELERATION,
+        torque_limits=with_torque,
+    )
     theirs = toppra_duration(arm, s, q, 100, with_torque)
     print(f"{kind} torque={with_torque}: dispkin {ours.trajectory.duration:.5f} s, toppra {theirs:.5f} s")
     assert abs(ours.trajectory.duration - theirs) <= 0.02 * theirs
@@ -136,14 +148,18 @@ def test_jerk_limited_optimal_keeps_the_jerk_and_the_limits(kind):
         # slower than it.
         joint = arm.joint_limits
         held_back = arm.with_joint_limits(velocity=joint.velocity * (1 - 1e-3), effort=joint.effort * (1 - 1e-3))
-        scaled_clear = dispkin.retime(path, tool, limits, held_back, Q0, profile="scurve", method="scaling").trajectory.duration
+        scaled_clear = dispkin.retime(
+            path, tool, limits, held_back, Q0, profile="scurve", method="scaling"
+        ).trajectory.duration
     except RuntimeError:  # the scaling loop does not converge on the CIRC (measured): nothing to compare
         scaled, scaled_clear = None, None
     s_grid, q_grid = joint_path(arm, path, tool)
     theirs = toppra_duration(arm, s_grid, q_grid, 100, True)
     traj = jerked.trajectory
-    print(f"{kind}: jerk-limited {traj.duration:.5f} s (window {jerked.jerk_window:.5f} s), jerk-free "
-          f"{plain.trajectory.duration:.5f} s, toppra (no jerk) {theirs:.5f} s, scaling S-curve {scaled} s")
+    print(
+        f"{kind}: jerk-limited {traj.duration:.5f} s (window {jerked.jerk_window:.5f} s), jerk-free "
+        f"{plain.trajectory.duration:.5f} s, toppra (no jerk) {theirs:.5f} s, scaling S-curve {scaled} s"
+    )
     assert traj.duration >= plain.trajectory.duration
     assert scaled_clear is None or traj.duration <= scaled_clear
     assert 0.0 <= jerked.jerk_window <= 2 * limits.acceleration / limits.jerk

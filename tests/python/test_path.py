@@ -86,10 +86,19 @@ def test_ptp_is_a_joint_line():
         (lambda: dispkin.Path.circ(pose(0, 0, 0), pose(0, 1, 0), pose(1, 0, 0), tolerance=0.0), r"^tolerance = 0"),
         (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(0, 0, 0)), r"coincide"),
         (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0), pivot=[0, float("nan"), 0]), r"^pivot = \(0, nan, 0\)"),
-        (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0), pivot=[0, 0]), r"^pivot: expected an array of shape \(3,\), got shape \(2,\)"),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0), pivot=[0, 0]),
+            r"^pivot: expected an array of shape \(3,\), got shape \(2,\)",
+        ),
         (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0), interpolation="spline"), r'^interpolation = "spline"'),
-        (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)).then(dispkin.Path.lin(pose(2, 0, 0), pose(3, 0, 0))), r"must start where the path ends"),
-        (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)).sample([[0.5]]), r"^u: expected a number or an array of shape \(N,\), got shape \(1, 1\)"),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)).then(dispkin.Path.lin(pose(2, 0, 0), pose(3, 0, 0))),
+            r"must start where the path ends",
+        ),
+        (
+            lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)).sample([[0.5]]),
+            r"^u: expected a number or an array of shape \(N,\), got shape \(1, 1\)",
+        ),
         (lambda: dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)).sample([0.5, float("nan")]), r"^u = nan"),
         (lambda: dispkin.Path.ptp([0.0, 1.0], [1.0]), r"^q_end size = 1"),
     ],

@@ -65,6 +65,7 @@ def number_paths(state, path=()):
 
 # --- objects of every pickled type --------------------------------------------------------------
 
+
 @functools.lru_cache(maxsize=None)
 def trajectory():
     return dispkin.plan(blended_path(), tool(), dispkin.Limits(0.25, 1.0, 10.0))
@@ -139,11 +140,14 @@ def assert_refused(cls, state, error, *fragments):
 
 # --- every type ---------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("name", NAMES)
 def test_every_type_round_trips_to_the_same_state(name):
     obj = named(name)
-    for copied in [pickle.loads(pickle.dumps(obj, protocol)) for protocol in range(2, pickle.HIGHEST_PROTOCOL + 1)] + \
-                  [copy.copy(obj), copy.deepcopy(obj)]:
+    for copied in [pickle.loads(pickle.dumps(obj, protocol)) for protocol in range(2, pickle.HIGHEST_PROTOCOL + 1)] + [
+        copy.copy(obj),
+        copy.deepcopy(obj),
+    ]:
         assert type(copied) is type(obj)
         assert plain(copied.__getstate__()) == plain(obj.__getstate__())
 
@@ -173,54 +177,119 @@ def test_a_state_of_the_wrong_shape_is_refused_with_the_type_named(name):
 
 # --- the invariants, type by type ----------------------------------------------------------------
 
+
 def test_pose_numbers_within_the_constructors_range():
-    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (1e300, 0.0, 0.0)), ValueError,
-                   "translation = (1e+300, 0, 0): must have coordinates within ±1e12 m")
-    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, math.nan, 0.0)), ValueError,
-                   "translation = (0, nan, 0): must be finite")
-    assert_refused(dispkin.Pose, ((1.0, 1e-5, 0.0, 0.0), (0.0, 0.0, 0.0)), ValueError,
-                   "quaternion (w, x, y, z) = (1, 1e-05, 0, 0): must be a unit quaternion")
-    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0)), ValueError,
-                   "state[1] (translation) = (0.0, 0.0): must be a tuple of 3 floats, not of shape (2,)")
-    assert_refused(dispkin.Pose, ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0, "x")), TypeError,
-                   "state[1] (translation) = (0.0, 0.0, 'x'): must be a tuple of 3 floats")
+    assert_refused(
+        dispkin.Pose,
+        ((1.0, 0.0, 0.0, 0.0), (1e300, 0.0, 0.0)),
+        ValueError,
+        "translation = (1e+300, 0, 0): must have coordinates within ±1e12 m",
+    )
+    assert_refused(
+        dispkin.Pose,
+        ((1.0, 0.0, 0.0, 0.0), (0.0, math.nan, 0.0)),
+        ValueError,
+        "translation = (0, nan, 0): must be finite",
+    )
+    assert_refused(
+        dispkin.Pose,
+        ((1.0, 1e-5, 0.0, 0.0), (0.0, 0.0, 0.0)),
+        ValueError,
+        "quaternion (w, x, y, z) = (1, 1e-05, 0, 0): must be a unit quaternion",
+    )
+    assert_refused(
+        dispkin.Pose,
+        ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0)),
+        ValueError,
+        "state[1] (translation) = (0.0, 0.0): must be a tuple of 3 floats, not of shape (2,)",
+    )
+    assert_refused(
+        dispkin.Pose,
+        ((1.0, 0.0, 0.0, 0.0), (0.0, 0.0, "x")),
+        TypeError,
+        "state[1] (translation) = (0.0, 0.0, 'x'): must be a tuple of 3 floats",
+    )
     # Within rounding of a unit quaternion the state is taken bit for bit.
     q = (math.cos(0.3), math.sin(0.3), 0.0, 0.0)
     assert fresh(dispkin.Pose, (q, (1e12, -1e12, 0.0))).__getstate__() == (q, (1e12, -1e12, 0.0))
 
 
 def test_limits_and_frames_name_the_field():
-    assert_refused(dispkin.Limits, (1e300, 1.0, None, None, None), ValueError,
-                   "velocity = 1e+300: must be in [1e-12, 1e12]")
-    assert_refused(dispkin.Limits, (1.0, 1.0, "fast", None, None), TypeError,
-                   "state[2] (jerk) = 'fast': must be a float or None")
+    assert_refused(
+        dispkin.Limits, (1e300, 1.0, None, None, None), ValueError, "velocity = 1e+300: must be in [1e-12, 1e12]"
+    )
+    assert_refused(
+        dispkin.Limits, (1.0, 1.0, "fast", None, None), TypeError, "state[2] (jerk) = 'fast': must be a float or None"
+    )
     assert_refused(dispkin.WorkToolFrames, (1, dispkin.Pose()), TypeError, "state[0] (work) = 1: must be a Pose")
     # None, and a Pose without a value, were taken by pybind11 for arguments of another overload.
     assert_refused(dispkin.WorkToolFrames, (dispkin.Pose(), None), TypeError, "state[1] (tool) = None: must be a Pose")
-    assert_refused(dispkin.WorkToolFrames, (dispkin.Pose.__new__(dispkin.Pose), dispkin.Pose()), TypeError,
-                   "state[0] (work) = ", "must be a Pose")
+    assert_refused(
+        dispkin.WorkToolFrames,
+        (dispkin.Pose.__new__(dispkin.Pose), dispkin.Pose()),
+        TypeError,
+        "state[0] (work) = ",
+        "must be a Pose",
+    )
 
 
 def scaled_profile(state, factor, peak=True):
     """A Profile state run `factor` times faster (velocities × f, accelerations × f², jerks × f³);
     the peak velocity too only if `peak`."""
     kind, phases, times, distance, peak_velocity, start, end = state
-    scale = lambda x: (x[0], x[1] * factor, x[2] * factor ** 2, x[3] * factor ** 3)  # noqa: E731
-    phases = tuple((d / factor, j * factor ** 3, scale(a), scale(b)) for d, j, a, b in phases)
-    return (kind, phases, tuple(t / factor for t in times), distance, peak_velocity * (factor if peak else 1.0),
-            scale(start), scale(end))
+    scale = lambda x: (x[0], x[1] * factor, x[2] * factor**2, x[3] * factor**3)  # noqa: E731
+    phases = tuple((d / factor, j * factor**3, scale(a), scale(b)) for d, j, a, b in phases)
+    return (
+        kind,
+        phases,
+        tuple(t / factor for t in times),
+        distance,
+        peak_velocity * (factor if peak else 1.0),
+        scale(start),
+        scale(end),
+    )
 
 
 def test_a_profile_must_be_a_law():
     state = named("Profile").__getstate__()
-    assert_refused(dispkin.Profile, scaled_profile(state, 1000.0, peak=False), ValueError,
-                   ".v = ", "must be within [0, peak_velocity = 0.25]")
-    assert_refused(dispkin.Profile, replaced(state, (3,), 2 * state[3]), ValueError, "end.s = 0.3: must be the distance 0.6")
-    assert_refused(dispkin.Profile, replaced(state, (1, 2, 3, 1), 1e308), ValueError, "phases[2].end (s, v, a) = (0.045, 1e+308, 0): must be (s = ")
-    assert_refused(dispkin.Profile, replaced(state, (4,), math.inf), ValueError, "state[4] (peak_velocity) = inf: must be finite")
-    assert_refused(dispkin.Profile, replaced(state, (0,), "cubic"), ValueError, "state[0] (kind) = 'cubic': must be 'scurve' or 'trapezoid'")
-    assert_refused(dispkin.Profile, replaced(state, (2,), state[2][:-1]), ValueError, "state[2] (times)", "one time more than there are phases")
-    assert_refused(dispkin.Profile, replaced(state, (1, 0, 0), "1"), TypeError, "state[1] (phases[0].duration) = '1': must be a float")
+    assert_refused(
+        dispkin.Profile,
+        scaled_profile(state, 1000.0, peak=False),
+        ValueError,
+        ".v = ",
+        "must be within [0, peak_velocity = 0.25]",
+    )
+    assert_refused(
+        dispkin.Profile, replaced(state, (3,), 2 * state[3]), ValueError, "end.s = 0.3: must be the distance 0.6"
+    )
+    assert_refused(
+        dispkin.Profile,
+        replaced(state, (1, 2, 3, 1), 1e308),
+        ValueError,
+        "phases[2].end (s, v, a) = (0.045, 1e+308, 0): must be (s = ",
+    )
+    assert_refused(
+        dispkin.Profile, replaced(state, (4,), math.inf), ValueError, "state[4] (peak_velocity) = inf: must be finite"
+    )
+    assert_refused(
+        dispkin.Profile,
+        replaced(state, (0,), "cubic"),
+        ValueError,
+        "state[0] (kind) = 'cubic': must be 'scurve' or 'trapezoid'",
+    )
+    assert_refused(
+        dispkin.Profile,
+        replaced(state, (2,), state[2][:-1]),
+        ValueError,
+        "state[2] (times)",
+        "one time more than there are phases",
+    )
+    assert_refused(
+        dispkin.Profile,
+        replaced(state, (1, 0, 0), "1"),
+        TypeError,
+        "state[1] (phases[0].duration) = '1': must be a float",
+    )
     # A law run consistently faster is still a law: a Profile alone has no limits but its own.
     faster = fresh(dispkin.Profile, scaled_profile(state, 2.0))
     assert faster.duration == pytest.approx(named("Profile").duration / 2, rel=1e-12)
@@ -231,37 +300,83 @@ def test_a_trajectory_must_keep_its_own_limits_and_join_up():
     s = traj.__getstate__()
     runs, pieces = s[2]
     faster = (runs, tuple((scaled_profile(p, 1000.0), s0) for p, s0 in pieces))
-    assert_refused(dispkin.Trajectory, s[:2] + (faster,) + s[3:], ValueError,
-                   "time_law pieces[0] peak velocity = 250: must be at most the velocity limit over its span, 0.25 m/s")
+    assert_refused(
+        dispkin.Trajectory,
+        s[:2] + (faster,) + s[3:],
+        ValueError,
+        "time_law pieces[0] peak velocity = 250: must be at most the velocity limit over its span, 0.25 m/s",
+    )
     # A section left out: the next one starts where the one before the gap did not end.
-    assert_refused(dispkin.Trajectory, ((s[0][0],) + s[0][2:], s[1][1:]) + s[2:], ValueError,
-                   "sections[1].start = (", "must start where the path ends (gap ")
+    assert_refused(
+        dispkin.Trajectory,
+        ((s[0][0],) + s[0][2:], s[1][1:]) + s[2:],
+        ValueError,
+        "sections[1].start = (",
+        "must start where the path ends (gap ",
+    )
     # An 8.6 m jump: the last section moved away along x.
     last = list(s[0][-1])
     assert last[0] == "lin"
     moved = lambda p: p[:4] + (p[4] + 8.6,) + p[5:]  # noqa: E731
     jumped = s[0][:-1] + (tuple([last[0], moved(last[1]), moved(last[2])] + last[3:]),)
-    assert_refused(dispkin.Trajectory, (jumped,) + s[1:], ValueError, f"sections[{len(jumped) - 1}].start = (", "gap 8.6")
-    assert_refused(dispkin.Trajectory, (s[0], tuple(2 * L for L in s[1])) + s[2:], ValueError,
-                   "time_law distance = ", "must be the path length, the sum of the section lengths")
-    assert_refused(dispkin.Trajectory, (s[0], s[1][:-1]) + s[2:], ValueError,
-                   "state[1] (section_lengths) = (", "must hold one length per section")
-    assert_refused(dispkin.Trajectory, (s[0], (math.nan,) + s[1][1:]) + s[2:], ValueError,
-                   "state[1] (section_lengths[0]) = nan: must be finite")
+    assert_refused(
+        dispkin.Trajectory, (jumped,) + s[1:], ValueError, f"sections[{len(jumped) - 1}].start = (", "gap 8.6"
+    )
+    assert_refused(
+        dispkin.Trajectory,
+        (s[0], tuple(2 * L for L in s[1])) + s[2:],
+        ValueError,
+        "time_law distance = ",
+        "must be the path length, the sum of the section lengths",
+    )
+    assert_refused(
+        dispkin.Trajectory,
+        (s[0], s[1][:-1]) + s[2:],
+        ValueError,
+        "state[1] (section_lengths) = (",
+        "must hold one length per section",
+    )
+    assert_refused(
+        dispkin.Trajectory,
+        (s[0], (math.nan,) + s[1][1:]) + s[2:],
+        ValueError,
+        "state[1] (section_lengths[0]) = nan: must be finite",
+    )
     huge = replaced(s, (2, 1, 0, 0, 3), 1e308)
-    assert_refused(dispkin.Trajectory, huge, ValueError, "state[2] (time_law.pieces[0].profile) end.s = ", "must be the distance 1e+308")
-    assert_refused(dispkin.Trajectory, replaced(s, (2, 1, 0, 0, 3), "x"), TypeError,
-                   "state[2] (time_law.pieces[0].profile.distance) = 'x': must be a float")
-    assert_refused(dispkin.Trajectory, replaced(s, (3, 0, 2), 2.5e14), ValueError, "speed_limits[0].limit = 2.5e+14: must be in (0, 1e12]")
+    assert_refused(
+        dispkin.Trajectory,
+        huge,
+        ValueError,
+        "state[2] (time_law.pieces[0].profile) end.s = ",
+        "must be the distance 1e+308",
+    )
+    assert_refused(
+        dispkin.Trajectory,
+        replaced(s, (2, 1, 0, 0, 3), "x"),
+        TypeError,
+        "state[2] (time_law.pieces[0].profile.distance) = 'x': must be a float",
+    )
+    assert_refused(
+        dispkin.Trajectory,
+        replaced(s, (3, 0, 2), 2.5e14),
+        ValueError,
+        "speed_limits[0].limit = 2.5e+14: must be in (0, 1e12]",
+    )
     assert_refused(dispkin.Trajectory, replaced(s, (2, 0), 0), ValueError, "time_law runs = 0: must be at least 1")
-    assert_refused(dispkin.Trajectory, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300")
+    assert_refused(
+        dispkin.Trajectory, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300"
+    )
 
 
 def test_a_path_must_join_up_and_stay_in_range():
     s = blended_path().__getstate__()
-    assert_refused(dispkin.Path, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300")
+    assert_refused(
+        dispkin.Path, replaced(s, (0, 0, 1, 4), 1e300), ValueError, "sections[0].start translation = (1e+300"
+    )
     assert_refused(dispkin.Path, replaced(s, (0, 0, 0), "line"), ValueError, "state[0] (sections[0].kind) = 'line'")
-    assert_refused(dispkin.Path, replaced(s, (4,), (0, 10 ** 6)), ValueError, "state[4] (move_starts[1]) = 1000000: must be in [0, ")
+    assert_refused(
+        dispkin.Path, replaced(s, (4,), (0, 10**6)), ValueError, "state[4] (move_starts[1]) = 1000000: must be in [0, "
+    )
     assert_refused(dispkin.JointPath, (Q0, Q0[:3]), ValueError, "q_end size = 3: must equal q_start size 6")
 
 
@@ -279,16 +394,29 @@ def test_report_arrays_must_agree_in_size():
     broken = report_state_with_one_sample_short(report.__getstate__())
     assert_refused(dispkin.JointLimitReport, broken, ValueError, "samples[3].q size = 2: must be 6, as in samples[0]")
     optimal = named("OptimalRetimeResult").__getstate__()
-    assert_refused(dispkin.OptimalRetimeResult, (optimal[0], broken) + optimal[2:], ValueError,
-                   "state[1] (report) samples[3].q size = 2: must be 6")
+    assert_refused(
+        dispkin.OptimalRetimeResult,
+        (optimal[0], broken) + optimal[2:],
+        ValueError,
+        "state[1] (report) samples[3].q size = 2: must be 6",
+    )
     scaled = named("RetimeResult").__getstate__()
     assert_refused(dispkin.RetimeResult, scaled[:3] + (broken,), ValueError, "state[3] (report) samples[3].q size = 2")
-    assert_refused(dispkin.JointLimitReport, replaced(report.__getstate__(), (3,), 9), ValueError,
-                   "velocity_joint = 9: must be -1 (none) or a joint index below 6")
-    assert_refused(dispkin.JointLimitReport, replaced(report.__getstate__(), (4,), 10 ** 9), ValueError,
-                   "state[4] (velocity_sample) = 1000000000: must be in [0, ")
-    assert_refused(dispkin.OptimalRetimeResult, optimal[:8] + (optimal[8][:-1],) + optimal[9:], ValueError,
-                   "grid_speed size = ")
+    assert_refused(
+        dispkin.JointLimitReport,
+        replaced(report.__getstate__(), (3,), 9),
+        ValueError,
+        "velocity_joint = 9: must be -1 (none) or a joint index below 6",
+    )
+    assert_refused(
+        dispkin.JointLimitReport,
+        replaced(report.__getstate__(), (4,), 10**9),
+        ValueError,
+        "state[4] (velocity_sample) = 1000000000: must be in [0, ",
+    )
+    assert_refused(
+        dispkin.OptimalRetimeResult, optimal[:8] + (optimal[8][:-1],) + optimal[9:], ValueError, "grid_speed size = "
+    )
 
 
 def test_broken_report_sizes_do_not_crash_the_interpreter():
@@ -314,26 +442,51 @@ def test_broken_report_sizes_do_not_crash_the_interpreter():
     """)
     here = str(__import__("pathlib").Path(__file__).parent)
     done = subprocess.run([sys.executable, "-c", code, here], capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, f"child exited with {done.returncode} (negative: killed by a signal): {done.stderr[-2000:]}"
+    assert done.returncode == 0, (
+        f"child exited with {done.returncode} (negative: killed by a signal): {done.stderr[-2000:]}"
+    )
     assert done.stdout == "done\n", done.stdout
 
 
 def test_machine_results_must_be_consistent():
     v = named("LegViolation").__getstate__()
     assert_refused(dispkin.LegViolation, replaced(v, (0,), 7), ValueError, "leg = 7: must be a leg index 0 to 5")
-    assert_refused(dispkin.LegViolation, replaced(v, (4,), 2 * v[4]), ValueError, "excess = ", "how far the length lies outside")
+    assert_refused(
+        dispkin.LegViolation, replaced(v, (4,), 2 * v[4]), ValueError, "excess = ", "how far the length lies outside"
+    )
     assert_refused(dispkin.LegViolation, replaced(v, (0,), 1.5), TypeError, "state[0] (leg) = 1.5: must be an int")
     w = named("WorkspaceCheck").__getstate__()
     lengths = tuple(w[0].tolist())
-    assert_refused(dispkin.WorkspaceCheck, ((lengths[0] + 1.0,) + lengths[1:], w[1]), ValueError,
-                   "violations[0].length = ", "must be the length of leg")
+    assert_refused(
+        dispkin.WorkspaceCheck,
+        ((lengths[0] + 1.0,) + lengths[1:], w[1]),
+        ValueError,
+        "violations[0].length = ",
+        "must be the length of leg",
+    )
     e = named("LegExcursion").__getstate__()
-    assert_refused(dispkin.LegExcursion, replaced(e, (0,), "width"), ValueError, "state[0] (kind) = 'width': must be 'length' or 'speed'")
-    assert_refused(dispkin.LegExcursion, replaced(e, (4,), e[3] + 1.0), ValueError, "must have start_time <= worst_time <= end_time")
+    assert_refused(
+        dispkin.LegExcursion,
+        replaced(e, (0,), "width"),
+        ValueError,
+        "state[0] (kind) = 'width': must be 'length' or 'speed'",
+    )
+    assert_refused(
+        dispkin.LegExcursion,
+        replaced(e, (4,), e[3] + 1.0),
+        ValueError,
+        "must have start_time <= worst_time <= end_time",
+    )
     c = named("TrajectoryCheck").__getstate__()
-    assert_refused(dispkin.TrajectoryCheck, (c[1], c[0] - 1.0) + c[2:], ValueError, "min_length = (", "must not exceed max_length")
-    assert_refused(dispkin.TrajectoryCheck, c[:3] + ([e[:3] + (math.nan,) + e[4:]],), ValueError,
-                   "excursions[0].(start_time, end_time, worst_time) = (")
+    assert_refused(
+        dispkin.TrajectoryCheck, (c[1], c[0] - 1.0) + c[2:], ValueError, "min_length = (", "must not exceed max_length"
+    )
+    assert_refused(
+        dispkin.TrajectoryCheck,
+        c[:3] + ([e[:3] + (math.nan,) + e[4:]],),
+        ValueError,
+        "excursions[0].(start_time, end_time, worst_time) = (",
+    )
     assert_refused(dispkin.Hexapod, (42,), TypeError, "state[0] (json) = 42: must be a str")
 
 
@@ -343,7 +496,9 @@ def test_arm_states_name_the_field():
     assert_refused(dispkin.SerialArm, replaced(a, (0,), "<robot"), ValueError)
     limits = a[3]
     swapped = (limits[1], limits[0]) + limits[2:]
-    assert_refused(dispkin.SerialArm, replaced(a, (3,), swapped), ValueError, "(lower, upper) = (", "must have lower < upper")
+    assert_refused(
+        dispkin.SerialArm, replaced(a, (3,), swapped), ValueError, "(lower, upper) = (", "must have lower < upper"
+    )
     j = named("JointLimits").__getstate__()
     assert_refused(dispkin.JointLimits, (j[0], j[1][:2]) + j[2:], ValueError, "upper size = 2: must be the dof 6")
     assert_refused(dispkin.JointLimits, j[:2] + (j[2] * 0.0,) + j[3:], ValueError, "joint 0 velocity = 0: must be > 0")
@@ -362,13 +517,22 @@ FINITE = st.floats(allow_nan=False, allow_infinity=False)
 
 
 @settings(max_examples=60, deadline=None)
-@given(distance=st.floats(1e-3, 10.0), v=st.floats(1e-2, 5.0), a=st.floats(1e-2, 50.0), j=st.floats(0.1, 500.0),
-       ends=st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)), scurve=st.booleans())
+@given(
+    distance=st.floats(1e-3, 10.0),
+    v=st.floats(1e-2, 5.0),
+    a=st.floats(1e-2, 50.0),
+    j=st.floats(0.1, 500.0),
+    ends=st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)),
+    scurve=st.booleans(),
+)
 def test_random_profiles_round_trip_exactly(distance, v, a, j, ends, scurve):
     v_start, v_end = ends[0] * v, ends[1] * v
     try:
-        law = dispkin.Profile.scurve(distance, v, a, j, v_start, v_end) if scurve else \
-            dispkin.Profile.trapezoid(distance, v, a, v_start, v_end)
+        law = (
+            dispkin.Profile.scurve(distance, v, a, j, v_start, v_end)
+            if scurve
+            else dispkin.Profile.trapezoid(distance, v, a, v_start, v_end)
+        )
     except ValueError:
         return  # too short for the boundary velocities
     copied = pickle.loads(pickle.dumps(law))
@@ -378,8 +542,10 @@ def test_random_profiles_round_trip_exactly(distance, v, a, j, ends, scurve):
 
 
 @settings(max_examples=60, deadline=None)
-@given(xyzuvw=st.tuples(*[st.floats(-1e3, 1e3)] * 3, *[st.floats(-math.pi, math.pi)] * 3),
-       limits=st.tuples(st.floats(1e-3, 1e3), st.floats(1e-3, 1e3), st.none() | st.floats(1e-3, 1e3)))
+@given(
+    xyzuvw=st.tuples(*[st.floats(-1e3, 1e3)] * 3, *[st.floats(-math.pi, math.pi)] * 3),
+    limits=st.tuples(st.floats(1e-3, 1e3), st.floats(1e-3, 1e3), st.none() | st.floats(1e-3, 1e3)),
+)
 def test_random_poses_and_limits_round_trip_exactly(xyzuvw, limits):
     p = dispkin.Pose.from_xyzuvw(list(xyzuvw))
     assert pickle.loads(pickle.dumps(p)).__getstate__() == p.__getstate__()

@@ -52,7 +52,8 @@ def test_guarantee_on_a_circ_and_a_cornered_chain():
     limits = dispkin.Limits(0.1, 1.0, 10.0)
     arc = dispkin.Path.circ(pose(0.3, 0, 0), pose(0, 0.3, 0, 0, 0, 30 * DEG), pose(-0.3, 0, 0, 0, 0, 90 * DEG))
     chain = dispkin.Path.lin(pose(0, 0, 0), pose(0.2, 0, 0, 0, 0, 40 * DEG)).then(
-        dispkin.Path.lin(pose(0.2, 0, 0, 0, 0, 40 * DEG), pose(0.2, 0.2, 0, 20 * DEG, 0, 40 * DEG)))
+        dispkin.Path.lin(pose(0.2, 0, 0, 0, 0, 40 * DEG), pose(0.2, 0.2, 0, 20 * DEG, 0, 40 * DEG))
+    )
     for path in (arc, chain):
         traj = dispkin.plan(path, tool, limits)
         assert max_point_speed_sampled(traj, points) <= 0.1 * (1 + 1e-6)
@@ -106,9 +107,30 @@ def test_kdl_eqradius_timing_exceeds_the_limit_dispkin_never_does():
         (lambda: dispkin.Limits(0.0, 1.0), r"^velocity = 0"),
         (lambda: dispkin.Limits(0.1, float("nan")), r"^acceleration = nan"),
         (lambda: dispkin.Limits(0.1, 1.0, -1.0), r"^jerk = -1"),
-        (lambda: dispkin.plan(dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)), tool_sphere(), dispkin.Limits(0.1, 1.0)), r"^jerk is missing"),
-        (lambda: dispkin.plan(dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)), tool_sphere(), dispkin.Limits(0.1, 1.0, 2.0), profile="trapezoid"), r"^jerk = 2"),
-        (lambda: dispkin.plan(dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)), tool_sphere(), dispkin.Limits(0.1, 1.0, 2.0), profile="bang"), r'^profile = "bang"'),
+        (
+            lambda: dispkin.plan(
+                dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)), tool_sphere(), dispkin.Limits(0.1, 1.0)
+            ),
+            r"^jerk is missing",
+        ),
+        (
+            lambda: dispkin.plan(
+                dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)),
+                tool_sphere(),
+                dispkin.Limits(0.1, 1.0, 2.0),
+                profile="trapezoid",
+            ),
+            r"^jerk = 2",
+        ),
+        (
+            lambda: dispkin.plan(
+                dispkin.Path.lin(pose(0, 0, 0), pose(1, 0, 0)),
+                tool_sphere(),
+                dispkin.Limits(0.1, 1.0, 2.0),
+                profile="bang",
+            ),
+            r'^profile = "bang"',
+        ),
     ],
 )
 def test_bad_input(call, message):

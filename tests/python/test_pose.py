@@ -79,7 +79,12 @@ def test_xyzuvw_convention_and_round_trips():
     rng = rng_for("pose-xyzuvw")
     for _ in range(N):
         v = np.concatenate(
-            [rng.uniform(-1, 1, 3), rng.uniform(-np.pi, np.pi, 1), rng.uniform(-np.pi / 2, np.pi / 2, 1), rng.uniform(-np.pi, np.pi, 1)]
+            [
+                rng.uniform(-1, 1, 3),
+                rng.uniform(-np.pi, np.pi, 1),
+                rng.uniform(-np.pi / 2, np.pi / 2, 1),
+                rng.uniform(-np.pi, np.pi, 1),
+            ]
         )
         pivot = rng.uniform(-0.5, 0.5, 3) if rng.random() < 0.5 else np.zeros(3)
         p = dispkin.Pose.from_xyzuvw(v, pivot)
@@ -132,7 +137,14 @@ def test_xyzuvw_at_gimbal_lock_puts_the_whole_rotation_in_u(sign):
 def test_xyzuvw_close_to_gimbal_lock_reproduces_the_pose(delta):
     rng = rng_for(f"pose-near-gimbal-{delta}")
     for _ in range(200):
-        v = np.array([*rng.uniform(-1, 1, 3), rng.uniform(-np.pi, np.pi), rng.choice([-1, 1]) * (np.pi / 2 - delta), rng.uniform(-np.pi, np.pi)])
+        v = np.array(
+            [
+                *rng.uniform(-1, 1, 3),
+                rng.uniform(-np.pi, np.pi),
+                rng.choice([-1, 1]) * (np.pi / 2 - delta),
+                rng.uniform(-np.pi, np.pi),
+            ]
+        )
         p = dispkin.Pose.from_xyzuvw(v)
         back = p.to_xyzuvw()
         assert abs(back[4]) <= np.pi / 2

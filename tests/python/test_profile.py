@@ -115,7 +115,14 @@ def test_scurve_rest_to_rest_matches_ruckig():
     r = Ruckig1()
     for S, v, a, j in zip(*(x.tolist() for x in random_limits(rng, COUNT))):
         ours = dispkin.Profile.scurve(S, v, a, j)
-        assert agrees_with_ruckig(ours, r.plan(S, v, a, j), S, v, a, j) == "equal", (S, v, a, j, ours, r.duration(S, v, a, j))
+        assert agrees_with_ruckig(ours, r.plan(S, v, a, j), S, v, a, j) == "equal", (
+            S,
+            v,
+            a,
+            j,
+            ours,
+            r.duration(S, v, a, j),
+        )
 
 
 def test_trapezoid_rest_to_rest_matches_ruckig():
@@ -124,7 +131,13 @@ def test_trapezoid_rest_to_rest_matches_ruckig():
     S, V, A, _ = (x.tolist() for x in random_limits(rng, COUNT))
     for s, v, a in zip(S, V, A):
         ours = dispkin.Profile.trapezoid(s, v, a)
-        assert agrees_with_ruckig(ours, r.plan(s, v, a, INF), s, v, a, INF) == "equal", (s, v, a, ours, r.duration(s, v, a, INF))
+        assert agrees_with_ruckig(ours, r.plan(s, v, a, INF), s, v, a, INF) == "equal", (
+            s,
+            v,
+            a,
+            ours,
+            r.duration(s, v, a, INF),
+        )
 
 
 def boundary_cases(rng, n, kind):
@@ -240,11 +253,20 @@ def test_phases_and_repr():
         (lambda: dispkin.Profile.trapezoid(1.0, 0.0, 1), r"^v_max = 0: must be finite and greater than zero"),
         (lambda: dispkin.Profile.scurve(1.0, 1, INF, 1), r"^a_max = inf: "),
         (lambda: dispkin.Profile.scurve(1.0, 1, 1, -1), r"^j_max = -1: "),
-        (lambda: dispkin.Profile.scurve(1.0, 1, 1, 1, v_start=2.0), r"^v_start = 2: must be finite and within \[0, v_max = 1\]"),
+        (
+            lambda: dispkin.Profile.scurve(1.0, 1, 1, 1, v_start=2.0),
+            r"^v_start = 2: must be finite and within \[0, v_max = 1\]",
+        ),
         (lambda: dispkin.Profile.trapezoid(1.0, 1, 1, v_end=-0.5), r"^v_end = -0.5: "),
         (lambda: dispkin.Profile.trapezoid(0.1, 1, 1, 1.0, 0.0), r"^distance = 0.1: too short"),
-        (lambda: dispkin.Profile.scurve(1.0, 1, 1, 1).sample([[0.0, 1.0]]), r"^times: expected an array of shape \(N,\), got shape \(1, 2\)"),
-        (lambda: dispkin.Profile.scurve(1.0, 1, 1, 1).sample([0.0, float("nan")]), r"^times\[1\] = nan: must be finite"),
+        (
+            lambda: dispkin.Profile.scurve(1.0, 1, 1, 1).sample([[0.0, 1.0]]),
+            r"^times: expected an array of shape \(N,\), got shape \(1, 2\)",
+        ),
+        (
+            lambda: dispkin.Profile.scurve(1.0, 1, 1, 1).sample([0.0, float("nan")]),
+            r"^times\[1\] = nan: must be finite",
+        ),
     ],
 )
 def test_bad_input(call, match):

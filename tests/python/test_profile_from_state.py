@@ -88,7 +88,11 @@ def is_valid_law(profile, S, v_max, a_max, j_max, v0, a0, v1):
     (S, v1, 0), and 0 <= v <= v_max, |a| <= a_max, |jerk| <= j_max at every phase's extremes."""
     s, v, a, lowest, highest = integrated_end(profile, v0, a0)
     scale = v_max + a_max * profile.duration
-    ok_end = abs(s - S) <= REL * (S + scale * profile.duration) and abs(v - v1) <= REL * scale and abs(a) <= REL * (a_max + j_max * profile.duration)
+    ok_end = (
+        abs(s - S) <= REL * (S + scale * profile.duration)
+        and abs(v - v1) <= REL * scale
+        and abs(a) <= REL * (a_max + j_max * profile.duration)
+    )
     accelerations = [abs(p[4]) for p in profile.phases]
     return (
         ok_end
@@ -143,7 +147,16 @@ def inside_state(rng, stratum):
             return v_max, a_max, j_max, v0, a0, v1, S
 
 
-STRATA = ["anywhere", "near-zero distance", "dip", "v_end = v_max", "a_start = +-a_max", "cut at once", "cruise", "relaxed"]
+STRATA = [
+    "anywhere",
+    "near-zero distance",
+    "dip",
+    "v_end = v_max",
+    "a_start = +-a_max",
+    "cut at once",
+    "cruise",
+    "relaxed",
+]
 
 
 def plan_stratum(rng, stratum):
@@ -218,7 +231,12 @@ def test_inside_the_limits_matches_ruckig(stratum):
     # Ruckig's failures, imprecise and slower laws together below 1 % of the cases.
     assert verdicts["equal"] >= 0.99 * n, verdicts
     # The strata reach the families they are for.
-    wanted = {"cruise": ("cruise", 0.9), "dip": ("trough", 0.1), "relaxed": ("relaxed", 0.15), "anywhere": ("peak", 0.2)}
+    wanted = {
+        "cruise": ("cruise", 0.9),
+        "dip": ("trough", 0.1),
+        "relaxed": ("relaxed", 0.15),
+        "anywhere": ("peak", 0.2),
+    }
     if stratum in wanted:
         name, share = wanted[stratum]
         assert families[name] >= share * n, families
@@ -289,7 +307,13 @@ def test_beyond_the_limits_never_slower_than_ruckig():
 # --- invariants (hypothesis) -------------------------------------------------------------------
 
 limits = st.tuples(
-    st.floats(1e-2, 10), st.floats(1e-2, 100), st.floats(1e-1, 1e4), st.floats(0, 3), st.floats(-3, 3), st.floats(0, 1), st.floats(1e-6, 10)
+    st.floats(1e-2, 10),
+    st.floats(1e-2, 100),
+    st.floats(1e-1, 1e4),
+    st.floats(0, 3),
+    st.floats(-3, 3),
+    st.floats(0, 1),
+    st.floats(1e-6, 10),
 )
 
 
@@ -311,7 +335,11 @@ def test_invariants(case):
     a_bound = max(a_max, abs(a0))
     v_bound = max(v_max, v0, natural(v0, max(a0, 0.0), j_max))
     v_tol = 1e-9 * (v_bound + a_bound * T)
-    assert x[0, 0] == 0.0 and x[0, 1] == pytest.approx(v0, rel=1e-12, abs=1e-15) and x[0, 2] == pytest.approx(a0, rel=1e-12)
+    assert (
+        x[0, 0] == 0.0
+        and x[0, 1] == pytest.approx(v0, rel=1e-12, abs=1e-15)
+        and x[0, 2] == pytest.approx(a0, rel=1e-12)
+    )
     assert tuple(law.sample([T])[0][:3]) == (S, v1, 0.0)
     end_s, end_v, end_a, lowest, highest = integrated_end(law, v0, a0)
     assert end_s == pytest.approx(S, rel=1e-9, abs=1e-9 * v_bound * T)
@@ -327,7 +355,7 @@ def test_invariants(case):
     # v_max; above it, it does not rise again after it started to fall.
     inside = np.flatnonzero((v <= v_max) & (v + np.maximum(a, 0.0) ** 2 / (2 * j_max) <= v_max))
     if inside.size:
-        assert np.all(v[inside[0]:] <= v_max + v_tol)
+        assert np.all(v[inside[0] :] <= v_max + v_tol)
     peak = int(np.argmax(v))
     above = v[peak:][v[peak:] > v_max + v_tol]
     assert np.all(np.diff(above) <= v_tol)
@@ -351,10 +379,19 @@ def test_too_short_names_the_shortfall():
     [
         (lambda: dispkin.Profile.from_state(float("nan"), 1, 1, 1), r"^distance = nan: must be finite"),
         (lambda: dispkin.Profile.from_state(1, 1, 1, 0), r"^j_max = 0: must be finite and greater than zero"),
-        (lambda: dispkin.Profile.from_state(1, 1, 1, 1, v_start=-1.0), r"^v_start = -1: must be finite and not negative"),
+        (
+            lambda: dispkin.Profile.from_state(1, 1, 1, 1, v_start=-1.0),
+            r"^v_start = -1: must be finite and not negative",
+        ),
         (lambda: dispkin.Profile.from_state(1, 1, 1, 1, a_start=float("inf")), r"^a_start = inf: must be finite"),
-        (lambda: dispkin.Profile.from_state(1, 1, 1, 1, v_end=2.0), r"^v_end = 2: must be finite and within \[0, v_max = 1\]"),
-        (lambda: dispkin.Profile.from_state(1, 1, 1, 1, 0.1, -1.0), r"^a_start = -1: brakes too hard for v_start = 0.1"),
+        (
+            lambda: dispkin.Profile.from_state(1, 1, 1, 1, v_end=2.0),
+            r"^v_end = 2: must be finite and within \[0, v_max = 1\]",
+        ),
+        (
+            lambda: dispkin.Profile.from_state(1, 1, 1, 1, 0.1, -1.0),
+            r"^a_start = -1: brakes too hard for v_start = 0.1",
+        ),
         (lambda: dispkin.Profile.trapezoid_from_state(1, 1, 1, float("nan")), r"^v_start = nan: must be finite"),
     ],
 )
@@ -364,7 +401,9 @@ def test_bad_input(call, match):
 
 
 def test_keyword_names():
-    law = dispkin.Profile.from_state(distance=10.0, v_max=1.0, a_max=1.0, jerk=10.0, v_start=2.0, a_start=0.5, v_end=0.0)
+    law = dispkin.Profile.from_state(
+        distance=10.0, v_max=1.0, a_max=1.0, jerk=10.0, v_start=2.0, a_start=0.5, v_end=0.0
+    )
     assert law.kind == "scurve" and law.peak_velocity >= 2.0
     trapezoid = dispkin.Profile.trapezoid_from_state(distance=10.0, v_max=1.0, a_max=1.0, v_start=2.0, v_end=0.0)
     assert trapezoid.duration == pytest.approx(1.0 + (10.0 - 2.0) / 1.0 + 1.0, rel=1e-12)

@@ -116,8 +116,9 @@ def test_joint_limits_bind_and_hold():
     s = dispkin.MetricSet()
     s.add_relative([[0.05, 0, 0], [0, 0.05, 0], [0, 0, 0.05]])
     q_a, q_b = np.zeros(6), np.array([1.0, -0.5, 0.8, 0.3, -0.6, 1.2])
-    traj = dispkin.plan(dispkin.Path.ptp(q_a, q_b), s, dispkin.Limits(5.0, 50.0, 500.0), robot=arm,
-                        joint_acceleration=np.full(6, 1.0))
+    traj = dispkin.plan(
+        dispkin.Path.ptp(q_a, q_b), s, dispkin.Limits(5.0, 50.0, 500.0), robot=arm, joint_acceleration=np.full(6, 1.0)
+    )
     t = np.linspace(0.0, traj.duration, 4001)
     qd, qdd = traj.joint_velocities(t), traj.joint_accelerations(t)
     assert np.abs(qd).max() <= 0.4 * (1 + 1e-9)

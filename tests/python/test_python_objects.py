@@ -41,7 +41,12 @@ def pose(*xyzuvw):
 
 def blended_path():
     """LIN, CIRC and SPLINE moves with blends: every kind of section."""
-    a, b, c, d = pose(0, 0, 0, 0, 0, 0), pose(0.3, 0, 0, 0, 0, 10), pose(0.3, 0.2, 0, 0, 0, 30), pose(0, 0.2, 0.05, 5, 0, 40)
+    a, b, c, d = (
+        pose(0, 0, 0, 0, 0, 0),
+        pose(0.3, 0, 0, 0, 0, 10),
+        pose(0.3, 0.2, 0, 0, 0, 30),
+        pose(0, 0.2, 0.05, 5, 0, 40),
+    )
     path = dispkin.Path.lin(a, b, pivot=(0, 0, 0.1))
     path.then(dispkin.Path.circ(b, pose(0.45, 0.1, 0, 0, 0, 20), c, pivot=(0, 0, 0.1)), blend=0.03)
     path.then(dispkin.Path.spline([c, pose(0.15, 0.25, 0.02, 2, 0, 35), d], pivot=(0, 0, 0.1)), blend=0.02)
@@ -67,7 +72,9 @@ def test_pose_round_trips_bit_for_bit_and_compares_by_value():
     # which the constructor keeps bit for bit).
     turn = dispkin.Pose(quaternion=(0.5, 0.5, 0.5, 0.5), translation=(0.1, 0.2, 0.3))
     flipped = dispkin.Pose(quaternion=(-0.5, -0.5, -0.5, -0.5), translation=(0.1, 0.2, 0.3))
-    assert flipped.quaternion[0] == -0.5 and flipped == turn and hash(flipped) == hash(turn) and len({turn, flipped}) == 1
+    assert (
+        flipped.quaternion[0] == -0.5 and flipped == turn and hash(flipped) == hash(turn) and len({turn, flipped}) == 1
+    )
     np.testing.assert_array_equal(flipped.matrix(), turn.matrix())
     assert (p == "a pose") is False and p != 3
 
@@ -133,7 +140,9 @@ def test_path_round_trips_section_by_section_and_samples_the_same():
         np.testing.assert_array_equal(c.end, joints.end)
 
 
-def assert_same_trajectory(a, b, methods=("sample", "body_twist", "path_position", "path_velocity", "path_acceleration")):
+def assert_same_trajectory(
+    a, b, methods=("sample", "body_twist", "path_position", "path_velocity", "path_acceleration")
+):
     assert a.duration == b.duration
     t = np.linspace(-0.1, a.duration + 0.1, 2003)
     for method in methods:
@@ -174,7 +183,9 @@ def test_joint_trajectory_round_trips_by_planning_again():
     traj = dispkin.plan(path, tool(), dispkin.Limits(0.25, 1.0, 10.0), robot=arm(), joint_acceleration=np.full(6, 4.0))
     for c in round_trips(traj):
         assert type(c) is dispkin.JointTrajectory
-        assert_same_trajectory(c, traj, ("sample", "joint_positions", "joint_velocities", "joint_accelerations", "path_velocity"))
+        assert_same_trajectory(
+            c, traj, ("sample", "joint_positions", "joint_velocities", "joint_accelerations", "path_velocity")
+        )
 
 
 def test_results_round_trip_field_by_field():
@@ -193,8 +204,11 @@ def test_results_round_trip_field_by_field():
     for c in round_trips(tcheck):
         for name in ("min_length", "max_length", "max_speed"):
             np.testing.assert_array_equal(getattr(c, name), getattr(tcheck, name))
-        assert [(e.kind, e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess) for e in c.excursions] == \
-               [(e.kind, e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess) for e in tcheck.excursions]
+        assert [
+            (e.kind, e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess) for e in c.excursions
+        ] == [
+            (e.kind, e.leg, e.start_time, e.end_time, e.worst_time, e.worst_value, e.excess) for e in tcheck.excursions
+        ]
     a = arm()
     found = a.inverse_solutions(a.forward(Q0))
     for c in round_trips(found):
@@ -219,7 +233,9 @@ def test_results_round_trip_field_by_field():
 def test_bad_states_are_refused_with_the_type_named():
     with pytest.raises(ValueError, match=r"^Pose.__setstate__: state: expected a tuple of 2 items"):
         dispkin.Pose.__new__(dispkin.Pose).__setstate__((1, 2, 3))
-    with pytest.raises(ValueError, match=r"^Pose.__setstate__: quaternion \(w, x, y, z\) = \(2, 0, 0, 0\): must be a unit quaternion"):
+    with pytest.raises(
+        ValueError, match=r"^Pose.__setstate__: quaternion \(w, x, y, z\) = \(2, 0, 0, 0\): must be a unit quaternion"
+    ):
         dispkin.Pose.__new__(dispkin.Pose).__setstate__(((2.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
     state = blended_path().__getstate__()
     broken = ((state[0][0],) + state[0][2:], state[1], state[2], state[3][1:], (0,))  # a section left out: a gap
@@ -236,18 +252,27 @@ def test_every_result_type_has_a_repr():
     assert repr(far).startswith("WorkspaceCheck(reachable=False") and f"legs_out_of_range=[{legs}]" in repr(far)
     ms = dispkin.MetricSet()
     h.add_leg_speed_group(ms, 0)
-    tcheck = h.check_trajectory(dispkin.plan(dispkin.Path.lin(h.home, h.home * pose(0.01, 0, 0, 0, 0, 0)), ms,
-                                             dispkin.Limits(0.005, 0.05), "trapezoid"), 1e-3)
+    tcheck = h.check_trajectory(
+        dispkin.plan(
+            dispkin.Path.lin(h.home, h.home * pose(0.01, 0, 0, 0, 0, 0)), ms, dispkin.Limits(0.005, 0.05), "trapezoid"
+        ),
+        1e-3,
+    )
     assert repr(tcheck).startswith("TrajectoryCheck(ok=True, min_length=(") and "excursions=0)" in repr(tcheck)
     a = arm()
     found = a.inverse_solutions(a.forward(Q0))
     n = len(found.solutions)
-    assert repr(found) == f"InverseResult(solutions={n}, within_limits={sum(found.within_limits)}, complete=True, family='{found.family}')"
+    assert (
+        repr(found)
+        == f"InverseResult(solutions={n}, within_limits={sum(found.within_limits)}, complete=True, family='{found.family}')"
+    )
     lin = dispkin.Path.lin(a.forward(Q0), a.forward(Q0) * pose(0, 0, 0, 0, 0, 90))
     scaled = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0, 10.0), a, Q0)
-    assert repr(scaled) == (f"RetimeResult(duration={scaled.trajectory.duration!r}, iterations={scaled.iterations}, "
-                            f"velocity_factor={scaled.report.velocity_factor!r}, "
-                            f"acceleration_factor={scaled.report.acceleration_factor!r})")
+    assert repr(scaled) == (
+        f"RetimeResult(duration={scaled.trajectory.duration!r}, iterations={scaled.iterations}, "
+        f"velocity_factor={scaled.report.velocity_factor!r}, "
+        f"acceleration_factor={scaled.report.acceleration_factor!r})"
+    )
     optimal = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0), a, Q0, profile="trapezoid", method="optimal")
     assert repr(optimal).startswith(f"OptimalRetimeResult(duration={optimal.trajectory.duration!r}, velocity_ratio=")
     for obj in (check, tcheck, found, scaled, optimal, scaled.report, a.joint_limits, far.violations[0]):
@@ -284,8 +309,13 @@ def test_profiles_and_frames_round_trip():
     for law in (dispkin.Profile.trapezoid(0.3, 0.25, 1.0, 0.1, 0.05), dispkin.Profile.scurve(0.3, 0.25, 1.0, 10.0)):
         t = np.linspace(-0.1, law.duration + 0.1, 1001)
         for c in round_trips(law):
-            assert (c.kind, c.duration, c.distance, c.peak_velocity, c.phases) == (law.kind, law.duration, law.distance,
-                                                                                   law.peak_velocity, law.phases)
+            assert (c.kind, c.duration, c.distance, c.peak_velocity, c.phases) == (
+                law.kind,
+                law.duration,
+                law.distance,
+                law.peak_velocity,
+                law.phases,
+            )
             np.testing.assert_array_equal(c.sample(t), law.sample(t))
     frames = dispkin.WorkToolFrames(pose(0, 0, 0.2, 0, 0, 10), pose(0, 0, 0.05, 5, 0, 0))
     for c in round_trips(frames):

@@ -166,7 +166,9 @@ def cursor_states(cursor, times):
     return states
 
 
-@pytest.mark.parametrize("order", ["forward at 1 kHz", "backward", "random", "beyond the ends", "jumps and next cycles"])
+@pytest.mark.parametrize(
+    "order", ["forward at 1 kHz", "backward", "random", "beyond the ends", "jumps and next cycles"]
+)
 def test_the_cursor_gives_the_sampling_methods_numbers_bit_for_bit(traj, order):
     rng = rng_for("cursor_" + order)
     forward = np.arange(0.0, traj.duration + 0.0005, 0.001)
@@ -175,8 +177,13 @@ def test_the_cursor_gives_the_sampling_methods_numbers_bit_for_bit(traj, order):
         "forward at 1 kHz": forward,
         "backward": forward[::-1],
         "random": rng.uniform(0.0, traj.duration, 5000),
-        "beyond the ends": np.concatenate([[-1.0, -1e-300, -0.0, 0.0], traj.duration + np.array([0.0, 1e-9, 1.0, 1e6]),
-                                           [-5.0, traj.duration * 0.5, 1e9]]),
+        "beyond the ends": np.concatenate(
+            [
+                [-1.0, -1e-300, -0.0, 0.0],
+                traj.duration + np.array([0.0, 1e-9, 1.0, 1e6]),
+                [-5.0, traj.duration * 0.5, 1e9],
+            ]
+        ),
         # A jump anywhere, then the next cycle, again and again.
         "jumps and next cycles": np.stack([jumps, jumps + 0.001], axis=1).ravel(),
     }[order]
@@ -186,8 +193,13 @@ def test_the_cursor_gives_the_sampling_methods_numbers_bit_for_bit(traj, order):
     assert cursor.t == times[-1]
     # And those of one number at a time (each found by binary search).
     for t, state in list(zip(times, got))[:: max(1, len(times) // 200)]:
-        one = np.concatenate([traj.sample_xyzuvw(t), traj.body_twist(t),
-                              [traj.path_position(t), traj.path_velocity(t), traj.path_acceleration(t)]])
+        one = np.concatenate(
+            [
+                traj.sample_xyzuvw(t),
+                traj.body_twist(t),
+                [traj.path_position(t), traj.path_velocity(t), traj.path_acceleration(t)],
+            ]
+        )
         np.testing.assert_array_equal(bits(state), bits(one))
 
 
@@ -229,7 +241,9 @@ def test_the_cursor_refuses_a_time_that_is_not_finite_and_an_unusable_out(traj):
         with pytest.raises(ValueError, match=f"^t = {bad}: must be finite"):
             cursor.sample(bad, out)
     assert cursor.t is None and not out.any()
-    with pytest.raises(ValueError, match=r"^out: expected a writeable C-contiguous float64 array of shape \(15,\), got shape \(17,\)$"):
+    with pytest.raises(
+        ValueError, match=r"^out: expected a writeable C-contiguous float64 array of shape \(15,\), got shape \(17,\)$"
+    ):
         cursor.sample(0.1, np.zeros(17))
     with pytest.raises(ValueError, match=r"^out: expected .* of shape \(15,\), got a read-only array$"):
         cursor.sample(0.1, np.frombuffer(bytes(120)))
@@ -257,7 +271,7 @@ def test_a_control_loop_of_cursor_samples_allocates_nothing(traj):
     """10 000 cycles of a 1 kHz loop reusing one `out`: neither the memory traced by tracemalloc
     (numpy reports its array buffers to it) nor the interpreter's count of allocated blocks grows
     with the number of calls, and the traced peak stays within a few objects of the start. A new
-    array per call (without `out`) would not leave the peak so low. """
+    array per call (without `out`) would not leave the peak so low."""
     times = [(k * 0.001) % (traj.duration + 0.5) for k in range(10_000)]  # Python floats, made beforehand
     out = np.empty(Cursor.SIZE)
     sample = traj.cursor().sample
@@ -275,4 +289,3 @@ def test_a_control_loop_of_cursor_samples_allocates_nothing(traj):
     assert abs(traced) <= 512 and abs(traced - few[1]) <= 512, (few, many)
     assert peak <= 512 and peak < fresh[2], (many, fresh)
     assert sys.getrefcount(out) == 2  # no reference to `out` kept by the cursor
-

@@ -54,7 +54,9 @@ class Section:
         rt = np.transpose(r, (0, 2, 1))
         spec = self.spec
         # relative point p: d/dτ (R p + t)
-        rel = np.linalg.norm(np.einsum("nij,kj->nki", dr, spec.relative) + dt[:, None, :], axis=2).max(axis=1, initial=0.0)
+        rel = np.linalg.norm(np.einsum("nij,kj->nki", dr, spec.relative) + dt[:, None, :], axis=2).max(
+            axis=1, initial=0.0
+        )
         # absolute point x: d/dτ Rᵀ (x − t) = dRᵀ (x − t) − Rᵀ dt
         rel_x = spec.absolute[None, :, :] - t[:, None, :]
         absolute = np.einsum("nji,nkj->nki", dr, rel_x) - np.einsum("nij,nj->ni", rt, dt)[:, None, :]

@@ -125,7 +125,10 @@ def test_jacobian_matches_pinocchio(robot):
         j = pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
         assert arm.jacobian(q).shape == (6, arm.dof)
         assert np.abs(arm.jacobian(q) - j).max() <= 1e-9, name
-        assert np.abs(arm.body_jacobian(q) - pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL)).max() <= 1e-9
+        assert (
+            np.abs(arm.body_jacobian(q) - pin.getFrameJacobian(model, data, frame, pin.ReferenceFrame.LOCAL)).max()
+            <= 1e-9
+        )
 
 
 def test_ur5_inverse_is_complete_and_contains_q():
@@ -148,7 +151,10 @@ def test_ur5_inverse_is_complete_and_contains_q():
         assert min(np.abs(s - q).max() for s in arm.inverse(pose, offer_equivalents=True)) <= 1e-9
         for s in solutions:
             assert arm.forward(s).is_approx(pose, 1e-10)
-        assert np.array_equal(arm.nearest(solutions, q + 1e-3), solutions[int(np.argmin([np.linalg.norm(s - q - 1e-3) for s in solutions]))])
+        assert np.array_equal(
+            arm.nearest(solutions, q + 1e-3),
+            solutions[int(np.argmin([np.linalg.norm(s - q - 1e-3) for s in solutions]))],
+        )
 
 
 def test_kinova_jaco2_spherical_wrist_with_continuous_joints():

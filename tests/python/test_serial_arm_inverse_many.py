@@ -58,12 +58,12 @@ def test_inverse_reads_every_form_of_a_pose_alike():
         expected = arm.inverse(dispkin.Pose.from_matrix(m))
         strided = np.stack([m, m], axis=-1)[..., 0]  # float64, neither C nor Fortran order
         assert not strided.flags["C_CONTIGUOUS"] and not strided.flags["F_CONTIGUOUS"]
-        forms = [np.ascontiguousarray(m), np.asfortranarray(m), m.tolist(), m.astype(np.longdouble),
-                 strided]
+        forms = [np.ascontiguousarray(m), np.asfortranarray(m), m.tolist(), m.astype(np.longdouble), strided]
         for form in forms:
             assert np.array_equal(arm.inverse(form), expected)
-        assert np.array_equal(arm.inverse(m, offer_equivalents=True),
-                              arm.inverse(dispkin.Pose.from_matrix(m), offer_equivalents=True))
+        assert np.array_equal(
+            arm.inverse(m, offer_equivalents=True), arm.inverse(dispkin.Pose.from_matrix(m), offer_equivalents=True)
+        )
 
 
 @pytest.mark.parametrize("name", sorted(ARMS))
@@ -89,13 +89,19 @@ def test_inverse_many_of_no_poses_is_an_empty_list():
     assert arm.inverse_many([]) == []
 
 
-@pytest.mark.parametrize("poses, message", [
-    (np.zeros((4, 4)), "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (4, 4)"),
-    (np.zeros((3, 4, 3)), "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (3, 4, 3)"),
-    (np.zeros((2, 16)), "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (2, 16)"),
-    ("poses", "poses: expected an array of shape (N, 4, 4) or a sequence of Poses of numbers, got str"),
-    ([np.eye(4), np.eye(3)], "poses[1]: expected an array of shape (4, 4), got shape (3, 3)"),
-])
+@pytest.mark.parametrize(
+    "poses, message",
+    [
+        (np.zeros((4, 4)), "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (4, 4)"),
+        (
+            np.zeros((3, 4, 3)),
+            "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (3, 4, 3)",
+        ),
+        (np.zeros((2, 16)), "poses: expected an array of shape (N, 4, 4) or a sequence of Poses, got shape (2, 16)"),
+        ("poses", "poses: expected an array of shape (N, 4, 4) or a sequence of Poses of numbers, got str"),
+        ([np.eye(4), np.eye(3)], "poses[1]: expected an array of shape (4, 4), got shape (3, 3)"),
+    ],
+)
 def test_inverse_many_refuses_a_wrong_shape(poses, message):
     with pytest.raises(ValueError) as info:
         arm_named("ur5e").inverse_many(poses)
@@ -111,8 +117,11 @@ def test_inverse_many_names_the_pose_that_is_not_finite_or_not_rigid():
     sheared[0, 1] += 0.1
     bottom = good.copy()
     bottom[3, 0] = 1.0
-    for bad, index, start in [(nan, 2, "poses[2] matrix = ("), (sheared, 1, "poses[1] rotation = ("),
-                              (bottom, 0, "poses[0] matrix last row = (1, 0, 0, 1)")]:
+    for bad, index, start in [
+        (nan, 2, "poses[2] matrix = ("),
+        (sheared, 1, "poses[1] rotation = ("),
+        (bottom, 0, "poses[0] matrix last row = (1, 0, 0, 1)"),
+    ]:
         poses = [good, good, good]
         poses[index] = bad
         for given in (np.array(poses), poses):

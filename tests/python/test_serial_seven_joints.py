@@ -129,8 +129,8 @@ def test_solution_sets_match_ik_geo_on_the_chain_left(arm):
     # The reversed chain: axes 6, 5, …, 1 seen from the tip at q = 0; tip M⁻¹.
     h = np.array([m_inv[:3, :3] @ axes[5 - k] for k in range(6)])
     p_rev = np.array([m_inv[:3, :3] @ points[5 - k] + m_inv[:3, 3] for k in range(6)])
-    wrist = meeting_point(p_rev[3:], h[3:])      # the arm's shoulder
-    first = meeting_point(p_rev[:2], h[:2])      # axes 6 and 5 of the arm
+    wrist = meeting_point(p_rev[3:], h[3:])  # the arm's shoulder
+    first = meeting_point(p_rev[:2], h[:2])  # axes 6 and 5 of the arm
     on_axis = [first, first, p_rev[2], wrist, wrist, wrist]
     p = np.array([on_axis[0]] + [on_axis[k + 1] - on_axis[k] for k in range(5)] + [m_inv[:3, 3] - wrist])
     solver = ik_geo.Robot.spherical_two_intersecting(h, p)
@@ -145,7 +145,9 @@ def test_solution_sets_match_ik_geo_on_the_chain_left(arm):
         found = solver.get_ik((target_rev[:3, :3] @ m[:3, :3]).T, target_rev[:3, 3])
         theirs = [np.append(-np.array(x)[::-1], theta) for x, least_squares in found if not least_squares]
         theirs = [x for x in theirs if np.abs(arm.forward(x).matrix() - pose).max() <= 1e-8]
-        ours = arm.inverse_solutions(dispkin.Pose.from_matrix(pose), keep_outside_limits=True, redundancy=theta).solutions
+        ours = arm.inverse_solutions(
+            dispkin.Pose.from_matrix(pose), keep_outside_limits=True, redundancy=theta
+        ).solutions
         assert len(ours) == len(theirs), (q, len(ours), len(theirs))
         for x in theirs:
             assert min(np.abs(wrapped(s - x)).max() for s in ours) <= 1e-6
@@ -421,9 +423,11 @@ def random_7r_urdf(rng):
     for k in range(7):
         xyz = " ".join(f"{v:.6f}" for v in rng.uniform(-0.2, 0.2, 3) + np.array([0.0, 0.0, 0.15]))
         rpy = " ".join(f"{v:.6f}" for v in rng.uniform(-np.pi, np.pi, 3))
-        joints += (f'<joint name="j{k + 1}" type="revolute"><parent link="l{k}"/><child link="l{k + 1}"/>'
-                   f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="0 0 1"/>'
-                   f'<limit lower="-2.9" upper="2.9" effort="100" velocity="2"/></joint>')
+        joints += (
+            f'<joint name="j{k + 1}" type="revolute"><parent link="l{k}"/><child link="l{k + 1}"/>'
+            f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="0 0 1"/>'
+            f'<limit lower="-2.9" upper="2.9" effort="100" velocity="2"/></joint>'
+        )
     return f'<robot name="random_7r">{links}{joints}</robot>'
 
 

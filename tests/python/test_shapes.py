@@ -17,7 +17,13 @@ def icosahedron_faces(v):
     d = np.linalg.norm(v[:, None] - v[None], axis=2)
     edge = np.min(d[d > 0])
     adjacent = np.abs(d - edge) <= 1e-12 * edge
-    return [(i, j, k) for i in range(12) for j in range(i + 1, 12) for k in range(j + 1, 12) if adjacent[i, j] and adjacent[j, k] and adjacent[i, k]]
+    return [
+        (i, j, k)
+        for i in range(12)
+        for j in range(i + 1, 12)
+        for k in range(j + 1, 12)
+        if adjacent[i, j] and adjacent[j, k] and adjacent[i, k]
+    ]
 
 
 def test_inscribed_icosahedron_has_its_vertices_on_the_sphere():
@@ -28,7 +34,9 @@ def test_inscribed_icosahedron_has_its_vertices_on_the_sphere():
     faces = icosahedron_faces(v - center)
     assert len(faces) == 20  # regular: 30 equal edges, 20 equilateral faces
     d = np.linalg.norm((v - center)[:, None] - (v - center)[None], axis=2)
-    assert np.isclose(np.min(d[d > 0]), radius * 4 / math.sqrt(10 + 2 * math.sqrt(5)), rtol=1e-14)  # edge of a regular icosahedron
+    assert np.isclose(
+        np.min(d[d > 0]), radius * 4 / math.sqrt(10 + 2 * math.sqrt(5)), rtol=1e-14
+    )  # edge of a regular icosahedron
 
 
 def test_circumscribed_icosahedron_has_its_faces_touching_the_sphere():
@@ -40,7 +48,9 @@ def test_circumscribed_icosahedron_has_its_faces_touching_the_sphere():
     for i, j, k in faces:
         n = np.cross(v[j] - v[i], v[k] - v[i])
         assert abs(abs(n @ v[i]) / np.linalg.norm(n) - radius) <= 1e-15
-    assert np.linalg.norm(v, axis=1) / radius == pytest.approx(np.full(12, 1.2584), abs=5e-5)  # doc/disp-metric.md eq. 26
+    assert np.linalg.norm(v, axis=1) / radius == pytest.approx(
+        np.full(12, 1.2584), abs=5e-5
+    )  # doc/disp-metric.md eq. 26
 
 
 @pytest.mark.parametrize("k", [0, 1, 2, 3])
@@ -100,7 +110,13 @@ def test_sphere_approximation_errors_bounds_and_values():
     exact_reference = sphere_speed_reference(twists, centers, radii, rng)
     for i in range(n):
         errors = shapes.sphere_approximation_errors(twists[i], radii[i], centers[i], subdivisions=(1, 2, 3))
-        assert list(errors) == ["icosahedron_inscribed", "icosahedron_circumscribed", "icosphere_1", "icosphere_2", "icosphere_3"]
+        assert list(errors) == [
+            "icosahedron_inscribed",
+            "icosahedron_circumscribed",
+            "icosphere_1",
+            "icosphere_2",
+            "icosphere_3",
+        ]
         # independently: fastest vertex speed in numpy over the surface maximum found here
         for name, vertices in [
             ("icosahedron_inscribed", shapes.icosahedron(radii[i], centers[i], circumscribed=False)),

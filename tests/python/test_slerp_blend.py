@@ -31,7 +31,12 @@ def tool():
     return s
 
 
-A, VIA, B, C = pose(0, 0, 0, 0, 0, 0), pose(0.3, 0, 0.05, 10, 0, 40), pose(0.35, 0.25, 0, 0, 20, 90), pose(0.1, 0.3, 0.1, 30, 0, 60)
+A, VIA, B, C = (
+    pose(0, 0, 0, 0, 0, 0),
+    pose(0.3, 0, 0.05, 10, 0, 40),
+    pose(0.35, 0.25, 0, 0, 20, 90),
+    pose(0.1, 0.3, 0.1, 30, 0, 60),
+)
 
 
 def test_orientation_is_the_articles_nested_slerp_and_the_pivot_a_quadratic_bezier():
@@ -102,8 +107,12 @@ def test_bad_blend_arguments_name_the_argument(kwargs, name):
 
 def test_nested_slerp_needs_decoupled_lins_at_both_sub_points():
     with pytest.raises(ValueError, match="next"):
-        dispkin.Path.lin(A, VIA).then(dispkin.Path.circ(VIA, pose(0.4, 0.1), B), weight=0.3, orientation_blend="nested_slerp")
+        dispkin.Path.lin(A, VIA).then(
+            dispkin.Path.circ(VIA, pose(0.4, 0.1), B), weight=0.3, orientation_blend="nested_slerp"
+        )
     with pytest.raises(ValueError, match="decoupled LIN"):
         dispkin.Path.lin(A, VIA).then(dispkin.Path.lin(VIA, B, "screw"), weight=0.3, orientation_blend="nested_slerp")
     with pytest.raises(ValueError, match="orientation_blend"):
-        dispkin.Path.circ(A, pose(0.2, -0.05), VIA).then(dispkin.Path.lin(VIA, B), weight=0.3, orientation_blend="nested_slerp")
+        dispkin.Path.circ(A, pose(0.2, -0.05), VIA).then(
+            dispkin.Path.lin(VIA, B), weight=0.3, orientation_blend="nested_slerp"
+        )

@@ -48,7 +48,9 @@ def test_sphere_speed_never_below_surface_samples_and_reaches_their_maximum():
     exact = np.array([dispkin.sphere_speed(x, c, r) for x, c, r in zip(twists, centers, radii)])
     # Uniform samples: one set of 10^5 random directions, turned by a random rotation per case.
     directions = unit_vectors(rng, SURFACE_SAMPLES)
-    turns = [rotation_vector_matrix(w) for w in unit_vectors(rng, SAMPLED_CASES) * rng.uniform(0, np.pi, (SAMPLED_CASES, 1))]
+    turns = [
+        rotation_vector_matrix(w) for w in unit_vectors(rng, SAMPLED_CASES) * rng.uniform(0, np.pi, (SAMPLED_CASES, 1))
+    ]
     columns = [np.ascontiguousarray(directions[:, j]) for j in range(3)]
     best_sample = np.empty(SAMPLED_CASES)
     best_directions = np.empty((SAMPLED_CASES, 8, 3))
@@ -75,9 +77,17 @@ def test_sphere_speed_within_1e6_of_refined_surface_maximum_on_all_cases():
     exact = np.array([dispkin.sphere_speed(x, c, r) for x, c, r in zip(twists, centers, radii)])
     refined = sphere_speed_reference(twists, centers, radii, rng)
     worst_low = np.argmin(exact / refined)
-    assert exact[worst_low] >= refined[worst_low] * (1 - ROUNDING), (twists[worst_low], centers[worst_low], radii[worst_low])
+    assert exact[worst_low] >= refined[worst_low] * (1 - ROUNDING), (
+        twists[worst_low],
+        centers[worst_low],
+        radii[worst_low],
+    )
     worst_high = np.argmax(exact / refined)
-    assert exact[worst_high] <= refined[worst_high] * (1 + 1e-6), (twists[worst_high], centers[worst_high], radii[worst_high])
+    assert exact[worst_high] <= refined[worst_high] * (1 + 1e-6), (
+        twists[worst_high],
+        centers[worst_high],
+        radii[worst_high],
+    )
 
 
 def test_sphere_speed_special_values():

@@ -25,7 +25,9 @@ def grid_optimum(segments, a_max, j_max, start, n=100):
     s = np.linspace(0.0, edges[-1], n + 1)
     ds = edges[-1] / n
     # A node's limit is the lower one of the segments it touches.
-    cap = np.array([min(limits[k] for k in range(len(limits)) if edges[k] - 1e-12 <= x <= edges[k + 1] + 1e-12) for x in s])
+    cap = np.array(
+        [min(limits[k] for k in range(len(limits)) if edges[k] - 1e-12 <= x <= edges[k + 1] + 1e-12) for x in s]
+    )
     upper = cap**2
     upper[0] = upper[-1] = 0.0
 
@@ -50,10 +52,15 @@ def grid_optimum(segments, a_max, j_max, start, n=100):
         ends = [j_max * 0.5 * dt[0] - abs(a[0]), j_max * 0.5 * dt[-1] - abs(a[-1])]
         return np.concatenate([a_max - a, a_max + a, j_max * gap - jump, j_max * gap + jump, ends])
 
-    result = scipy_optimize.minimize(duration, np.minimum(start(s), upper), jac=gradient, method="SLSQP",
-                                     bounds=list(zip(np.zeros(n + 1), upper)),
-                                     constraints=[{"type": "ineq", "fun": constraints}],
-                                     options={"maxiter": 400, "ftol": 1e-12})
+    result = scipy_optimize.minimize(
+        duration,
+        np.minimum(start(s), upper),
+        jac=gradient,
+        method="SLSQP",
+        bounds=list(zip(np.zeros(n + 1), upper)),
+        constraints=[{"type": "ineq", "fun": constraints}],
+        options={"maxiter": 400, "ftol": 1e-12},
+    )
     assert np.all(constraints(result.x) >= -1e-6 * max(a_max, 1.0)), "the reference must keep its own limits"
     return result.fun
 
@@ -80,7 +87,9 @@ def test_staircase_law_is_near_the_grid_optimum(seed):
     ours = sum(law.duration for law in laws)
     chain = sum(law.duration for law in dispkin.velocity_limited_chain(segments, a_max=a_max, j_max=j_max))
     optimum = grid_optimum(segments, a_max, j_max, squared_velocity(laws))
-    print(f"seed {seed}: chain {chain:.5f} s, law {ours:.5f} s, grid optimum {optimum:.5f} s, law / optimum {ours / optimum:.4f}")
+    print(
+        f"seed {seed}: chain {chain:.5f} s, law {ours:.5f} s, grid optimum {optimum:.5f} s, law / optimum {ours / optimum:.4f}"
+    )
     # The reference is an optimum: dispkin's law is not faster than it beyond the grid's error...
     assert ours >= optimum * (1 - 5e-3)
     # ...and the greedy law stays within a few percent of it (measured: 0.3–3.8 % on random

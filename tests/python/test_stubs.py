@@ -46,7 +46,8 @@ def generate(directory):
     (e.g. a C++ type in a signature, which means a binding registered in the wrong order)."""
     result = subprocess.run(
         [sys.executable, "-m", "pybind11_stubgen", "--exit-code", "-o", str(directory), "dispkin._core"],
-        capture_output=True, text=True,
+        capture_output=True,
+        text=True,
     )
     assert result.returncode == 0, result.stdout + result.stderr
     package = pathlib.Path(directory) / "dispkin" / "_core"
@@ -96,8 +97,13 @@ def members(body, prefix, in_class):
             if any(n.endswith(".setter") for n in names):
                 out[key]["setter"] = True
                 continue
-            kind = "property" if "property" in names else "staticmethod" if "staticmethod" in names else (
-                "method" if in_class else "function")
+            kind = (
+                "property"
+                if "property" in names
+                else "staticmethod"
+                if "staticmethod" in names
+                else ("method" if in_class else "function")
+            )
             entry = out.setdefault(key, {"kind": kind, "signatures": [], "setter": False})
             assert entry["kind"] == kind, key
             entry["signatures"].append(parameters(node, drop_self=in_class and kind != "staticmethod"))
@@ -157,8 +163,10 @@ def mismatches(generated, hand):
             problems.append(f"{name}: setter in the module: {g['setter']}, in _core.pyi: {h['setter']}")
         for signature in g["signatures"]:
             if not any(same_parameters(signature, other) for other in h["signatures"]):
-                problems.append(f"{name}: module signature {format_signature(signature)} not in _core.pyi "
-                                f"({', '.join(format_signature(s) for s in h['signatures'])})")
+                problems.append(
+                    f"{name}: module signature {format_signature(signature)} not in _core.pyi "
+                    f"({', '.join(format_signature(s) for s in h['signatures'])})"
+                )
         for signature in h["signatures"]:
             if not any(same_parameters(other, signature) for other in g["signatures"]):
                 problems.append(f"{name}: _core.pyi signature {format_signature(signature)} not in the module")

@@ -43,9 +43,11 @@ def path(arm):
     a = arm.forward(Q0)
     t = np.asarray(a.translation)
     at = lambda dx, dy, dz: dispkin.Pose(a.quaternion, t + np.array([dx, dy, dz]))  # noqa: E731
-    return (dispkin.Path.lin(a, at(0.1, 0.0, 0.0))
-            .then(dispkin.Path.circ(at(0.1, 0.0, 0.0), at(0.15, 0.05, 0.0), at(0.1, 0.1, 0.0)), blend=0.02)
-            .then(dispkin.Path.lin(at(0.1, 0.1, 0.0), at(0.0, 0.1, -0.05)), blend=0.02))
+    return (
+        dispkin.Path.lin(a, at(0.1, 0.0, 0.0))
+        .then(dispkin.Path.circ(at(0.1, 0.0, 0.0), at(0.15, 0.05, 0.0), at(0.1, 0.1, 0.0)), blend=0.02)
+        .then(dispkin.Path.lin(at(0.1, 0.1, 0.0), at(0.0, 0.1, -0.05)), blend=0.02)
+    )
 
 
 LIMITS = dispkin.Limits(1.0, 10.0, 100.0)
@@ -74,7 +76,8 @@ def retime_and_check():
     result = dispkin.retime(path(arm), tool(), dispkin.Limits(3.0, 100.0, 4000.0), arm, Q0)
     report = dispkin.check_joint_limits(result.trajectory, arm, Q0)
     return [np.array([result.trajectory.duration, report.velocity_factor, report.acceleration_factor])] + [
-        report.samples[key] for key in ("q", "qd", "qdd", "static_torque", "dynamic_torque")]
+        report.samples[key] for key in ("q", "qd", "qdd", "static_torque", "dynamic_torque")
+    ]
 
 
 def ptp_plan():
@@ -157,47 +160,87 @@ def long_calls():
     traj = dispkin.plan(p, tool(), LIMITS)
     move = dispkin.plan(dispkin.Path.ptp(Q0, Q0 + 0.5), tool(), LIMITS, robot=arm)
     hexapod = dispkin.Hexapod.symmetric(0.15, np.radians(20), 0.10, np.radians(20), 0.20, 0.15, 0.32, 0.01)
-    hex_path = dispkin.Path.lin(hexapod.home, dispkin.Pose.from_xyzuvw([0.02, 0.01, 0.01, 0.05, 0.0, 0.1]) * hexapod.home)
+    hex_path = dispkin.Path.lin(
+        hexapod.home, dispkin.Pose.from_xyzuvw([0.02, 0.01, 0.01, 0.05, 0.0, 0.1]) * hexapod.home
+    )
     hex_traj = dispkin.plan(hex_path, tool(), dispkin.Limits(0.05, 0.5, 5.0))
     poses = ik_poses(arm, 2000)
     times = np.linspace(0.0, traj.duration, 20000)
     cloud = rng_for("threads-cloud").normal(size=(20000, 3))
     a, b = p.start, p.end
     follow_poses = [p.sample(u) for u in np.linspace(0.0, 1.0, 1000)]
-    return dict([
-        ("plan", lambda: dispkin.plan(p, big, LIMITS)),
-        ("plan with corner_tolerance", lambda: dispkin.plan(p, big, LIMITS, corner_tolerance=0.01)),
-        ("plan with a Hexapod joint metric", lambda: dispkin.plan(hex_path, big, dispkin.Limits(0.05, 0.5, 5.0), joint_metric=hexapod)),
-        ("plan PTP", lambda: dispkin.plan(dispkin.Path.ptp(Q0, Q0 + 0.5), big, LIMITS, robot=arm)),
-        ("retime", lambda: dispkin.retime(p, tool(), dispkin.Limits(3.0, 100.0, 4000.0), arm, Q0)),
-        ("retime optimal", lambda: dispkin.retime(p, tool(), dispkin.Limits(3.0, 100.0), arm, Q0, profile="trapezoid",
-                                                  method="optimal", grid_intervals=50)),
-        ("check_joint_limits", lambda: dispkin.check_joint_limits(traj, arm, Q0, samples_between=200)),
-        ("SerialArm.check_joint_limits", lambda: arm.check_joint_limits(move, np.linspace(0.0, move.duration, 5000))),
-        ("SerialArm.inverse_many", lambda: arm.inverse_many(poses)),
-        ("SerialArm.inverse with the 2π copies", lambda: arm.inverse(poses[0], offer_equivalents=True)),
-        ("SerialArm.follow", lambda: arm.follow(follow_poses, Q0)),
-        ("SerialArm.follow_trajectory", lambda: arm.follow_trajectory(traj, times[::10], Q0)),
-        ("Trajectory.sample", lambda: traj.sample(times)),
-        ("JointTrajectory.sample", lambda: move.joint_positions(times)),
-        ("Path.sample", lambda: p.sample(np.linspace(0.0, 1.0, 20000))),
-        ("Path.section_lengths", lambda: p.section_lengths(big)),
-        ("section_length", lambda: dispkin.section_length(big, a, b)),
-        ("disp_distance", lambda: dispkin.disp_distance(big, a, b)),
-        ("convex_hull_vertices", lambda: dispkin.convex_hull_vertices(cloud)),
-        ("MetricSet.reduce_to_hull", lambda: big.reduce_to_hull()),
-        ("Hexapod.check", lambda: hexapod.check(hex_traj, 1e-5)),
-        ("Hexapod.leg_section_lengths", lambda: hexapod.leg_section_lengths(hex_path, 0.05)),
-        ("retime Hexapod", lambda: dispkin.retime(hex_path, tool(), dispkin.Limits(0.05, 0.5), hexapod)),
-    ])
+    return dict(
+        [
+            ("plan", lambda: dispkin.plan(p, big, LIMITS)),
+            ("plan with corner_tolerance", lambda: dispkin.plan(p, big, LIMITS, corner_tolerance=0.01)),
+            (
+                "plan with a Hexapod joint metric",
+                lambda: dispkin.plan(hex_path, big, dispkin.Limits(0.05, 0.5, 5.0), joint_metric=hexapod),
+            ),
+            ("plan PTP", lambda: dispkin.plan(dispkin.Path.ptp(Q0, Q0 + 0.5), big, LIMITS, robot=arm)),
+            ("retime", lambda: dispkin.retime(p, tool(), dispkin.Limits(3.0, 100.0, 4000.0), arm, Q0)),
+            (
+                "retime optimal",
+                lambda: dispkin.retime(
+                    p,
+                    tool(),
+                    dispkin.Limits(3.0, 100.0),
+                    arm,
+                    Q0,
+                    profile="trapezoid",
+                    method="optimal",
+                    grid_intervals=50,
+                ),
+            ),
+            ("check_joint_limits", lambda: dispkin.check_joint_limits(traj, arm, Q0, samples_between=200)),
+            (
+                "SerialArm.check_joint_limits",
+                lambda: arm.check_joint_limits(move, np.linspace(0.0, move.duration, 5000)),
+            ),
+            ("SerialArm.inverse_many", lambda: arm.inverse_many(poses)),
+            ("SerialArm.inverse with the 2π copies", lambda: arm.inverse(poses[0], offer_equivalents=True)),
+            ("SerialArm.follow", lambda: arm.follow(follow_poses, Q0)),
+            ("SerialArm.follow_trajectory", lambda: arm.follow_trajectory(traj, times[::10], Q0)),
+            ("Trajectory.sample", lambda: traj.sample(times)),
+            ("JointTrajectory.sample", lambda: move.joint_positions(times)),
+            ("Path.sample", lambda: p.sample(np.linspace(0.0, 1.0, 20000))),
+            ("Path.section_lengths", lambda: p.section_lengths(big)),
+            ("section_length", lambda: dispkin.section_length(big, a, b)),
+            ("disp_distance", lambda: dispkin.disp_distance(big, a, b)),
+            ("convex_hull_vertices", lambda: dispkin.convex_hull_vertices(cloud)),
+            ("MetricSet.reduce_to_hull", lambda: big.reduce_to_hull()),
+            ("Hexapod.check", lambda: hexapod.check(hex_traj, 1e-5)),
+            ("Hexapod.leg_section_lengths", lambda: hexapod.leg_section_lengths(hex_path, 0.05)),
+            ("retime Hexapod", lambda: dispkin.retime(hex_path, tool(), dispkin.Limits(0.05, 0.5), hexapod)),
+        ]
+    )
 
 
-LONG_CALLS = ["plan", "plan with corner_tolerance", "plan with a Hexapod joint metric", "plan PTP", "retime",
-              "retime optimal", "check_joint_limits", "SerialArm.check_joint_limits", "SerialArm.inverse_many",
-              "SerialArm.inverse with the 2π copies", "SerialArm.follow", "SerialArm.follow_trajectory",
-              "Trajectory.sample", "JointTrajectory.sample", "Path.sample", "Path.section_lengths", "section_length",
-              "disp_distance", "convex_hull_vertices", "MetricSet.reduce_to_hull", "Hexapod.check",
-              "Hexapod.leg_section_lengths", "retime Hexapod"]
+LONG_CALLS = [
+    "plan",
+    "plan with corner_tolerance",
+    "plan with a Hexapod joint metric",
+    "plan PTP",
+    "retime",
+    "retime optimal",
+    "check_joint_limits",
+    "SerialArm.check_joint_limits",
+    "SerialArm.inverse_many",
+    "SerialArm.inverse with the 2π copies",
+    "SerialArm.follow",
+    "SerialArm.follow_trajectory",
+    "Trajectory.sample",
+    "JointTrajectory.sample",
+    "Path.sample",
+    "Path.section_lengths",
+    "section_length",
+    "disp_distance",
+    "convex_hull_vertices",
+    "MetricSet.reduce_to_hull",
+    "Hexapod.check",
+    "Hexapod.leg_section_lengths",
+    "retime Hexapod",
+]
 
 
 def test_every_long_call_is_checked(long_calls):
@@ -289,4 +332,3 @@ def test_the_mark_goes_when_a_released_call_fails():
     empty.add_relative([[0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1]])  # no longer marked
     line.then(dispkin.Path.lin(line.sample(1.0), dispkin.Pose.from_xyzuvw([0.2, 0, 0, 0, 0, 0])))
     assert len(line) == 2
-

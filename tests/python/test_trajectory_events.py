@@ -30,14 +30,19 @@ def tool():
 def paths():
     """A LIN, a CIRC, a cornered chain and a blended pose list: stops inside laws of every kind."""
     chain = dispkin.Path.lin(pose(0, 0, 0), pose(0.3, 0, 0, 0, 0, 40 * DEG)).then(
-        dispkin.Path.lin(pose(0.3, 0, 0, 0, 0, 40 * DEG), pose(0.3, 0.25, 0.1, 20 * DEG, 0, 40 * DEG)))
+        dispkin.Path.lin(pose(0.3, 0, 0, 0, 0, 40 * DEG), pose(0.3, 0.25, 0.1, 20 * DEG, 0, 40 * DEG))
+    )
     poses = [pose(0.1 * k, 0.05 * (k % 2), 0.0, 0.0, 0.0, 5 * DEG * k) for k in range(8)]
     blended = dispkin.Path.lin(poses[0], poses[1])
     for p, q in zip(poses[1:], poses[2:]):
         blended = blended.then(dispkin.Path.lin(p, q))
     return [
         ("lin", dispkin.Path.lin(pose(0, 0, 0), pose(0.5, 0.2, 0, 0, 0, 60 * DEG)), 0.0),
-        ("circ", dispkin.Path.circ(pose(0, 0, 0), pose(0.2, 0.2, 0, 0, 0, 15 * DEG), pose(0.4, 0, 0, 0, 0, 30 * DEG)), 0.0),
+        (
+            "circ",
+            dispkin.Path.circ(pose(0, 0, 0), pose(0.2, 0.2, 0, 0, 0, 15 * DEG), pose(0.4, 0, 0, 0, 0, 30 * DEG)),
+            0.0,
+        ),
         ("chain", chain, 0.0),
         ("blended chain", blended, 0.01),
     ]
@@ -46,7 +51,12 @@ def paths():
 def plans():
     for name, path, tolerance in paths():
         for profile, limits in (("scurve", dispkin.Limits(0.4, 2.0, 15.0)), ("trapezoid", dispkin.Limits(0.4, 2.0))):
-            yield name + " " + profile, path, profile, dispkin.plan(path, tool(), limits, profile, corner_tolerance=tolerance)
+            yield (
+                name + " " + profile,
+                path,
+                profile,
+                dispkin.plan(path, tool(), limits, profile, corner_tolerance=tolerance),
+            )
 
 
 PLANS = list(plans())
@@ -160,12 +170,15 @@ def test_an_older_state_loads_without_limits_and_refuses_events():
         older.stopped_at(0.1)
 
 
-@pytest.mark.parametrize("call, message", [
-    (lambda t: t.with_override(0.1, 0.0), r"^factor = 0: must be in \[0\.001, 10\]"),
-    (lambda t: t.with_override(0.1, math.inf), r"^factor = inf"),
-    (lambda t: t.stopped_at(math.nan), r"^t = nan: must be finite"),
-    (lambda t: t.resumed_at(0.1), r"^t = 0\.1: resumes a stopped trajectory only"),
-])
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda t: t.with_override(0.1, 0.0), r"^factor = 0: must be in \[0\.001, 10\]"),
+        (lambda t: t.with_override(0.1, math.inf), r"^factor = inf"),
+        (lambda t: t.stopped_at(math.nan), r"^t = nan: must be finite"),
+        (lambda t: t.resumed_at(0.1), r"^t = 0\.1: resumes a stopped trajectory only"),
+    ],
+)
 def test_bad_events_are_refused_naming_the_argument(call, message):
     with pytest.raises(ValueError, match=message):
         call(PLANS[0][3])
@@ -213,5 +226,7 @@ def test_a_plan_from_a_moving_state_is_ruckigs_law_along_a_straight_move():
     with pytest.raises(ValueError, match="start_acceleration = -2: brakes harder than the jerk limit"):
         dispkin.plan(path, points, limits, start_velocity=0.01, start_acceleration=-2.0)
     rest = dispkin.plan(path, points, limits)
-    assert rest.starting_from(0.2, 1.0).duration == dispkin.plan(path, points, limits, start_velocity=0.2,
-                                                                 start_acceleration=1.0).duration
+    assert (
+        rest.starting_from(0.2, 1.0).duration
+        == dispkin.plan(path, points, limits, start_velocity=0.2, start_acceleration=1.0).duration
+    )

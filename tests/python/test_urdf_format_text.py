@@ -17,8 +17,16 @@ pytestmark = pytest.mark.skipif(not hasattr(dispkin, "SerialArm"), reason="built
 
 # Spellings of '%' as TinyXML decodes them: its decimal and hexadecimal multipliers are 32-bit
 # and wrap (16⁸ = 2³² ≡ 0), leading zeros are read without limit, 'X' is not a hex marker.
-PERCENT = ["%", "&#37;", "&#x25;", "&#0000000000000000000000000000037;", "&#x00000000000000000000000025;",
-           "&#x100000025;", "&#xABCDEF0100000025;", "&#x1234567800000025;"]
+PERCENT = [
+    "%",
+    "&#37;",
+    "&#x25;",
+    "&#0000000000000000000000000000037;",
+    "&#x00000000000000000000000025;",
+    "&#x100000025;",
+    "&#xABCDEF0100000025;",
+    "&#x1234567800000025;",
+]
 
 # Where urdfdom builds messages from the text: names, attribute values it fails to read, text.
 PLACES = {
@@ -26,9 +34,10 @@ PLACES = {
     "joint origin": lambda p: planar_urdf(joint_origin=f"0 0 0.1{p}n"),
     "joint type": lambda p: planar_urdf().replace('type="revolute"', f'type="rev{p}s"', 1),
     "robot attribute": lambda p: planar_urdf(robot_attributes=f' version="1.{p}n"'),
-    "material name": lambda p: planar_urdf().replace('<link name="base"/>',
-                                                      f'<link name="base"><visual><geometry><box size="1 1 1"/></geometry>'
-                                                      f'<material name="m{p}s"/></visual></link>'),
+    "material name": lambda p: planar_urdf().replace(
+        '<link name="base"/>',
+        f'<link name="base"><visual><geometry><box size="1 1 1"/></geometry><material name="m{p}s"/></visual></link>',
+    ),
     "element text": lambda p: planar_urdf().replace('<link name="base"/>', f'<link name="base">{p}n{p}n</link>'),
 }
 
@@ -57,19 +66,23 @@ def test_the_low_byte_of_a_latin1_reference_is_refused():
 
 
 def test_cdata_text_is_refused():
-    message = refusal_in_child(from_urdf_call(planar_urdf().replace('<link name="base"/>',
-                                                                    '<link name="base"><![CDATA[%n%s]]></link>')))
+    message = refusal_in_child(
+        from_urdf_call(planar_urdf().replace('<link name="base"/>', '<link name="base"><![CDATA[%n%s]]></link>'))
+    )
     assert 'text = "%n%s"' in message, message
 
 
 def test_a_percent_sign_in_a_comment_is_read():
-    arm = dispkin.SerialArm.from_urdf(planar_urdf().replace("<link name=\"base\"/>",
-                                                                   "<!-- 100% steel, &#37; --><link name=\"base\"/>"), "base", "l2")
+    arm = dispkin.SerialArm.from_urdf(
+        planar_urdf().replace("<link name=\"base\"/>", "<!-- 100% steel, &#37; --><link name=\"base\"/>"), "base", "l2"
+    )
     assert arm.dof == 2
 
 
 def test_a_reference_to_another_character_is_read():
-    text = planar_urdf().replace('<link name="l2"/>', '<link name="l2&#x26;b"/>').replace('link="l2"', 'link="l2&#38;b"')
+    text = (
+        planar_urdf().replace('<link name="l2"/>', '<link name="l2&#x26;b"/>').replace('link="l2"', 'link="l2&#38;b"')
+    )
     arm = dispkin.SerialArm.from_urdf(text, "base", "l2&b")
     assert arm.tip_link == "l2&b"
 

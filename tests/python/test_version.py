@@ -45,8 +45,14 @@ def test_package_xml_is_a_ros2_cmake_package_of_this_version():
     assert package.find("maintainer").get("email") and package.findtext("license") == "BSD-3-Clause"
     keys = {e.text for e in package if e.tag in ("depend", "build_depend")}
     cmake = (ROOT / "CMakeLists.txt").read_text()
-    needed = {"Eigen3": "eigen", "Qhull": "libqhull", "nlohmann_json": "nlohmann-json-dev", "urdfdom": "urdfdom",
-              "TinyXML": "tinyxml", "OrocosKDL": "liborocos-kdl-dev"}
+    needed = {
+        "Eigen3": "eigen",
+        "Qhull": "libqhull",
+        "nlohmann_json": "nlohmann-json-dev",
+        "urdfdom": "urdfdom",
+        "TinyXML": "tinyxml",
+        "OrocosKDL": "liborocos-kdl-dev",
+    }
     for cmake_name, key in needed.items():
         assert f"dispkin_find_dependency({cmake_name} " in cmake, cmake_name
         assert key in keys, key

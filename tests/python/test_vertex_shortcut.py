@@ -23,7 +23,9 @@ def random_cloud(rng, i):
     if kind == 0:  # Gaussian blob
         return rng.normal(scale=0.3, size=(n, 3))
     if kind == 1:  # box corners plus points inside
-        return np.vstack([dispkin.shapes.box(rng.uniform(0.05, 0.5, 3), rng.normal(size=3)), rng.uniform(-0.02, 0.02, (n, 3))])
+        return np.vstack(
+            [dispkin.shapes.box(rng.uniform(0.05, 0.5, 3), rng.normal(size=3)), rng.uniform(-0.02, 0.02, (n, 3))]
+        )
     if kind == 2:  # flat: coplanar
         normal = unit_vectors(rng, 1)[0]
         p = rng.normal(scale=0.3, size=(n, 3))

@@ -25,7 +25,9 @@ def main(paths: list[str]) -> int:
         return 1
     import dispkin
 
-    print(f"run_snippets: {ran} snippet(s) of {len(paths)} file(s) ran with dispkin {dispkin.__version__} from {pathlib.Path(dispkin.__file__).parent}")
+    print(
+        f"run_snippets: {ran} snippet(s) of {len(paths)} file(s) ran with dispkin {dispkin.__version__} from {pathlib.Path(dispkin.__file__).parent}"
+    )
     return 0
 
 

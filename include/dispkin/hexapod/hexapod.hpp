@@ -52,12 +52,12 @@ struct WorkspaceCheck {
 struct LegExcursion {
   //! What a leg can leave: its length range or its speed limit.
   enum class Kind { length, speed } kind;  //!< what this leg leaves
-  int leg;             //!< 0-based leg index
-  double start_time;   //!< first sample out of range (s)
-  double end_time;     //!< last sample out of range (s)
-  double worst_time;   //!< the sample with the largest excess
-  double worst_value;  //!< the leg's length (m) or speed (m/s) there
-  double excess;       //!< how far beyond the range or speed limit, > 0
+  int leg;                                 //!< 0-based leg index
+  double start_time;                       //!< first sample out of range (s)
+  double end_time;                         //!< last sample out of range (s)
+  double worst_time;                       //!< the sample with the largest excess
+  double worst_value;                      //!< the leg's length (m) or speed (m/s) there
+  double excess;                           //!< how far beyond the range or speed limit, > 0
 };
 
 //! The result of Hexapod::check_trajectory: extremes per leg and every excursion.
@@ -82,7 +82,8 @@ inline void require_consistent(const LegViolation& v, const std::string& name = 
   require(v.lower < v.upper, name + "(lower, upper)", Eigen::Vector2d(v.lower, v.upper), "must have lower < upper");
   // The excess is lower − length or length − upper, computed once: equal to a few ε of the sizes.
   const double outside = std::max(v.lower - v.length, v.length - v.upper);
-  const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(v.length), std::abs(v.lower), std::abs(v.upper)});
+  const double rounding = 8.0 * std::numeric_limits<double>::epsilon() *
+                          std::max({std::abs(v.length), std::abs(v.lower), std::abs(v.upper)});
   require(v.excess > 0.0 && std::abs(v.excess - outside) <= rounding, name + "excess", v.excess,
           "must be > 0 and how far the length lies outside [lower, upper] (" + std::to_string(outside) + ")");
 }
@@ -94,7 +95,8 @@ inline void require_consistent(const WorkspaceCheck& c) {
     const LegViolation& v = c.violations[k];
     const std::string name = "violations[" + std::to_string(k) + "].";
     require_consistent(v, name);
-    require(k == 0 || v.leg > c.violations[k - 1].leg, name + "leg", static_cast<long>(v.leg), "must follow the leg before it (one per leg, in order)");
+    require(k == 0 || v.leg > c.violations[k - 1].leg, name + "leg", static_cast<long>(v.leg),
+            "must follow the leg before it (one per leg, in order)");
     require(v.length == c.lengths(v.leg), name + "length", v.length,
             "must be the length of leg " + std::to_string(v.leg) + " in lengths, " + std::to_string(c.lengths(v.leg)));
   }
@@ -117,16 +119,18 @@ inline void require_consistent(const TrajectoryCheck& c) {
   require_finite(c.min_length, "min_length");
   require_finite(c.max_length, "max_length");
   require_finite(c.max_speed, "max_speed");
-  require((c.min_length.array() <= c.max_length.array()).all(), "min_length", c.min_length, "must not exceed max_length");
+  require((c.min_length.array() <= c.max_length.array()).all(), "min_length", c.min_length,
+          "must not exceed max_length");
   require((c.max_speed.array() >= 0.0).all(), "max_speed", c.max_speed, "must not be negative");
-  for (std::size_t k = 0; k < c.excursions.size(); ++k) require_consistent(c.excursions[k], "excursions[" + std::to_string(k) + "].");
+  for (std::size_t k = 0; k < c.excursions.size(); ++k)
+    require_consistent(c.excursions[k], "excursions[" + std::to_string(k) + "].");
 }
 
 //! Forward kinematics tuning: Newton's method on SE(3).
 struct ForwardOptions {
-  double tolerance = 1e-12;    //!< converged when every |ℓ_i(T) − ℓ_i| ≤ this (m)
-  int max_iterations = 50;     //!< failure after this many Newton steps
-  double min_rcond = 1e-10;    //!< singular when the scaled leg Jacobian's reciprocal condition number is below this
+  double tolerance = 1e-12;  //!< converged when every |ℓ_i(T) − ℓ_i| ≤ this (m)
+  int max_iterations = 50;   //!< failure after this many Newton steps
+  double min_rcond = 1e-10;  //!< singular when the scaled leg Jacobian's reciprocal condition number is below this
 };
 
 //! A Stewart platform: geometry, leg limits, inverse and forward kinematics.
@@ -135,7 +139,7 @@ struct ForwardOptions {
 //! collinear, neither are the platform joints; 0 ≤ leg_min < leg_max; leg_speed > 0.
 class Hexapod : public Kinematics {
  public:
-  using Joints = Eigen::Matrix<double, 3, 6>;  //!< one joint per column
+  using Joints = Eigen::Matrix<double, 3, 6>;    //!< one joint per column
   using Legs = Eigen::Matrix<double, 6, 1>;      //!< one value per leg (lengths, speeds)
   using Jacobian = Eigen::Matrix<double, 6, 6>;  //!< ∂ℓ/∂ξ, see leg_jacobian()
 

@@ -24,8 +24,8 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const Hexapod&
 //! retime_optimal (planning/retiming.hpp) for a hexapod: the legs are the joints (leg_speed() and
 //! options.joint_acceleration as their limits; no torques), followed from the home pose's leg
 //! lengths, and a leg that leaves its length range is an error naming it.
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
-                                   const OptimalRetimeOptions& options = {});
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const Hexapod& hexapod, const OptimalRetimeOptions& options = {});
 
 //! The hexapod as a JointModel (legs as joints, no torques). Holds a reference to `hexapod`,
 //! which must outlive it.

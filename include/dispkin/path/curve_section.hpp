@@ -34,8 +34,8 @@ struct Cubic3 {
                                    Eigen::Vector3d::Zero()};
 
   Eigen::Vector3d value(double v) const noexcept { return a[0] + v * (a[1] + v * (a[2] + v * a[3])); }  //!< p(v)
-  Eigen::Vector3d first(double v) const noexcept { return a[1] + v * (2.0 * a[2] + 3.0 * v * a[3]); }  //!< p′(v)
-  Eigen::Vector3d second(double v) const noexcept { return 2.0 * a[2] + 6.0 * v * a[3]; }  //!< p″(v)
+  Eigen::Vector3d first(double v) const noexcept { return a[1] + v * (2.0 * a[2] + 3.0 * v * a[3]); }   //!< p′(v)
+  Eigen::Vector3d second(double v) const noexcept { return 2.0 * a[2] + 6.0 * v * a[3]; }               //!< p″(v)
   Eigen::Vector3d third() const noexcept { return 6.0 * a[3]; }  //!< p‴, constant
 
   //! The cubic Hermite polynomial with p(0) = p0, p′(0) = m0, p(1) = p1, p′(1) = m1.
@@ -87,8 +87,8 @@ inline void exp_and_right_jacobian(const Eigen::Vector3d& phi, const Eigen::Vect
 //! goes over [0, 1].
 struct CurveSection {
   Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();  //!< R₀
-  Cubic3 position;                                          //!< c(v), world
-  Cubic3 rotation;                                          //!< φ(v), body of R₀
+  Cubic3 position;                                         //!< c(v), world
+  Cubic3 rotation;                                         //!< φ(v), body of R₀
   //! The part of the curve, 0 ≤ v0 < v1 ≤ 1.
   //!@{
   double v0 = 0.0, v1 = 1.0;
@@ -190,11 +190,14 @@ struct CubicAt {
   Eigen::Vector3d value, first, second;
   double third_norm;
 };
-inline CubicAt cubic_at(const Cubic3& p, double v) noexcept { return {p.value(v), p.first(v), p.second(v), p.third().norm()}; }
+inline CubicAt cubic_at(const Cubic3& p, double v) noexcept {
+  return {p.value(v), p.first(v), p.second(v), p.third().norm()};
+}
 
 inline DerivativeBounds derivative_bounds(const CubicAt& at, double delta) noexcept {
   const double second_mid = at.second.norm();
-  return {at.first.norm() + second_mid * delta + 0.5 * at.third_norm * delta * delta, second_mid + at.third_norm * delta};
+  return {at.first.norm() + second_mid * delta + 0.5 * at.third_norm * delta * delta,
+          second_mid + at.third_norm * delta};
 }
 inline DerivativeBounds derivative_bounds(const Cubic3& p, double m, double delta) noexcept {
   return derivative_bounds(cubic_at(p, m), delta);
@@ -260,7 +263,8 @@ inline double CurveSection::acceleration_bound(const MetricSetd& set) const {
   const MotionBounds motion = motion_bounds();
   const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
   double best = 0.0;
-  for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
+  for (const auto& g : set.groups())
+    best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
   return best;
 }
 

@@ -73,7 +73,8 @@ class GroupFactors {
   //! Makes reach() refer to `pivot` (body coordinates).
   void use_pivot(const Eigen::Vector3d& pivot) noexcept {
     if (has_pivot_ && pivot == pivot_) return;
-    for (std::size_t i = 0; i < groups_.size(); ++i) groups_[i].reach = detail::relative_reach(set_->groups()[i], pivot);
+    for (std::size_t i = 0; i < groups_.size(); ++i)
+      groups_[i].reach = detail::relative_reach(set_->groups()[i], pivot);
     pivot_ = pivot;
     has_pivot_ = true;
   }
@@ -87,7 +88,8 @@ class GroupFactors {
   //! the orientation's turn), so a path evaluates them once per CIRC, not once per section.
   Eigen::Quaterniond turn(const Eigen::Vector3d& axis, double angle) const noexcept {
     for (const TurnMemo& m : turns_) {
-      if (m.known && detail::same_bits(m.axis.data(), axis.data(), 3) && detail::same_bits(&m.angle, &angle, 1)) return m.turn;
+      if (m.known && detail::same_bits(m.axis.data(), axis.data(), 3) && detail::same_bits(&m.angle, &angle, 1))
+        return m.turn;
     }
     TurnMemo& m = turns_[next_turn_];
     next_turn_ = 1 - next_turn_;
@@ -105,7 +107,7 @@ class GroupFactors {
     return sine_;
   }
   double weight(std::size_t group) const noexcept { return groups_[group].weight; }  //!< w_g = v_sys / v_g
-  double max_weight() const noexcept { return max_weight_; }  //!< the largest w_g
+  double max_weight() const noexcept { return max_weight_; }                         //!< the largest w_g
   //! The group's relative_reach from the pivot of the last use_pivot (m).
   double reach(std::size_t group) const noexcept { return groups_[group].reach; }
 
@@ -160,8 +162,8 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen
   return group_acceleration_bound(g, relative_reach(g, pivot), pivot_middle, b);
 }
 
-inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative, const Eigen::Vector3d& pivot_middle,
-                                       const MotionBounds& b) noexcept {
+inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative,
+                                       const Eigen::Vector3d& pivot_middle, const MotionBounds& b) noexcept {
   // The largest distance of the group's absolute objects from the pivot anywhere on the
   // section (at most |ċ|/2 from the middle); the body objects' reach is given.
   double r_absolute = 0.0;

@@ -39,7 +39,7 @@ struct LinSection {
   Posed start, end;
   //!@}
   Interpolation interpolation = Interpolation::decoupled;  //!< how it moves between them
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();         //!< body coordinates
 
   //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept { return interpolate(start, end, tau, interpolation, pivot); }
@@ -48,7 +48,8 @@ struct LinSection {
   Twistd twist(double tau) const noexcept {
     if (interpolation == Interpolation::screw) return (start.inverse() * end).log();
     // Pivot velocity Δc and rotation θk: the body origin t = c − R p moves at Δc − θŵ × R p.
-    const Eigen::Vector3d omega_body = quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * end.quaternion()));
+    const Eigen::Vector3d omega_body =
+        quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * end.quaternion()));
     const Posed at = pose(tau);
     const Eigen::Vector3d delta_c = (end * pivot) - (start * pivot);
     return Twistd(at.quaternion().conjugate() * delta_c - omega_body.cross(pivot), omega_body);
@@ -71,18 +72,19 @@ struct LinSection {
 //! A circular section: the pivot turns by `angle` about the axis (center, normal) while the
 //! orientation turns by `rotation_angle` about the fixed world axis `rotation_axis`.
 struct ArcSection {
-  Posed start;  //!< the pose at τ = 0
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  //!< world
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); //!< world, unit; the pivot turns about it
-  double angle = 0.0;                                 //!< of the pivot about `normal`
+  Posed start;                                               //!< the pose at τ = 0
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();          //!< world
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();         //!< world, unit; the pivot turns about it
+  double angle = 0.0;                                        //!< of the pivot about `normal`
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();  //!< world, unit
-  double rotation_angle = 0.0;  //!< of the orientation about `rotation_axis` (rad)
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< body coordinates
+  double rotation_angle = 0.0;                               //!< of the orientation about `rotation_axis` (rad)
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();           //!< body coordinates
 
   //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept {
     const Eigen::Vector3d c = center + detail::axis_turn(normal, tau * angle) * (start * pivot - center);
-    const Eigen::Quaterniond q = (detail::axis_turn(rotation_axis, tau * rotation_angle) * start.quaternion()).normalized();
+    const Eigen::Quaterniond q =
+        (detail::axis_turn(rotation_axis, tau * rotation_angle) * start.quaternion()).normalized();
     return Posed::unchecked(q, c - q * pivot);
   }
 
@@ -139,10 +141,12 @@ struct ArcSection {
     // The reference section from its parts: its rotation is the arc's, θ ŵ seen from the start
     // (no logarithm needed while |θ| ≤ π, the range of the logarithm).
     const Eigen::Quaterniond q1 = (factors.turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
-    const Eigen::Vector3d rotation = std::abs(rotation_angle) <= pi
-                                         ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
-                                         : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
-    const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation, pivot);
+    const Eigen::Vector3d rotation =
+        std::abs(rotation_angle) <= pi
+            ? Eigen::Vector3d(rotation_angle * (start.quaternion().conjugate() * rotation_axis))
+            : quaternion_log(Eigen::Quaterniond(start.quaternion().conjugate() * q1));
+    const detail::DecoupledSection<double> reference(start.quaternion(), q1, c0, middle_velocity(middle), rotation,
+                                                     pivot);
     const double radius = (c0 - center).norm();
     const double phi = std::abs(angle);
     const MotionBounds motion{phi * radius, phi * phi * radius, std::abs(rotation_angle), 0.0};
@@ -152,8 +156,10 @@ struct ArcSection {
       length = std::max(length, factors.weight(i) * detail::group_decoupled_length(g, reference));
       acceleration = std::max(acceleration, detail::group_acceleration_bound(g, factors.reach(i), middle, motion));
     }
-    const double deviation = 2.0 * std::abs(angle) * radius * factors.sine(std::abs(angle) / 4.0);  // deviation_bound(radius)
-    return {length + (1.0 + std::abs(rotation_angle)) * deviation * factors.max_weight(), acceleration, motion.omega, 0.0};
+    const double deviation =
+        2.0 * std::abs(angle) * radius * factors.sine(std::abs(angle) / 4.0);  // deviation_bound(radius)
+    return {length + (1.0 + std::abs(rotation_angle)) * deviation * factors.max_weight(), acceleration, motion.omega,
+            0.0};
   }
 
  private:
@@ -165,7 +171,9 @@ struct ArcSection {
     return center + detail::axis_turn(normal, 0.5 * angle) * (c0 - center);
   }
   // The pivot's velocity per unit τ there, φ n × (c(½) − o): the reference section's.
-  Eigen::Vector3d middle_velocity(const Eigen::Vector3d& middle) const noexcept { return angle * normal.cross(middle - center); }
+  Eigen::Vector3d middle_velocity(const Eigen::Vector3d& middle) const noexcept {
+    return angle * normal.cross(middle - center);
+  }
   Eigen::Quaterniond end_orientation() const noexcept {
     return (detail::axis_turn(rotation_axis, rotation_angle) * start.quaternion()).normalized();
   }
@@ -231,12 +239,13 @@ struct CircleThroughPoints {
   Eigen::Vector3d center;  //!< the circumcentre
   Eigen::Vector3d normal;  //!< unit; the arc runs counter-clockwise about it
   double radius;           //!< the circle's radius (m)
-  double angle;  //!< of the arc from start to end through via, in (0, 2π)
+  double angle;            //!< of the arc from start to end through via, in (0, 2π)
 };
 
 //! Throws std::invalid_argument if two points coincide or the three are collinear (relative
 //! tolerance 1e-9 of the triangle's sides).
-CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via, const Eigen::Vector3d& end);
+CircleThroughPoints circle_through(const Eigen::Vector3d& start, const Eigen::Vector3d& via,
+                                   const Eigen::Vector3d& end);
 
 //! The speed and acceleration of one move (robot programs' per-motion $VEL/$ACC, G-code F):
 //! each optional, and capped by the plan's Limits. The velocity bounds ṡ, i.e. the speed of
@@ -369,7 +378,8 @@ class Path {
   //! does not start where the one before it ends (to 1e-9 m and 1e-9 rad), a limit is not
   //! finite and positive, or the move starts do not begin with 0 and grow up to the size.
   static Path from_sections(const std::vector<Section>& sections, double first_move_size, double last_move_size,
-                            const std::vector<MoveLimits>& section_limits = {}, const std::vector<std::size_t>& move_starts = {});
+                            const std::vector<MoveLimits>& section_limits = {},
+                            const std::vector<std::size_t>& move_starts = {});
 
   //! The sections, in order along the path.
   const std::vector<Section>& sections() const noexcept { return sections_; }
@@ -389,7 +399,8 @@ class Path {
   Posed end() const noexcept { return section_end(sections_.back()); }       //!< the last section's end pose
 
   //! L_k of every section under the set.
-  std::vector<double> section_lengths(const MetricSetd& set, std::optional<double> system_velocity = std::nullopt) const;
+  std::vector<double> section_lengths(const MetricSetd& set,
+                                      std::optional<double> system_velocity = std::nullopt) const;
 
   //! Geometry only: the pose at u ∈ [0, 1], with u spread over the sections in proportion to
   //! their geometric size (pivot travel plus 0.1 m per radian of rotation). Clamped outside.

@@ -33,12 +33,14 @@ constexpr int refined_bound_max_pieces = 1 << 14;
 //! `piece(t0, t1, middle_speed)` returns the bounds of the part τ ∈ [t0, t1] per unit of that
 //! part's own τ (doc/section-length.md eq. 24) and its weighted middle speed. The section's bounds are the largest of
 //! N equal pieces', rescaled to the section's τ (doc/section-length.md eq. 25); N doubles (at least) until the largest
-//! middle speed, a lower bound of the exact peak, lies within the precision of the length (doc/section-length.md eqs. 26–27).
+//! middle speed, a lower bound of the exact peak, lies within the precision of the length (doc/section-length.md eqs.
+//! 26–27).
 template <class Piece>
 RefinedBounds refined_bounds(const Piece& piece) {
   int n = 1;
   for (;;) {
-    RefinedBounds r{{0.0, 0.0, 0.0, 0.0}, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    RefinedBounds r{
+        {0.0, 0.0, 0.0, 0.0}, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     SectionBounds& whole = r.bounds;
     double low = 0.0;
     const double h = 1.0 / n;
@@ -56,9 +58,11 @@ RefinedBounds refined_bounds(const Piece& piece) {
     }
     const double gap = whole.length - low;
     if (!(gap > refined_bound_precision * whole.length) || n >= refined_bound_max_pieces) return r;
-    // The slack of doc/section-length.md eq. 24 falls as 1/N (eq. 27): aim at the precision in one step, at least doubling.
+    // The slack of doc/section-length.md eq. 24 falls as 1/N (eq. 27): aim at the precision in one step, at least
+    // doubling.
     const double wanted = std::ceil(1.25 * n * gap / (refined_bound_precision * whole.length));
-    n = static_cast<int>(std::clamp(std::isfinite(wanted) ? wanted : 2.0 * n, 2.0 * n, double(refined_bound_max_pieces)));
+    n = static_cast<int>(
+        std::clamp(std::isfinite(wanted) ? wanted : 2.0 * n, 2.0 * n, double(refined_bound_max_pieces)));
   }
 }
 

@@ -25,7 +25,7 @@ class SampledPath {
 
   //! Σ L_k, m.
   double length() const noexcept { return starts_.empty() ? 0.0 : starts_.back().s + lengths_.back(); }
-  std::size_t section_count() const noexcept { return motions_.size(); }  //!< the number of sections
+  std::size_t section_count() const noexcept { return motions_.size(); }            //!< the number of sections
   const std::vector<double>& section_lengths() const noexcept { return lengths_; }  //!< L_k of each section, m
   //! The sections it was made from (what storing it keeps; sampling uses their motions).
   const std::vector<Section>& sections() const noexcept { return sections_; }
@@ -69,12 +69,14 @@ inline std::size_t SampledPath::section_at(double s, std::size_t section) const 
   };
   if (section <= last && is_it(section)) return section;
   if (section < last && is_it(section + 1)) return section + 1;
-  const auto next = std::upper_bound(starts_.begin(), starts_.end(), s, [](double x, const SectionStart& k) { return x < k.s; });
+  const auto next =
+      std::upper_bound(starts_.begin(), starts_.end(), s, [](double x, const SectionStart& k) { return x < k.s; });
   const std::size_t k = next == starts_.begin() ? 0 : static_cast<std::size_t>(next - starts_.begin()) - 1;
   return std::min(k, last);
 }
 
-inline std::size_t SampledPath::section_state(double s, std::size_t hint, Posed& pose, Twistd& twist_per_tau) const noexcept {
+inline std::size_t SampledPath::section_state(double s, std::size_t hint, Posed& pose,
+                                              Twistd& twist_per_tau) const noexcept {
   const std::size_t k = section_at(s, hint);
   const SectionStart& start = starts_[k];
   const double tau = std::clamp((s - start.s) * start.inverse_length, 0.0, 1.0);

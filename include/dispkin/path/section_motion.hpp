@@ -57,8 +57,8 @@ constexpr double series_angle = 1.0;
 //! The first terms left out are below 10⁻¹⁸ relative at θ = 1; C is then more accurate than its
 //! closed form, which cancels for small θ. Within 10⁻¹⁵ of a long-double evaluation
 //! (SectionMotion.SeriesExpAndRightJacobian). Larger angles: exp_and_right_jacobian.
-inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eigen::Vector3d& u, Eigen::Quaterniond& exp_phi,
-                                           Eigen::Vector3d& jacobian_u) noexcept {
+inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eigen::Vector3d& u,
+                                           Eigen::Quaterniond& exp_phi, Eigen::Vector3d& jacobian_u) noexcept {
   const double t2 = phi.squaredNorm();
   if (!(t2 <= series_angle * series_angle)) {
     exp_and_right_jacobian(phi, u, exp_phi, jacobian_u);
@@ -67,15 +67,18 @@ inline void exp_and_right_jacobian_sampled(const Eigen::Vector3d& phi, const Eig
   // Coefficients 1/n! (exact to rounding), summed in Estrin's order (pairs, then pairs of pairs)
   // so that the three sums are short chains: they lie on the sampling path's critical path.
   const double y = 0.25 * t2, y2 = y * y, y4 = y2 * y2;
-  const double cos_half = (1.0 - y * (1.0 / 2.0)) + y2 * (1.0 / 24.0 - y * (1.0 / 720.0)) +
-                          y4 * ((1.0 / 40320.0 - y * (1.0 / 3628800.0)) + y2 * (1.0 / 479001600.0 - y * (1.0 / 87178291200.0)));
+  const double cos_half =
+      (1.0 - y * (1.0 / 2.0)) + y2 * (1.0 / 24.0 - y * (1.0 / 720.0)) +
+      y4 * ((1.0 / 40320.0 - y * (1.0 / 3628800.0)) + y2 * (1.0 / 479001600.0 - y * (1.0 / 87178291200.0)));
   const double half_sine =
-      0.5 * ((1.0 - y * (1.0 / 6.0)) + y2 * (1.0 / 120.0 - y * (1.0 / 5040.0)) +
-             y4 * ((1.0 / 362880.0 - y * (1.0 / 39916800.0)) + y2 * (1.0 / 6227020800.0 - y * (1.0 / 1307674368000.0))));
+      0.5 *
+      ((1.0 - y * (1.0 / 6.0)) + y2 * (1.0 / 120.0 - y * (1.0 / 5040.0)) +
+       y4 * ((1.0 / 362880.0 - y * (1.0 / 39916800.0)) + y2 * (1.0 / 6227020800.0 - y * (1.0 / 1307674368000.0))));
   const double t4 = t2 * t2, t8 = t4 * t4;
-  const double cc = (1.0 / 6.0 - t2 * (1.0 / 120.0)) + t4 * (1.0 / 5040.0 - t2 * (1.0 / 362880.0)) +
-                    t8 * ((1.0 / 39916800.0 - t2 * (1.0 / 6227020800.0)) + t4 * (1.0 / 1307674368000.0 - t2 * (1.0 / 355687428096000.0)) +
-                          t8 * (1.0 / 121645100408832000.0));
+  const double cc =
+      (1.0 / 6.0 - t2 * (1.0 / 120.0)) + t4 * (1.0 / 5040.0 - t2 * (1.0 / 362880.0)) +
+      t8 * ((1.0 / 39916800.0 - t2 * (1.0 / 6227020800.0)) +
+            t4 * (1.0 / 1307674368000.0 - t2 * (1.0 / 355687428096000.0)) + t8 * (1.0 / 121645100408832000.0));
   const double b = 2.0 * half_sine * half_sine;
   exp_phi = Eigen::Quaterniond(cos_half, half_sine * phi.x(), half_sine * phi.y(), half_sine * phi.z());
   const Eigen::Vector3d pu = phi.cross(u);
@@ -95,19 +98,20 @@ struct TurningFrame {
   Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity(), r = Eigen::Quaterniond::Identity();
   //!@}
   Eigen::Vector3d w_hat = Eigen::Vector3d::UnitZ();  //!< ŵ, the unit axis (world)
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();   //!< p, body
   //! P∥, P⊥, ŵ × P⊥ (world).
   //!@{
   Eigen::Vector3d pivot_along = Eigen::Vector3d::Zero(), pivot_across = Eigen::Vector3d::Zero(),
                   pivot_side = Eigen::Vector3d::Zero();
   //!@}
-  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();   //!< θ q₀⁻¹ ŵ: ω_b per unit τ
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();         //!< θ q₀⁻¹ ŵ: ω_b per unit τ
   Eigen::Vector3d omega_cross_pivot = Eigen::Vector3d::Zero();  //!< ω_b × p, constant too
-  double theta = 0.0;                                      //!< the turn over the section, rad
+  double theta = 0.0;                                           //!< the turn over the section, rad
 
   TurningFrame() = default;
   //! The turn by `angle` about the unit world `axis` from orientation `start`, carrying body point p.
-  TurningFrame(const Eigen::Quaterniond& start, const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& p) noexcept
+  TurningFrame(const Eigen::Quaterniond& start, const Eigen::Vector3d& axis, double angle,
+               const Eigen::Vector3d& p) noexcept
       : q0(start), w_hat(axis), pivot(p), theta(angle) {
     r = Eigen::Quaterniond(0.0, axis.x(), axis.y(), axis.z()) * start;
     const Eigen::Vector3d world = start * p;
@@ -128,7 +132,9 @@ struct TurningFrame {
   }
 
   //! q p for the turn with cosine c and sine s.
-  Eigen::Vector3d pivot_world(double c, double s) const noexcept { return pivot_along + c * pivot_across + s * pivot_side; }
+  Eigen::Vector3d pivot_world(double c, double s) const noexcept {
+    return pivot_along + c * pivot_across + s * pivot_side;
+  }
 };
 
 //! A decoupled LIN section: the pivot at c₀ + τ Δc, the orientation turned by τθ about ŵ.
@@ -172,7 +178,7 @@ struct LineMotion {
 //! A CIRC section: the pivot turned by τφ about the axis (centre o, normal n̂) from c₀, the
 //! orientation by τθ about ŵ. c(β) = o + R∥ + cos β R⊥ + sin β n̂ × R⊥ with R = c₀ − o.
 struct ArcMotion {
-  TurningFrame frame;  //!< the orientation's turn
+  TurningFrame frame;                                      //!< the orientation's turn
   Eigen::Vector3d center_along = Eigen::Vector3d::Zero();  //!< o + R∥
   //! R⊥ and n̂ × R⊥ (world).
   //!@{
@@ -215,7 +221,8 @@ inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, con
                        const Eigen::Vector3d& pivot, const CurveSection& section) noexcept {
   return same_bits(section.q0.coeffs().data(), q0.coeffs().data(), 4) &&
          same_bits(section.position.a[0].data(), position.a[0].data(), 12) &&
-         same_bits(section.rotation.a[0].data(), rotation.a[0].data(), 12) && same_bits(section.pivot.data(), pivot.data(), 3);
+         same_bits(section.rotation.a[0].data(), rotation.a[0].data(), 12) &&
+         same_bits(section.pivot.data(), pivot.data(), 3);
 }
 
 }  // namespace detail
@@ -232,7 +239,9 @@ struct CurveMotion {
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body coordinates of the point on c(v)
 
   //! Whether `section` is cut from this curve.
-  bool holds(const CurveSection& section) const noexcept { return detail::same_curve(q0, position, rotation, pivot, section); }
+  bool holds(const CurveSection& section) const noexcept {
+    return detail::same_curve(q0, position, rotation, pivot, section);
+  }
 
   //! Pose and body twist per unit τ at curve parameter v, for a section of span h = dv/dτ.
   void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
@@ -264,11 +273,21 @@ class SectionMotions {
   void at(std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {
     const Entry& e = entries_[k];
     switch (e.kind) {
-      case Kind::line: lines_[e.index].at(tau, pose, twist); return;
-      case Kind::arc: arcs_[e.index].at(tau, pose, twist); return;
-      case Kind::screw: screws_[e.index].at(tau, pose, twist); return;
-      case Kind::curve: curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist); return;
-      case Kind::slerp_blend: slerp_blends_[e.index].at(tau, pose, twist); return;
+      case Kind::line:
+        lines_[e.index].at(tau, pose, twist);
+        return;
+      case Kind::arc:
+        arcs_[e.index].at(tau, pose, twist);
+        return;
+      case Kind::screw:
+        screws_[e.index].at(tau, pose, twist);
+        return;
+      case Kind::curve:
+        curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist);
+        return;
+      case Kind::slerp_blend:
+        slerp_blends_[e.index].at(tau, pose, twist);
+        return;
     }
   }
 
@@ -276,7 +295,7 @@ class SectionMotions {
   enum class Kind : unsigned char { line, arc, screw, curve, slerp_blend };
   struct Entry {
     Kind kind;
-    std::size_t index;       // into the vector of its kind
+    std::size_t index;            // into the vector of its kind
     double v0 = 0.0, span = 0.0;  // a curve's part: v = v₀ + τ h
   };
   std::vector<Entry> entries_;

@@ -77,7 +77,8 @@ inline double right_jacobian_inverse_norm(double theta) noexcept {
 struct NestedSlerp {
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
 
-  void at(double v, Eigen::Quaterniond& turn, Eigen::Vector3d& omega, Eigen::Vector3d* omega_rate = nullptr) const noexcept {
+  void at(double v, Eigen::Quaterniond& turn, Eigen::Vector3d& omega,
+          Eigen::Vector3d* omega_rate = nullptr) const noexcept {
     // D = exp((1 − v) a) exp(v b) and its body angular velocity ω_D = b − exp(v b)⁻¹ a.
     const Eigen::Quaterniond along_b = quaternion_exp(Eigen::Vector3d(v * b));
     const Eigen::Quaterniond d = quaternion_exp(Eigen::Vector3d((1.0 - v) * a)) * along_b;
@@ -124,7 +125,9 @@ struct NestedSlerp {
   //! j(θ) = θ/12 + θ²/60 + 1/6 ≥ |α′(θ)| + θ |β′(θ)| + β(θ) for θ < 3.8 (alternating series whose
   //! first terms bound them: α′ = −θ/12 + …, β′ = −θ/60 + …, β = 1/6 − …), so that
   //! |dJ_r(φ)[δ] δ| ≤ |φ × δ| |δ| j(θ) (doc/planning.md eq. 22).
-  static double jacobian_rate_along_bound(double theta) noexcept { return theta / 12.0 + theta * theta / 60.0 + 1.0 / 6.0; }
+  static double jacobian_rate_along_bound(double theta) noexcept {
+    return theta / 12.0 + theta * theta / 60.0 + 1.0 / 6.0;
+  }
 };
 
 }  // namespace detail
@@ -217,7 +220,8 @@ struct SlerpBlendSection {
     const MotionBounds motion = motion_bounds();
     const Eigen::Vector3d pivot_middle = position.value(0.5 * (v0 + v1));
     double best = 0.0;
-    for (const auto& g : set.groups()) best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
+    for (const auto& g : set.groups())
+      best = std::max(best, detail::group_acceleration_bound(g, pivot, pivot_middle, motion));
     return best;
   }
 
@@ -243,7 +247,8 @@ struct SlerpBlendSection {
     Posed middle;
     Twistd twist_middle;
     at(0.5, middle, twist_middle);
-    return detail::bounds_from_middle(factors, middle, twist_middle, position.value(0.5 * (v0 + v1)), motion, middle_speed);
+    return detail::bounds_from_middle(factors, middle, twist_middle, position.value(0.5 * (v0 + v1)), motion,
+                                      middle_speed);
   }
 };
 

@@ -28,7 +28,7 @@ class MotionStream {
  public:
   //! Where a sequence of samples has got to (sample(t, cursor)); any value is valid.
   struct Cursor {
-    std::size_t leg = 0;             //!< the stretch of motion of the last sample
+    std::size_t leg = 0;            //!< the stretch of motion of the last sample
     Trajectory::Cursor trajectory;  //!< where in that stretch's trajectory
   };
 

@@ -93,12 +93,14 @@ struct PlanOptions {
 //! tolerance is positive, empty when the path is planned as given. Re-timing plans the same path
 //! (OptimalRetimeOptions::corner_tolerance). Throws std::invalid_argument for a corner tolerance
 //! that is negative or not finite.
-std::optional<Path> continuous_path(const Path& path, const PlanOptions& options, std::vector<CornerStop>* stops = nullptr);
+std::optional<Path> continuous_path(const Path& path, const PlanOptions& options,
+                                    std::vector<CornerStop>* stops = nullptr);
 
 //! Plans `path` under `set` and `limits` with a time-optimal `profile` law per rest-to-rest
 //! piece. Throws std::invalid_argument for bad limits or a set that is not well-formed (with an
 //! angular velocity limit: an empty set).
-Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile = ProfileKind::scurve);
+Trajectory plan(const Path& path, const MetricSetd& set, const Limits& limits,
+                ProfileKind profile = ProfileKind::scurve);
 
 //! The same with `options`; also throws std::invalid_argument when min_section_lengths has the
 //! wrong size or an entry that is negative or not finite.

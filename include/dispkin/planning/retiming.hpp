@@ -69,7 +69,7 @@ struct JointLimitReport {
   std::size_t velocity_sample = 0;   //!< the index in `samples` where FVEL is reached
   int torque_joint = -1;             //!< the joint where FACC is reached (−1: none)
   std::size_t torque_sample = 0;     //!< the index in `samples` where FACC is reached
-  double position_excess = 0.0;  //!< largest excursion of q outside [lower, upper] (rad), 0 if none
+  double position_excess = 0.0;      //!< largest excursion of q outside [lower, upper] (rad), 0 if none
   int position_joint = -1;           //!< the joint of the largest excursion (−1: none)
   std::size_t position_sample = 0;   //!< the index in `samples` of the largest excursion
 
@@ -115,7 +115,8 @@ inline void require_consistent(const JointLimitReport& r) {
   factor(r.acceleration_factor, "acceleration_factor");
   factor(r.position_excess, "position_excess");
   const auto joint = [n](int j, const char* name) {
-    require(j >= -1 && j < n, name, static_cast<long>(j), "must be -1 (none) or a joint index below " + std::to_string(n));
+    require(j >= -1 && j < n, name, static_cast<long>(j),
+            "must be -1 (none) or a joint index below " + std::to_string(n));
   };
   joint(r.velocity_joint, "velocity_joint");
   joint(r.torque_joint, "torque_joint");
@@ -131,10 +132,10 @@ inline void require_consistent(const JointLimitReport& r) {
 
 //! The result of the KUKA re-timing patent's scaling loop (retime_by_scaling).
 struct RetimeResult {
-  Trajectory trajectory;      //!< the plan under the scaled limits
-  Limits limits;              //!< the scaled limits it was planned with
-  int iterations = 0;         //!< plans made (1: the original already fits)
-  JointLimitReport report;    //!< of the final trajectory: within_limits() is true
+  Trajectory trajectory;    //!< the plan under the scaled limits
+  Limits limits;            //!< the scaled limits it was planned with
+  int iterations = 0;       //!< plans made (1: the original already fits)
+  JointLimitReport report;  //!< of the final trajectory: within_limits() is true
 };
 
 //! Options of retime_optimal.
@@ -207,8 +208,9 @@ inline void require_consistent(const OptimalRetimeResult& r) {
     require(std::isfinite(r.grid_speed[k]) && r.grid_speed[k] >= 0.0, "grid_speed" + at, r.grid_speed[k],
             "must be finite and not negative");
   }
-  for (const auto& [value, name] : {std::pair{r.velocity_ratio, "velocity_ratio"}, std::pair{r.acceleration_ratio, "acceleration_ratio"},
-                                    std::pair{r.torque_ratio, "torque_ratio"}, std::pair{r.jerk_window, "jerk_window"}})
+  for (const auto& [value, name] :
+       {std::pair{r.velocity_ratio, "velocity_ratio"}, std::pair{r.acceleration_ratio, "acceleration_ratio"},
+        std::pair{r.torque_ratio, "torque_ratio"}, std::pair{r.jerk_window, "jerk_window"}})
     require(std::isfinite(value) && value >= 0.0, name, value, "must be finite and not negative");
   require(std::isfinite(r.margin) && r.margin >= 0.0 && r.margin < 1.0, "margin", r.margin, "must be in [0, 1)");
   require(r.refinements >= 0, "refinements", static_cast<long>(r.refinements), "must not be negative");
@@ -221,7 +223,9 @@ struct JointBounds {
   Eigen::VectorXd velocity, acceleration, effort;
   //!@}
   //! n entries of +∞.
-  static Eigen::VectorXd unlimited(int n) { return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity()); }
+  static Eigen::VectorXd unlimited(int n) {
+    return Eigen::VectorXd::Constant(n, std::numeric_limits<double>::infinity());
+  }
 };
 
 //! What re-timing needs of a machine whose joints follow a Cartesian path: the joints along the
@@ -241,20 +245,22 @@ class JointModel {
   //! and q′ = J⁻¹ ξ′, the joint velocity per unit of path for the body twist `per_sigma` per
   //! unit of path; `s` names the place in messages. Throws std::runtime_error where the pose has
   //! no solution or the machine is singular.
-  virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
-                      double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
+  virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref,
+                      const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
   //! joints() and q″ = d²q/dσ² for the derivative `per_sigma_rate` of the body twist per unit of
   //! path, in closed form (doc/retiming.md (eq. 28)): true. The default calls joints() and returns
   //! false, leaving q″ alone: the re-timing then takes it by central differences of q′.
   virtual bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate,
-                                const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q,
-                                Eigen::VectorXd& q1, Eigen::VectorXd& q2) const;
+                                const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s,
+                                Eigen::VectorXd& q, Eigen::VectorXd& q1, Eigen::VectorXd& q2) const;
   //! The torque along the path is τ = torque_u σ̈ + torque_x σ̇² + gravity, from q, q′ and q″
   //! (doc/retiming.md); all three are left empty without a dynamics model.
   virtual void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
-                                   Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u, Eigen::VectorXd& torque_x) const = 0;
+                                   Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u,
+                                   Eigen::VectorXd& torque_x) const = 0;
   //! check_joint_limits of the machine for `trajectory` from q_start.
-  virtual JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start, int samples_between) const = 0;
+  virtual JointLimitReport check(const Trajectory& trajectory, const Eigen::VectorXd& q_start,
+                                 int samples_between) const = 0;
   //! The limits to keep: the machine's velocity and effort limits (effort only with
   //! options.torque_limits) and options.joint_acceleration.
   virtual JointBounds bounds(const OptimalRetimeOptions& options) const = 0;
@@ -285,7 +291,8 @@ std::vector<double> checked_times(const Trajectory& trajectory, const JointCheck
 //! the wrong size, std::runtime_error where the path has no joint solution or is singular, where
 //! the static torque reaches a limit, where a joint leaves its position range, or if the dense
 //! check still fails after max_refinements.
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const JointModel& model,
-                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options = {});
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
+                                   const JointModel& model, const Eigen::VectorXd& q_start,
+                                   const OptimalRetimeOptions& options = {});
 
 }  // namespace dispkin

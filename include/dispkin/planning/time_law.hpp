@@ -23,7 +23,7 @@ class TimeLaw {
     //!@{
     double start_time, end_time;  //!< in trajectory time, s
     //!@}
-    double start_s;               //!< path position at its start, m
+    double start_s;  //!< path position at its start, m
     //! Whether the law was cut at end_time, before its own end, where another law takes over
     //! from its state there (a stop or a speed override, Trajectory::stopped_at); the law itself
     //! stays whole, so that the motion before the cut is the same, bit for bit.
@@ -88,7 +88,8 @@ inline std::size_t TimeLaw::piece_at(double t, std::size_t piece) const noexcept
   };
   if (piece <= last && is_it(piece)) return piece;
   if (piece < last && is_it(piece + 1)) return piece + 1;
-  const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
+  const auto it =
+      std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double x, const Piece& p) { return x < p.end_time; });
   return it == pieces_.end() ? last : static_cast<std::size_t>(it - pieces_.begin());
 }
 

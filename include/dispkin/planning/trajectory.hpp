@@ -19,11 +19,11 @@ namespace dispkin {
 
 //! What a trajectory is at one instant.
 struct TrajectorySample {
-  Posed pose;          //!< the pose
-  Twistd body_twist;   //!< its body twist (v, ω), m/s and rad/s
-  double s = 0.0;      //!< DISP arc length travelled, m
-  double s_dot = 0.0;  //!< ṡ: the speed bound of every point of the set, m/s
-  double s_ddot = 0.0; //!< s̈, m/s²
+  Posed pose;           //!< the pose
+  Twistd body_twist;    //!< its body twist (v, ω), m/s and rad/s
+  double s = 0.0;       //!< DISP arc length travelled, m
+  double s_dot = 0.0;   //!< ṡ: the speed bound of every point of the set, m/s
+  double s_ddot = 0.0;  //!< s̈, m/s²
 };
 
 //! One span of a velocity-limit curve: ṡ ≤ `limit` (m/s) for s in [start_s, start_s + length).
@@ -171,7 +171,7 @@ class Trajectory {
   double end_position() const noexcept { return end_s_; }
 
   const SampledPath& path() const noexcept { return path_; }  //!< the path, with its section lengths
-  const TimeLaw& time_law() const noexcept { return law_; }    //!< s(t)
+  const TimeLaw& time_law() const noexcept { return law_; }   //!< s(t)
 
   double duration() const noexcept { return law_.duration(); }  //!< how long the motion takes (s)
   double length() const noexcept { return path_.length(); }     //!< the path's DISP length (m)

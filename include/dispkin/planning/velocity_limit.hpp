@@ -25,9 +25,9 @@ namespace dispkin {
 //! One piece of a piecewise-constant velocity limit: `length` of path at speed ≤ `limit`, and
 //! acceleration ≤ `acceleration` when positive (a move's own limit; 0: the law's a_max).
 struct LimitedSegment {
-  double length;             //!< > 0
-  double limit;              //!< > 0
-  double acceleration = 0.0; //!< ≥ 0; min(acceleration, a_max) when positive
+  double length;              //!< > 0
+  double limit;               //!< > 0
+  double acceleration = 0.0;  //!< ≥ 0; min(acceleration, a_max) when positive
 };
 
 //! The least distance a law needs to go from velocity u to w (both ≥ 0) under a (and j, if

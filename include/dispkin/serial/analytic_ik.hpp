@@ -57,7 +57,7 @@ struct IkSolutionSet {
   //! rad; ≤ ik_pose_tolerance); 0 for a candidate exact to rounding, which is not measured
   //! (doc/inverse-kinematics.md (eq. 26)).
   std::array<double, 8> error{};
-  int count = 0;                                  //!< number of solutions held
+  int count = 0;  //!< number of solutions held
 
   int size() const noexcept { return count; }  //!< the number of solutions held
   //! Solution i, 0 ≤ i < size().

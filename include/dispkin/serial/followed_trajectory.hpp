@@ -48,8 +48,8 @@ class FollowedTrajectory {
   //! redundancy parameter (its Jacobian must be inverted; a 7R arm keeps the parameter at its value
   //! in q_start, doc/inverse-kinematics.md (eq. 41), (eq. 42)); a trajectory whose poses leave the arm's
   //! reach, pass a singular pose, change the branch, or take a joint out of its position range.
-  static FollowedTrajectory from_start(Trajectory trajectory, const SerialArm& arm,
-                                       const Eigen::VectorXd& q_start, double spacing = default_spacing);
+  static FollowedTrajectory from_start(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
+                                       double spacing = default_spacing);
   //! The same on the branch that ends at q_end (followed backwards from the trajectory's end pose,
   //! which FK(q_end) must be): for a Cartesian move that a PTP move starting at q_end follows.
   static FollowedTrajectory to_end(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_end,

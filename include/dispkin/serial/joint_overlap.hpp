@@ -29,7 +29,7 @@ class OverlappedJointTrajectory {
   double duration() const noexcept { return before_.duration() + after_.duration() - overlap_; }
   //! When the overlap begins (the next move starts), seconds.
   double overlap_start() const noexcept { return before_.duration() - overlap_; }
-  double overlap() const noexcept { return overlap_; }  //!< t_ov, the time both moves run at once (s)
+  double overlap() const noexcept { return overlap_; }                //!< t_ov, the time both moves run at once (s)
   const JointTrajectory& before() const noexcept { return before_; }  //!< the first move
   const JointTrajectory& after() const noexcept { return after_; }    //!< the next move
 

@@ -38,7 +38,7 @@ class OverlappedMixedTrajectory {
   double overlap() const noexcept { return overlap_; }  //!< t_ov, the time both moves run at once (s)
   //! True for PTP → Cartesian, false for Cartesian → PTP.
   bool ptp_first() const noexcept { return ptp_first_; }
-  const JointTrajectory& ptp() const noexcept { return ptp_; }               //!< the PTP move
+  const JointTrajectory& ptp() const noexcept { return ptp_; }                 //!< the PTP move
   const FollowedTrajectory& cartesian() const noexcept { return cartesian_; }  //!< the Cartesian move, in joint space
 
   //! The state at t (clamped to [0, duration]): joints by doc/ptp.md eq. 21, the pose and body twist by the
@@ -53,7 +53,9 @@ class OverlappedMixedTrajectory {
   double before_duration() const noexcept { return ptp_first_ ? ptp_.duration() : cartesian_.duration(); }
   double after_duration() const noexcept { return ptp_first_ ? cartesian_.duration() : ptp_.duration(); }
   double before_length() const noexcept { return ptp_first_ ? ptp_.length() : cartesian_.length(); }
-  JointTrajectorySample before_at(double t) const noexcept { return ptp_first_ ? ptp_.sample(t) : cartesian_.sample(t); }
+  JointTrajectorySample before_at(double t) const noexcept {
+    return ptp_first_ ? ptp_.sample(t) : cartesian_.sample(t);
+  }
   JointTrajectorySample after_at(double t) const noexcept { return ptp_first_ ? cartesian_.sample(t) : ptp_.sample(t); }
 
   JointTrajectory ptp_;

@@ -10,9 +10,9 @@
 //! with V_g(½) the exact fastest speed of the group at the section's middle (doc/disp-metric.md §6: points,
 //! absolute points seen from the tool, spheres by the exact sphere formula) and A_g a bound of
 //! the acceleration per τ² of every object of the group over the section (a Lipschitz bound of
-//! its velocity, derived from the chain geometry — see doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½ A_g, so no object moves
-//! faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same construction
-//! as CurveSection (speed at the middle + half the acceleration bound).
+//! its velocity, derived from the chain geometry — see doc/ptp.md). Along the section ‖x′(τ) − x′(½)‖ ≤ |τ − ½| A_g ≤ ½
+//! A_g, so no object moves faster than L_k per unit τ: the planner's section guarantee (doc/planning.md §2), the same
+//! construction as CurveSection (speed at the middle + half the acceleration bound).
 //!
 //! Cutting rule: a section is halved until L_k − V(½) ≤ tolerance · max(V(½), V_floor), V(½) =
 //! maxg w_g V_g(½) (the bound is then within `tolerance` of the speed sampled at its middle, hence
@@ -94,7 +94,7 @@ struct JointTrajectorySample : TrajectorySample {
   //!@{
   JointVector q, qd, qdd;
   //!@}
-  double u = 0.0;          //!< the joint-line parameter
+  double u = 0.0;  //!< the joint-line parameter
 };
 
 //! A planned PTP move. Sampling is noexcept, allocation-free and lock-free.
@@ -104,8 +104,8 @@ class JointTrajectory {
   //! s at the end: Σ over sections of ∫ du / (du/ds), at least Σ L_k.
   double length() const noexcept { return length_; }
   int dof() const noexcept { return static_cast<int>(q_start_.size()); }  //!< the number of joints
-  const Eigen::VectorXd& start() const noexcept { return q_start_; }  //!< the joints at t = 0
-  const Eigen::VectorXd& end() const noexcept { return q_end_; }      //!< the joints at the end
+  const Eigen::VectorXd& start() const noexcept { return q_start_; }      //!< the joints at t = 0
+  const Eigen::VectorXd& end() const noexcept { return q_end_; }          //!< the joints at the end
   //! The joint sections (in order of u) and their bounds.
   const std::vector<JointSection>& sections() const noexcept { return sections_; }
   //! Number of time laws (one per segment of the velocity-limit curve).

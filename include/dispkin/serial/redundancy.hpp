@@ -24,9 +24,9 @@ namespace serial {
 
 //! How a 7R chain is solved with one joint locked: which joint, and the 6R chain left.
 struct LockedJoint {
-  int joint = -1;          //!< the locked joint (0 or 6); −1: no lock gives a closed form
-  bool reversed = false;   //!< the 6R chain is read from the tip back (doc/inverse-kinematics.md eq. 39)
-  RevoluteChain rest;      //!< the 6R chain solved for each value (reversed if so)
+  int joint = -1;                       //!< the locked joint (0 or 6); −1: no lock gives a closed form
+  bool reversed = false;                //!< the 6R chain is read from the tip back (doc/inverse-kinematics.md eq. 39)
+  RevoluteChain rest;                   //!< the 6R chain solved for each value (reversed if so)
   IkFamily family = IkFamily::general;  //!< its closed form (spherical_wrist or three_parallel)
 
   //! Whether a lock leaves a closed form (joint ≥ 0).
@@ -39,9 +39,9 @@ struct LockedJoint {
 LockedJoint find_locked_joint(const RevoluteChain& chain);
 
 //! Every solution of `pose` with the locked joint at `value` (rad, finite): the 6R closed form of
-//! lock.rest for the pose doc/inverse-kinematics.md eq. 37 or 38 gives, its solutions as 7-joint vectors (the locked joint
-//! `value` itself, the others in [−π, π]). Up to 8; no allocation but the result's. Throws
-//! std::invalid_argument for a value that is not finite.
+//! lock.rest for the pose doc/inverse-kinematics.md eq. 37 or 38 gives, its solutions as 7-joint vectors (the locked
+//! joint `value` itself, the others in [−π, π]). Up to 8; no allocation but the result's. Throws std::invalid_argument
+//! for a value that is not finite.
 void locked_joint_inverse(const RevoluteChain& chain, const LockedJoint& lock, double value, const Posed& pose,
                           std::vector<Eigen::VectorXd>& out);
 
@@ -50,11 +50,11 @@ struct Redundancy {
   //! "locked_joint" for a 7R arm solved along a locked joint; "none" otherwise (a 6R arm, or a
   //! redundant one with no closed form, solved by the numeric search).
   std::string kind = "none";
-  int joint = -1;             //!< the locked joint's index in q (−1: none)
-  std::string joint_name;     //!< its name in the URDF
-  double lower = 0.0;         //!< the parameter's range: the locked joint's limits, or [−π, π]
-  double upper = 0.0;         //!<   for a continuous joint
-  int dof = 0;                //!< the arm's joints
+  int joint = -1;          //!< the locked joint's index in q (−1: none)
+  std::string joint_name;  //!< its name in the URDF
+  double lower = 0.0;      //!< the parameter's range: the locked joint's limits, or [−π, π]
+  double upper = 0.0;      //!<   for a continuous joint
+  int dof = 0;             //!< the arm's joints
 
   //! Whether the arm has a redundancy parameter (a locked joint).
   bool has_parameter() const noexcept { return joint >= 0; }
@@ -70,16 +70,18 @@ struct Redundancy {
 
 //! How follow() moves a redundant arm's parameter along a path (doc/inverse-kinematics.md §12):
 //! from q_start's value, down the gradient of a cost that grows towards the joint limits and
-//! the singular poses (eq. 44), at a rate bounded per radian the other joints travel (eq. 45).
+//! the singular poses (doc/inverse-kinematics.md eq. 44), at a rate bounded per radian the other joints travel
+//! (doc/inverse-kinematics.md eq. 45).
 struct RedundancyRule {
-  //! false: the parameter stays at q_start's value (eq. 41).
+  //! false: the parameter stays at q_start's value (doc/inverse-kinematics.md eq. 41).
   bool move = true;
-  //! g of eq. 45: the parameter's rate per unit of the cost's slope (rad² per unit of cost), ≥ 0.
+  //! g of doc/inverse-kinematics.md eq. 45: the parameter's rate per unit of the cost's slope (rad² per unit of cost),
+  //! ≥ 0.
   double gain = 0.05;
-  //! ρ of eq. 45: the largest change of the parameter (rad) per radian the joints travel at a
+  //! ρ of doc/inverse-kinematics.md eq. 45: the largest change of the parameter (rad) per radian the joints travel at a
   //! fixed parameter from one pose to the next, ≥ 0; it keeps the parameter from jumping.
   double max_rate = 0.5;
-  //! μ of eq. 44: the weight of the singularity term against the joint-limit term, ≥ 0.
+  //! μ of doc/inverse-kinematics.md eq. 44: the weight of the singularity term against the joint-limit term, ≥ 0.
   double singularity_weight = 0.01;
 };
 

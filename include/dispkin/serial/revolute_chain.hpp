@@ -30,8 +30,7 @@ struct RevoluteChain {
 
 //! The pose of a rigid motion rotating by `angle` about the line through `point` along the
 //! unit vector `axis`: x ↦ R (x − p) + p.
-inline Posed rotation_about_line(const Eigen::Vector3d& axis, const Eigen::Vector3d& point,
-                                 double angle) noexcept {
+inline Posed rotation_about_line(const Eigen::Vector3d& axis, const Eigen::Vector3d& point, double angle) noexcept {
   const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, axis));
   return Posed::unchecked(q, point - q * point);
 }

@@ -45,9 +45,9 @@ namespace serial {
 //! The mass properties of one moving body of the chain (the child link of a joint plus what is
 //! rigidly attached to it), in the frame of that link.
 struct BodyInertia {
-  double mass = 0.0;                                     //!< kg
+  double mass = 0.0;                                         //!< kg
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  //!< m, link frame
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();     //!< about the centre of mass, link axes (kg·m²)
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();         //!< about the centre of mass, link axes (kg·m²)
 };
 
 //! Shoulder / elbow / wrist configuration of a 6R arm, each +1 or −1 (0: on the boundary between
@@ -89,9 +89,9 @@ struct InverseOptions {
   //! converges (without it the search runs only where Newton lands on no solution inside the limits).
   bool wide_search = false;
   // Numeric fallback (family general) only:
-  int max_attempts = 64;             //!< random restarts of the KDL solver, > 0
-  double time_budget = 0.05;         //!< s of wall-clock time for the restarts, > 0
-  unsigned seed = 1;                 //!< of the restart generator: results are reproducible
+  int max_attempts = 64;      //!< random restarts of the KDL solver, > 0
+  double time_budget = 0.05;  //!< s of wall-clock time for the restarts, > 0
+  unsigned seed = 1;          //!< of the restart generator: results are reproducible
 };
 
 //! What inverse_solutions() found.
@@ -101,7 +101,7 @@ struct InverseResult {
   //! true: every solution (analytic; for a redundant arm every one at the parameter value asked
   //! for); false: what a search found, or a redundant arm's solutions at the default values.
   bool complete = false;
-  IkFamily family = IkFamily::general;     //!< the method used
+  IkFamily family = IkFamily::general;  //!< the method used
 };
 
 //! The pose tolerance every returned IK solution meets: rotation-matrix entries and
@@ -166,11 +166,11 @@ class SerialArm : public Kinematics {
   //! options.redundancy on an arm without a parameter,
   //! or together with q_ref, throws std::invalid_argument.
   //! Every solution (each 2π copy too) reproduces the pose to inverse_tolerance by forward():
-  //! a closed-form one as the solver measured it (doc/inverse-kinematics.md eq. 25, which implies it: doc/inverse-kinematics.md
-  //! doc/inverse-kinematics.md eq. 28) or kept it exact to rounding (eq. 26), every other one checked by forward(). Thread
-  //! safety: const and without shared mutable state (the KDL solvers are made per call on a
-  //! copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain
-  //! analysis per thread), so one arm may be used from several threads at once.
+  //! a closed-form one as the solver measured it (doc/inverse-kinematics.md eq. 25, which implies it:
+  //! doc/inverse-kinematics.md doc/inverse-kinematics.md eq. 28) or kept it exact to rounding (eq. 26), every other one
+  //! checked by forward(). Thread safety: const and without shared mutable state (the KDL solvers are made per call on
+  //! a copy of the KDL chain, whose joints cache their last pose; the analytic IK caches its chain analysis per
+  //! thread), so one arm may be used from several threads at once.
   InverseResult inverse_solutions(const Posed& pose, const InverseOptions& options = {}) const;
 
   //! The geometric Jacobian J(q) (6 × dof, product of exponentials on chain()): rows (v, ω),
@@ -240,18 +240,18 @@ constexpr double max_redundant_step = 0.3;
 
 //! Continuity along a path: for each pose in turn the solution nearest to the previous one
 //! among all solutions and their 2π copies inside the limits (found in closed form, never
-//! enumerated; options.offer_equivalents is not needed for them), starting from q_start (on a 6-joint arm tracked by Newton's method from the previous one
-//! first, where that converges close by). Throws std::runtime_error naming the index of a pose
-//! without a solution. A redundant arm with a parameter (redundancy()) starts at q_start's
-//! parameter value (options.redundancy is ignored) and moves it by `redundancy_rule` away from
-//! the joint limits and singular poses, at most redundancy_rule.max_rate rad per radian the other
-//! joints travel (doc/inverse-kinematics.md (eq. 45); with redundancy_rule.move false it stays);
-//! the first joint vector of a path that starts at forward(q_start) is q_start to rounding
-//! (no travel, no move); a step of more than max_redundant_step in any joint from one pose to the
-//! next throws std::runtime_error naming the pose instead of jumping (eq. 41). Throws
+//! enumerated; options.offer_equivalents is not needed for them), starting from q_start (on a 6-joint arm tracked by
+//! Newton's method from the previous one first, where that converges close by). Throws std::runtime_error naming the
+//! index of a pose without a solution. A redundant arm with a parameter (redundancy()) starts at q_start's parameter
+//! value (options.redundancy is ignored) and moves it by `redundancy_rule` away from the joint limits and singular
+//! poses, at most redundancy_rule.max_rate rad per radian the other joints travel (doc/inverse-kinematics.md (eq. 45);
+//! with redundancy_rule.move false it stays); the first joint vector of a path that starts at forward(q_start) is
+//! q_start to rounding (no travel, no move); a step of more than max_redundant_step in any joint from one pose to the
+//! next throws std::runtime_error naming the pose instead of jumping (doc/inverse-kinematics.md eq. 41). Throws
 //! std::invalid_argument for a negative or non-finite value of the rule.
-std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses, const Eigen::VectorXd& q_start,
-                                    const InverseOptions& options = {}, const RedundancyRule& redundancy_rule = {});
+std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Posed>& poses,
+                                    const Eigen::VectorXd& q_start, const InverseOptions& options = {},
+                                    const RedundancyRule& redundancy_rule = {});
 
 //! The joint velocities q̇ that give the body twist ξ_b = J_b(q) q̇ (the (v, ω) of dispkin::Twist):
 //! the minimum-norm least-squares solution, singular values below 6 ε of the largest taken as

@@ -26,8 +26,8 @@ namespace dispkin::serial {
 //! options or a q_start of the wrong size, std::runtime_error naming the time and path position
 //! where a pose has no IK solution, where the Jacobian is singular, or where the static torque
 //! alone exceeds a joint's effort limit (the KUKA re-timing patent's "cannot be reached by slowing down").
-JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm,
-                                    const Eigen::VectorXd& q_start, const JointCheckOptions& options = {});
+JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
+                                    const JointCheckOptions& options = {});
 
 //! The joint-limit factors of a PTP move at `times` (s): FVEL and FACC (doc/retiming.md (eq. 4)
 //! and (doc/retiming.md eq. 5)) of its joint line's own q, q̇ and q̈, with the torques of the arm's dynamics
@@ -80,9 +80,8 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
 //! Throws std::invalid_argument for bad options/limits, std::runtime_error where the
 //! path has no IK solution or is singular, where the static torque reaches a limit, where a
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
-OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits,
-                                   const SerialArm& arm, const Eigen::VectorXd& q_start,
-                                   const OptimalRetimeOptions& options = {});
+OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const SerialArm& arm,
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options = {});
 
 //! The arm as a JointModel: joints by the continuous inverse-kinematics branch (Newton from the
 //! previous solution, all analytic solutions where that fails), q′ by the body Jacobian, torque

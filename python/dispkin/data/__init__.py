@@ -30,7 +30,9 @@ from importlib import resources
 def names() -> list[str]:
     """The names of the shipped files (what :func:`path` accepts), sorted."""
     return sorted(
-        entry.name for entry in resources.files(__name__).iterdir() if entry.is_file() and not entry.name.endswith((".py", ".pyc"))
+        entry.name
+        for entry in resources.files(__name__).iterdir()
+        if entry.is_file() and not entry.name.endswith((".py", ".pyc"))
     )
 
 

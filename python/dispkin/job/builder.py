@@ -119,8 +119,15 @@ class _Builder:
         except (ValueError, RuntimeError) as error:
             raise self.fail(key_path, str(error)) from error
 
-    def call_section(self, at: KeyPath, written: Dict[str, Any], function: Any, *args: Any,
-                     elsewhere: Optional[KeyPath] = None, **kwargs: Any) -> Any:
+    def call_section(
+        self,
+        at: KeyPath,
+        written: Dict[str, Any],
+        function: Any,
+        *args: Any,
+        elsewhere: Optional[KeyPath] = None,
+        **kwargs: Any,
+    ) -> Any:
         """function(*args, **kwargs) on the values of the mapping at `at` (`written`: as the job
         gives them); a ValueError / RuntimeError ``name = value: reason`` naming one of its keys
         is re-raised at that key with the value as written, any other at `elsewhere` (default
@@ -137,7 +144,9 @@ class _Builder:
                 raise self.fail(at + (key,), f"{written[key]!r}: {named.group(2)}") from error
             raise self.fail(at if elsewhere is None else elsewhere, str(error)) from error
 
-    def degrees_in_range(self, at: KeyPath, value: float, low: float, high: float, unit: str, *, high_open: bool = False) -> None:
+    def degrees_in_range(
+        self, at: KeyPath, value: float, low: float, high: float, unit: str, *, high_open: bool = False
+    ) -> None:
         """A value the job gives in degrees (`unit`: deg, deg/s, deg/s²) within [low, high] (or
         [low, high) with high_open), refused with the value as written and the range in the
         job's unit."""
@@ -153,7 +162,11 @@ class _Builder:
         try:
             mode = path.stat().st_mode
         except OSError as error:
-            reason = "does not exist" if isinstance(error, FileNotFoundError) else f"cannot be read: {error.strerror or error}"
+            reason = (
+                "does not exist"
+                if isinstance(error, FileNotFoundError)
+                else f"cannot be read: {error.strerror or error}"
+            )
             raise self.fail(key_path, f"file {str(path)!r} {reason}") from None
         except ValueError as error:  # a NUL character: no file has such a name
             raise self.fail(key_path, f"{str(path)!r}: not a file name: {error}") from None
@@ -175,7 +188,10 @@ class _Builder:
         q = np.asarray(d["quaternion"], dtype=float)
         norm = float(np.linalg.norm(q))
         if abs(norm - 1.0) > 1e-6:  # no silent normalisation of a mistyped quaternion
-            raise self.fail(key_path + ("quaternion",), f"{tuple(q.tolist())}: must be a unit quaternion (w, x, y, z), norm is {norm:.9g}")
+            raise self.fail(
+                key_path + ("quaternion",),
+                f"{tuple(q.tolist())}: must be a unit quaternion (w, x, y, z), norm is {norm:.9g}",
+            )
         return self.call(key_path, Pose, q / norm, d["translation"])
 
     def pose(self, key_path: KeyPath, frames: Optional[WorkToolFrames]) -> Pose:
@@ -188,10 +204,15 @@ class _Builder:
         """`by`: translation added in base (or work) coordinates, rotation about the tool's own axes."""
         delta = self.raw_pose(key_path)
         if frames is None:
-            return Pose(quaternion=(current * Pose(quaternion=delta.quaternion)).quaternion,
-                        translation=current.translation + delta.translation)
+            return Pose(
+                quaternion=(current * Pose(quaternion=delta.quaternion)).quaternion,
+                translation=current.translation + delta.translation,
+            )
         tool = frames.tool_in_work(current)
-        moved = Pose(quaternion=(tool * Pose(quaternion=delta.quaternion)).quaternion, translation=tool.translation + delta.translation)
+        moved = Pose(
+            quaternion=(tool * Pose(quaternion=delta.quaternion)).quaternion,
+            translation=tool.translation + delta.translation,
+        )
         return frames.platform_pose(moved)
 
     # The machine and the frames ----------------------------------------------------------------
@@ -231,10 +252,15 @@ class _Builder:
         arm = self.call(at, _core.SerialArm.from_urdf, str(urdf), a["base_link"], a["tip_link"])
         q_start = np.asarray(a["q_start"], dtype=float)
         if q_start.size != arm.dof:
-            raise self.fail(at + ("q_start",), f"{tuple(q_start.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_start.size}")
+            raise self.fail(
+                at + ("q_start",),
+                f"{tuple(q_start.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_start.size}",
+            )
         if "redundancy" in a and arm.redundancy.kind == "none":
-            raise self.fail(at + ("redundancy",), f"{a['redundancy']}: the arm ({arm.dof} joints, family {arm.family}) has no "
-                                                  "redundancy parameter")
+            raise self.fail(
+                at + ("redundancy",),
+                f"{a['redundancy']}: the arm ({arm.dof} joints, family {arm.family}) has no redundancy parameter",
+            )
         job["arm"], job["q_start"] = arm, q_start
 
     def frames(self, job: Dict[str, Any]) -> None:
@@ -262,7 +288,9 @@ class _Builder:
         self.group_speeds(metric_set, m.get("groups", []))
         self.leg_speed_group(job, metric_set)
         if metric_set.point_count == 0 and metric_set.sphere_count == 0:
-            raise self.fail(("metric_set",), "the metric set has no points: give metric_set.points (or a hexapod leg_speed_group)")
+            raise self.fail(
+                ("metric_set",), "the metric set has no points: give metric_set.points (or a hexapod leg_speed_group)"
+            )
         self.call(("metric_set",), metric_set.require_well_formed)
         return metric_set
 
@@ -327,7 +355,9 @@ class _Builder:
             return
         at: KeyPath = ("machine", "hexapod", "leg_speed_group")
         if leg_group in metric_set.groups:
-            raise self.fail(at, f"{leg_group}: the metric set already has group {leg_group}; the legs need a group of their own")
+            raise self.fail(
+                at, f"{leg_group}: the metric set already has group {leg_group}; the legs need a group of their own"
+            )
         self.call(at, hexapod.add_leg_speed_group, metric_set, leg_group)
         job["leg_speed_group"] = leg_group
 
@@ -358,8 +388,11 @@ class _Builder:
             if "ptp" in move:
                 for key in ("velocity", "acceleration"):
                     if key in move:
-                        raise self.fail(at + (key,), f"{move[key]}: a PTP move runs under the joint limits and `limits`; "
-                                                     "a move's own speed is for lin, circ and spline moves")
+                        raise self.fail(
+                            at + (key,),
+                            f"{move[key]}: a PTP move runs under the joint limits and `limits`; "
+                            "a move's own speed is for lin, circ and spline moves",
+                        )
                 self.ptp_move(job, moves, at, blend if blend is not None else move.get("blend_weight"))
             else:
                 self.cartesian_move(job, moves, at, move, blend)
@@ -372,21 +405,35 @@ class _Builder:
         """A blend is given by its size (`blend`, m) or as the share of both moves (`blend_weight`,
         the Mamezou article's w), not both; `orientation_blend` says how it turns the tool and needs one of them."""
         if "blend" in move and "blend_weight" in move:
-            raise self.fail(at + ("blend_weight",), f"{move['blend_weight']}: give the blend by its size (`blend`, m) "
-                                                    "or as a share of both moves (`blend_weight`), not both")
+            raise self.fail(
+                at + ("blend_weight",),
+                f"{move['blend_weight']}: give the blend by its size (`blend`, m) "
+                "or as a share of both moves (`blend_weight`), not both",
+            )
         if "blend_weight" in move and move["blend_weight"] < MIN_BLEND_WEIGHT:
-            raise self.fail(at + ("blend_weight",), f"{move['blend_weight']!r}: must be at least {MIN_BLEND_WEIGHT:g}: a smaller share "
-                            "puts the blend's ends within 1e-06 of the corner, where they meet it, and leaves no blend")
+            raise self.fail(
+                at + ("blend_weight",),
+                f"{move['blend_weight']!r}: must be at least {MIN_BLEND_WEIGHT:g}: a smaller share "
+                "puts the blend's ends within 1e-06 of the corner, where they meet it, and leaves no blend",
+            )
         if "blend" in move and move["blend"] < MIN_BLEND:
-            raise self.fail(at + ("blend",), f"{move['blend']!r}: must be at least {MIN_BLEND:g} m, the smallest blend dispkin builds")
+            raise self.fail(
+                at + ("blend",),
+                f"{move['blend']!r}: must be at least {MIN_BLEND:g} m, the smallest blend dispkin builds",
+            )
         if "orientation_blend" in move and "blend" not in move and "blend_weight" not in move:
-            raise self.fail(at + ("orientation_blend",), f"{move['orientation_blend']}: there is no blend to shape; "
-                                                         "give `blend` (m) or `blend_weight`")
+            raise self.fail(
+                at + ("orientation_blend",),
+                f"{move['orientation_blend']}: there is no blend to shape; give `blend` (m) or `blend_weight`",
+            )
 
     def ptp_move(self, job: Dict[str, Any], moves: _Moves, at: KeyPath, blend: Optional[float]) -> None:
         """A PTP move: the run before it becomes a part, the move a part of its own."""
         if blend is not None:
-            raise self.fail(at + ("blend",), f"{blend}: a PTP move starts and ends at rest; it does not blend with the previous move")
+            raise self.fail(
+                at + ("blend",),
+                f"{blend}: a PTP move starts and ends at rest; it does not blend with the previous move",
+            )
         self.close_run(job, moves)
         q_a, q_b, end = self.ptp(job, at, moves.current, moves.q_current)
         path = self.call(at + ("ptp",), Path.ptp, q_a, q_b)
@@ -394,17 +441,24 @@ class _Builder:
         moves.parts.append(Part("ptp", path, q_a, [at[1]]))
         moves.current, moves.q_current = end, q_b
 
-    def cartesian_move(self, job: Dict[str, Any], moves: _Moves, at: KeyPath, move: Dict[str, Any],
-                       blend: Optional[float]) -> None:
+    def cartesian_move(
+        self, job: Dict[str, Any], moves: _Moves, at: KeyPath, move: Dict[str, Any], blend: Optional[float]
+    ) -> None:
         """A lin, circ or spline move from the current pose, added to the current run."""
         for key in ("blend", "blend_weight"):
             if key in move and moves.built[-1].kind == "ptp":
-                raise self.fail(at + (key,), f"{move[key]}: the previous move is a PTP move, which ends at rest; nothing to blend with")
+                raise self.fail(
+                    at + (key,),
+                    f"{move[key]}: the previous move is a PTP move, which ends at rest; nothing to blend with",
+                )
         kind = "lin" if "lin" in move else "circ" if "circ" in move else "spline"
         arm = job.get("arm")
         if arm is not None and arm.dof != 6 and arm.redundancy.kind == "none":
-            raise self.fail(at + (kind,), f"a {kind} move on a serial arm is followed by inverting its Jacobian: the arm needs 6 joints, "
-                                          f"or 7 with a redundancy parameter; it has {arm.dof} (family {arm.family})")
+            raise self.fail(
+                at + (kind,),
+                f"a {kind} move on a serial arm is followed by inverting its Jacobian: the arm needs 6 joints, "
+                f"or 7 with a redundancy parameter; it has {arm.dof} (family {arm.family})",
+            )
         section = {"lin": self.lin, "circ": self.circ, "spline": self.spline}[kind]
         constructor, arguments, end = section(job, at, moves.current)
         # The move's own speed and acceleration (keywords of Path.lin / circ / spline).
@@ -413,7 +467,9 @@ class _Builder:
             constructor = functools.partial(constructor, **own)
         # The move's own limits are reported at their keys (`moves[i].velocity`), the rest at the move.
         path = self.call_section(at, own, constructor, *arguments, elsewhere=at + (kind,))
-        moves.built.append(Move(kind, path, blend, move.get("blend_weight"), move.get("orientation_blend", "rotation_vector")))
+        moves.built.append(
+            Move(kind, path, blend, move.get("blend_weight"), move.get("orientation_blend", "rotation_vector"))
+        )
         moves.run.append(_RunMove(at[1], path, constructor, arguments))
         moves.current = end
 
@@ -427,13 +483,17 @@ class _Builder:
             end = self.relative_end(current, at + ("lin", "by"), job["frames"])
         return Path.lin, (current, end, lin.get("interpolation", "decoupled"), job["pivot"]), end
 
-    def circ(self, job: Dict[str, Any], at: KeyPath, current: Pose) -> Tuple[Callable[..., Path], Tuple[Any, ...], Pose]:
+    def circ(
+        self, job: Dict[str, Any], at: KeyPath, current: Pose
+    ) -> Tuple[Callable[..., Path], Tuple[Any, ...], Pose]:
         """A circ move: (Path.circ, its arguments, the end pose); the arc runs through `via`."""
         via = self.pose(at + ("circ", "via"), job["frames"])
         end = self.pose(at + ("circ", "to"), job["frames"])
         return Path.circ, (current, via, end, job["pivot"]), end
 
-    def spline(self, job: Dict[str, Any], at: KeyPath, current: Pose) -> Tuple[Callable[..., Path], Tuple[Any, ...], Pose]:
+    def spline(
+        self, job: Dict[str, Any], at: KeyPath, current: Pose
+    ) -> Tuple[Callable[..., Path], Tuple[Any, ...], Pose]:
         """A spline move: (Path.spline, its arguments, the end pose) through the `through` poses."""
         spline = value_at(self.data, at + ("spline",))
         through = [self.pose(at + ("spline", "through", k), job["frames"]) for k in range(len(spline["through"]))]
@@ -452,11 +512,21 @@ class _Builder:
         for later in run[1:]:
             move = moves.built[later.index]
             if move.blend_weight is not None:
-                self.call(("moves", later.index, "blend_weight"), whole.then, later.path, weight=move.blend_weight,
-                          orientation_blend=move.orientation_blend)
+                self.call(
+                    ("moves", later.index, "blend_weight"),
+                    whole.then,
+                    later.path,
+                    weight=move.blend_weight,
+                    orientation_blend=move.orientation_blend,
+                )
             elif move.blend is not None:
-                self.call(("moves", later.index, "blend"), whole.then, later.path, blend=move.blend,
-                          orientation_blend=move.orientation_blend)
+                self.call(
+                    ("moves", later.index, "blend"),
+                    whole.then,
+                    later.path,
+                    blend=move.blend,
+                    orientation_blend=move.orientation_blend,
+                )
             else:
                 self.call(("moves", later.index), whole.then, later.path)
         q_run = self.joints_at(arm, ("moves", first.index), whole.start, moves.q_current) if arm is not None else None
@@ -477,23 +547,33 @@ class _Builder:
             # (doc/inverse-kinematics.md eq. 41 keeps that value along the moves).
             solutions = arm.inverse(pose, q_ref=q_reference)
             if len(solutions) == 0:
-                raise self.fail(key_path, f"the arm cannot reach this pose within its joint limits with {arm.redundancy.joint_name} "
-                                          f"at {arm.redundancy.value(q_reference):g} rad, its value at the start (no inverse-kinematics solution)")
+                raise self.fail(
+                    key_path,
+                    f"the arm cannot reach this pose within its joint limits with {arm.redundancy.joint_name} "
+                    f"at {arm.redundancy.value(q_reference):g} rad, its value at the start (no inverse-kinematics solution)",
+                )
             return np.asarray(solutions[0])
         try:
             return np.asarray(arm.follow([pose], q_reference)[0])
         except RuntimeError as error:
-            raise self.fail(key_path, "the arm cannot reach this pose within its joint limits (no inverse-kinematics solution)") from error
+            raise self.fail(
+                key_path, "the arm cannot reach this pose within its joint limits (no inverse-kinematics solution)"
+            ) from error
         except ValueError as error:
             raise self.fail(key_path, str(error)) from error
 
-    def ptp(self, job: Dict[str, Any], at: KeyPath, current: Pose, q_current: Optional[np.ndarray]) -> Tuple[np.ndarray, np.ndarray, Pose]:
+    def ptp(
+        self, job: Dict[str, Any], at: KeyPath, current: Pose, q_current: Optional[np.ndarray]
+    ) -> Tuple[np.ndarray, np.ndarray, Pose]:
         """(q_a, q_b, end pose) of a PTP move: the target as joints (radians / metres) or as a
         pose (the IK solution nearest to the joints at the move's start)."""
         if job.get("hexapod") is not None:
-            raise self.fail(at + ("ptp",), "PTP moves are planned for serial arms only: dispkin has no DISP bound for a "
-                            "straight line in a hexapod's leg space yet. Use a lin move (the platform on a line; the legs "
-                            "follow by inverse kinematics).")
+            raise self.fail(
+                at + ("ptp",),
+                "PTP moves are planned for serial arms only: dispkin has no DISP bound for a "
+                "straight line in a hexapod's leg space yet. Use a lin move (the platform on a line; the legs "
+                "follow by inverse kinematics).",
+            )
         arm = job.get("arm")
         if arm is None:
             raise self.fail(at + ("ptp",), "a PTP move moves joints: it needs machine.serial_arm")
@@ -512,11 +592,17 @@ class _Builder:
         """A PTP target given as joints: one value per joint, each inside its position limits."""
         q_b = np.asarray(joints, dtype=float)
         if q_b.size != arm.dof:
-            raise self.fail(at, f"{tuple(q_b.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_b.size}")
+            raise self.fail(
+                at,
+                f"{tuple(q_b.tolist())}: expected {arm.dof} joint values ({', '.join(arm.joint_names)}), got {q_b.size}",
+            )
         limits = arm.joint_limits
         for k in range(arm.dof):
             if not limits.lower[k] <= q_b[k] <= limits.upper[k]:
-                raise self.fail(at + (k,), f"{q_b[k]!r}: outside the position limits [{limits.lower[k]:g}, {limits.upper[k]:g}] of joint {arm.joint_names[k]!r}")
+                raise self.fail(
+                    at + (k,),
+                    f"{q_b[k]!r}: outside the position limits [{limits.lower[k]:g}, {limits.upper[k]:g}] of joint {arm.joint_names[k]!r}",
+                )
         return q_b
 
     # Limits and output -------------------------------------------------------------------------
@@ -528,7 +614,10 @@ class _Builder:
         lim = self.data["limits"]
         profile = lim.get("profile", "scurve")
         if profile == "scurve" and "jerk" not in lim:
-            raise self.fail(("limits",), "missing key `jerk`: the scurve profile (the default) needs a jerk limit; give one or set profile: trapezoid")
+            raise self.fail(
+                ("limits",),
+                "missing key `jerk`: the scurve profile (the default) needs a jerk limit; give one or set profile: trapezoid",
+            )
         return job_limits(self, pilz), profile
 
     def corner_tolerance(self) -> float:
@@ -540,8 +629,11 @@ class _Builder:
         out = self.data.get("output") or {}
         job["sample_period"] = float(out.get("sample_period", DEFAULT_SAMPLE_PERIOD))
         if job["sample_period"] < input_budget.MIN_SAMPLE_PERIOD:
-            raise self.fail(("output", "sample_period"), f"{job['sample_period']!r}: must be at least "
-                            f"{input_budget.MIN_SAMPLE_PERIOD:g} s (doc/input-budget.md)")
+            raise self.fail(
+                ("output", "sample_period"),
+                f"{job['sample_period']!r}: must be at least "
+                f"{input_budget.MIN_SAMPLE_PERIOD:g} s (doc/input-budget.md)",
+            )
         files = {"csv": f"{name}.csv", "json": f"{name}.json", "summary": f"{name}.summary.txt"}
         for key in files:
             if key in out:
@@ -549,13 +641,19 @@ class _Builder:
                 files[key] = out[key]
             elif len(files[key].encode("utf-8")) > MAX_FILE_NAME_BYTES:
                 at: KeyPath = ("name",) if "name" in self.data else ()
-                raise self.fail(at, f"{echo(name)}: the output file name {echo(files[key])} made from it is longer than "
-                                f"{MAX_FILE_NAME_BYTES} bytes, the longest file name: give a shorter name, or output.{key}")
+                raise self.fail(
+                    at,
+                    f"{echo(name)}: the output file name {echo(files[key])} made from it is longer than "
+                    f"{MAX_FILE_NAME_BYTES} bytes, the longest file name: give a shorter name, or output.{key}",
+                )
         keys = list(files)
         for i, key in enumerate(keys):
             for earlier in keys[:i]:
                 if files[key] == files[earlier]:
-                    raise self.fail(("output", key), f"{files[key]!r}: the same file as output.{earlier}: each output needs a name of its own")
+                    raise self.fail(
+                        ("output", key),
+                        f"{files[key]!r}: the same file as output.{earlier}: each output needs a name of its own",
+                    )
         job["outputs"] = files
 
     def output_name(self, at: KeyPath, value: str) -> None:
@@ -587,5 +685,16 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     read_events(builder, job, parts)
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)
-    return Job(file=source.path, name=name, metric_set=metric_set, path=path_, moves=moves, limits=limits,
-               profile=profile, parts=parts, source=source, inputs=builder.inputs, **job)
+    return Job(
+        file=source.path,
+        name=name,
+        metric_set=metric_set,
+        path=path_,
+        moves=moves,
+        limits=limits,
+        profile=profile,
+        parts=parts,
+        source=source,
+        inputs=builder.inputs,
+        **job,
+    )

@@ -47,18 +47,27 @@ def read_events(builder: Any, job: Dict[str, Any], parts: Sequence[Part]) -> Non
         return
     at: KeyPath = ("events",)
     if len(value) > input_budget.MAX_EVENTS:
-        raise builder.fail(at, f"{len(value)} events, more than {input_budget.MAX_EVENTS}, the most a job may have "
-                               "(each plans the rest of the motion anew; doc/input-budget.md)")
+        raise builder.fail(
+            at,
+            f"{len(value)} events, more than {input_budget.MAX_EVENTS}, the most a job may have "
+            "(each plans the rest of the motion anew; doc/input-budget.md)",
+        )
     ptp = next((k for part in parts if part.kind == "ptp" for k in part.moves), None)
     if ptp is not None:
-        raise builder.fail(at, f"events apply to a job planned as one Cartesian trajectory; moves[{ptp}] is a PTP move, so this "
-                               "job is planned part by part, and a stop or an override within one part would not carry over to the "
-                               "parts after it (each starts at rest where the one before ends): give events in jobs of lin, circ "
-                               "and spline moves")
+        raise builder.fail(
+            at,
+            f"events apply to a job planned as one Cartesian trajectory; moves[{ptp}] is a PTP move, so this "
+            "job is planned part by part, and a stop or an override within one part would not carry over to the "
+            "parts after it (each starts at rest where the one before ends): give events in jobs of lin, circ "
+            "and spline moves",
+        )
     if builder.data.get("retime") is not None:
-        raise builder.fail(at, "a re-timed trajectory (`retime`) keeps to the joint limits, which a stop, a resumption or an "
-                               "override does not know (they keep to the DISP limits the trajectory was planned under; "
-                               "doc/events.md §4): give `events` or `retime`, not both")
+        raise builder.fail(
+            at,
+            "a re-timed trajectory (`retime`) keeps to the joint limits, which a stop, a resumption or an "
+            "override does not know (they keep to the DISP limits the trajectory was planned under; "
+            "doc/events.md §4): give `events` or `retime`, not both",
+        )
     low, high = OVERRIDE_RANGE
     events: List[Event] = []
     stopped_by: Optional[Event] = None
@@ -66,23 +75,37 @@ def read_events(builder: Any, job: Dict[str, Any], parts: Sequence[Part]) -> Non
         key: KeyPath = ("events", i)
         kind = next(k for k in KINDS if k in entry)
         if events and entry["at"] < events[-1].at:
-            raise builder.fail(key + ("at",), f"{entry['at']!r}: before the event before it (events[{i - 1}].at = "
-                                              f"{value[i - 1]['at']!r}): give the events in time order")
+            raise builder.fail(
+                key + ("at",),
+                f"{entry['at']!r}: before the event before it (events[{i - 1}].at = "
+                f"{value[i - 1]['at']!r}): give the events in time order",
+            )
         factor = None
         if kind == "override":
             factor = float(entry["override"])
             if not low <= factor <= high:
-                raise builder.fail(key + ("override",), f"{entry['override']!r}: must be in [{low:g}, {high:g}] "
-                                                        "(times the velocity-limit curve as planned)")
+                raise builder.fail(
+                    key + ("override",),
+                    f"{entry['override']!r}: must be in [{low:g}, {high:g}] "
+                    "(times the velocity-limit curve as planned)",
+                )
         elif entry[kind] is not True:
-            raise builder.fail(key + (kind,), f"{_yaml(entry[kind])}: a `{kind}` event is written `{kind}: true` "
-                                              "(leave out an event that is not to happen)")
+            raise builder.fail(
+                key + (kind,),
+                f"{_yaml(entry[kind])}: a `{kind}` event is written `{kind}: true` "
+                "(leave out an event that is not to happen)",
+            )
         if kind == "stop" and stopped_by is not None:
-            raise builder.fail(key + ("stop",), f"true: the motion is already stopped, by events[{stopped_by.index}] at "
-                                                f"t = {stopped_by.at:g} s: a second stop needs a `resume` before it")
+            raise builder.fail(
+                key + ("stop",),
+                f"true: the motion is already stopped, by events[{stopped_by.index}] at "
+                f"t = {stopped_by.at:g} s: a second stop needs a `resume` before it",
+            )
         if kind == "resume" and stopped_by is None:
-            raise builder.fail(key + ("resume",), "true: no stop before it: a resumption continues a motion stopped by an "
-                                                  "earlier `stop` event")
+            raise builder.fail(
+                key + ("resume",),
+                "true: no stop before it: a resumption continues a motion stopped by an earlier `stop` event",
+            )
         event = Event(float(entry["at"]), kind, factor, i)
         stopped_by = event if kind == "stop" else None if kind == "resume" else stopped_by
         events.append(event)
@@ -98,7 +121,7 @@ def _error(job: Job, key_path: KeyPath, message: str) -> JobError:
 
 def _stop_before(job: Job, event: Event) -> Event:
     """The stop a resumption continues (read_events made sure there is one)."""
-    return next(e for e in reversed(job.events[:event.index]) if e.kind == "stop")
+    return next(e for e in reversed(job.events[: event.index]) if e.kind == "stop")
 
 
 def apply_events(job: Job, trajectory: Trajectory) -> Trajectory:
@@ -109,14 +132,22 @@ def apply_events(job: Job, trajectory: Trajectory) -> Trajectory:
         key: KeyPath = ("events", event.index)
         if event.kind != "resume" and not trajectory.stopped and event.at >= trajectory.duration:
             later = " with the events before it" if event.index > 0 else ""
-            raise _error(job, key + ("at",), f"{_number(event.at)}: the motion ends at t = {trajectory.duration:.6g} s{later}; "
-                                             f"a {'stop' if event.kind == 'stop' else 'speed override'} at or after its end "
-                                             "changes nothing: give a time before it")
+            raise _error(
+                job,
+                key + ("at",),
+                f"{_number(event.at)}: the motion ends at t = {trajectory.duration:.6g} s{later}; "
+                f"a {'stop' if event.kind == 'stop' else 'speed override'} at or after its end "
+                "changes nothing: give a time before it",
+            )
         if event.kind == "resume" and not trajectory.stopped:
             stop = _stop_before(job, event)
-            raise _error(job, key + ("resume",), f"true: nothing to resume: the stop of events[{stop.index}] (t = {stop.at:g} s) "
-                                                 f"comes to rest at the end of the path (s = {trajectory.end_position:.6g} m), "
-                                                 "where the motion ends anyway")
+            raise _error(
+                job,
+                key + ("resume",),
+                f"true: nothing to resume: the stop of events[{stop.index}] (t = {stop.at:g} s) "
+                f"comes to rest at the end of the path (s = {trajectory.end_position:.6g} m), "
+                "where the motion ends anyway",
+            )
         try:
             if event.kind == "stop":
                 trajectory = trajectory.stopped_at(event.at)
@@ -125,23 +156,39 @@ def apply_events(job: Job, trajectory: Trajectory) -> Trajectory:
             else:
                 trajectory = trajectory.with_override(event.at, event.factor)
         except (ValueError, RuntimeError) as error:
-            if event.kind == "stop" and trajectory.path_velocity(event.at) == 0.0 and trajectory.path_acceleration(event.at) == 0.0:
-                raise _error(job, key + ("at",), f"{_number(event.at)}: the motion rests at this instant (s = "
-                                                 f"{float(trajectory.path_position(event.at)):.6g} m) between two rest-to-rest "
-                                                 f"laws, where Trajectory.stopped_at fails ({error}): give the stop a time at "
-                                                 "which the motion moves") from error
+            if (
+                event.kind == "stop"
+                and trajectory.path_velocity(event.at) == 0.0
+                and trajectory.path_acceleration(event.at) == 0.0
+            ):
+                raise _error(
+                    job,
+                    key + ("at",),
+                    f"{_number(event.at)}: the motion rests at this instant (s = "
+                    f"{float(trajectory.path_position(event.at)):.6g} m) between two rest-to-rest "
+                    f"laws, where Trajectory.stopped_at fails ({error}): give the stop a time at "
+                    "which the motion moves",
+                ) from error
             raise _error(job, key, f"{event.kind} at t = {event.at:g} s failed: {error}") from error
         count = trajectory.duration / job.sample_period
         if count > input_budget.MAX_SAMPLES:
             at = key + (("override",) if event.kind == "override" else ("at",))
             value = event.factor if event.kind == "override" else event.at
-            raise _error(job, at, f"{_number(value)}: with this event the motion lasts {trajectory.duration:.6g} s, {count:.3g} samples "
-                                  f"of {job.sample_period:g} s (output.sample_period), more than {input_budget.MAX_SAMPLES} "
-                                  "(doc/input-budget.md)")
+            raise _error(
+                job,
+                at,
+                f"{_number(value)}: with this event the motion lasts {trajectory.duration:.6g} s, {count:.3g} samples "
+                f"of {job.sample_period:g} s (output.sample_period), more than {input_budget.MAX_SAMPLES} "
+                "(doc/input-budget.md)",
+            )
     if job.events and trajectory.duration == 0.0:
         stop = next(e for e in reversed(job.events) if e.kind == "stop")
-        raise _error(job, ("events", stop.index, "at"), f"{_number(stop.at)}: the stop comes before the motion starts and no resumption "
-                                                        "follows: the job has no motion to write")
+        raise _error(
+            job,
+            ("events", stop.index, "at"),
+            f"{_number(stop.at)}: the stop comes before the motion starts and no resumption "
+            "follows: the job has no motion to write",
+        )
     return trajectory
 
 
@@ -160,8 +207,12 @@ def describe_events(job: Job, trajectory: Union[Trajectory, Any]) -> List[Dict[s
     factor, stopped = 1.0, False
     for k, event in enumerate(job.events):
         t = event.at
-        record: Dict[str, Any] = {"at": t, "kind": event.kind, "path_position": float(trajectory.path_position(t)),
-                                  "path_velocity": float(trajectory.path_velocity(t))}
+        record: Dict[str, Any] = {
+            "at": t,
+            "kind": event.kind,
+            "path_position": float(trajectory.path_position(t)),
+            "path_velocity": float(trajectory.path_velocity(t)),
+        }
         if event.kind == "stop":
             if record["path_velocity"] == 0.0 and float(trajectory.path_acceleration(t)) == 0.0:
                 rest, braking = record["path_position"], 0.0  # at rest already: it stays there
@@ -169,10 +220,14 @@ def describe_events(job: Job, trajectory: Union[Trajectory, Any]) -> List[Dict[s
                 try:
                     stop = trajectory.stopped_at(t)
                 except (ValueError, RuntimeError) as error:
-                    raise _error(job, ("events", event.index), f"the stop at t = {t:g} s cannot be measured again: {error}") from error
+                    raise _error(
+                        job, ("events", event.index), f"the stop at t = {t:g} s cannot be measured again: {error}"
+                    ) from error
                 rest, braking = float(stop.end_position), max(float(stop.duration) - t, 0.0)
-            resume = next((e for e in job.events[k + 1:] if e.kind == "resume"), None)
-            record.update(stop_position=rest, stop_duration=braking, came_to_rest=resume is None or resume.at >= t + braking)
+            resume = next((e for e in job.events[k + 1 :] if e.kind == "resume"), None)
+            record.update(
+                stop_position=rest, stop_duration=braking, came_to_rest=resume is None or resume.at >= t + braking
+            )
             stopped = True
         elif event.kind == "resume":
             record["factor"] = factor
@@ -189,18 +244,24 @@ def event_text(index: int, record: Dict[str, Any]) -> str:
     head = f"event {index} at t = {record['at']:.4f} s: "
     where = f"s = {record['path_position']:.6f} m at {record['path_velocity']:.6f} m/s"
     if record["kind"] == "stop":
-        text = (f"stop from {where}, at rest at s = {record['stop_position']:.6f} m after {record['stop_duration']:.4f} s")
+        text = (
+            f"stop from {where}, at rest at s = {record['stop_position']:.6f} m after {record['stop_duration']:.4f} s"
+        )
         return head + text + ("" if record["came_to_rest"] else " (resumed before it came to rest)")
     if record["kind"] == "resume":
         return head + f"resume from {where}, at speed override {record['factor']:g}"
     text = f"speed override {record['factor']:g} × the velocity-limit curve as planned, from {where}"
-    return head + text + (" (the motion is stopped: it holds from the resumption on)" if record["while_stopped"] else "")
+    return (
+        head + text + (" (the motion is stopped: it holds from the resumption on)" if record["while_stopped"] else "")
+    )
 
 
 def events_text(events: Sequence[Event]) -> str:
     """The events in a few words each, in order, e.g. 'stop at t = 2.5 s, override 0.5 at t = 6 s'."""
-    return ", ".join(f"override {e.factor:g} at t = {e.at:g} s" if e.kind == "override" else f"{e.kind} at t = {e.at:g} s"
-                     for e in events)
+    return ", ".join(
+        f"override {e.factor:g} at t = {e.at:g} s" if e.kind == "override" else f"{e.kind} at t = {e.at:g} s"
+        for e in events
+    )
 
 
 def end_of_motion(trajectory: Any) -> Tuple[float, bool]:

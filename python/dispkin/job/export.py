@@ -26,8 +26,12 @@ def csv_header(samples: JobSamples) -> List[str]:
     """Columns of the CSV file: time, each joint's position / velocity / acceleration / effort,
     the pose as XYZUVW, the path velocity, the fastest point's speed, each group's speed."""
     columns = ["time_s"]
-    for kind, array in (("position", samples.positions), ("velocity", samples.velocities),
-                        ("acceleration", samples.accelerations), ("effort", samples.effort)):
+    for kind, array in (
+        ("position", samples.positions),
+        ("velocity", samples.velocities),
+        ("acceleration", samples.accelerations),
+        ("effort", samples.effort),
+    ):
         if array.shape[1]:
             columns += [f"{name}.{kind}" for name in samples.joint_names]
     columns += POSE_COLUMNS + ["path_velocity_mps", "fastest_point_speed_mps"]
@@ -37,9 +41,19 @@ def csv_header(samples: JobSamples) -> List[str]:
 
 def write_csv(samples: JobSamples, path: Union[str, pathlib.Path]) -> None:
     """The samples as CSV (header csv_header(samples); floats with 17 significant digits)."""
-    table = np.column_stack([samples.time, samples.positions, samples.velocities, samples.accelerations, samples.effort,
-                             samples.xyzuvw, samples.path_velocity, samples.fastest_point_speed,
-                             *samples.group_speeds.values()])
+    table = np.column_stack(
+        [
+            samples.time,
+            samples.positions,
+            samples.velocities,
+            samples.accelerations,
+            samples.effort,
+            samples.xyzuvw,
+            samples.path_velocity,
+            samples.fastest_point_speed,
+            *samples.group_speeds.values(),
+        ]
+    )
     np.savetxt(path, table, delimiter=",", header=",".join(csv_header(samples)), comments="", fmt="%.17g")
 
 
@@ -58,9 +72,15 @@ def trajectory_json(job: Job, samples: JobSamples, summary: Dict[str, Any]) -> D
     times, the path velocity, the fastest point's speed, each group's speed and the summary."""
     points = []
     for k, t in enumerate(samples.time):
-        points.append({"positions": samples.positions[k].tolist(), "velocities": samples.velocities[k].tolist(),
-                       "accelerations": samples.accelerations[k].tolist(), "effort": samples.effort[k].tolist(),
-                       "time_from_start": time_from_start(float(t))})
+        points.append(
+            {
+                "positions": samples.positions[k].tolist(),
+                "velocities": samples.velocities[k].tolist(),
+                "accelerations": samples.accelerations[k].tolist(),
+                "effort": samples.effort[k].tolist(),
+                "time_from_start": time_from_start(float(t)),
+            }
+        )
     frame = "tool frame in the work frame" if job.frames is not None else "platform/flange in base coordinates"
     return {
         "header": {"stamp": {"sec": 0, "nanosec": 0}, "frame_id": ""},

@@ -56,8 +56,9 @@ def job_error(message: str, line: Optional[int] = None) -> JobError:
     return JobError(message, (), line)
 
 
-def read_bounded(path: pathlib.Path, what: str = "job file", fail: ErrorFactory = job_error,
-                 limit: int = MAX_FILE_BYTES) -> bytes:
+def read_bounded(
+    path: pathlib.Path, what: str = "job file", fail: ErrorFactory = job_error, limit: int = MAX_FILE_BYTES
+) -> bytes:
     """The bytes of the file, refused beyond `limit` without being read further. A directory,
     a FIFO, a device or a socket is refused before anything is read: it is opened without
     blocking (a FIFO without a writer would wait for one forever) and looked at first.
@@ -82,7 +83,9 @@ def read_bounded(path: pathlib.Path, what: str = "job file", fail: ErrorFactory 
                 break
             data += block
     if status.st_size > limit or len(data) > limit:
-        raise fail(f"{path}: the {what} is larger than {limit} bytes, the limit of a {what} (doc/input-budget.md)", None)
+        raise fail(
+            f"{path}: the {what} is larger than {limit} bytes, the limit of a {what} (doc/input-budget.md)", None
+        )
     return bytes(data)
 
 
@@ -94,9 +97,12 @@ def decode_utf8(path: pathlib.Path, data: bytes, what: str = "job file", fail: E
     except UnicodeDecodeError as error:
         line_start = data.rfind(b"\n", 0, error.start) + 1
         line = data.count(b"\n", 0, error.start) + 1
-        column = len(data[line_start:error.start].decode("utf-8", errors="replace")) + 1
-        raise fail(f"{path}:{line}:{column}: the {what} is not UTF-8 text: byte 0x{data[error.start]:02x} "
-                   f"({error.reason}); save it as UTF-8", line) from None
+        column = len(data[line_start : error.start].decode("utf-8", errors="replace")) + 1
+        raise fail(
+            f"{path}:{line}:{column}: the {what} is not UTF-8 text: byte 0x{data[error.start]:02x} "
+            f"({error.reason}); save it as UTF-8",
+            line,
+        ) from None
 
 
 class _Collection:
@@ -120,7 +126,9 @@ def check_events(path: pathlib.Path, events: Any, what: str = "job", fail: Error
 
     def refuse(event: Any, reason: str) -> Exception:
         mark = event.start_mark
-        return fail(f"{path}:{mark.line + 1}:{mark.column + 1}: ({what}): {reason} (doc/input-budget.md)", mark.line + 1)
+        return fail(
+            f"{path}:{mark.line + 1}:{mark.column + 1}: ({what}): {reason} (doc/input-budget.md)", mark.line + 1
+        )
 
     def count(event: Any, nodes: int) -> None:
         """`nodes` more values at `event`, in the whole job and in the collection being read."""
@@ -129,7 +137,9 @@ def check_events(path: pathlib.Path, events: Any, what: str = "job", fail: Error
         if stack:
             stack[-1].nodes += nodes
         if total > MAX_NODES:
-            raise refuse(event, f"the {what} expands to more than {MAX_NODES} values (aliases counted as what they repeat)")
+            raise refuse(
+                event, f"the {what} expands to more than {MAX_NODES} values (aliases counted as what they repeat)"
+            )
 
     for event in events:
         if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
@@ -152,7 +162,9 @@ def check_events(path: pathlib.Path, events: Any, what: str = "job", fail: Error
         elif isinstance(event, yaml.AliasEvent):
             aliases += 1
             if any(open_.anchor == event.anchor for open_ in stack):
-                raise refuse(event, f"the alias *{event.anchor} is inside its own anchor: a {what} is a tree, not a cycle")
+                raise refuse(
+                    event, f"the alias *{event.anchor} is inside its own anchor: a {what} is a tree, not a cycle"
+                )
             if aliases > MAX_ALIASES:
                 raise refuse(event, f"more than {MAX_ALIASES} aliases")
             count(event, anchored.get(event.anchor, 1))

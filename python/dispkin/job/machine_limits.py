@@ -19,7 +19,7 @@ from .model import KeyPath, Retime
 
 
 def _kind(data: Any) -> Optional[str]:
-    """"moveit", "pilz" or None (neither), from the file's top-level keys."""
+    """ "moveit", "pilz" or None (neither), from the file's top-level keys."""
     if not isinstance(data, dict):
         return None
     if "joint_limits" in data:
@@ -29,14 +29,18 @@ def _kind(data: Any) -> Optional[str]:
     return None
 
 
-def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) -> Optional[limits_files.PilzCartesianLimits]:
+def read_limits_files(
+    builder: Any, job: Dict[str, Any], metric_set: MetricSet
+) -> Optional[limits_files.PilzCartesianLimits]:
     """limits_file: apply a MoveIt file to the arm (job["arm"], job["joint_acceleration"]), add a
     Pilz file's rotation sphere to the metric set; returns the Pilz limits (None without)."""
     value = builder.data.get("limits_file")
     job["limits_files"] = []
     if value is None:
         return None
-    keys: List[KeyPath] = [("limits_file",)] if isinstance(value, str) else [("limits_file", i) for i in range(len(value))]
+    keys: List[KeyPath] = (
+        [("limits_file",)] if isinstance(value, str) else [("limits_file", i) for i in range(len(value))]
+    )
     pilz = None
     seen = set()
     for at in keys:
@@ -48,15 +52,22 @@ def read_limits_files(builder: Any, job: Dict[str, Any], metric_set: MetricSet) 
             raise builder.fail(at, str(error)) from error
         kind = _kind(document.data)
         if kind is None:
-            raise builder.fail(at, f"{str(path)!r} is neither a MoveIt joint_limits.yaml (a `joint_limits:` mapping) "
-                               "nor a Pilz cartesian_limits.yaml (`cartesian_limits:` with max_trans_vel, ...)")
+            raise builder.fail(
+                at,
+                f"{str(path)!r} is neither a MoveIt joint_limits.yaml (a `joint_limits:` mapping) "
+                "nor a Pilz cartesian_limits.yaml (`cartesian_limits:` with max_trans_vel, ...)",
+            )
         if kind in seen:
-            raise builder.fail(at, f"a second {'MoveIt' if kind == 'moveit' else 'Pilz'} limits file: give one of each at most")
+            raise builder.fail(
+                at, f"a second {'MoveIt' if kind == 'moveit' else 'Pilz'} limits file: give one of each at most"
+            )
         seen.add(kind)
         try:
             if kind == "moveit":
                 if job.get("arm") is None:
-                    raise builder.fail(at, "a MoveIt joint_limits.yaml limits the joints of a serial arm: it needs machine.serial_arm")
+                    raise builder.fail(
+                        at, "a MoveIt joint_limits.yaml limits the joints of a serial arm: it needs machine.serial_arm"
+                    )
                 moveit = limits_files.read_moveit_joint_limits(document)
                 job["arm"], job["joint_acceleration"] = limits_files.apply_moveit_joint_limits(job["arm"], moveit)
                 job["joint_limits_from"] = f"MoveIt {path.name}"
@@ -86,14 +97,28 @@ def job_limits(builder: Any, pilz: Optional[limits_files.PilzCartesianLimits]) -
     if pilz is not None:
         for key in ("velocity", "acceleration", "angular_velocity"):
             if key in lim:
-                raise builder.fail(("limits", key), f"{lim[key]!r}: given by the Pilz limits file too; give it in one place")
+                raise builder.fail(
+                    ("limits", key), f"{lim[key]!r}: given by the Pilz limits file too; give it in one place"
+                )
         from_file = builder.call_section(("limits",), lim, pilz.limits, lim.get("jerk"))
-        return builder.call_section(("limits",), lim, Limits, from_file.velocity, from_file.acceleration, from_file.jerk,
-                                    angular_velocity=from_file.angular_velocity, **angular)
+        return builder.call_section(
+            ("limits",),
+            lim,
+            Limits,
+            from_file.velocity,
+            from_file.acceleration,
+            from_file.jerk,
+            angular_velocity=from_file.angular_velocity,
+            **angular,
+        )
     for key in ("velocity", "acceleration"):
         if key not in lim:
-            raise builder.fail(("limits",), f"missing required key `{key}` (or a Pilz cartesian_limits.yaml in limits_file)")
-    return builder.call_section(("limits",), lim, Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular)
+            raise builder.fail(
+                ("limits",), f"missing required key `{key}` (or a Pilz cartesian_limits.yaml in limits_file)"
+            )
+    return builder.call_section(
+        ("limits",), lim, Limits, lim["velocity"], lim["acceleration"], lim.get("jerk"), **angular
+    )
 
 
 def read_retime(builder: Any, job: Dict[str, Any]) -> None:
@@ -104,10 +129,15 @@ def read_retime(builder: Any, job: Dict[str, Any]) -> None:
     at: KeyPath = ("retime",)
     hexapod, arm = job.get("hexapod"), job.get("arm")
     if hexapod is None and arm is None:
-        raise builder.fail(at, "re-timing keeps a machine's joint limits: it needs machine.hexapod or machine.serial_arm")
+        raise builder.fail(
+            at, "re-timing keeps a machine's joint limits: it needs machine.hexapod or machine.serial_arm"
+        )
     if hexapod is not None and r["method"] == "scaling":
-        raise builder.fail(at + ("method",), "'scaling': a hexapod's leg speeds enter planning through its joint metric; "
-                           "re-time a hexapod with method: optimal")
+        raise builder.fail(
+            at + ("method",),
+            "'scaling': a hexapod's leg speeds enter planning through its joint metric; "
+            "re-time a hexapod with method: optimal",
+        )
     acceleration = None
     if "joint_acceleration" in r:
         machine = hexapod if hexapod is not None else arm
@@ -115,11 +145,16 @@ def read_retime(builder: Any, job: Dict[str, Any]) -> None:
         if value.ndim == 0:
             value = np.full(machine.dof, float(value))
         if value.size != machine.dof:
-            raise builder.fail(at + ("joint_acceleration",), f"{tuple(value.tolist())}: expected one value or {machine.dof} "
-                               f"({', '.join(machine.joint_names)}), got {value.size}")
+            raise builder.fail(
+                at + ("joint_acceleration",),
+                f"{tuple(value.tolist())}: expected one value or {machine.dof} "
+                f"({', '.join(machine.joint_names)}), got {value.size}",
+            )
         if r["method"] == "scaling":
-            raise builder.fail(at + ("joint_acceleration",), "the scaling method keeps joint velocities and efforts only; "
-                               "joint accelerations need method: optimal")
+            raise builder.fail(
+                at + ("joint_acceleration",),
+                "the scaling method keeps joint velocities and efforts only; joint accelerations need method: optimal",
+            )
         acceleration = value
         job["joint_acceleration"] = value
     elif r["method"] == "optimal":

@@ -167,7 +167,7 @@ class Job:
 
     @property
     def machine(self) -> str:
-        """"hexapod", "serial_arm" or "none"."""
+        """ "hexapod", "serial_arm" or "none"."""
         return "hexapod" if self.hexapod is not None else "serial_arm" if self.arm is not None else "none"
 
     @property

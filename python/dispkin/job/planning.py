@@ -79,15 +79,25 @@ def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory
     job asks (dispkin.retime: the arm from the joints at the run's start, or the hexapod)."""
     if job.retime is None:
         joint_metric = job.hexapod if job.joint_metric else None
-        return plan(path, job.metric_set, job.limits, job.profile, joint_metric=joint_metric,
-                    corner_tolerance=job.corner_tolerance)
+        return plan(
+            path,
+            job.metric_set,
+            job.limits,
+            job.profile,
+            joint_metric=joint_metric,
+            corner_tolerance=job.corner_tolerance,
+        )
     extra = {"corner_tolerance": job.corner_tolerance}
     if job.retime.joint_acceleration is not None:
         extra["joint_acceleration"] = job.retime.joint_acceleration
     if job.arm is not None:
-        result = _core.retime(path, job.metric_set, job.limits, job.arm, q_start, profile=job.profile, method=job.retime.method, **extra)
+        result = _core.retime(
+            path, job.metric_set, job.limits, job.arm, q_start, profile=job.profile, method=job.retime.method, **extra
+        )
     else:
-        result = _core.retime(path, job.metric_set, job.limits, job.hexapod, profile=job.profile, method="optimal", **extra)
+        result = _core.retime(
+            path, job.metric_set, job.limits, job.hexapod, profile=job.profile, method="optimal", **extra
+        )
     return result.trajectory
 
 
@@ -103,7 +113,14 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     planned = []
     for part in job.parts:
         if part.kind == "ptp":
-            planned.append((part, _planned(job, part, lambda: plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm))))
+            planned.append(
+                (
+                    part,
+                    _planned(
+                        job, part, lambda: plan(part.path, job.metric_set, job.limits, job.profile, robot=job.arm)
+                    ),
+                )
+            )
         else:
             planned.append((part, _planned(job, part, lambda: _plan_run(job, part.path, part.q_start))))
     return JobTrajectory(planned)
@@ -116,8 +133,11 @@ def _planned(job: Job, part: Optional[Part], planner: Any) -> Any:
         return planner()
     except (ValueError, RuntimeError) as error:
         at, value = _failed_at(job, part)
-        message = (f"{value!r}: the blend has no length to plan (planning failed: {error}); give a larger one"
-                   if value is not None else f"planning failed: {error}")
+        message = (
+            f"{value!r}: the blend has no length to plan (planning failed: {error}); give a larger one"
+            if value is not None
+            else f"planning failed: {error}"
+        )
         if job.source is None or not at:
             raise JobError(f"{job.file}: planning failed: {error}") from error
         raise job.source.error(at, message) from error

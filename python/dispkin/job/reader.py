@@ -100,8 +100,9 @@ class Source:
                 raise
             before = text[: error.position]
             line, column = before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
-            raise fail(f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
-                       line) from error
+            raise fail(
+                f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})", line
+            ) from error
         try:
             # The budget first, from the parser's events: nothing is built beyond them.
             input_budget.check_events(path, yaml.parse(text, Loader=loader_class), self._what, fail)
@@ -142,10 +143,15 @@ class Source:
                 except (ValueError, TypeError, OverflowError) as failed:
                     mark = node.start_mark
                     value = node.value if len(node.value) <= 200 else node.value[:200] + "…"
-                    return self._fail(f"{self.path}:{mark.line + 1}:{mark.column + 1}: not valid YAML: {value!r} is no "
-                                      f"{node.tag.rsplit(':', 1)[-1]} ({failed})", mark.line + 1)
+                    return self._fail(
+                        f"{self.path}:{mark.line + 1}:{mark.column + 1}: not valid YAML: {value!r} is no "
+                        f"{node.tag.rsplit(':', 1)[-1]} ({failed})",
+                        mark.line + 1,
+                    )
             else:
-                children = [n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode) else list(node.value)
+                children = (
+                    [n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode) else list(node.value)
+                )
                 pending.extend(reversed(children))
         return self._fail(f"{self.path}: not valid YAML: {error}", None)
 
@@ -158,7 +164,9 @@ class Source:
                 if key in seen:  # PyYAML would silently keep the last one
                     line, column = key_node.start_mark.line + 1, key_node.start_mark.column + 1
                     where = format_key_path(self._typed(key_path + (key,)))
-                    raise self._duplicate(f"{self.path}:{line}:{column}: {where}: duplicate key", key_path + (key,), line)
+                    raise self._duplicate(
+                        f"{self.path}:{line}:{column}: {where}: duplicate key", key_path + (key,), line
+                    )
                 seen.add(key)
                 self.marks[key_path + (key,)] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
                 self._walk(value_node, key_path + (key,))

@@ -88,7 +88,9 @@ def _leg_velocities(job: Job, poses: np.ndarray, twists: np.ndarray) -> np.ndarr
     return np.array([job.hexapod.leg_jacobian(m) @ xi for m, xi in zip(poses, twists)])
 
 
-def _cartesian_joint_states(job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]) -> JointStates:
+def _cartesian_joint_states(
+    job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]
+) -> JointStates:
     """Joint positions, velocities and accelerations along a Cartesian trajectory at `t`."""
     if job.arm is not None:
         # The branch followed from q_reference, q-dot by the body Jacobian, q-double-dot by central
@@ -103,8 +105,10 @@ def _cartesian_joint_states(job: Job, trajectory: Trajectory, t: np.ndarray, q_r
     velocities = _leg_velocities(job, poses, twists)
     # Accelerations: central differences of the analytic velocity, one-sided at the ends.
     before, after = np.maximum(t - ACCELERATION_STEP, 0.0), np.minimum(t + ACCELERATION_STEP, trajectory.duration)
-    rates = [_leg_velocities(job, np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times)))
-             for times in (before, after)]
+    rates = [
+        _leg_velocities(job, np.asarray(trajectory.sample(times)), np.asarray(trajectory.body_twist(times)))
+        for times in (before, after)
+    ]
     accelerations = (rates[1] - rates[0]) / (after - before)[:, None]
     return positions, velocities, accelerations
 
@@ -137,7 +141,9 @@ def _joint_samples(job: Job, trajectory: Union[Trajectory, JobTrajectory], t: np
     if isinstance(trajectory, JobTrajectory):
         positions, velocities, accelerations = _joint_states_of_parts(job, trajectory, t)
     else:
-        positions, velocities, accelerations = _cartesian_joint_states(job, trajectory, t, job.q_start if job.arm is not None else None)
+        positions, velocities, accelerations = _cartesian_joint_states(
+            job, trajectory, t, job.q_start if job.arm is not None else None
+        )
     if job.arm is not None:
         effort = np.array([job.arm.torques(q, qd, qdd) for q, qd, qdd in zip(positions, velocities, accelerations)])
     else:
@@ -145,8 +151,12 @@ def _joint_samples(job: Job, trajectory: Union[Trajectory, JobTrajectory], t: np
     return positions, velocities, accelerations, effort
 
 
-def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: Optional[float] = None,
-               progress: Optional[Callable[[str, int, int], None]] = None) -> JobSamples:
+def sample_job(
+    job: Job,
+    trajectory: Union[Trajectory, JobTrajectory],
+    period: Optional[float] = None,
+    progress: Optional[Callable[[str, int, int], None]] = None,
+) -> JobSamples:
     """Sample the job's trajectory every `period` seconds (default: the job's sample_period).
     PTP moves give their joints directly (q, q-dot, q-double-dot of the joint line); Cartesian
     moves follow the inverse-kinematics branch continuous from the joints at their start.
@@ -155,8 +165,10 @@ def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: O
     period = period or job.sample_period
     count = trajectory.duration / period
     if not count <= input_budget.MAX_SAMPLES:
-        message = (f"{period!r}: the {trajectory.duration:g} s trajectory would be {count:.3g} samples, more than "
-                   f"{input_budget.MAX_SAMPLES} (doc/input-budget.md)")
+        message = (
+            f"{period!r}: the {trajectory.duration:g} s trajectory would be {count:.3g} samples, more than "
+            f"{input_budget.MAX_SAMPLES} (doc/input-budget.md)"
+        )
         if job.source is not None:
             raise job.source.error(("output", "sample_period"), message)
         raise JobError(f"{job.file}: output.sample_period: {message}")
@@ -180,8 +192,21 @@ def sample_job(job: Job, trajectory: Union[Trajectory, JobTrajectory], period: O
     for start in range(0, len(t), _PROGRESS_CHUNK):
         chunk = range(start, min(start + _PROGRESS_CHUNK, len(t)))
         for group, one in groups.items():
-            group_speeds[group][chunk.start:chunk.stop] = [max_point_speed(one, Pose.from_matrix(poses[k]), twists[k]) for k in chunk]
+            group_speeds[group][chunk.start : chunk.stop] = [
+                max_point_speed(one, Pose.from_matrix(poses[k]), twists[k]) for k in chunk
+            ]
         report("point speeds", chunk.stop, len(t))
     fastest = np.max(np.vstack(list(group_speeds.values())), axis=0)
-    return JobSamples(t, job.joint_names, positions, velocities, accelerations, effort, xyzuvw,
-                      np.hstack([positions_xyz, quaternions]), np.asarray(trajectory.path_velocity(t)), fastest, group_speeds)
+    return JobSamples(
+        t,
+        job.joint_names,
+        positions,
+        velocities,
+        accelerations,
+        effort,
+        xyzuvw,
+        np.hstack([positions_xyz, quaternions]),
+        np.asarray(trajectory.path_velocity(t)),
+        fastest,
+        group_speeds,
+    )

@@ -98,7 +98,10 @@ def validate(source: Source) -> None:
     import jsonschema
 
     if not isinstance(source.data, dict):
-        raise source.error((), f"a job is a mapping of keys (machine, metric_set, moves, limits, ...), got {type(source.data).__name__}")
+        raise source.error(
+            (),
+            f"a job is a mapping of keys (machine, metric_set, moves, limits, ...), got {type(source.data).__name__}",
+        )
     bad = _bad_number(source.data, ())
     if bad is not None:
         raise source.error(*bad)

@@ -17,8 +17,16 @@ from .events import describe_events, end_of_motion, event_text
 from .model import Job
 from .planning import JobTrajectory
 from .sampling import JobSamples
-from .violations import (TOLERANCE, JointStates, Violation, between_samples, check_between_samples, check_samples,
-                         hexapod_excursions, worst_per_joint)
+from .violations import (
+    TOLERANCE,
+    JointStates,
+    Violation,
+    between_samples,
+    check_between_samples,
+    check_samples,
+    hexapod_excursions,
+    worst_per_joint,
+)
 
 #: A limit counts as binding when the trajectory reaches this fraction of it.
 BINDING_FRACTION = 0.99
@@ -37,8 +45,12 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
     for group, speeds in samples.group_speeds.items():
         limit = job.metric_set.group_speed(group) or v
         k = int(np.argmax(speeds))
-        groups[str(group)] = {"peak_speed": float(speeds[k]), "time": float(samples.time[k]), "limit": float(limit),
-                              "ratio": float(speeds[k] / limit)}
+        groups[str(group)] = {
+            "peak_speed": float(speeds[k]),
+            "time": float(samples.time[k]),
+            "limit": float(limit),
+            "ratio": float(speeds[k] / limit),
+        }
         ratios[f"speed of group {group} ({limit:g} m/s)"] = float(speeds[k] / limit)
     end_position, completed = end_of_motion(trajectory)
     summary: Dict[str, Any] = {
@@ -53,14 +65,21 @@ def summarize(job: Job, trajectory: Union[Trajectory, JobTrajectory], samples: J
         "completed": completed,
         "rest_to_rest_pieces": int(trajectory.piece_count),
         "profile": job.profile,
-        "limits": {"velocity": v, "acceleration": job.limits.acceleration, "jerk": job.limits.jerk,
-                   "angular_velocity": job.limits.angular_velocity,
-                   "angular_acceleration": job.limits.angular_acceleration,
-                   "corner_tolerance": job.corner_tolerance},
+        "limits": {
+            "velocity": v,
+            "acceleration": job.limits.acceleration,
+            "jerk": job.limits.jerk,
+            "angular_velocity": job.limits.angular_velocity,
+            "angular_acceleration": job.limits.angular_acceleration,
+            "corner_tolerance": job.corner_tolerance,
+        },
         # Where a Cartesian run comes to rest inside the path, and why (corners not blended).
         # (Not those beyond where a stop among the events leaves the motion: it never gets there.)
-        "stops": [{"s": float(s), "reason": reason} for s, reason in getattr(trajectory, "stops", [])
-                  if s <= end_position + 1e-9 * float(trajectory.length)],
+        "stops": [
+            {"s": float(s), "reason": reason}
+            for s, reason in getattr(trajectory, "stops", [])
+            if s <= end_position + 1e-9 * float(trajectory.length)
+        ],
         # The job's stops, resumptions and speed overrides, in the order applied.
         "events": describe_events(job, trajectory),
         "sample_period": float(job.sample_period),
@@ -111,8 +130,12 @@ def _leg_report(job: Job, trajectory: Trajectory) -> Tuple[Dict[str, Any], float
     included, at the check points of check_joint_limits."""
     check = job.hexapod.check_trajectory(trajectory, min(job.sample_period, 1e-3))
     leg_ratio = float(np.max(check.max_speed / job.hexapod.leg_speed))
-    legs = {"min_length": check.min_length.tolist(), "max_length": check.max_length.tolist(),
-            "max_speed": check.max_speed.tolist(), "leg_speed": job.hexapod.leg_speed.tolist()}
+    legs = {
+        "min_length": check.min_length.tolist(),
+        "max_length": check.max_length.tolist(),
+        "max_speed": check.max_speed.tolist(),
+        "leg_speed": job.hexapod.leg_speed.tolist(),
+    }
     report = _core.check_joint_limits(trajectory, job.hexapod)
     dense = hexapod_excursions(job, check) + check_between_samples(job, _states(report, 0.0))
     return legs, leg_ratio, dense
@@ -122,8 +145,13 @@ def _states(report: Any, start_time: float) -> JointStates:
     """The joint states at a JointLimitReport's check points, its times shifted by start_time;
     the effort is the whole torque, static and dynamic."""
     s = report.samples
-    return JointStates(np.asarray(s["time"]) + start_time, np.asarray(s["q"]), np.asarray(s["qd"]),
-                       np.asarray(s["qdd"]), np.asarray(s["static_torque"]) + np.asarray(s["dynamic_torque"]))
+    return JointStates(
+        np.asarray(s["time"]) + start_time,
+        np.asarray(s["q"]),
+        np.asarray(s["qd"]),
+        np.asarray(s["qdd"]),
+        np.asarray(s["static_torque"]) + np.asarray(s["dynamic_torque"]),
+    )
 
 
 def _without_effort_limits(arm: Any) -> Any:
@@ -159,10 +187,14 @@ def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Tup
     if isinstance(trajectory, JobTrajectory):
         return _joint_report_of_parts(job, trajectory)
     report = _core.check_joint_limits(trajectory, _without_effort_limits(job.arm), job.q_start)
-    return ({"velocity_factor": float(report.velocity_factor),
-             "acceleration_factor": _effort_factor(job, report),
-             "position_excess": float(report.position_excess)},
-            check_between_samples(job, _states(report, 0.0)))
+    return (
+        {
+            "velocity_factor": float(report.velocity_factor),
+            "acceleration_factor": _effort_factor(job, report),
+            "position_excess": float(report.position_excess),
+        },
+        check_between_samples(job, _states(report, 0.0)),
+    )
 
 
 def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Tuple[Dict[str, Any], List[Violation]]:
@@ -186,8 +218,14 @@ def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Tuple[Dict[st
         dense += check_between_samples(job, _states(report, float(start_time)))
         velocity_factor = max(velocity_factor, float(report.velocity_factor))
         acceleration_factor = _max_factor(acceleration_factor, _effort_factor(job, report))
-    return ({"velocity_factor": velocity_factor, "acceleration_factor": acceleration_factor,
-             "position_excess": position_excess}, worst_per_joint(dense))
+    return (
+        {
+            "velocity_factor": velocity_factor,
+            "acceleration_factor": acceleration_factor,
+            "position_excess": position_excess,
+        },
+        worst_per_joint(dense),
+    )
 
 
 def _angular_text(lim: Dict[str, Any]) -> str:
@@ -213,34 +251,47 @@ def summary_text(summary: Dict[str, Any]) -> str:
     jerk = f", j = {lim['jerk']:g} m/s³" if lim["jerk"] is not None else ""
     # The moves one by one up to SUMMARY_MOVES, then how many more: a job of 10⁴ moves is not a
     # line of 200 kB.
-    moves = ", ".join(s["moves"][:SUMMARY_MOVES]) + (f", … {len(s['moves']) - SUMMARY_MOVES} more" if len(s["moves"]) > SUMMARY_MOVES else "")
+    moves = ", ".join(s["moves"][:SUMMARY_MOVES]) + (
+        f", … {len(s['moves']) - SUMMARY_MOVES} more" if len(s["moves"]) > SUMMARY_MOVES else ""
+    )
     lines = [
         f"job {s['job']}: {len(s['moves'])} move(s) ({moves}), machine: {s['machine']}",
         f"  duration {s['duration']:.4f} s, {s['rest_to_rest_pieces']} rest-to-rest piece(s), path length {s['length']:.6f} m",
     ]
     if not s.get("completed", True):
         share = 100.0 * s["end_position"] / s["length"] if s["length"] > 0.0 else 0.0
-        lines.append(f"  ends STOPPED at s = {s['end_position']:.6f} m of the path's {s['length']:.6f} m ({share:.1f} %): "
-                     "the motion does not reach the end of its path")
+        lines.append(
+            f"  ends STOPPED at s = {s['end_position']:.6f} m of the path's {s['length']:.6f} m ({share:.1f} %): "
+            "the motion does not reach the end of its path"
+        )
     lines += [
         f"  limits: v = {lim['velocity']:g} m/s, a = {lim['acceleration']:g} m/s²{jerk}{_angular_text(lim)}, "
         f"profile {s['profile']}, corner tolerance {lim['corner_tolerance']:g} m",
         f"  peak path velocity {s['peak_path_velocity']:.6f} m/s ({s['samples']} samples, every {s['sample_period']:g} s)",
     ]
     for group, g in s["groups"].items():
-        lines.append(f"  group {group}: peak point speed {g['peak_speed']:.6f} m/s at t = {g['time']:.3f} s, "
-                     f"limit {g['limit']:g} m/s ({100 * g['ratio']:.1f} %)")
+        lines.append(
+            f"  group {group}: peak point speed {g['peak_speed']:.6f} m/s at t = {g['time']:.3f} s, "
+            f"limit {g['limit']:g} m/s ({100 * g['ratio']:.1f} %)"
+        )
     if "legs" in s:
         legs = s["legs"]
-        lines.append(f"  legs: {1000 * min(legs['min_length']):.3f} .. {1000 * max(legs['max_length']):.3f} mm, fastest "
-                     f"{1000 * max(legs['max_speed']):.4f} mm/s (limit {1000 * min(legs['leg_speed']):g} mm/s); "
-                     f"within limits: {legs['within_limits']}")
+        lines.append(
+            f"  legs: {1000 * min(legs['min_length']):.3f} .. {1000 * max(legs['max_length']):.3f} mm, fastest "
+            f"{1000 * max(legs['max_speed']):.4f} mm/s (limit {1000 * min(legs['leg_speed']):g} mm/s); "
+            f"within limits: {legs['within_limits']}"
+        )
     if "joints" in s:
         j = s["joints"]
-        effort = (f"{j['acceleration_factor']:.4f}" if j["acceleration_factor"] is not None
-                  else "undefined (a static torque alone reaches its effort limit)")
-        lines.append(f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {effort} "
-                     f"(<= 1 is within the {j.get('limits_from', 'URDF')} limits); within limits: {j['within_limits']}")
+        effort = (
+            f"{j['acceleration_factor']:.4f}"
+            if j["acceleration_factor"] is not None
+            else "undefined (a static torque alone reaches its effort limit)"
+        )
+        lines.append(
+            f"  joints: velocity factor {j['velocity_factor']:.4f}, effort factor {effort} "
+            f"(<= 1 is within the {j.get('limits_from', 'URDF')} limits); within limits: {j['within_limits']}"
+        )
     for v in s.get("violations", []):
         lines.append("  LIMIT BROKEN: " + Violation(**{k: v[k] for k in Violation.__dataclass_fields__}).describe())
     events = s.get("events", [])

@@ -63,12 +63,18 @@ class Violation:
 
     def describe(self) -> str:
         """One line: which limit, of which joint, when, by how much."""
-        where = f"t = {self.time:.4f} s" + (f" (sample {self.sample})" if self.sample is not None else " (between samples)")
-        span = f", beyond from {self.start_time:.4f} s to {self.end_time:.4f} s" if self.end_time > self.start_time else ""
+        where = f"t = {self.time:.4f} s" + (
+            f" (sample {self.sample})" if self.sample is not None else " (between samples)"
+        )
+        span = (
+            f", beyond from {self.start_time:.4f} s to {self.end_time:.4f} s" if self.end_time > self.start_time else ""
+        )
         ratio = f", {abs(self.value) / self.limit:.3g}x the limit" if self.kind != "position" else ""
         bound = ("upper" if self.value > self.limit else "lower") + " limit" if self.kind == "position" else "limit"
-        return (f"{self.kind} of {self.joint}: {self.value:.6g} {self.unit} at {where}, {bound} {self.limit:.6g} {self.unit}: "
-                f"beyond by {self.excess:.6g} {self.unit}{ratio}{span}")
+        return (
+            f"{self.kind} of {self.joint}: {self.value:.6g} {self.unit} at {where}, {bound} {self.limit:.6g} {self.unit}: "
+            f"beyond by {self.excess:.6g} {self.unit}{ratio}{span}"
+        )
 
     def as_dict(self) -> Dict[str, Any]:
         """The fields and the excess, for the JSON summary."""
@@ -89,28 +95,52 @@ class _JointLimits:
 def _limits_of(job: Job) -> Optional[_JointLimits]:
     """The machine's joint limits, inf where a joint has none; None without a machine."""
     n = len(job.joint_names)
-    acceleration = np.asarray(job.joint_acceleration, dtype=float) if job.joint_acceleration is not None else np.full(n, np.inf)
+    acceleration = (
+        np.asarray(job.joint_acceleration, dtype=float) if job.joint_acceleration is not None else np.full(n, np.inf)
+    )
     if job.hexapod is not None:
         h = job.hexapod
-        return _JointLimits(job.joint_names, np.asarray(h.leg_min), np.asarray(h.leg_max), np.asarray(h.leg_speed),
-                            acceleration, np.full(n, np.inf),
-                            {"position": "m", "velocity": "m/s", "acceleration": "m/s²", "effort": "N"})
+        return _JointLimits(
+            job.joint_names,
+            np.asarray(h.leg_min),
+            np.asarray(h.leg_max),
+            np.asarray(h.leg_speed),
+            acceleration,
+            np.full(n, np.inf),
+            {"position": "m", "velocity": "m/s", "acceleration": "m/s²", "effort": "N"},
+        )
     if job.arm is not None:
         lim = job.arm.joint_limits
         effort = np.asarray(lim.effort, dtype=float) if len(lim.effort) else np.full(n, np.inf)
-        return _JointLimits(job.joint_names, np.asarray(lim.lower), np.asarray(lim.upper), np.asarray(lim.velocity),
-                            acceleration, effort,
-                            {"position": "rad", "velocity": "rad/s", "acceleration": "rad/s²", "effort": "N·m"})
+        return _JointLimits(
+            job.joint_names,
+            np.asarray(lim.lower),
+            np.asarray(lim.upper),
+            np.asarray(lim.velocity),
+            acceleration,
+            effort,
+            {"position": "rad", "velocity": "rad/s", "acceleration": "rad/s²", "effort": "N·m"},
+        )
     return None
 
 
-def _violation(kind: str, joint: str, values: np.ndarray, beyond: np.ndarray, excess: np.ndarray, limit: Any,
-               time: np.ndarray, unit: str) -> Violation:
+def _violation(
+    kind: str,
+    joint: str,
+    values: np.ndarray,
+    beyond: np.ndarray,
+    excess: np.ndarray,
+    limit: Any,
+    time: np.ndarray,
+    unit: str,
+) -> Violation:
     """The violation of one joint's samples `beyond` its limit (excess: how far, per sample)."""
     worst = int(np.argmax(np.where(beyond, excess, -np.inf)))
     bound = limit(values[worst]) if callable(limit) else float(limit)
     span = time[beyond]
-    return Violation(kind, joint, float(values[worst]), bound, float(time[worst]), worst, float(span[0]), float(span[-1]), unit)
+    return Violation(
+        kind, joint, float(values[worst]), bound, float(time[worst]), worst, float(span[0]), float(span[-1]), unit
+    )
 
 
 @dataclasses.dataclass
@@ -140,11 +170,23 @@ def check_samples(job: Job, samples: Union[JobSamples, JointStates]) -> List[Vio
         excess = np.maximum(q - upper, lower - q)
         beyond = excess > TOLERANCE * width
         if np.any(beyond):
-            found.append(_violation("position", name, q, beyond, excess, lambda v, lo=lower, up=upper: up if v > up else lo,
-                                    t, lim.units["position"]))
-        for kind, values, bounds in (("velocity", samples.velocities, lim.velocity),
-                                     ("acceleration", samples.accelerations, lim.acceleration),
-                                     ("effort", samples.effort, lim.effort)):
+            found.append(
+                _violation(
+                    "position",
+                    name,
+                    q,
+                    beyond,
+                    excess,
+                    lambda v, lo=lower, up=upper: up if v > up else lo,
+                    t,
+                    lim.units["position"],
+                )
+            )
+        for kind, values, bounds in (
+            ("velocity", samples.velocities, lim.velocity),
+            ("acceleration", samples.accelerations, lim.acceleration),
+            ("effort", samples.effort, lim.effort),
+        ):
             bound = float(bounds[k])
             if not math.isfinite(bound) or values.shape[1] == 0:
                 continue
@@ -185,12 +227,27 @@ def hexapod_excursions(job: Job, check: Any) -> List[Violation]:
     for e in check.excursions:
         leg = names[e.leg]
         if e.kind == "length":
-            limit = float(job.hexapod.leg_max[e.leg]) if e.worst_value > job.hexapod.leg_max[e.leg] else float(job.hexapod.leg_min[e.leg])
+            limit = (
+                float(job.hexapod.leg_max[e.leg])
+                if e.worst_value > job.hexapod.leg_max[e.leg]
+                else float(job.hexapod.leg_min[e.leg])
+            )
             kind, unit = "position", "m"
         else:
             limit, kind, unit = float(job.hexapod.leg_speed[e.leg]), "velocity", "m/s"
-        violation = Violation(kind, leg, float(e.worst_value), limit, float(e.worst_time), None, float(e.start_time),
-                              float(e.end_time), unit)
-        if violation.excess > TOLERANCE * (limit if kind == "velocity" else float(job.hexapod.leg_max[e.leg] - job.hexapod.leg_min[e.leg])):
+        violation = Violation(
+            kind,
+            leg,
+            float(e.worst_value),
+            limit,
+            float(e.worst_time),
+            None,
+            float(e.start_time),
+            float(e.end_time),
+            unit,
+        )
+        if violation.excess > TOLERANCE * (
+            limit if kind == "velocity" else float(job.hexapod.leg_max[e.leg] - job.hexapod.leg_min[e.leg])
+        ):
             out.append(violation)
     return out
