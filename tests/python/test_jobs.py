@@ -148,6 +148,29 @@ def test_libyaml_reads_what_pyyaml_reads_with_the_same_places(monkeypatch):
         assert a.data == b.data and a.marks == b.marks, a.path
 
 
+@pytest.mark.parametrize(
+    "tagged, shown",
+    [
+        ("[1, !!int , 2]", ":17:24: not valid YAML: '' is no int"),  # IndexError in PyYAML's constructor
+        ("!!float", ":17:20: not valid YAML: '' is no float"),
+        ("!!bool maybe", ":17:20: not valid YAML: 'maybe' is no bool"),  # KeyError
+        ("!!timestamp x", ":17:20: not valid YAML: 'x' is no timestamp"),  # AttributeError
+    ],
+)
+def test_a_scalar_its_tag_cannot_make_is_a_job_error(tmp_path, tagged, shown):
+    # Found by tests/fuzz/fuzz_jobs.py: `!!int` before a comma is an empty scalar, on which
+    # PyYAML's int constructor raises IndexError (both parsers), which escaped load_job.
+    job = tmp_path / "tagged.yaml"
+    job.write_text(
+        (EXAMPLE_JOBS[0].parent / "blended_tool_move.yaml")
+        .read_text()
+        .replace("velocity: 0.25", f"velocity: {tagged}", 1)
+    )
+    with pytest.raises(jobs.JobError) as info:
+        jobs.load_job(job)
+    assert shown in str(info.value), str(info.value)
+
+
 def test_unknown_numeric_key_is_a_job_error(tmp_path):
     # Found by tests/fuzz/fuzz_jobs.py: unknown keys were sorted for the message, and a YAML key
     # that is a number cannot be compared with the names (TypeError).

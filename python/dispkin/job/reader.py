@@ -53,6 +53,12 @@ if getattr(yaml, "__with_libyaml__", False):
     _FastLoader.yaml_implicit_resolvers = _Loader.yaml_implicit_resolvers
 
 
+# What PyYAML's constructors raise for a scalar their tag cannot make: `!!float abc` (ValueError),
+# `!!int` with nothing after it (IndexError), `!!bool maybe` (KeyError), `!!timestamp x`
+# (AttributeError), a huge `!!float` (OverflowError).
+_UNTYPED = (ValueError, TypeError, OverflowError, LookupError, AttributeError)
+
+
 class Source:
     """A job file's text, its data, and where each key path is (1-based line, column).
 
@@ -112,7 +118,7 @@ class Source:
             self._walk(node, ())
             try:
                 return loader.construct_document(node)
-            except (ValueError, TypeError, OverflowError) as error:  # `!!float abc`: the tag's constructor fails
+            except _UNTYPED as error:  # `!!float abc`, `!!int` alone: the tag's constructor fails
                 raise self._untyped(loader, node, error) from error
         except yaml.YAMLError as error:
             if not explain:
@@ -140,7 +146,7 @@ class Source:
                 loader.recursive_objects.clear()  # what the failed construction left behind
                 try:
                     loader.construct_object(node)
-                except (ValueError, TypeError, OverflowError) as failed:
+                except _UNTYPED as failed:
                     mark = node.start_mark
                     value = node.value if len(node.value) <= 200 else node.value[:200] + "…"
                     return self._fail(
