@@ -23,7 +23,7 @@ import atheris
 with atheris.instrument_imports():
     import yaml  # noqa: F401  (instrumented: its parser is most of what the bytes reach)
     from dispkin import jobs, limits_files
-    from dispkin.job import limits, reader  # noqa: F401
+    from dispkin.job import input_budget, reader  # noqa: F401
 
 import dispkin
 
