@@ -104,7 +104,8 @@ DEMO_DIR ?= demo
 demo: python
 	$(VENV)/bin/dispkin demo -o $(DEMO_DIR)
 
-# The C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (any finding fails).
+# The C++ suites under AddressSanitizer and UndefinedBehaviorSanitizer (any finding fails), each
+# random suite at its own count but at most 2000 cases (DISPKIN_TEST_COUNT_CAP), the sweeps at 10³.
 # EIGEN_MALLOC_ALREADY_ALIGNED=1: under ASan Eigen would switch to its own aligned allocator
 # (it assumes nothing of the sanitizer's malloc), while the Debian KDL library, built without
 # ASan, frees with plain free(): KDL solvers whose Eigen members are created in our code then
@@ -125,7 +126,7 @@ sanitize: deps
 	$(SANITIZE_CONFIGURE)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  DISPKIN_TEST_COUNT=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
+	  DISPKIN_TEST_COUNT_CAP=2000 ctest --output-on-failure -j $(JOBS) -E find_package_consumer
 
 # The Python suite against the sanitized module: the package's Python files and the module built
 # in SANITIZE_BUILD are put together in SANITIZE_PY (as the wheel lays them out; numpy and the rest

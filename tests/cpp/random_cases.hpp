@@ -2,6 +2,7 @@
 // DISPKIN_TEST_COUNT so a failure can be replayed and a long sweep run on demand.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -19,9 +20,11 @@ inline unsigned long env_or(const char* name, unsigned long fallback) {
   return text ? std::stoul(text) : fallback;
 }
 
-//! Cases per sweep: DISPKIN_TEST_COUNT, else `fallback` (the CI size).
+//! Cases per sweep: DISPKIN_TEST_COUNT, else `fallback` (the CI size), at most
+//! DISPKIN_TEST_COUNT_CAP (the sanitizer builds cap the large suites without raising the small).
 inline int case_count(int fallback) {
-  return static_cast<int>(env_or("DISPKIN_TEST_COUNT", static_cast<unsigned long>(fallback)));
+  const unsigned long count = env_or("DISPKIN_TEST_COUNT", static_cast<unsigned long>(fallback));
+  return static_cast<int>(std::min(count, env_or("DISPKIN_TEST_COUNT_CAP", count)));
 }
 
 //! The message of the std::invalid_argument that `f` throws, or "<no exception>".
