@@ -28,23 +28,19 @@ double log_manipulability(const SerialArm& arm, const Eigen::VectorXd& q) {
   return det > 0.0 ? std::log(det) : -std::numeric_limits<double>::infinity();
 }
 
-// The joint-limit term of doc/inverse-kinematics.md eq. 44 and its slope along n, analytically: each joint with a
-// finite range [l, u] adds h² / ((u − q)(q − l)), h = (u − l)/2: 1 at the range's centre, → ∞ at either end.
-void limit_term(const JointLimits& limits, const Eigen::VectorXd& q, const Eigen::VectorXd* n, double& value,
-                double& slope) {
-  value = slope = 0.0;
+// The slope along n of the joint-limit term of doc/inverse-kinematics.md eq. 44, analytically: each
+// joint with a finite range [l, u] adds h² / ((u − q)(q − l)), h = (u − l)/2: 1 at the range's
+// centre, → ∞ at either end. NaN where a joint is at or beyond an end of its range.
+double limit_slope(const JointLimits& limits, const Eigen::VectorXd& q, const Eigen::VectorXd& n) {
+  double slope = 0.0;
   for (Eigen::Index i = 0; i < q.size(); ++i) {
     const double l = limits.lower(i), u = limits.upper(i);
     if (!std::isfinite(l) || !std::isfinite(u)) continue;
     const double h = 0.5 * (u - l), f = (u - q(i)) * (q(i) - l);
-    if (!(f > 0.0)) {
-      value = std::numeric_limits<double>::infinity();
-      slope = std::numeric_limits<double>::quiet_NaN();
-      return;
-    }
-    value += h * h / f;
-    if (n) slope -= h * h * (u + l - 2.0 * q(i)) / (f * f) * (*n)(i);  // d(1/f) = −f′/f²
+    if (!(f > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    slope -= h * h * (u + l - 2.0 * q(i)) / (f * f) * n(i);  // d(1/f) = −f′/f²
   }
+  return slope;
 }
 
 }  // namespace
@@ -68,8 +64,7 @@ double parameter_step(const SerialArm& arm, const Eigen::VectorXd& q, double tra
   if (!rule.move || !(travel > 0.0)) return 0.0;
   const std::optional<Eigen::VectorXd> n = self_motion(arm, q);
   if (!n) return 0.0;
-  double value = 0.0, slope = 0.0;
-  limit_term(arm.joint_limits(), q, &*n, value, slope);
+  double slope = limit_slope(arm.joint_limits(), q, *n);
   if (rule.singularity_weight > 0.0) {
     const double ahead = log_manipulability(arm, q + slope_step * *n);
     const double behind = log_manipulability(arm, q - slope_step * *n);

@@ -89,26 +89,25 @@ class Source:
         """The data of the YAML text, recording each key path's place on the way."""
         if _FastLoader is not None:
             try:
-                return self._parse_with(_FastLoader, text, explain=False)
+                return self._parse_with(_FastLoader, text)
             except yaml.YAMLError:
                 self.marks.clear()
-        return self._parse_with(_Loader, text, explain=True)
-
-    def _parse_with(self, loader_class: type, text: str, explain: bool) -> Any:
-        """_parse with this loader; YAML errors become the file's errors where `explain`, else
-        they are raised as they are."""
-        path, fail = self.path, self._fail
         try:
-            # The reader checks for non-printable characters when it is made: inside the try.
-            loader = loader_class(text)
+            return self._parse_with(_Loader, text)
         except yaml.reader.ReaderError as error:  # a control character: where, from its position
-            if not explain:
-                raise
             before = text[: error.position]
             line, column = before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
-            raise fail(
-                f"{path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})", line
+            raise self._fail(
+                f"{self.path}:{line}:{column}: not valid YAML: {error.reason} (character #x{error.character:04x})",
+                line,
             ) from error
+        except yaml.YAMLError as error:
+            raise self._explained(error) from error
+
+    def _parse_with(self, loader_class: type, text: str) -> Any:
+        """_parse with this loader; PyYAML's errors are raised as they are."""
+        path, fail = self.path, self._fail
+        loader = loader_class(text)  # PyYAML's reader checks for non-printable characters here
         try:
             # The budget first, from the parser's events: nothing is built beyond them.
             input_budget.check_events(path, yaml.parse(text, Loader=loader_class), self._what, fail)
@@ -120,10 +119,6 @@ class Source:
                 return loader.construct_document(node)
             except _UNTYPED as error:  # `!!float abc`, `!!int` alone: the tag's constructor fails
                 raise self._untyped(loader, node, error) from error
-        except yaml.YAMLError as error:
-            if not explain:
-                raise
-            raise self._explained(error) from error
         finally:
             loader.dispose()
 
