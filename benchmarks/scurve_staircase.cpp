@@ -2,7 +2,8 @@
 // program that prints durations, ratios and planning CPU times; doc/profiles.md §8): for each
 // workload the trapezoid plan, the S-curve plan, and the S-curve as the chain of laws at rest
 // acceleration at every boundary (velocity_limited_chain over the same staircase, what the S-curve
-// planned before the law carried acceleration), with the thread CPU time of both laws.
+// planned before the law carried acceleration), with the thread CPU time of both laws, and the
+// duration no jerk-limited law under the staircase can beat (doc/profiles.md §8.5).
 //
 //   build/cmake/benchmarks/dispkin_scurve_staircase
 #include <time.h>
@@ -80,12 +81,14 @@ void report(const char* name, const Path& path, const dispkin::MetricSetd& set, 
     chain_cpu = std::min(chain_cpu, t1 - t0);
     law_cpu = std::min(law_cpu, t2 - t1);
   }
+  double bound = 0.0;
+  for (const auto& run : runs) bound += dispkin::jerk_limited_duration_bound(run, a, j);
   std::printf(
       "%s: %zu segments in %zu runs; trapezoid %.3f s, S-curve %.3f s (its laws %.3f s; chain at rest "
-      "boundaries %.3f s); S-curve / trapezoid %.3f (chain %.3f); law %.2f ms, chain %.2f ms CPU (%.1f x) of a %.0f ms "
-      "plan\n",
-      name, segments, runs.size(), trapezoid, scurve.duration(), law, chain, scurve.duration() / trapezoid,
-      chain / trapezoid, 1e3 * law_cpu, 1e3 * chain_cpu, law_cpu / chain_cpu, 1e3 * plan_cpu);
+      "boundaries %.3f s; no S-curve law below %.3f s); S-curve / trapezoid %.3f (chain %.3f, bound %.3f); law %.2f "
+      "ms, chain %.2f ms CPU (%.1f x) of a %.0f ms plan\n",
+      name, segments, runs.size(), trapezoid, scurve.duration(), law, chain, bound, scurve.duration() / trapezoid,
+      chain / trapezoid, bound / trapezoid, 1e3 * law_cpu, 1e3 * chain_cpu, law_cpu / chain_cpu, 1e3 * plan_cpu);
 }
 
 }  // namespace

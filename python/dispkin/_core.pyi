@@ -147,6 +147,9 @@ def velocity_limited_law(
 def velocity_limited_chain(
     segments: _ArrayLike, a_max: float, j_max: Optional[float] = None, v_start: float = 0.0, v_end: float = 0.0
 ) -> List[Profile]: ...
+def jerk_limited_duration_bound(
+    segments: _ArrayLike, a_max: float, j_max: float, v_start: float = 0.0, v_end: float = 0.0
+) -> float: ...
 
 class Section:
     @property

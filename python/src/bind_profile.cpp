@@ -145,6 +145,16 @@ zero acceleration at both ends. Build it with Profile.trapezoid or Profile.scurv
       "per row (length, limit) of `segments` (a trapezoid without j_max, an S-curve with it), the "
       "boundary velocities from a forward and a backward pass, every S-curve at zero acceleration at "
       "its segment's boundaries.");
+  m.def(
+      "jerk_limited_duration_bound",
+      [staircase](const Eigen::MatrixXd& segments, double a_max, double j_max, double v_start, double v_end) {
+        return jerk_limited_duration_bound(staircase(segments), a_max, j_max, v_start, v_end);
+      },
+      py::arg("segments"), py::arg("a_max"), py::arg("j_max"), py::arg("v_start") = 0.0, py::arg("v_end") = 0.0,
+      "A duration (s) no jerk-limited law under the staircase `segments` ((N, 2) rows (length, limit)) can beat "
+      "(doc/profiles.md §8.5): the best sum over cuts of the staircase into windows of the least time each window "
+      "needs when only its end limits, its highest limit, a_max and j_max are kept. velocity_limited_law's "
+      "duration lies between it and the law's own.");
 }
 
 }  // namespace python

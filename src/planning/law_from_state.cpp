@@ -1,6 +1,8 @@
 // Laws from a moving state of a planned trajectory (law_from_state.hpp; doc/events.md).
 #include "law_from_state.hpp"
 
+#include "staircase_input.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -101,10 +103,7 @@ std::vector<Profile> staircase_law_from_state(const std::vector<LimitedSegment>&
                                               std::optional<double> j_max, double v0, double a0, double tolerance) {
   require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
   const std::size_t n = segments.size();
-  const auto accel = [&](std::size_t i) {
-    const double own = segments[i].acceleration;
-    return own > 0.0 ? std::min(own, a_max) : a_max;
-  };
+  const auto accel = [&](std::size_t i) { return detail::segment_acceleration(segments[i], a_max); };
   // The backward pass of the chain (doc/profiles.md §5): u[i], the highest ṡ at the start of
   // segment i from which the rest of the run comes to rest within its limits.
   std::vector<double> u(n + 1, 0.0);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "carried_acceleration.hpp"
+#include "staircase_input.hpp"
 #include "reachable_velocity.hpp"
 #include "dispkin/error.hpp"
 
@@ -20,8 +21,10 @@ double velocity_change_distance(double u, double w, double a, std::optional<doub
   return 0.5 * (u + w) * time;
 }
 
-std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& segments, double a_max,
-                                            std::optional<double> j_max, double v_start, double v_end) {
+namespace detail {
+
+void require_staircase(const std::vector<LimitedSegment>& segments, double a_max, std::optional<double> j_max,
+                       double v_start, double v_end) {
   require(!segments.empty(), "segments", 0L, "is empty: nothing to move along");
   require_positive(a_max, "a_max");
   if (j_max) require_positive(*j_max, "j_max");
@@ -35,15 +38,18 @@ std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& s
       require(false, "segments[" + std::to_string(i) + "].acceleration", segments[i].acceleration,
               "must be finite and not negative");
   }
-  // Each segment's own acceleration limit.
-  auto accel = [&](std::size_t i) {
-    const double own = segments[i].acceleration;
-    return own > 0.0 ? std::min(own, a_max) : a_max;
-  };
   require(std::isfinite(v_start) && v_start >= 0.0 && v_start <= segments.front().limit, "v_start", v_start,
           "must be in [0, limit of the first segment]");
   require(std::isfinite(v_end) && v_end >= 0.0 && v_end <= segments.back().limit, "v_end", v_end,
           "must be in [0, limit of the last segment]");
+}
+
+}  // namespace detail
+
+std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& segments, double a_max,
+                                            std::optional<double> j_max, double v_start, double v_end) {
+  detail::require_staircase(segments, a_max, j_max, v_start, v_end);
+  auto accel = [&](std::size_t i) { return detail::segment_acceleration(segments[i], a_max); };
 
   // Boundary velocities: u[0] = v_start, u[n] = v_end, inner ones capped by both limits.
   const std::size_t n = segments.size();
@@ -183,8 +189,7 @@ std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& seg
   run.a_max = a_max;
   bool faster = false;
   for (std::size_t k = 0; k < segments.size(); ++k) {
-    const double own = segments[k].acceleration;
-    const double a_k = own > 0.0 ? std::min(own, a_max) : a_max;
+    const double a_k = detail::segment_acceleration(segments[k], a_max);
     const std::optional<int> cruise =
         k + 1 < segments.size() ? cruise_at_limit(chain[k], segments[k].limit) : std::nullopt;
     if (!cruise) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <dispkin/planning/planner.hpp>
@@ -122,6 +123,63 @@ TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
   }
   // The law is not the chain under another name: most staircases gain.
   EXPECT_GT(faster, count / 2);
+}
+
+// No law under a staircase beats the duration bound of doc/profiles.md §8.5: neither the law
+// that carries acceleration nor the chain, with per-segment accelerations and moving ends.
+TEST(VelocityLimit, NoLawBeatsTheDurationBound) {
+  Random rnd(504);
+  for (int i = 0; i < 300; ++i) {
+    std::vector<LimitedSegment> segments;
+    for (int k = rnd.integer(1, 12); k > 0; --k) {
+      const double own = rnd.uniform(0.0, 1.0) < 0.2 ? rnd.uniform(0.3, 3.0) : 0.0;
+      segments.push_back({std::pow(10.0, rnd.uniform(-3.0, -0.5)), rnd.uniform(0.02, 0.5), own});
+    }
+    const double a = rnd.uniform(0.5, 3.5), j = std::pow(10.0, rnd.uniform(0.5, 3.0));
+    const double bound = jerk_limited_duration_bound(segments, a, j);
+    ASSERT_GT(bound, 0.0) << "case " << i;
+    ASSERT_GE(total_duration(velocity_limited_law(segments, a, j)), bound * (1 - 1e-12)) << "case " << i;
+    // Moving ends: the chain from v_start to v_end (half the end limits, reachable when the
+    // staircase is long enough; otherwise refused, and skipped).
+    const double v0 = 0.5 * segments.front().limit, v1 = 0.5 * segments.back().limit;
+    std::vector<Profile> chain;
+    try {
+      chain = velocity_limited_chain(segments, a, j, v0, v1);
+    } catch (const std::invalid_argument&) {
+      continue;
+    }
+    ASSERT_GE(total_duration(chain), jerk_limited_duration_bound(segments, a, j, v0, v1) * (1 - 1e-12))
+        << "case " << i;
+  }
+}
+
+// The bound is eqs. 34–36 of doc/profiles.md: on one segment between two equal end limits c, with
+// an acceleration limit A that lets the peak P = c + j T²/8 be reached at T/2, the envelope is
+// cut by two ramps of slope A, D(T) = P T − (P − c)²/A, and τ is its root D(τ) = d.
+TEST(VelocityLimit, DurationBoundOfOneWindowIsTheRootOfItsDistance) {
+  for (const double c : {0.0, 0.05, 0.3}) {
+    const double d = 0.01, j = 20.0;
+    const double a = 1e3;
+    const double bound = jerk_limited_duration_bound({{d, 10.0}}, a, j, c, c);
+    const double peak = c + j * bound * bound / 8.0;
+    EXPECT_NEAR(peak * bound - (peak - c) * (peak - c) / a, d, 1e-12 * d) << "c = " << c;
+  }
+}
+
+// Where no law can reach the limit between two low ones — 8 mm moves at 0.2 m/s between blends
+// held at 0.05 m/s, j = 20 m/s³ — the bound proves every jerk-limited law at least 10 % slower
+// than the trapezoid law, however it carries its acceleration.
+TEST(VelocityLimit, DurationBoundShowsWhatJerkCosts) {
+  std::vector<LimitedSegment> segments;
+  for (int k = 0; k < 20; ++k) {
+    segments.push_back({0.008, 0.2});
+    segments.push_back({0.002, 0.05});
+  }
+  const double a = 2.0, j = 20.0;
+  const double bound = jerk_limited_duration_bound(segments, a, j);
+  const double trapezoid = total_duration(velocity_limited_law(segments, a, std::nullopt));
+  EXPECT_GT(bound, 1.1 * trapezoid);
+  EXPECT_GE(total_duration(velocity_limited_law(segments, a, j)), bound);
 }
 
 // A smooth dip of the limit cut into many short segments: the chain, which must reach zero

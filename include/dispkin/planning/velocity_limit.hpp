@@ -51,4 +51,13 @@ std::vector<Profile> velocity_limited_chain(const std::vector<LimitedSegment>& s
 std::vector<Profile> velocity_limited_law(const std::vector<LimitedSegment>& segments, double a_max,
                                           std::optional<double> j_max, double v_start = 0.0, double v_end = 0.0);
 
+//! A duration no law under the staircase with |s̈| ≤ each segment's acceleration (and a_max),
+//! |s⃛| ≤ j_max, from v_start to v_end, can beat (doc/profiles.md §8.5, eqs. 34–37): the largest
+//! sum, over cuts of the staircase into windows, of the least time each window needs when only its
+//! end limits, its highest limit and the acceleration and jerk limits are kept. How far a law
+//! could still gain: velocity_limited_law's duration lies between it and the law's own. Throws as
+//! velocity_limited_chain for bad input.
+double jerk_limited_duration_bound(const std::vector<LimitedSegment>& segments, double a_max, double j_max,
+                                   double v_start = 0.0, double v_end = 0.0);
+
 }  // namespace dispkin
