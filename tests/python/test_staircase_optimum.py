@@ -90,7 +90,11 @@ def test_staircase_law_is_near_the_grid_optimum(seed):
     print(
         f"seed {seed}: chain {chain:.5f} s, law {ours:.5f} s, grid optimum {optimum:.5f} s, law / optimum {ours / optimum:.4f}"
     )
-    # The reference is an optimum: dispkin's law is not faster than it beyond the grid's error...
+    # No law beats the duration bound of doc/profiles.md §8.5, not even the grid's...
+    bound = dispkin.jerk_limited_duration_bound(segments, a_max=a_max, j_max=j_max)
+    assert ours >= bound and chain >= bound
+    assert optimum >= bound * (1 - 5e-3)
+    # ...the reference is an optimum: dispkin's law is not faster than it beyond the grid's error...
     assert ours >= optimum * (1 - 5e-3)
     # ...and the greedy law stays within a few percent of it (measured: 0.3–3.8 % on random
     # staircases of 2–4 segments; doc/profiles.md §8.4).
