@@ -5,12 +5,17 @@
 // planned before the law carried acceleration), with the thread CPU time of both laws, and the
 // duration no jerk-limited law under the staircase can beat (doc/profiles.md §8.5).
 //
-//   build/cmake/benchmarks/dispkin_scurve_staircase
+//   build/cmake/benchmarks/dispkin_scurve_staircase [DIR]
+//
+// With DIR, each workload's staircase is also written to DIR/<name>.txt (rows "length limit", then
+// a line "# a j"), for benchmarks/scurve_grid_optimum.py.
 #include <time.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -52,6 +57,21 @@ std::vector<std::vector<dispkin::LimitedSegment>> staircases(const dispkin::Traj
   return runs;
 }
 
+const char* staircase_dir = nullptr;
+
+void write_staircases(const char* name, const std::vector<std::vector<dispkin::LimitedSegment>>& runs, double a,
+                      double j) {
+  std::string file = std::string(staircase_dir) + "/";
+  for (const char* c = name; *c; ++c) file += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+  FILE* out = std::fopen((file + ".txt").c_str(), "w");
+  if (!out) return;
+  for (const auto& run : runs) {
+    for (const dispkin::LimitedSegment& g : run) std::fprintf(out, "%.17g %.17g\n", g.length, g.limit);
+    std::fprintf(out, "# %.17g %.17g\n", a, j);
+  }
+  std::fclose(out);
+}
+
 void report(const char* name, const Path& path, const dispkin::MetricSetd& set, double v, double a, double j,
             double tolerance) {
   dispkin::PlanOptions options;
@@ -81,6 +101,7 @@ void report(const char* name, const Path& path, const dispkin::MetricSetd& set, 
     chain_cpu = std::min(chain_cpu, t1 - t0);
     law_cpu = std::min(law_cpu, t2 - t1);
   }
+  if (staircase_dir) write_staircases(name, runs, a, j);
   double bound = 0.0;
   for (const auto& run : runs) bound += dispkin::jerk_limited_duration_bound(run, a, j);
   std::printf(
@@ -93,7 +114,8 @@ void report(const char* name, const Path& path, const dispkin::MetricSetd& set, 
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1) staircase_dir = argv[1];
   std::mt19937_64 engine(32);
   std::uniform_real_distribution<double> u(0.0, 1.0);
 

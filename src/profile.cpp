@@ -79,6 +79,16 @@ double trapezoid_peak(double distance, double v_max, double a_max, double v_star
   return std::clamp(peak, lowest, v_max);
 }
 
+// The rise v_p − v from the boundary velocity v to the trapezoid's peak, w the other boundary
+// velocity. Where the peak is the root of v_p² = a S + (v² + w²)/2 and a S ≪ v², the difference
+// cancels; (v_p² − v²)/(v_p + v) = (a S + (w − v)(w + v)/2)/(v_p + v) does not (doc/profiles.md §6).
+double trapezoid_rise(double peak, double v, double w, double distance, double v_max, double a_max) {
+  if (peak >= v_max || peak <= std::max(v, w)) return peak - v;
+  const double square_gap = a_max * distance + 0.5 * (w - v) * (w + v);
+  if (!std::isnormal(square_gap)) return peak - v;
+  return std::max(0.0, square_gap / (peak + v));
+}
+
 // --- S-curve: one velocity change ------------------------------------------------------------
 
 // The time-optimal change of velocity by dv ≥ 0 from zero to zero acceleration: jerk ±j for
@@ -276,13 +286,16 @@ Profile Profile::trapezoid(double distance, double v_max, double a_max, double v
   p.end_ = {distance, v_end, 0.0, 0.0};
   const double peak = trapezoid_peak(distance, v_max, a_max, v_start, v_end);
   p.peak_velocity_ = peak;
-  // Ramps (v_p − v)/a at ±a; the cruise covers the rest at v_p.
-  const double ramps = ramp_distance(v_start, peak, a_max) + ramp_distance(peak, v_end, a_max);
+  // Ramps (v_p − v)/a at ±a, each covering (v_p − v)(v_p + v)/(2a) (eq. 3); the cruise covers the
+  // rest at v_p.
+  const double up = trapezoid_rise(peak, v_start, v_end, distance, v_max, a_max);
+  const double down = trapezoid_rise(peak, v_end, v_start, distance, v_max, a_max);
+  const double ramps = up * ((peak + v_start) / (2.0 * a_max)) + down * ((peak + v_end) / (2.0 * a_max));
   const double cruise = cruise_time(distance, ramps, peak);
-  p.add_phase((peak - v_start) / a_max, 0.0, a_max, a_max);
+  p.add_phase(up / a_max, 0.0, a_max, a_max);
   const int cruise_index = p.count_;
   p.add_phase(cruise, 0.0, 0.0, 0.0);
-  p.add_phase((peak - v_end) / a_max, 0.0, -a_max, -a_max);
+  p.add_phase(down / a_max, 0.0, -a_max, -a_max);
   p.integrate(v_start, v_end, cruise_index);
   require_finite_duration(p, distance, v_max, a_max, std::numeric_limits<double>::quiet_NaN());
   p.require_consistent();

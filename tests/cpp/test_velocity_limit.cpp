@@ -125,6 +125,24 @@ TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
   EXPECT_GT(faster, count / 2);
 }
 
+// A segment far shorter than its neighbours, crossed at speed (a staircase cut at nearly equal
+// positions): its trapezoid rises by a S/(2v) ≪ v, which the ramps must not lose to cancellation
+// (doc/profiles.md §6), and every law over the staircase is built and keeps its limits.
+TEST(VelocityLimit, TinySegmentCrossedAtSpeed) {
+  for (const double tiny : {1e-19, 1e-16, 1e-13, 1e-10}) {
+    const Profile p = Profile::trapezoid(tiny, 0.0225, 1.0, 0.0219, 0.0219);
+    EXPECT_NEAR(p.duration(), tiny / 0.0219, 1e-6 * tiny / 0.0219) << tiny;
+    EXPECT_NO_THROW(Profile::trapezoid(tiny, 0.0225, 1.0, 0.0219, 0.0219 + 0.5 * tiny)) << tiny;
+    std::vector<LimitedSegment> segments;
+    for (int k = 0; k < 25; ++k) segments.push_back({2e-5, 0.002 + 0.0008 * k});
+    segments.push_back({tiny, 0.0225});
+    for (int k = 0; k < 25; ++k) segments.push_back({2e-5, 0.0225 + 0.0004 * k});
+    EXPECT_NO_THROW(velocity_limited_law(segments, 1.0, std::nullopt)) << tiny;
+    expect_within_staircase(velocity_limited_law(segments, 1.0, 10.0), segments, 1.0, 10.0,
+                            "tiny " + std::to_string(tiny));
+  }
+}
+
 // No law under a staircase beats the duration bound of doc/profiles.md §8.5: neither the law
 // that carries acceleration nor the chain, with per-segment accelerations and moving ends.
 TEST(VelocityLimit, NoLawBeatsTheDurationBound) {
