@@ -155,8 +155,8 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
       ++i;
       // Built from the end and run backwards, it enters the limits ahead as the forward law
       // leaves them behind.
-      if (auto backward =
-              detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end, run.v_start, settle)) {
+      if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end,
+                                                           run.v_start, settle)) {
         try {
           candidates[i] = detail::reversed_in_time(*backward);
         } catch (const std::invalid_argument&) {

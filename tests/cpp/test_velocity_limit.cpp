@@ -166,12 +166,11 @@ TEST(VelocityLimit, NoLawBeatsTheDurationBound) {
     } catch (const std::invalid_argument&) {
       continue;
     }
-    ASSERT_GE(total_duration(chain), jerk_limited_duration_bound(segments, a, j, v0, v1) * (1 - 1e-12))
-        << "case " << i;
+    ASSERT_GE(total_duration(chain), jerk_limited_duration_bound(segments, a, j, v0, v1) * (1 - 1e-12)) << "case " << i;
   }
 }
 
-// The bound is eqs. 34–36 of doc/profiles.md: on one segment between two equal end limits c, with
+// The bound is doc/profiles.md eqs. 34–36: on one segment between two equal end limits c, with
 // an acceleration limit A that lets the peak P = c + j T²/8 be reached at T/2, the envelope is
 // cut by two ramps of slope A, D(T) = P T − (P − c)²/A, and τ is its root D(τ) = d.
 TEST(VelocityLimit, DurationBoundOfOneWindowIsTheRootOfItsDistance) {
