@@ -354,14 +354,22 @@ bool append_segment_laws(std::vector<Phase>& phases, double s_end, const Motion&
 // assuming that once it leaves the viable states it does not come back (bisection to 1e-12 of
 // the jerk's time scale a/j).
 // (the first non-viable instant found goes to *edge).
-double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap,
+// A rise (jerk > 0) ends at most at the acceleration limit `a_cap`, as the law then runs it
+// (advance_by): a rise to the limit must not look non-viable for the last bit of rounding in
+// s̈ + j τ.
+double viable_duration(const Staircase& stairs, const Motion& x, std::size_t m, double jerk, double cap, double a_cap,
                        double resolution, double* edge) {
+  const auto at = [&](double t) {
+    Motion y = advance(x, t, jerk);
+    if (jerk > 0.0) y.a = std::min(y.a, a_cap);
+    return y;
+  };
   *edge = cap;
-  if (stairs.viable(advance(x, cap, jerk), m)) return cap;
+  if (stairs.viable(at(cap), m)) return cap;
   double lo = 0.0, hi = cap;
   while (hi - lo > resolution) {
     const double mid = 0.5 * (lo + hi);
-    (stairs.viable(advance(x, mid, jerk), m) ? lo : hi) = mid;
+    (stairs.viable(at(mid), m) ? lo : hi) = mid;
   }
   *edge = hi;
   return lo;
@@ -426,7 +434,8 @@ class GreedyLaw {
   };
   struct Choice {
     double jerk, duration;
-    bool stopping;  // the fastest stop's own piece
+    bool stopping;         // the fastest stop's own piece
+    bool settles = false;  // a rise that ends at zero acceleration
   };
 
   // Candidate c (31): 0 — +j up to the acceleration limit, 1 — 0, 2 — the piece of the manoeuvre
@@ -463,7 +472,8 @@ class GreedyLaw {
     // The stop that ends the path rests at its end to rounding: it is not cut there.
     const bool final_stop = c == 2 && !edge_trough_ && m_ + 1 == n && stop.count == 1 && piece.jerk > 0.0 &&
                             far.s <= stairs_.length() * (1.0 + 1e-9);
-    if (!final_stop && (!std::isfinite(piece.cap) || far.s >= s_next - 1e-15 * s_next)) {
+    const bool to_boundary = !final_stop && (!std::isfinite(piece.cap) || far.s >= s_next - 1e-15 * s_next);
+    if (to_boundary) {
       // Without a cap (jerk 0, s̈ ≥ 0) the boundary is reached by Δ/ṡ and by √(2Δ/s̈).
       double horizon = piece.cap;
       if (!std::isfinite(horizon)) {
@@ -479,8 +489,22 @@ class GreedyLaw {
       return Choice{piece.jerk, piece.cap, stopping};
     }
     double edge = piece.cap;
-    const double duration = viable_duration(stairs_, x_, m_, piece.jerk, piece.cap, resolution_, &edge);
-    const bool useful = duration > shortest_;
+    double duration =
+        viable_duration(stairs_, x_, m_, piece.jerk, piece.cap, stairs_.acceleration(m_), resolution_, &edge);
+    // A phase that reaches the segment boundary ends at an event however short it is; so does a
+    // rise that brings a small braking acceleration — a rounding remainder of a pulse or a stop —
+    // back to zero where rising further would pass the limit (doc/profiles.md eq. 31).
+    bool useful = duration > shortest_ || (to_boundary && duration == piece.cap);
+    bool settles = false;
+    if (!useful && c == 0 && x_.a < 0.0 && -x_.a / j_ < piece.cap) {
+      const double to_zero = -x_.a / j_;
+      double zero_edge = to_zero;
+      settles = viable_duration(stairs_, x_, m_, piece.jerk, to_zero, 0.0, resolution_, &zero_edge) == to_zero;
+      if (settles) {
+        duration = piece.cap = to_zero;
+        useful = true;
+      }
+    }
     on_edge_ = useful && duration < piece.cap;
     if (duration < piece.cap) {
       // Which rule the phase breaks first: a trough's, or the stop's (followed next).
@@ -490,7 +514,7 @@ class GreedyLaw {
       if (k < n) edge_trough_ = k;
     }
     if (!useful) return std::nullopt;
-    return Choice{piece.jerk, duration, false};
+    return Choice{piece.jerk, duration, false, settles};
   }
 
   // Runs the chosen phase; at the segment boundary (or at rest at the end) the segment's laws.
@@ -501,6 +525,7 @@ class GreedyLaw {
     phases_.push_back({choice.duration, choice.jerk, x_});
     Motion next = advance(x_, choice.duration, choice.jerk);
     if (choice.jerk > 0.0) next.a = std::min(next.a, stairs_.acceleration(m_));
+    if (choice.settles) next.a = 0.0;
     // The stop's last ramp ends at rest exactly.
     const bool rests = choice.stopping && stop.count == 1 && choice.jerk > 0.0 && choice.duration == stop.duration[0];
     if (rests) next.v = next.a = 0.0;

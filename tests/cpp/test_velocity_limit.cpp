@@ -125,6 +125,21 @@ TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
   EXPECT_GT(faster, count / 2);
 }
 
+// A run that ends in the cruise of a long low segment (doc/profiles.md §8.3) is settled there
+// exactly: a braking acceleration left over from the pulse into it, a rounding remainder, is
+// brought back to zero instead of being held to the end of the run.
+TEST(VelocityLimit, ARunSettlesInTheCruiseItEndsIn) {
+  const std::vector<LimitedSegment> segments{{0.070116576226056021, 0.39905856061033707},
+                                             {0.0068835232713444355, 0.18507482821005145},
+                                             {0.064614526792126079, 0.05236938705450863},
+                                             {0.053931515902718545, 0.40868124293842079}};
+  const double a = 1.669837382109302, j = 12.414869387811136;
+  const double chain = total_duration(velocity_limited_chain(segments, a, j));
+  const std::vector<Profile> laws = velocity_limited_law(segments, a, j);
+  expect_within_staircase(laws, segments, a, j, "settling run");
+  EXPECT_LT(total_duration(laws), 0.98 * chain);
+}
+
 // A segment far shorter than its neighbours, crossed at speed (a staircase cut at nearly equal
 // positions): its trapezoid rises by a S/(2v) ≪ v, which the ramps must not lose to cancellation
 // (doc/profiles.md §6), and every law over the staircase is built and keeps its limits.
