@@ -482,6 +482,18 @@ class GreedyLaw {
       }
       piece.cap = time_to_position(x_, piece.jerk, horizon, s_next);
     }
+    if (c == 1 && !open_end_ && m_ + 1 == n && stop.exists && x_.v > 0.0 && std::abs(x_.a) <= 1e-12 * a_top_) {
+      // Cruising in the last segment with the stop resting a hair before the end: the cruise
+      // that shifts the stop onto the end, however short, then the stop. (The bisection cannot
+      // find a hold of δ/ṡ below its resolution, and creeping the last δ after the stop costs
+      // time ∝ ∛(δ/j).)
+      const double short_by = stairs_.length() - stop.at[static_cast<std::size_t>(stop.count)].s;
+      if (short_by > 0.0 && short_by <= 1e-6 * stairs_.length() && short_by / x_.v < piece.cap) {
+        on_edge_ = true;
+        edge_trough_.reset();
+        return Choice{0.0, short_by / x_.v, false};
+      }
+    }
     if (c == 2) {
       const bool stopping = !edge_trough_;
       on_edge_ = false;

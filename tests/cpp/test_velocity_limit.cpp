@@ -125,6 +125,44 @@ TEST(VelocityLimit, CarriedAccelerationKeepsEveryLimitAndIsNeverSlower) {
   EXPECT_GT(faster, count / 2);
 }
 
+// Where no limit binds, the time-optimal law is the one rest-to-rest S-curve over the whole
+// staircase (doc/profiles.md §3): the law carrying acceleration is that law, whatever the
+// boundaries — it holds a_max through them instead of returning to zero acceleration at each —
+// to the resolution of its edges (10⁻⁹ a/j, doc/profiles.md eq. 31) in nearly every case. Where
+// the rounding of the phases lets the last one reach the end of the path a hair before rest, the
+// law creeps the rest of the way in three short phases (∝ ∛(δ/j)): within 0.2 % (doc/profiles.md §8.4).
+TEST(VelocityLimit, WhereNoLimitBindsTheLawIsOneSCurve) {
+  Random rnd(505);
+  int checked = 0, exact = 0;
+  for (int i = 0; i < 200; ++i) {
+    std::vector<LimitedSegment> segments;
+    double total = 0.0;
+    for (int k = rnd.integer(2, 8); k > 0; --k) {
+      segments.push_back({std::pow(10.0, rnd.uniform(-2.5, -1.0)), rnd.uniform(0.05, 1.0)});
+      total += segments.back().length;
+    }
+    const double a = rnd.uniform(0.5, 3.0), j = std::pow(10.0, rnd.uniform(0.7, 2.5));
+    const Profile one = Profile::scurve(total, 1e3, a, j);
+    // Only staircases whose every limit the one law keeps (sampled densely) can be compared.
+    bool under = true;
+    for (int q = 0; q <= 2000 && under; ++q) {
+      const ProfileState x = one.state_at(one.duration() * q / 2000.0);
+      double begin = 0.0;
+      for (const LimitedSegment& g : segments) {
+        if (x.s >= begin - 1e-9 && x.s <= begin + g.length + 1e-9) under = under && x.v <= g.limit * (1.0 - 1e-3);
+        begin += g.length;
+      }
+    }
+    if (!under) continue;
+    ++checked;
+    const double law = total_duration(velocity_limited_law(segments, a, j));
+    EXPECT_LE(law, one.duration() * 1.002) << "case " << i;
+    exact += law <= one.duration() + 1e-8 * a / j;
+  }
+  EXPECT_GT(checked, 20);
+  EXPECT_GE(exact, checked - checked / 20) << "of " << checked;
+}
+
 // A run that ends in the cruise of a long low segment (doc/profiles.md §8.3) is settled there
 // exactly: a braking acceleration left over from the pulse into it, a rounding remainder, is
 // brought back to zero instead of being held to the end of the run.
