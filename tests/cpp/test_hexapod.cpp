@@ -3,14 +3,11 @@
 // failures. Leg speeds (test_hexapod_leg_speed.cpp) and descriptions
 // (test_hexapod_description.cpp) are beside it.
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include <dispkin/hexapod/hexapod.hpp>
-#include <dispkin/path/path.hpp>
 #include <dispkin/planning/planner.hpp>
 
 #include "hexapod_test_rig.hpp"
@@ -20,8 +17,6 @@ namespace dispkin {
 namespace {
 
 using hexapod::Hexapod;
-using hexapod::LegExcursion;
-using hexapod::TrajectoryCheck;
 using hexapod::WorkspaceCheck;
 using hexapod::xyzuvw_for_new_pivot;
 using testing::message_of;

@@ -1,6 +1,5 @@
 // Hexapod descriptions: the JSON file round trip and every kind of bad key, type or file, and bad
 // geometry, one kind per test.
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -18,17 +17,10 @@ namespace dispkin {
 namespace {
 
 using hexapod::Hexapod;
-using hexapod::LegExcursion;
-using hexapod::TrajectoryCheck;
-using hexapod::WorkspaceCheck;
-using hexapod::xyzuvw_for_new_pivot;
 using testing::message_of;
 using testing::Random;
-using testing::reachable_pose;
-using testing::runtime_message_of;
 using testing::test_hexapod;
 using Legs = Hexapod::Legs;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
 constexpr double pi = 3.14159265358979323846;
 
 // --- description files -----------------------------------------------------------------------

@@ -1,8 +1,6 @@
 // Hexapod leg speeds: rule (a), the leg speed group along planned trajectories, and rule (b), the
 // joint-space metric (leg rate bounds, section lengths, planned trajectories).
-#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -20,12 +18,9 @@ namespace {
 using hexapod::Hexapod;
 using hexapod::LegExcursion;
 using hexapod::TrajectoryCheck;
-using hexapod::WorkspaceCheck;
-using hexapod::xyzuvw_for_new_pivot;
 using testing::message_of;
 using testing::Random;
 using testing::reachable_pose;
-using testing::runtime_message_of;
 using testing::test_hexapod;
 using Legs = Hexapod::Legs;
 using Vector6 = Eigen::Matrix<double, 6, 1>;

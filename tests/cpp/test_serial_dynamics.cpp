@@ -4,14 +4,10 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <iterator>
-#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include <Eigen/Geometry>
 
 #include <dispkin/serial/chain_kinematics.hpp>
 #include <dispkin/serial/serial_arm.hpp>
@@ -24,7 +20,6 @@
 namespace dispkin::serial {
 namespace {
 
-using dispkin::testing::contains;
 using dispkin::testing::message_of;
 using dispkin::testing::planar;
 using dispkin::testing::Random;

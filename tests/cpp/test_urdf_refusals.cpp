@@ -2,21 +2,13 @@
 // are refused or loaded but never crash (cases found by fuzzing and the sanitizers among them).
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cmath>
 #include <fstream>
 #include <iterator>
-#include <limits>
 #include <string>
-#include <thread>
-#include <vector>
 
-#include <Eigen/Geometry>
 
-#include <dispkin/serial/chain_kinematics.hpp>
 #include <dispkin/serial/serial_arm.hpp>
 
-#include "chain_dynamics.hpp"  // torques_by_kdl
 #include "random_cases.hpp"
 #include "serial_test_arms.hpp"
 
@@ -28,9 +20,6 @@ using dispkin::testing::contains;
 using dispkin::testing::message_of;
 using dispkin::testing::planar;
 using dispkin::testing::Random;
-using dispkin::testing::random_q;
-using dispkin::testing::random_vector;
-using dispkin::testing::ur5e;
 using dispkin::testing::urdf_dir;
 
 constexpr double pi = 3.14159265358979323846;
