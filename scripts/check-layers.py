@@ -16,11 +16,18 @@ planning layers opens dispkin or one inside it that is not a plugin's.
 
 Prints each offending #include or namespace as FILE:LINE: and exits 1 if there is any, 0
 otherwise.
+
+An installed header (include/dispkin/) names nothing of a `detail` namespace in what it makes
+public: a declaration at namespace scope or among a class's public members, outside namespace
+detail (public_detail.py).
 """
 
 import pathlib
 import re
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from public_detail import public_detail_uses  # noqa: E402
 
 # Layer ranks; the two plugins share a rank and may not include each other.
 RANKS = {"core": 0, "path": 1, "planning": 2, "hexapod": 3, "serial": 3}
@@ -92,6 +99,9 @@ def violations(root):
                     f"{path.relative_to(root)}:{number}: the {layer} layer opens namespace {name}, "
                     f"not one inside {namespace_of_layer(layer)}"
                 )
+        if path.is_relative_to(root / "include"):
+            for number, declaration in public_detail_uses(text):
+                yield f"{path.relative_to(root)}:{number}: a public declaration names detail: {declaration[:120]}"
         for number, line in enumerate(text.splitlines(), 1):
             match = INCLUDE.match(line)
             if not match:
@@ -113,11 +123,14 @@ def main(argv):
         print(message)
     if found:
         print(
-            f"check-layers: {len(found)} include(s) point up or across or namespace(s) differ from their "
-            "folder (doc/architecture.md)"
+            f"check-layers: {len(found)} include(s) point up or across, namespace(s) differ from their "
+            "folder or public declaration(s) name detail (doc/architecture.md)"
         )
         return 1
-    print("check-layers: every include points down and every namespace follows its folder")
+    print(
+        "check-layers: every include points down, every namespace follows its folder and no public "
+        "declaration names detail"
+    )
     return 0
 
 

@@ -51,9 +51,8 @@ py::object speeds_of_points(const py::object& twist, const py::object& point) {
   return std::move(out);
 }
 
-}  // namespace
-
-void bind_disp(py::module_& m) {
+// The DISP distance between two poses and the length of a section.
+void bind_lengths(py::module_& m) {
   const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
 
   m.def("disp_distance", &distance, py::arg("metric_set"), py::arg("pose_a"), py::arg("pose_b"),
@@ -79,6 +78,10 @@ void bind_disp(py::module_& m) {
       "at dtau/dt = v / L keeps every object at or below speed v. `interpolation` is \"decoupled\" "
       "(LIN: `pivot`, body coordinates, travels a straight line while the orientation turns about "
       "one axis) or \"screw\" (constant body twist). Groups weighted as in disp_distance.");
+}
+
+// The speeds of points and spheres under a twist, and the fastest point of a set.
+void bind_speeds(py::module_& m) {
   m.def("point_speed", &speeds_of_points, py::arg("twist"), py::arg("point"),
         "Speed ||v + ω × p|| (m/s) of a body point p under the body twist (v, ω): a float for a (3,) "
         "point, an (N,) array for the rows of an (N, 3) array. For an absolute point, p is its "
@@ -106,6 +109,12 @@ void bind_disp(py::module_& m) {
       "The largest speed (m/s) of any point or sphere of the set when the tool is at `pose` and moves "
       "with body twist (v, ω); absolute objects count with their apparent speed seen from the tool. "
       "Groups weighted as in disp_distance.");
+}
+
+// The pose at tau along the section between two poses (decoupled or screw, about a pivot).
+void bind_interpolation(py::module_& m) {
+  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
+
   m.def(
       "interpolate",
       [](const Posed& a, const Posed& b, double tau, const std::string& interpolation, const py::object& pivot) {
@@ -119,6 +128,10 @@ void bind_disp(py::module_& m) {
       py::arg_v("pivot", origin, "(0, 0, 0)"),
       "The pose at tau in [0, 1] of the section from pose_a to pose_b (\"decoupled\" or \"screw\", "
       "as in section_length): the motion whose speed section_length bounds.");
+}
+
+// The vertices of the convex hull of points (Qhull).
+void bind_convex_hull(py::module_& m) {
   m.def(
       "convex_hull_vertices",
       [](const py::object& pts) {
@@ -133,6 +146,15 @@ void bind_disp(py::module_& m) {
       py::arg("points"),
       "The vertices of the convex hull of the rows of an (N, 3) array (Qhull), as an (M, 3) array of "
       "exact copies in input order. Only they can be the fastest or the farthest-moving points.");
+}
+
+}  // namespace
+
+void bind_disp(py::module_& m) {
+  bind_lengths(m);
+  bind_speeds(m);
+  bind_interpolation(m);
+  bind_convex_hull(m);
 }
 
 }  // namespace python

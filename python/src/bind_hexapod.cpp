@@ -207,9 +207,7 @@ std::string trajectory_check_repr(const TrajectoryCheck& c) {
          ", excursions=" + std::to_string(c.excursions.size()) + ")";
 }
 
-}  // namespace
-
-void bind_hexapod(py::module_& m) {
+void bind_leg_violation(py::module_& m) {
   py::class_<LegViolation> violation(m, "LegViolation", "A leg out of its length range (Hexapod.check).");
   violation.def_readonly("leg", &LegViolation::leg, "0-based leg index")
       .def_readonly("length", &LegViolation::length, "the leg's length at the pose (m)")
@@ -222,7 +220,9 @@ void bind_hexapod(py::module_& m) {
                ", excess=" + float_repr(v.excess) + ")";
       });
   def_pickle(violation, "LegViolation", &violation_state, &violation_from_state);
+}
 
+void bind_workspace_check(py::module_& m) {
   py::class_<WorkspaceCheck> workspace_check(m, "WorkspaceCheck",
                                              "Leg lengths at a pose and the legs out of range (Hexapod.check).");
   workspace_check
@@ -236,7 +236,9 @@ void bind_hexapod(py::module_& m) {
       workspace_check, "WorkspaceCheck",
       [](const WorkspaceCheck& c) { return py::make_tuple(legs_array(c.lengths), c.violations); },
       &workspace_check_from_state);
+}
 
+void bind_leg_excursion(py::module_& m) {
   py::class_<LegExcursion> excursion(m, "LegExcursion",
                                      "A stretch of a trajectory where a leg leaves its range or exceeds its speed.");
   excursion
@@ -255,7 +257,9 @@ void bind_hexapod(py::module_& m) {
                ", excess=" + float_repr(e.excess) + ")";
       });
   def_pickle(excursion, "LegExcursion", &excursion_state, &excursion_from_state);
+}
 
+void bind_trajectory_check(py::module_& m) {
   py::class_<TrajectoryCheck> trajectory_check(
       m, "TrajectoryCheck", "Leg extremes along a trajectory and every excursion (Hexapod.check_trajectory).");
   trajectory_check
@@ -276,11 +280,10 @@ void bind_hexapod(py::module_& m) {
                               c.excursions);
       },
       &trajectory_check_from_state);
+}
 
-  py::class_<Hexapod> hexapod(m, "Hexapod", R"doc(
-A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
-joints p_i (platform coordinates). A platform pose T maps platform to base coordinates and
-leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
+// A hexapod as described: its joints, leg ranges and speeds, home pose; the JSON description.
+void def_hexapod_description(py::class_<Hexapod>& hexapod) {
   hexapod
       .def(py::init([](const py::object& base, const py::object& platform, const py::object& lo, const py::object& hi,
                        const py::object& speed, const py::object& home) {
@@ -315,7 +318,12 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
           "leg_speed", [](const Hexapod& h) { return legs_array(h.leg_speed()); }, "(6,) leg speed limits (m/s)")
       .def_property_readonly("home", &Hexapod::home, "the pose forward() starts from by default")
       .def_property_readonly("dof", &Hexapod::dof, "6")
-      .def_property_readonly("joint_names", &Hexapod::joint_names, "['leg1', ..., 'leg6']")
+      .def_property_readonly("joint_names", &Hexapod::joint_names, "['leg1', ..., 'leg6']");
+}
+
+// Leg lengths of poses and back, the leg Jacobian, the workspace check of a pose.
+void def_hexapod_kinematics(py::class_<Hexapod>& hexapod) {
+  hexapod
       .def("inverse", &inverse, py::arg("pose"),
            "Leg lengths: a Pose or (4, 4) matrix -> (6,); a sequence of poses or (N, 4, 4) -> (N, 6).")
       .def("inverse_xyzuvw", &inverse_xyzuvw, py::arg("xyzuvw"),
@@ -350,7 +358,13 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
       .def(
           "require_reachable",
           [](const Hexapod& h, const py::object& pose) { h.require_reachable(pose_of(pose, "pose")); }, py::arg("pose"),
-          "ValueError naming the first leg out of range.")
+          "ValueError naming the first leg out of range.");
+}
+
+// Legs along planned trajectories: the check, the leg-speed rule (b) section lengths and bounds, the leg speed group
+// (rule (a)).
+void def_hexapod_leg_speed(py::class_<Hexapod>& hexapod) {
+  hexapod
       .def("check_trajectory", &Hexapod::check_trajectory<Trajectory>, py::call_guard<py::gil_scoped_release>(),
            py::arg("trajectory"), py::arg("dt"),
            "Dense check every `dt` seconds: leg lengths and leg speeds (J times the body twist) against the limits.")
@@ -389,17 +403,29 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
             h.add_leg_speed_group(set, group);
           },
           py::arg("metric_set"), py::arg("group"),
-          "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.")
-      .def("__repr__", [](const Hexapod& h) {
-        return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
-               ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";
-      });
+          "Adds the platform joints as relative points of `group`, speed limit = the smallest leg speed.");
+}
+
+void bind_hexapod_class(py::module_& m) {
+  py::class_<Hexapod> hexapod(m, "Hexapod", R"doc(
+A hexapod (Stewart platform): six legs between base joints b_i (base coordinates) and platform
+joints p_i (platform coordinates). A platform pose T maps platform to base coordinates and
+leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
+  def_hexapod_description(hexapod);
+  def_hexapod_kinematics(hexapod);
+  def_hexapod_leg_speed(hexapod);
+  hexapod.def("__repr__", [](const Hexapod& h) {
+    return "Hexapod(leg_min=" + tuple_repr(h.leg_min()) + ", leg_max=" + tuple_repr(h.leg_max()) +
+           ", leg_speed=" + tuple_repr(h.leg_speed()) + ")";
+  });
   def_pickle(
       hexapod, "Hexapod", [](const Hexapod& h) { return py::make_tuple(h.to_json()); },
       [](const py::object& state) {
         return Hexapod::from_json(state_item<std::string>(state_tuple(state, 1, "Hexapod"), 0, "Hexapod", "json"));
       });
+}
 
+void bind_xyzuvw_for_new_pivot(py::module_& m) {
   m.def(
       "xyzuvw_for_new_pivot",
       [](const py::object& xyzuvw, const py::object& old_pivot, const py::object& new_pivot) {
@@ -408,6 +434,17 @@ leg i has length |T p_i - b_i|. Lengths in metres, leg speeds in m/s.)doc");
       },
       py::arg("xyzuvw"), py::arg("old_pivot"), py::arg("new_pivot"),
       "The XYZUVW about `new_pivot` of the pose that is `xyzuvw` about `old_pivot` (same pose, same UVW).");
+}
+
+}  // namespace
+
+void bind_hexapod(py::module_& m) {
+  bind_leg_violation(m);
+  bind_workspace_check(m);
+  bind_leg_excursion(m);
+  bind_trajectory_check(m);
+  bind_hexapod_class(m);
+  bind_xyzuvw_for_new_pivot(m);
 }
 
 }  // namespace python

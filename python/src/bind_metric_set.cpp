@@ -148,13 +148,8 @@ std::string metric_set_repr(const MetricSetd& set) {
 
 }  // namespace
 
-void bind_metric_set(py::module_& m) {
-  py::class_<MetricSetd> metric_set(m, "MetricSet", R"doc(
-The metric establishment set: the points and spheres the speed limit applies to.
-Relative points and spheres are in body (tool) coordinates and move with the tool; absolute ones
-are in world coordinates and stay put (their apparent speed seen from the tool is limited).
-Objects belong to groups (non-negative integers, default 0); a group may have its own speed limit.
-Lengths in metres.)doc");
+// An empty set and what is added to it: relative and absolute points, spheres, group speeds.
+void def_metric_set_building(py::class_<MetricSetd>& metric_set) {
   metric_set.def(py::init<>(), "An empty set.")
       .def(
           "add_relative",
@@ -191,7 +186,12 @@ Lengths in metres.)doc");
           },
           py::arg("group"), py::arg("speed"),
           "Give group `group` its own speed limit in m/s (> 0); the group is created if needed. Its "
-          "lengths are then weighted by system_velocity / speed.")
+          "lengths are then weighted by system_velocity / speed.");
+}
+
+// What a set holds, group by group, whether it is well formed, and its reduction to the hull.
+void def_metric_set_contents(py::class_<MetricSetd>& metric_set) {
+  metric_set
       .def_property_readonly(
           "groups",
           [](const MetricSetd& self) {
@@ -229,7 +229,12 @@ Lengths in metres.)doc");
           },
           "A new set with every group's relative and absolute points replaced by the vertices of "
           "their convex hull (Qhull); spheres and group speeds unchanged. Every distance and section "
-          "length is the same.")
+          "length is the same.");
+}
+
+// Comparison: exactly (==), or within tolerances (isclose).
+void def_metric_set_comparison(py::class_<MetricSetd>& metric_set) {
+  metric_set
       .def(
           "__eq__",
           [](const MetricSetd& a, const MetricSetd& b) {
@@ -247,8 +252,20 @@ Lengths in metres.)doc");
                 [&](double x, double y) { return isclose(x, y, rel_tol, abs_tol); });
           },
           py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
-          "Like ==, with math.isclose for every coordinate, radius and speed limit.")
-      .def("__repr__", &metric_set_repr);
+          "Like ==, with math.isclose for every coordinate, radius and speed limit.");
+}
+
+void bind_metric_set(py::module_& m) {
+  py::class_<MetricSetd> metric_set(m, "MetricSet", R"doc(
+The metric establishment set: the points and spheres the speed limit applies to.
+Relative points and spheres are in body (tool) coordinates and move with the tool; absolute ones
+are in world coordinates and stay put (their apparent speed seen from the tool is limited).
+Objects belong to groups (non-negative integers, default 0); a group may have its own speed limit.
+Lengths in metres.)doc");
+  def_metric_set_building(metric_set);
+  def_metric_set_contents(metric_set);
+  def_metric_set_comparison(metric_set);
+  metric_set.def("__repr__", &metric_set_repr);
   def_pickle(metric_set, "MetricSet", &metric_set_state, &metric_set_from_state);
 }
 

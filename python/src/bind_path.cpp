@@ -78,11 +78,7 @@ py::object sample_path(const Path& path, const py::object& u) {
   return std::move(out);
 }
 
-}  // namespace
-
-void bind_path(py::module_& m) {
-  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
-
+void bind_section(py::module_& m) {
   py::class_<SectionHolder>(m, "Section", R"doc(
 One section of a Path: the motion from `start` to `end` as the section parameter tau runs over
 [0, 1]. `kind` is "lin" (straight: decoupled LIN or screw, exact length), "arc" (a piece of a
@@ -112,6 +108,9 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
       .def("__repr__", [](const SectionHolder& s) { return std::string("Section(kind=\"") + section_kind(s) + "\")"; });
 
   // Before Path, so that the signature of Path.ptp names the Python type, not the C++ one.
+}
+
+void bind_joint_path(py::module_& m) {
   py::class_<JointPath> joint_path(m, "JointPath",
                                    "A PTP move: the straight line between two joint vectors (radians / metres).");
   joint_path.def_property_readonly("start", &JointPath::start, "q at u = 0.")
@@ -131,10 +130,11 @@ orientation_blend="nested_slerp"); arcs and curves have lengths that are tight u
         return JointPath(state_vector<Eigen::Dynamic>(s[0], StateField("JointPath", 0, "start")),
                          state_vector<Eigen::Dynamic>(s[1], StateField("JointPath", 1, "end")));
       });
+}
 
-  py::class_<Path> path(m, "Path", R"doc(
-A pose path (geometry only, no time): a chain of sections. Build it with Path.lin / Path.circ
-and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
+// The moves a path is built of: lin, circ, spline, and ptp (a JointPath).
+void def_path_moves(py::class_<Path>& path) {
+  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
   path.def_static(
           "lin",
           [](const Posed& a, const Posed& b, const std::string& interpolation, const py::object& pivot,
@@ -179,8 +179,12 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
           "`acceleration` (keywords): this move's own limits, as for lin.")
       .def_static(
           "ptp", [](const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b) { return JointPath(q_a, q_b); },
-          py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).")
-      .def("then", &then_blended, py::arg("next"), py::kw_only(), py::arg("blend") = py::none(),
+          py::arg("q_a"), py::arg("q_b"), "A PTP move: the straight line between two joint vectors (a JointPath).");
+}
+
+// Moves joined into one path, their corners blended.
+void def_path_blending(py::class_<Path>& path) {
+  path.def("then", &then_blended, py::arg("next"), py::kw_only(), py::arg("blend") = py::none(),
            py::arg("before") = py::none(), py::arg("after") = py::none(), py::arg("tolerance") = 1e-3,
            py::arg("orientation_blend") = "rotation_vector", py::arg("weight") = py::none(),
            py::return_value_policy::reference_internal,
@@ -210,8 +214,16 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
           "The path with every corner between two moves blended (what plan(..., corner_tolerance=d) plans): the "
           "largest blend whose pivot stays within `corner_tolerance` (m) of the corner's two legs, at most half of "
           "each neighbouring move. Returns (path, corners left): each corner left as (index of the section it "
-          "ends, reason).")
-      .def_property_readonly(
+          "ends, reason).");
+}
+
+void bind_path_class(py::module_& m) {
+  py::class_<Path> path(m, "Path", R"doc(
+A pose path (geometry only, no time): a chain of sections. Build it with Path.lin / Path.circ
+and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
+  def_path_moves(path);
+  def_path_blending(path);
+  path.def_property_readonly(
           "move_starts", [](const Path& p) { return p.move_starts(); },
           "The index of the first section of every move (lin, circ, spline), in order.")
       .def(
@@ -242,6 +254,14 @@ and chain with `then`. Path.ptp gives a JointPath (joint space).)doc");
       .def("__len__", &Path::size, "Number of sections.")
       .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " sections)"; });
   def_pickle(path, "Path", &path_state, &path_from_state);
+}
+
+}  // namespace
+
+void bind_path(py::module_& m) {
+  bind_section(m);
+  bind_joint_path(m);
+  bind_path_class(m);
 }
 
 }  // namespace python

@@ -239,9 +239,7 @@ JointMetric joint_metric_of(const py::object& joint_metric) {
   };
 }
 
-}  // namespace
-
-void bind_planner(py::module_& m) {
+void bind_limits(py::module_& m) {
   py::class_<Limits> limits(
       m, "Limits",
       "System limits in the DISP metric: velocity (m/s), acceleration (m/s^2), jerk (m/s^3, S-curve only), "
@@ -284,10 +282,11 @@ void bind_planner(py::module_& m) {
                        state_item<double>(s, 1, "Limits", "acceleration"), item(2, "jerk"), item(3, "angular_velocity"),
                        item(4, "angular_acceleration"));
   });
+}
 
-  py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
-A planned trajectory: no point or sphere of the metric set moves faster than its limit at any
-time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
+// What a trajectory was planned on and under: its length, sections, stops, velocity-limit curve,
+// and the body acceleration along it.
+void def_trajectory_plan(py::class_<Trajectory>& trajectory) {
   trajectory.def_property_readonly("duration", &Trajectory::duration, "Seconds.")
       .def_property_readonly("length", &Trajectory::length, "The DISP arc length, metres.")
       .def_property_readonly("piece_count", &Trajectory::piece_count, "Rest-to-rest pieces (1 + corners).")
@@ -355,7 +354,12 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
           with_out(
               "The time derivative of the body twist at `times`: (v-dot, omega-dot) in body coordinates, (N, 6), "
               "m/s^2 and rad/s^2; (6,) for a number. From the path's second derivative (doc/planning.md section 12).")
-              .c_str())
+              .c_str());
+}
+
+// The events of a trajectory (doc/events.md): a stop, a resumption, a speed override, a moving start.
+void def_trajectory_events(py::class_<Trajectory>& trajectory) {
+  trajectory
       .def("stopped_at", &Trajectory::stopped_at, py::arg("t"),
            "A feed hold that keeps to the path: the same motion up to t (bit for bit), then the fastest stop from the "
            "state there (path velocity and acceleration) to rest on the same path, under the acceleration and jerk "
@@ -392,11 +396,23 @@ time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
         return "Trajectory(duration=" + float_repr(t.duration()) + ", sections=" + std::to_string(t.section_count()) +
                ")";
       });
+}
+
+py::class_<Trajectory> bind_trajectory(py::module_& m) {
+  py::class_<Trajectory> trajectory(m, "Trajectory", R"doc(
+A planned trajectory: no point or sphere of the metric set moves faster than its limit at any
+time. Sample it at any times (seconds, clamped to [0, duration]).)doc");
+  def_trajectory_plan(trajectory);
+  def_trajectory_events(trajectory);
 
   def_pickle(trajectory, "Trajectory", &trajectory_state,
              [](const py::object& state) { return trajectory_from_state(state); });
   add_sampling(trajectory);
+  return trajectory;
+}
 
+// TrajectoryCursor, and Trajectory.cursor() that makes one.
+void bind_trajectory_cursor(py::module_& m, py::class_<Trajectory>& trajectory) {
   py::class_<TrajectoryCursor> cursor(m, "TrajectoryCursor", R"doc(
 Where a control loop has got to along a Trajectory (Trajectory.cursor()): sample(t, out) finds
 the time law and section of t from those of the sample before (in constant time for the same or
@@ -453,7 +469,9 @@ Views made once, e.g. twist = out[TrajectoryCursor.BODY_TWIST], read the state o
       },
       "A TrajectoryCursor at the start of the trajectory, for sampling it in a control loop: one state per call, "
       "written into a preallocated array without allocating, each found from the one before.");
+}
 
+void bind_overlapped_trajectory(py::module_& m) {
   py::class_<OverlappedTrajectory> overlapped(m, "OverlappedTrajectory", R"doc(
 The Mamezou trajectory article's overlapped velocity method: `after` starts `overlap` seconds before `before` ends and
 the two motions add up meanwhile — P(t) = P_b(t) + P_f(t') - P_2 for the point `pivot` (body
@@ -478,7 +496,9 @@ peak (e.g. with dispkin.max_point_speed) before using large overlaps.)doc");
                ")";
       });
   add_sampling(overlapped);
+}
 
+void bind_motion_stream(py::module_& m) {
   py::class_<MotionStream> stream(m, "MotionStream", R"doc(
 Moves appended while the motion runs (doc/events.md section 5): what is planned always ends at rest
 at the last appended pose; a move appended while the motion runs is joined to it from its state (the
@@ -520,7 +540,9 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
         return "MotionStream(duration=" + float_repr(s.duration()) + ", legs=" + std::to_string(s.leg_count()) + ")";
       });
   add_sampling(stream);
+}
 
+void bind_plan(py::module_& m) {
   m.def(
       "plan",
       [](const Path& path, const MetricSetd& set, const Limits& limits, const std::string& profile,
@@ -551,6 +573,17 @@ before t as it was, bit for bit; requests come in time order. Sample it at any t
       "instead of rest, within the limits at the start (doc/events.md section 3); its first run is the time-optimal "
       "law "
       "from that state.");
+}
+
+}  // namespace
+
+void bind_planner(py::module_& m) {
+  bind_limits(m);
+  py::class_<Trajectory> trajectory = bind_trajectory(m);
+  bind_trajectory_cursor(m, trajectory);
+  bind_overlapped_trajectory(m);
+  bind_motion_stream(m);
+  bind_plan(m);
 }
 
 }  // namespace python

@@ -63,14 +63,9 @@ Posed pose_from_state(const py::object& state) {
 
 }  // namespace
 
-void bind_pose(py::module_& m) {
+// Poses from a quaternion and translation, a matrix, XYZUVW about a pivot, a twist.
+void def_pose_construction(py::class_<Posed>& pose) {
   const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
-
-  py::class_<Posed> pose(m, "Pose", R"doc(
-A rigid transform T = (R, t) in SE(3), mapping body (tool) coordinates to world coordinates:
-x_world = R x_body + t. Stored as a unit quaternion and a translation in metres; immutable.
-Twists are (6,) arrays (v, ω): body velocity in m/s (or m per unit parameter) and angular
-velocity in rad/s, both in body coordinates.)doc");
   pose.def(py::init(&make_pose), py::arg_v("quaternion", py::make_tuple(1.0, 0.0, 0.0, 0.0), "(1, 0, 0, 0)"),
            py::arg_v("translation", origin, "(0, 0, 0)"),
            "Pose from a unit quaternion (w, x, y, z) (normalised if within 1e-6 of unit norm) and a "
@@ -100,8 +95,13 @@ velocity in rad/s, both in body coordinates.)doc");
       .def(
           "log", [](const Posed& self) { return self.log().vector(); },
           "SE(3) logarithm: the (6,) body twist (v, ω) with Pose.exp(twist) == self, rotation angle "
-          "in [0, π].")
-      .def("matrix", &Posed::matrix, "The homogeneous (4, 4) matrix [R t; 0 0 0 1] (metres).")
+          "in [0, π].");
+}
+
+// A pose in the coordinates users give: matrix, rotation, quaternion, translation, XYZUVW.
+void def_pose_coordinates(py::class_<Posed>& pose) {
+  const py::tuple origin = py::make_tuple(0.0, 0.0, 0.0);
+  pose.def("matrix", &Posed::matrix, "The homogeneous (4, 4) matrix [R t; 0 0 0 1] (metres).")
       .def("rotation", &Posed::rotation, "The (3, 3) rotation matrix R (body to world).")
       .def_property_readonly("quaternion", &wxyz, "The unit quaternion (w, x, y, z) of R, as a (4,) array.")
       .def_property_readonly(
@@ -116,8 +116,12 @@ velocity in rad/s, both in body coordinates.)doc");
           },
           py::arg_v("pivot", origin, "(0, 0, 0)"),
           "(X, Y, Z, U, V, W) as a (6,) array, the inverse of from_xyzuvw for the same pivot: U, W in "
-          "(-π, π], V in [-π/2, π/2]; at gimbal lock (V = ±π/2) W = 0 and U carries the rotation.")
-      .def("inverse", &Posed::inverse, "The inverse transform (world to body).")
+          "(-π, π], V in [-π/2, π/2]; at gimbal lock (V = ±π/2) W = 0 and U carries the rotation.");
+}
+
+// Composition, the inverse, points transformed, a rotation about a pivot.
+void def_pose_algebra(py::class_<Posed>& pose) {
+  pose.def("inverse", &Posed::inverse, "The inverse transform (world to body).")
       .def(
           "__mul__", [](const Posed& self, const Posed& other) { return self * other; }, py::is_operator(),
           "Composition: (a * b) maps x to a(b(x)).")
@@ -146,8 +150,12 @@ velocity in rad/s, both in body coordinates.)doc");
           },
           py::arg("orientation"), py::arg("pivot"),
           "The pose with the orientation of `orientation` whose body point `pivot` (body coordinates, "
-          "metres) stays where it is in world: a rotation commanded about a pivot.")
-      .def(
+          "metres) stays where it is in world: a rotation commanded about a pivot.");
+}
+
+// Comparison: within a tolerance, exactly (== and hash), isclose.
+void def_pose_comparison(py::class_<Posed>& pose) {
+  pose.def(
           "is_approx",
           [](const Posed& self, const Posed& other, double tol) {
             require(std::isfinite(tol) && tol >= 0.0, "tol", tol, "must be finite and not negative");
@@ -175,10 +183,22 @@ velocity in rad/s, both in body coordinates.)doc");
           },
           py::arg("other"), py::kw_only(), py::arg("rel_tol") = 1e-9, py::arg("abs_tol") = 0.0,
           "math.isclose for every coordinate: each translation coordinate (m) and each rotation-matrix "
-          "entry agree within max(rel_tol * larger magnitude, abs_tol). Entries near 0 need abs_tol.")
-      .def("__repr__", [](const Posed& self) {
-        return "Pose(quaternion=" + tuple_repr(wxyz(self)) + ", translation=" + tuple_repr(self.translation()) + ")";
-      });
+          "entry agree within max(rel_tol * larger magnitude, abs_tol). Entries near 0 need abs_tol.");
+}
+
+void bind_pose(py::module_& m) {
+  py::class_<Posed> pose(m, "Pose", R"doc(
+A rigid transform T = (R, t) in SE(3), mapping body (tool) coordinates to world coordinates:
+x_world = R x_body + t. Stored as a unit quaternion and a translation in metres; immutable.
+Twists are (6,) arrays (v, ω): body velocity in m/s (or m per unit parameter) and angular
+velocity in rad/s, both in body coordinates.)doc");
+  def_pose_construction(pose);
+  def_pose_coordinates(pose);
+  def_pose_algebra(pose);
+  def_pose_comparison(pose);
+  pose.def("__repr__", [](const Posed& self) {
+    return "Pose(quaternion=" + tuple_repr(wxyz(self)) + ", translation=" + tuple_repr(self.translation()) + ")";
+  });
   def_pickle(pose, "Pose", &pose_state, &pose_from_state);
 }
 

@@ -102,16 +102,8 @@ void def_joint_sampling(py::class_<Traj>& cls) {
           py::arg("times"), "Joint accelerations at `times`, (N, dof), rad/s^2.");
 }
 
-}  // namespace
-
-void bind_ptp(py::module_& m) {
-  // dynamic_attr: a JointTrajectory keeps the arguments of the plan() that made it, from which
-  // pickling makes it again (planning is deterministic: the same samples, bit for bit).
-  py::class_<JointTrajectory> cls(m, "JointTrajectory", py::dynamic_attr(), R"doc(
-A planned PTP move of a serial arm: every joint on the line from q_a to q_b, all arriving
-together, timed so that no point or sphere of the metric set moves faster than its limit at any
-time and no joint faster than its velocity limit. Sample it at any times (seconds, clamped to
-[0, duration]); the ends are exactly q_a and q_b, at rest.)doc");
+// What a PTP move was planned as: its ends, joint sections and velocity-limit curve.
+void def_joint_trajectory_plan(py::class_<JointTrajectory>& cls) {
   cls.def_property_readonly("duration", &JointTrajectory::duration, "Seconds.")
       .def_property_readonly("length", &JointTrajectory::length,
                              "The DISP arc length (sum of the section bounds), metres.")
@@ -147,15 +139,19 @@ time and no joint faster than its velocity limit. Sample it at any times (second
             return out;
           },
           "The velocity-limit curve as (K, 3) rows (start s, length, limit): the system velocity, lowered where a "
-          "joint velocity limit or the curvature rule binds.")
-      .def(
-          "sample",
-          [](const JointTrajectory& t, const py::object& times) {
-            return sampled(t, times, {4, 4}, 16, [](const JointTrajectorySample& s, double* out) {
-              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
-            });
-          },
-          py::arg("times"), "Tool poses at `times` as (N, 4, 4) homogeneous matrices.")
+          "joint velocity limit or the curvature rule binds.");
+}
+
+// A PTP move sampled at given times: tool poses and twists, joints, the path parameter.
+void def_joint_trajectory_samples(py::class_<JointTrajectory>& cls) {
+  cls.def(
+         "sample",
+         [](const JointTrajectory& t, const py::object& times) {
+           return sampled(t, times, {4, 4}, 16, [](const JointTrajectorySample& s, double* out) {
+             Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>{out} = s.pose.matrix();
+           });
+         },
+         py::arg("times"), "Tool poses at `times` as (N, 4, 4) homogeneous matrices.")
       .def(
           "sample_xyzuvw",
           [](const JointTrajectory& t, const py::object& times) {
@@ -216,29 +212,43 @@ time and no joint faster than its velocity limit. Sample it at any times (second
           [](const JointTrajectory& t, const py::object& times) {
             return sampled(t, times, {}, 1, [](const JointTrajectorySample& s, double* out) { *out = s.s_dot; });
           },
-          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.")
-      .def(
-          "__reduce__",
-          [](const py::object& self) -> py::tuple {
-            if (!py::hasattr(self, "_plan_arguments")) {
-              throw py::type_error("cannot pickle a JointTrajectory that dispkin.plan did not make");
-            }
-            const py::tuple a = self.attr("_plan_arguments");
-            py::dict keywords;
-            keywords["robot"] = a[4];
-            keywords["joint_acceleration"] = a[5];
-            keywords["tolerance"] = a[6];
-            const py::object replan =
-                py::module_::import("functools")
-                    .attr("partial")(py::module_::import("dispkin._core").attr("plan"), **keywords);
-            return py::make_tuple(replan, py::make_tuple(a[0], a[1], a[2], a[3]));
-          },
-          "Pickling: plan() again with the arguments that made this trajectory.")
+          py::arg("times"), "s-dot at `times`, (N,), m/s: the speed bound of every point of the set.");
+}
+
+void bind_joint_trajectory(py::module_& m) {
+  // dynamic_attr: a JointTrajectory keeps the arguments of the plan() that made it, from which
+  // pickling makes it again (planning is deterministic: the same samples, bit for bit).
+  py::class_<JointTrajectory> cls(m, "JointTrajectory", py::dynamic_attr(), R"doc(
+A planned PTP move of a serial arm: every joint on the line from q_a to q_b, all arriving
+together, timed so that no point or sphere of the metric set moves faster than its limit at any
+time and no joint faster than its velocity limit. Sample it at any times (seconds, clamped to
+[0, duration]); the ends are exactly q_a and q_b, at rest.)doc");
+  def_joint_trajectory_plan(cls);
+  def_joint_trajectory_samples(cls);
+  cls.def(
+         "__reduce__",
+         [](const py::object& self) -> py::tuple {
+           if (!py::hasattr(self, "_plan_arguments")) {
+             throw py::type_error("cannot pickle a JointTrajectory that dispkin.plan did not make");
+           }
+           const py::tuple a = self.attr("_plan_arguments");
+           py::dict keywords;
+           keywords["robot"] = a[4];
+           keywords["joint_acceleration"] = a[5];
+           keywords["tolerance"] = a[6];
+           const py::object replan =
+               py::module_::import("functools")
+                   .attr("partial")(py::module_::import("dispkin._core").attr("plan"), **keywords);
+           return py::make_tuple(replan, py::make_tuple(a[0], a[1], a[2], a[3]));
+         },
+         "Pickling: plan() again with the arguments that made this trajectory.")
       .def("__repr__", [](const JointTrajectory& t) {
         return "JointTrajectory(duration=" + float_repr(t.duration()) + ", joints=" + std::to_string(t.dof()) +
                ", sections=" + std::to_string(t.sections().size()) + ")";
       });
+}
 
+void bind_overlapped_joint_trajectory(py::module_& m) {
   py::class_<OverlappedJointTrajectory>(m, "OverlappedJointTrajectory", R"doc(
 The Mamezou article's overlapped velocity method for PTP moves: `after` starts `overlap` seconds
 before `before` ends, and meanwhile the joint displacements add,
@@ -303,7 +313,9 @@ overlaps.)doc")
         return "OverlappedJointTrajectory(duration=" + float_repr(o.duration()) +
                ", overlap=" + float_repr(o.overlap()) + ")";
       });
+}
 
+void bind_followed_trajectory(py::module_& m) {
   py::class_<FollowedTrajectory> followed(m, "FollowedTrajectory", R"doc(
 A Cartesian trajectory (a LIN, CIRC, ... plan) as the joint motion of a serial arm whose tip
 follows it on one inverse-kinematics branch: the Mamezou article's "unifying to one type of
@@ -338,7 +350,9 @@ arm's forward kinematics of the joints.)doc");
     return "FollowedTrajectory(duration=" + float_repr(f.duration()) + ", nodes=" + std::to_string(f.node_count()) +
            ")";
   });
+}
 
+void bind_overlapped_mixed_trajectory(py::module_& m) {
   py::class_<OverlappedMixedTrajectory> mixed(m, "OverlappedMixedTrajectory", R"doc(
 The Mamezou article's overlapped velocity method for a PTP move and a Cartesian move, in either
 order, after unifying both to joint space: the Cartesian move as a FollowedTrajectory (from the
@@ -401,6 +415,15 @@ before using large overlaps.)doc");
       "limits: the tool's points and spheres never faster than their limits, the joints never faster than the "
       "arm's velocity limits (and `joint_acceleration`, rad/s^2 per joint, if given), all joints arriving together. "
       "`tolerance`: the section bounds' slack over the sampled speed. Returns a JointTrajectory.");
+}
+
+}  // namespace
+
+void bind_ptp(py::module_& m) {
+  bind_joint_trajectory(m);
+  bind_overlapped_joint_trajectory(m);
+  bind_followed_trajectory(m);
+  bind_overlapped_mixed_trajectory(m);
 }
 
 }  // namespace python

@@ -155,9 +155,7 @@ JointCheckOptions check_options(int samples_between, double difference_step) {
   return o;
 }
 
-}  // namespace
-
-void bind_retiming(py::module_& m) {
+void bind_joint_limit_report(py::module_& m) {
   py::class_<JointLimitReport> report(m, "JointLimitReport", R"doc(
 What check_joint_limits found along a trajectory: the KUKA re-timing patent's factors FVEL = max |qd_i| / qd_max_i
 and FACC = max |tau_dyn_i| / (tau_max_i - |tau_static_i|) (each <= 1 when the limits hold), where
@@ -189,7 +187,9 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
                ", samples=" + std::to_string(r.samples.size()) + ")";
       });
   def_pickle(report, "JointLimitReport", &report_state, &report_from_state);
+}
 
+void bind_check_joint_limits(py::module_& m) {
   m.def(
       "check_joint_limits",
       // The arm by value: its gravity as at the call, whatever another thread sets meanwhile.
@@ -215,7 +215,9 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
       "The same for a Hexapod, whose legs are its joints: q = leg lengths, qd = leg Jacobian times the body "
       "twist, qdd by central differences; velocity_factor against leg_speed, position_excess against the leg "
       "range. No dynamics model: torques stay empty and acceleration_factor 0.");
+}
 
+void bind_retime_result(py::module_& m) {
   py::class_<RetimeResult> retime_result(
       m, "RetimeResult", "The re-timed trajectory, the scaled limits, the plans made and the final report.");
   retime_result.def_readonly("trajectory", &RetimeResult::trajectory, "The trajectory planned with the scaled limits.")
@@ -235,7 +237,9 @@ arrays (`samples`: a dict of time, s, q, qd, qdd, static_torque, dynamic_torque;
         return py::make_tuple(trajectory_state(r.trajectory), r.limits, r.iterations, report_state(r.report));
       },
       &retime_from_state);
+}
 
+void bind_optimal_retime_result(py::module_& m) {
   py::class_<OptimalRetimeResult> optimal(m, "OptimalRetimeResult", R"doc(
 What retime(method="optimal") produced: the re-timed trajectory (one constant-acceleration law per
 grid interval; with a jerk limit constant-jerk laws), the dense check of it (`report`), the largest joint velocity, acceleration and
@@ -279,7 +283,10 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
                ", refinements=" + std::to_string(r.refinements) + ")";
       });
   def_pickle(optimal, "OptimalRetimeResult", &optimal_state, &optimal_from_state);
+}
 
+// retime(path, ..., robot=SerialArm).
+void bind_retime_serial_arm(py::module_& m) {
   m.def(
       "retime",
       [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& robot,
@@ -338,7 +345,10 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       "window (jerk_window) so that |s'''| <= jerk within every section, the speed caps tightened beforehand so "
       "that the DISP limits still hold.\n"
       "RuntimeError if a position limit is violated, a static torque exceeds its limit, or it does not converge.");
+}
 
+// retime(path, ..., robot=Hexapod): its legs as joints.
+void bind_retime_hexapod(py::module_& m) {
   m.def(
       "retime",
       [](const Path& path, const MetricSetd& set, const Limits& limits, const Hexapod& hexapod,
@@ -368,6 +378,17 @@ points (`margin`) and the re-solves that took, and the grid itself (`grid_s`, `g
       "OptimalRetimeResult. profile=\"scurve\" (limits with jerk) limits the jerk as for an arm. `corner_tolerance` "
       "(m): the path's corners blended first, as plan(..., corner_tolerance=) does (0: the path as given). "
       "RuntimeError if a leg leaves its length range on the way.");
+}
+
+}  // namespace
+
+void bind_retiming(py::module_& m) {
+  bind_joint_limit_report(m);
+  bind_check_joint_limits(m);
+  bind_retime_result(m);
+  bind_optimal_retime_result(m);
+  bind_retime_serial_arm(m);
+  bind_retime_hexapod(m);
 }
 
 }  // namespace python

@@ -15,7 +15,7 @@ void bind_path(pybind11::module_& m);        // bind_path.cpp: Path, Section, Jo
 void bind_planner(pybind11::module_& m);     // bind_planner.cpp: Limits, plan, Trajectory, TrajectoryCursor
 void bind_hexapod(pybind11::module_& m);     // bind_hexapod.cpp: Hexapod, WorkspaceCheck, LegViolation
 void bind_frames(pybind11::module_& m);      // bind_frames.cpp: WorkToolFrames
-void bind_serial(pybind11::module_& m);      // bind_serial.cpp: SerialArm, JointLimits, InverseResult (if built)
+void bind_serial(pybind11::module_& m);      // bind_serial*.cpp: SerialArm, JointLimits, InverseResult (if built)
 void bind_retiming(pybind11::module_& m);    // bind_retiming.cpp: check_joint_limits, retime (if built)
 void bind_ptp(pybind11::module_& m);         // bind_ptp.cpp: JointTrajectory, plan(JointPath, ..., robot=) (if built)
 

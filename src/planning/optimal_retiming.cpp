@@ -126,6 +126,76 @@ void measure_check(OptimalRetimeResult& r, const JointModel& model, const JointB
   }
 }
 
+// The laws of every run at `scale` of the joint limits on the grid: the time-optimal ones under
+// the acceleration limit, or under a jerk limit the moving average of the acceleration steps;
+// the grid's path positions and speeds, and the widest averaging window, recorded in `result`.
+std::vector<Profile> grid_laws(const detail::SmoothParameter& smooth, const std::vector<detail::GridPoint>& grid,
+                               const JointBounds& bounds, double scale, const std::vector<detail::Run>& runs,
+                               const Limits& limits, OptimalRetimeResult& result) {
+  std::vector<Profile> laws;
+  result.grid_s.clear();
+  result.grid_speed.clear();
+  result.jerk_window = 0.0;
+  for (const detail::Run& run : runs) {
+    const detail::RunProblem problem(smooth, grid, bounds, scale, run);
+    auto record_grid = [&](const detail::Parameterisation& fastest) {
+      for (std::size_t i = 0; i <= run.count; ++i) {
+        const double sigma = grid[run.first + i].sigma;
+        result.grid_s.push_back(smooth.s_of(sigma));
+        result.grid_speed.push_back(std::sqrt(fastest.x[i]) * smooth.s_per_sigma(smooth.section_at(sigma)));
+      }
+    };
+
+    if (limits.jerk) {
+      const detail::JerkLimitedSolution chosen =
+          detail::jerk_limited_solution(problem, limits.acceleration, *limits.jerk);
+      const detail::Parameterisation& fastest = chosen.fastest;
+      const detail::AccelerationSteps& steps = chosen.steps;
+      const double window = chosen.window;
+      result.jerk_window = std::max(result.jerk_window, window);
+      record_grid(fastest);
+      double end_time = 0.0;
+      const std::vector<detail::JerkPhase> phases = detail::moving_average(steps, window, end_time);
+      detail::append_jerk_laws(smooth, phases, problem.end(), laws);
+      continue;
+    }
+
+    const detail::Parameterisation fastest = problem.solve(0.0, 0.0);
+    record_grid(fastest);
+    detail::append_acceleration_laws(problem, fastest, limits.acceleration, laws);
+  }
+  return laws;
+}
+
+// Under a jerk limit, the planner's own S-curve law and the KUKA re-timing patent's scaling loop
+// with the S-curve as candidates under the same dense check: the fastest that keeps every joint
+// limit with the grid laws' headroom, if it is faster than `result`.
+std::optional<OptimalRetimeResult> faster_scurve(const Path& path, const MetricSetd& set, const Limits& limits,
+                                                 const JointModel& model, const JointBounds& bounds,
+                                                 const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options,
+                                                 const OptimalRetimeResult& result) {
+  std::vector<Trajectory> candidates;
+  candidates.push_back(plan(path, set, limits, ProfileKind::scurve));
+  if (std::optional<Trajectory> scaled = model.scaled_scurve(path, set, limits, q_start, standing_headroom)) {
+    candidates.push_back(std::move(*scaled));
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Trajectory& a, const Trajectory& b) { return a.duration() < b.duration(); });
+  for (Trajectory& candidate : candidates) {
+    if (candidate.duration() >= result.trajectory.duration()) break;
+    OptimalRetimeResult direct = result;
+    direct.trajectory = std::move(candidate);
+    measure_check(direct, model, bounds, q_start, std::max(options.check_samples_between, candidate_samples_between));
+    // The same headroom as the grid laws' own: a law at its limits at the checked samples
+    // may exceed them between (measured: 3·10⁻⁵ on a scaled UR5e move).
+    if (std::max({direct.velocity_ratio, direct.acceleration_ratio, direct.torque_ratio}) <= 1.0 - standing_headroom) {
+      direct.jerk_window = 0.0;
+      return direct;
+    }
+  }
+  return std::nullopt;
+}
+
 // The fastest timing of `path` for `model` (see the file comment); options already checked.
 OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, const Limits& limits,
                                    const JointModel& model, const Eigen::VectorXd& q_start,
@@ -138,15 +208,10 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   const Trajectory planned = plan(path, set, unjerked, ProfileKind::trapezoid);
   const detail::SmoothParameter smooth(planned, limits.acceleration);
   const JointBounds bounds = model.bounds(options);
-  // Path position s of a σ, for messages and the result.
-  auto s_of = [&](double sigma) { return smooth.s_of(sigma); };
 
   std::vector<detail::Run> runs;
   const std::vector<detail::GridPoint> grid = joint_grid(smooth, model, options, q_start, runs);
   require_holding_possible(grid, bounds, model, smooth);
-  auto measure = [&](OptimalRetimeResult& r, int samples_between) {
-    measure_check(r, model, bounds, q_start, samples_between);
-  };
 
   OptimalRetimeResult result;
   // The grid solution sits exactly on its limits, and between grid points the coefficients
@@ -154,71 +219,20 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   // (measured: first-pass overshoots of 2–3·10⁻⁴ on 100-interval grids of UR5e moves).
   double scale = 1.0 - standing_headroom;
   for (int refinement = 0;; ++refinement) {
-    std::vector<Profile> laws;
-    result.grid_s.clear();
-    result.grid_speed.clear();
-    result.jerk_window = 0.0;
-    for (const detail::Run& run : runs) {
-      const detail::RunProblem problem(smooth, grid, bounds, scale, run);
-      auto record_grid = [&](const detail::Parameterisation& fastest) {
-        for (std::size_t i = 0; i <= run.count; ++i) {
-          const double sigma = grid[run.first + i].sigma;
-          result.grid_s.push_back(s_of(sigma));
-          result.grid_speed.push_back(std::sqrt(fastest.x[i]) * smooth.s_per_sigma(smooth.section_at(sigma)));
-        }
-      };
-
-      if (limits.jerk) {
-        const detail::JerkLimitedSolution chosen =
-            detail::jerk_limited_solution(problem, limits.acceleration, *limits.jerk);
-        const detail::Parameterisation& fastest = chosen.fastest;
-        const detail::AccelerationSteps& steps = chosen.steps;
-        const double window = chosen.window;
-        result.jerk_window = std::max(result.jerk_window, window);
-        record_grid(fastest);
-        double end_time = 0.0;
-        const std::vector<detail::JerkPhase> phases = detail::moving_average(steps, window, end_time);
-        detail::append_jerk_laws(smooth, phases, problem.end(), laws);
-        continue;
-      }
-
-      const detail::Parameterisation fastest = problem.solve(0.0, 0.0);
-      record_grid(fastest);
-      detail::append_acceleration_laws(problem, fastest, limits.acceleration, laws);
-    }
+    const std::vector<Profile> laws = grid_laws(smooth, grid, bounds, scale, runs, limits, result);
     result.trajectory = planned.with_time_law(TimeLaw::consecutive(laws, runs.size()));
 
-    measure(result, options.check_samples_between);
+    measure_check(result, model, bounds, q_start, options.check_samples_between);
     const double worst = std::max({result.velocity_ratio, result.acceleration_ratio, result.torque_ratio});
     result.margin = 1.0 - scale;
     result.refinements = refinement;
     if (worst <= 1.0) {
-      // With a jerk limit, two more candidates under the same dense check: the planner's own
-      // S-curve law, which may already keep every joint limit (where the jerk alone binds, the
-      // S-curve is the optimum the average only approaches), and the KUKA re-timing patent's scaling loop with the
-      // S-curve (the averaged law is not the jerk-limited optimum and can lose to it by a few
-      // per cent where the jerk binds more than the joints). The fastest that passes is the result.
+      // With a jerk limit the averaged law is not the jerk-limited optimum: a faster S-curve
+      // candidate that passes the same check is the result instead.
       if (limits.jerk) {
-        std::vector<Trajectory> candidates;
-        candidates.push_back(plan(path, set, limits, ProfileKind::scurve));
-        if (std::optional<Trajectory> scaled = model.scaled_scurve(path, set, limits, q_start, standing_headroom)) {
-          candidates.push_back(std::move(*scaled));
-        }
-        std::sort(candidates.begin(), candidates.end(),
-                  [](const Trajectory& a, const Trajectory& b) { return a.duration() < b.duration(); });
-        for (Trajectory& candidate : candidates) {
-          if (candidate.duration() >= result.trajectory.duration()) break;
-          OptimalRetimeResult direct = result;
-          direct.trajectory = std::move(candidate);
-          measure(direct, std::max(options.check_samples_between, candidate_samples_between));
-          // The same headroom as the grid laws' own: a law at its limits at the checked samples
-          // may exceed them between (measured: 3·10⁻⁵ on a scaled UR5e move).
-          if (std::max({direct.velocity_ratio, direct.acceleration_ratio, direct.torque_ratio}) <=
-              1.0 - standing_headroom) {
-            direct.jerk_window = 0.0;
-            return direct;
-          }
-        }
+        if (std::optional<OptimalRetimeResult> direct =
+                faster_scurve(path, set, limits, model, bounds, q_start, options, result))
+          return std::move(*direct);
       }
       return result;
     }

@@ -315,6 +315,177 @@ std::string corner_reason(const std::vector<CornerStop>& corner_stops, std::size
   return "corner: the twist direction changes (corner_tolerance = 0 keeps the exact stop)";
 }
 
+
+// The options that cannot be combined, and the state of a moving start.
+void require_compatible(const PlanOptions& options) {
+  require(options.corner_tolerance == 0.0 || options.min_section_lengths.empty(), "corner_tolerance",
+          options.corner_tolerance,
+          "cannot be combined with min_section_lengths (given per section of the unblended path): give a "
+          "joint_metric, which is evaluated on the blended path");
+  require(!options.joint_metric || options.min_section_lengths.empty(), "min_section_lengths size",
+          static_cast<unsigned long>(options.min_section_lengths.size()),
+          "must be 0 with a joint_metric (it gives the minimum lengths)");
+  require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity",
+          options.start_velocity, "must be finite and ≥ 0 (m/s)");
+  require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration,
+          "must be finite (m/s²)");
+}
+
+// The minimum length of every section of the path as planned (doc/planning.md eq. 6): the joint
+// metric's, evaluated on that path, or the lengths given; none when neither is.
+std::vector<double> minimum_lengths(const Path& path, const Limits& limits, const PlanOptions& options) {
+  const std::size_t n = path.sections().size();
+  // A joint metric is per section of the path as planned, so it is evaluated after blending.
+  std::vector<double> minimum = options.joint_metric ? options.joint_metric(path, limits) : options.min_section_lengths;
+  const std::string minimum_name = options.joint_metric ? "joint_metric(path, limits)" : "min_section_lengths";
+  if (!(minimum.empty() || minimum.size() == n)) {
+    require(false, minimum_name + " size", static_cast<unsigned long>(minimum.size()),
+            "must be 0 or the path's section count " + std::to_string(n));
+  }
+  for (std::size_t k = 0; k < minimum.size(); ++k) {
+    if (!(std::isfinite(minimum[k]) && minimum[k] >= 0.0))
+      require(false, minimum_name + "[" + std::to_string(k) + "]", minimum[k], "must be finite and not negative");
+  }
+  return minimum;
+}
+
+// The sections as planned: a length and an acceleration bound each, cut where the fastest point's
+// speed varies, lengthened for the rotational limit and the minimum lengths.
+PlannedSections planned_sections(const Path& path, const MetricSetd& set, const Limits& limits,
+                                 const std::vector<double>& minimum) {
+  const std::vector<Section>& sections = path.sections();
+  const std::size_t n = sections.size();
+  // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
+  // under its own limit. Lengths and acceleration bounds come from one evaluation per section
+  // (the same as Path::section_lengths and section_acceleration_bound give); sections whose
+  // fastest point's speed varies are cut into pieces.
+  GroupFactors factors(set, limits.velocity);
+  const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
+  PlannedSections planned;
+  planned.reserve(n);
+  const std::vector<MoveLimits>& moves = path.section_limits();
+  for (std::size_t k = 0; k < n; ++k) {
+    const MoveLimits& move = moves[k];
+    const double speed_cap = move.velocity ? std::min(*move.velocity, limits.velocity) : limits.velocity;
+    const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
+    append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], speed_cap, a, planned);
+  }
+  std::vector<double>& lengths = planned.lengths;
+  if (limits.angular_velocity) {
+    // The rotational limit as one more term of the length (doc/planning.md eq. 36):
+    // |ω| = |ω_τ| ṡ / L ≤ ω_max.
+    for (std::size_t k = 0; k < planned.size(); ++k)
+      lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
+  }
+  // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
+  // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening (doc/planning.md eq. 6). A piece
+  // of a section spans a share h of its τ and takes that share of its minimum.
+  if (!minimum.empty()) {
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+      const SectionSource& source = planned.sources[k];
+      lengths[k] = std::max(lengths[k], (source.tau_end - source.tau_start) * minimum[source.section]);
+    }
+  }
+
+  return planned;
+}
+
+// The junctions passed at speed (none where the twist turns), the lengths on either side raised
+// until the speed per unit of s steps by less than 1 % there.
+std::vector<std::optional<JunctionSpeeds>> junctions_at_speed(PlannedSections& planned) {
+  std::vector<double>& lengths = planned.lengths;
+  // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
+  // steps by less than 1 % there (doc/planning.md eq. 9): lengthening the faster side, forward then backward,
+  // brings every such junction within 1 % (doc/planning.md eq. 34); junctions already within it
+  // are left as they are.
+  const std::size_t count = planned.size();
+  std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    const SectionSource& before = planned.sources[k];
+    const SectionSource& after = planned.sources[k + 1];
+    // Two pieces of one section: the same motion, each piece's twist per unit of its τ the
+    // section's own times the share of τ it spans.
+    if (before.section == after.section && before.tau_end == after.tau_start) {
+      junctions[k] = JunctionSpeeds{before.tau_end - before.tau_start, after.tau_end - after.tau_start};
+      continue;
+    }
+    junctions[k] = direction_continuous(planned.sections[k], planned.sections[k + 1]);
+  }
+  constexpr double step_ratio = 0.99;
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    if (!junctions[k]) continue;
+    const double out = junctions[k]->out / lengths[k];
+    lengths[k + 1] = std::max(lengths[k + 1], junctions[k]->in * step_ratio / out);
+  }
+  for (std::size_t k = count - 1; k-- > 0;) {
+    if (!junctions[k]) continue;
+    const double in = junctions[k]->in / lengths[k + 1];
+    lengths[k] = std::max(lengths[k], junctions[k]->out * step_ratio / in);
+  }
+  return junctions;
+}
+
+// The time law: rest-to-rest runs between the corners the motion stops at, each run under the
+// law of its velocity-limit curve.
+Trajectory timed_runs(PlannedSections& planned, const std::vector<std::optional<JunctionSpeeds>>& junctions,
+                      const std::vector<MoveLimits>& moves, const Limits& limits, ProfileKind profile,
+                      const std::vector<CornerStop>& corner_stops, double corner_tolerance) {
+  const std::vector<double>& lengths = planned.lengths;
+  const std::size_t count = planned.size();
+  SampledPath sampled(std::move(planned.sections), lengths);  // the lengths stay for the staircase
+
+  // Rest-to-rest runs between corners; within a run the velocity-limit curve.
+  const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
+  TimeLaw law;
+  std::vector<SpeedLimit> speed_limits;
+  std::vector<double> rests{0.0};
+  std::vector<Stop> stops;
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + 1 < count && junctions[k]) continue;
+    const std::vector<SpeedLimit> spans = speed_limit_segments(planned, moves, first, k + 1, limits);
+    double start_s = sampled.section_start(first);
+    double span_s = start_s;
+    // The law's staircase: spans of the same limit and acceleration are one step (whatever their
+    // ceilings).
+    std::vector<LimitedSegment> segments;
+    for (SpeedLimit span : spans) {
+      span.start_s = span_s;
+      span_s += span.length;
+      speed_limits.push_back(span);
+      if (!segments.empty() && segments.back().limit == span.limit && segments.back().acceleration == span.acceleration)
+        segments.back().length += span.length;
+      else
+        segments.push_back({span.length, span.limit, span.acceleration});
+    }
+    for (const Profile& piece : velocity_limited_law(segments, limits.acceleration, jerk)) {
+      law.append(piece, start_s);
+      start_s += piece.distance();
+    }
+    law.end_run();
+    const double rest = k + 1 == count ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1);
+    rests.push_back(rest);
+    if (k + 1 < count)
+      stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, corner_tolerance)});
+    first = k + 1;
+  }
+  return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
+                    std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
+}
+
+// A moving start: the first run's law from that state (doc/events.md §3).
+Trajectory moving_start(const Trajectory& from_rest, const PlanOptions& options) {
+  const double v_start = from_rest.speed_limits().front().limit;
+  require(options.start_velocity <= v_start, "start_velocity", options.start_velocity,
+          "must be at most the velocity limit at the start of the path, " + detail::number(v_start) + " m/s");
+  // The messages name starting_from's arguments; here they are the options.
+  try {
+    return from_rest.starting_from(options.start_velocity, options.start_acceleration);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("start_" + std::string(e.what()));
+  }
+}
+
 }  // namespace
 
 
@@ -353,142 +524,14 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   // Continuous-path mode: the corners blended first (doc/planning.md §10).
   std::vector<CornerStop> corner_stops;
   const std::optional<Path> blended = continuous_path(given_path, options, &corner_stops);
-  require(options.corner_tolerance == 0.0 || options.min_section_lengths.empty(), "corner_tolerance",
-          options.corner_tolerance,
-          "cannot be combined with min_section_lengths (given per section of the unblended path): give a "
-          "joint_metric, which is evaluated on the blended path");
-  require(!options.joint_metric || options.min_section_lengths.empty(), "min_section_lengths size",
-          static_cast<unsigned long>(options.min_section_lengths.size()),
-          "must be 0 with a joint_metric (it gives the minimum lengths)");
-  require(std::isfinite(options.start_velocity) && options.start_velocity >= 0.0, "start_velocity",
-          options.start_velocity, "must be finite and ≥ 0 (m/s)");
-  require(std::isfinite(options.start_acceleration), "start_acceleration", options.start_acceleration,
-          "must be finite (m/s²)");
+  require_compatible(options);
   const Path& path = blended ? *blended : given_path;
-  const std::vector<Section>& sections = path.sections();
-  const std::size_t n = sections.size();
-  // A joint metric is per section of the path as planned, so it is evaluated after blending.
-  const std::vector<double> minimum =
-      options.joint_metric ? options.joint_metric(path, limits) : options.min_section_lengths;
-  const std::string minimum_name = options.joint_metric ? "joint_metric(path, limits)" : "min_section_lengths";
-  if (!(minimum.empty() || minimum.size() == n)) {
-    require(false, minimum_name + " size", static_cast<unsigned long>(minimum.size()),
-            "must be 0 or the path's section count " + std::to_string(n));
-  }
-  for (std::size_t k = 0; k < minimum.size(); ++k) {
-    if (!(std::isfinite(minimum[k]) && minimum[k] >= 0.0))
-      require(false, minimum_name + "[" + std::to_string(k) + "]", minimum[k], "must be finite and not negative");
-  }
-  // Group weights v_sys / v_g are part of the lengths: path speed ≤ v_sys keeps every group
-  // under its own limit. Lengths and acceleration bounds come from one evaluation per section
-  // (the same as Path::section_lengths and section_acceleration_bound give); sections whose
-  // fastest point's speed varies are cut into pieces.
-  GroupFactors factors(set, limits.velocity);
-  const double rotation_scale = limits.angular_velocity ? limits.velocity / *limits.angular_velocity : 0.0;
-  PlannedSections planned;
-  planned.reserve(n);
-  const std::vector<MoveLimits>& moves = path.section_limits();
-  for (std::size_t k = 0; k < n; ++k) {
-    const MoveLimits& move = moves[k];
-    const double speed_cap = move.velocity ? std::min(*move.velocity, limits.velocity) : limits.velocity;
-    const double a = move.acceleration ? std::min(*move.acceleration, limits.acceleration) : limits.acceleration;
-    append_cut(sections[k], k, factors, rotation_scale, minimum.empty() ? 0.0 : minimum[k], speed_cap, a, planned);
-  }
-  std::vector<double>& lengths = planned.lengths;
-  if (limits.angular_velocity) {
-    // The rotational limit as one more term of the length (doc/planning.md eq. 36):
-    // |ω| = |ω_τ| ṡ / L ≤ ω_max.
-    for (std::size_t k = 0; k < planned.size(); ++k)
-      lengths[k] = std::max(lengths[k], planned.bounds[k].omega * rotation_scale);
-  }
-  // A longer section is traversed more slowly (τ̇ = ṡ/L), so every point still moves at most at
-  // ṡ·L_k/L ≤ ṡ: the DISP guarantee survives any lengthening (doc/planning.md eq. 6). A piece
-  // of a section spans a share h of its τ and takes that share of its minimum.
-  if (!minimum.empty()) {
-    for (std::size_t k = 0; k < planned.size(); ++k) {
-      const SectionSource& source = planned.sources[k];
-      lengths[k] = std::max(lengths[k], (source.tau_end - source.tau_start) * minimum[source.section]);
-    }
-  }
-
-  // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
-  // steps by less than 1 % there (doc/planning.md eq. 9): lengthening the faster side, forward then backward,
-  // brings every such junction within 1 % (doc/planning.md eq. 34); junctions already within it
-  // are left as they are.
-  const std::size_t count = planned.size();
-  std::vector<std::optional<JunctionSpeeds>> junctions(count > 0 ? count - 1 : 0);
-  for (std::size_t k = 0; k + 1 < count; ++k) {
-    const SectionSource& before = planned.sources[k];
-    const SectionSource& after = planned.sources[k + 1];
-    // Two pieces of one section: the same motion, each piece's twist per unit of its τ the
-    // section's own times the share of τ it spans.
-    if (before.section == after.section && before.tau_end == after.tau_start) {
-      junctions[k] = JunctionSpeeds{before.tau_end - before.tau_start, after.tau_end - after.tau_start};
-      continue;
-    }
-    junctions[k] = direction_continuous(planned.sections[k], planned.sections[k + 1]);
-  }
-  constexpr double step_ratio = 0.99;
-  for (std::size_t k = 0; k + 1 < count; ++k) {
-    if (!junctions[k]) continue;
-    const double out = junctions[k]->out / lengths[k];
-    lengths[k + 1] = std::max(lengths[k + 1], junctions[k]->in * step_ratio / out);
-  }
-  for (std::size_t k = count - 1; k-- > 0;) {
-    if (!junctions[k]) continue;
-    const double in = junctions[k]->in / lengths[k + 1];
-    lengths[k] = std::max(lengths[k], junctions[k]->out * step_ratio / in);
-  }
-  SampledPath sampled(std::move(planned.sections), lengths);  // the lengths stay for the staircase
-
-  // Rest-to-rest runs between corners; within a run the velocity-limit curve.
-  const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
-  TimeLaw law;
-  std::vector<SpeedLimit> speed_limits;
-  std::vector<double> rests{0.0};
-  std::vector<Stop> stops;
-  std::size_t first = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    if (k + 1 < count && junctions[k]) continue;
-    const std::vector<SpeedLimit> spans = speed_limit_segments(planned, moves, first, k + 1, limits);
-    double start_s = sampled.section_start(first);
-    double span_s = start_s;
-    // The law's staircase: spans of the same limit and acceleration are one step (whatever their
-    // ceilings).
-    std::vector<LimitedSegment> segments;
-    for (SpeedLimit span : spans) {
-      span.start_s = span_s;
-      span_s += span.length;
-      speed_limits.push_back(span);
-      if (!segments.empty() && segments.back().limit == span.limit && segments.back().acceleration == span.acceleration)
-        segments.back().length += span.length;
-      else
-        segments.push_back({span.length, span.limit, span.acceleration});
-    }
-    for (const Profile& piece : velocity_limited_law(segments, limits.acceleration, jerk)) {
-      law.append(piece, start_s);
-      start_s += piece.distance();
-    }
-    law.end_run();
-    const double rest = k + 1 == count ? sampled.section_start(k) + lengths[k] : sampled.section_start(k + 1);
-    rests.push_back(rest);
-    if (k + 1 < count)
-      stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, options.corner_tolerance)});
-    first = k + 1;
-  }
-  Trajectory from_rest(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
-                       std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
+  PlannedSections planned = planned_sections(path, set, limits, minimum_lengths(path, limits, options));
+  const std::vector<std::optional<JunctionSpeeds>> junctions = junctions_at_speed(planned);
+  Trajectory from_rest =
+      timed_runs(planned, junctions, path.section_limits(), limits, profile, corner_stops, options.corner_tolerance);
   if (options.start_velocity == 0.0 && options.start_acceleration == 0.0) return from_rest;
-  const double v_start = from_rest.speed_limits().front().limit;
-  require(options.start_velocity <= v_start, "start_velocity", options.start_velocity,
-          "must be at most the velocity limit at the start of the path, " + detail::number(v_start) + " m/s");
-  // A moving start: the first run's law from that state (doc/events.md §3). The messages name
-  // starting_from's arguments; here they are the options.
-  try {
-    return from_rest.starting_from(options.start_velocity, options.start_acceleration);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("start_" + std::string(e.what()));
-  }
+  return moving_start(from_rest, options);
 }
 
 }  // namespace dispkin

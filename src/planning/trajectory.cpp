@@ -92,6 +92,146 @@ double peak_until(const Profile& law, double t) {
   return peak;
 }
 
+// The name of a checked field for require_lazily. (Messages are made on failure only: events
+// check every trajectory they make.)
+auto named(const char* name) {
+  return [name] { return std::string(name); };
+}
+
+// Every law of the time law starts where the one before ends and keeps under the velocity-limit
+// curve of the spans it crosses, and within the acceleration limit it was planned under.
+void require_time_law(const Trajectory& t, double tol_s) {
+  const TimeLaw& law = t.time_law();
+  const std::vector<SpeedLimit>& speed_limits = t.speed_limits();
+  const std::optional<TimeLawLimits>& limits = t.limits();
+  const std::vector<TimeLaw::Piece>& pieces = law.pieces();
+  require(!pieces.empty(), "time_law pieces", 0L, "must hold at least one law");
+  require_lazily(
+      law.run_count() >= 1 && law.run_count() <= pieces.size(), [] { return std::string("time_law runs"); },
+      static_cast<unsigned long>(law.run_count()),
+      [&] { return "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()); });
+  std::size_t span = 0;  // the first span the next law may cross
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const TimeLaw::Piece& p = pieces[k];
+    const auto name = [k](const char* field) { return [k, field] { return indexed("time_law pieces", k) + field; }; };
+    const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].distance();
+    require_lazily(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name(".start_s"), p.start_s,
+                   [&] { return "must be where the law before ends, s = " + number(s_before); });
+    // Speeds where laws meet are not compared: the optimal re-timing's laws meet with speeds
+    // apart by up to a few 0.1 % (one law per grid interval), and end at rest to its solver's
+    // precision (1.6e-8 m/s), not to rounding.
+    require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
+    // A law cut where another takes over runs for a part of its own duration.
+    require_lazily(!p.cut || (p.end_time > p.start_time && p.end_time - p.start_time < p.profile.duration()),
+                   name(" cut time"), p.end_time,
+                   [&] { return "must lie inside the law's own run, after " + number(p.start_time) + " s"; });
+    const double allowed = largest_limit(speed_limits, p.start_s, p.start_s + p.distance(), tol_s, span);
+    // A cut law runs up to its cut only: what it would have done after it is not checked.
+    const double peak = p.cut ? peak_until(p.profile, p.end_time - p.start_time) : p.profile.peak_velocity();
+    require_lazily(peak <= allowed * (1.0 + 1e-8), name(" peak velocity"), peak,
+                   [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
+    // A law planned under TimeLawLimits keeps to them in every phase (a pickle cannot bring a
+    // law that accelerates beyond them, which the profile's own checks scale their tolerance by).
+    if (limits) {
+      for (int i = 0; i < p.profile.phase_count(); ++i) {
+        const ProfilePhase& phase = p.profile.phase(i);
+        const double a = std::max(std::abs(phase.start.a), std::abs(phase.end.a));
+        require_lazily(a <= limits->acceleration * (1.0 + 1e-6), name(" acceleration"), a, [&] {
+          return "must be within the trajectory's acceleration limit " + number(limits->acceleration) +
+                 " m/s² in every phase";
+        });
+      }
+    }
+    require_lazily(speed_limits.empty() ||
+                       detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
+                                                p.start_s, peak, speed_limits, span, tol_s),
+                   name(" velocity"), peak,
+                   [&] { return std::string("must keep under the velocity limit of every span it crosses"); });
+  }
+}
+
+// The time law runs to the path's end, or stops before it at rest where a stop is recorded.
+void require_law_end(const Trajectory& t, double length, double tol_s) {
+  const TimeLaw& law = t.time_law();
+  const std::vector<SpeedLimit>& speed_limits = t.speed_limits();
+  const std::optional<TimeLawLimits>& limits = t.limits();
+  const double end_s = t.end_position();
+  const std::vector<Stop>& stops = t.stops();
+  const std::vector<double>& rest_s = t.rest_positions();
+  const std::vector<TimeLaw::Piece>& pieces = law.pieces();
+  const TimeLaw::Piece& last = pieces.back();
+  const double law_end = last.start_s + last.distance();
+  // The law runs to the path's end, or stops before it at rest (stopped_at).
+  require_lazily(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, named("time_law distance"),
+                 law_end, [&] {
+                   return "must be the path length, the sum of the section lengths, " + number(length) +
+                          " m (or less, stopped at rest)";
+                 });
+  if (end_s < length) {
+    // A stop before the end is a rest of the trajectory, with its reason (stopped_at).
+    const auto near = [&](double s) { return std::abs(s - law_end) <= tol_s; };
+    require_lazily(std::any_of(stops.begin(), stops.end(), [&](const Stop& x) { return near(x.s); }) &&
+                       std::any_of(rest_s.begin(), rest_s.end(), near),
+                   named("time_law distance"), law_end, [&] {
+                     return "must be the path length, the sum of the section lengths, " + number(length) +
+                            " m, unless the motion stopped there: a rest position and a stop at that position";
+                   });
+    const ProfileState end =
+        last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
+    // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
+    double scale_v = last.profile.peak_velocity();
+    for (const SpeedLimit& l : speed_limits) scale_v = std::max(scale_v, l.top());
+    const double scale_a = limits ? limits->acceleration : std::abs(end.a);
+    require_lazily(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a,
+                   named("time_law end velocity"), end.v, [&] {
+                     return "must be 0 (at rest) where the motion stops before the end of the path, at s = " +
+                            number(law_end) + " m";
+                   });
+  }
+}
+
+// The limits and override of the events, the rest positions and stops on the path, the section
+// sources within their sections.
+void require_event_records(const Trajectory& t, double length, double tol_s) {
+  const std::optional<TimeLawLimits>& limits = t.limits();
+  const std::vector<Stop>& stops = t.stops();
+  const std::vector<double>& rest_s = t.rest_positions();
+  const double factor = t.override_factor();
+  const std::vector<SectionSource>& sources = t.section_sources();
+  const SampledPath& path = t.path();
+  if (limits) {
+    require(limits->acceleration >= numeric_range::min_limit && limits->acceleration <= numeric_range::max_limit,
+            "limits.acceleration", limits->acceleration, "must be in [1e-12, 1e12] m/s²");
+    if (limits->jerk)
+      require(*limits->jerk >= numeric_range::min_limit && *limits->jerk <= numeric_range::max_limit, "limits.jerk",
+              *limits->jerk, "must be in [1e-12, 1e12] m/s³");
+  }
+  require_lazily(
+      factor >= Trajectory::min_override && factor <= Trajectory::max_override, named("override_factor"), factor,
+      [] { return "must be in [" + number(Trajectory::min_override) + ", " + number(Trajectory::max_override) + "]"; });
+  for (std::size_t k = 0; k < rest_s.size(); ++k) {
+    const double s = rest_s[k];
+    require_lazily(
+        std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s[k - 1]),
+        [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
+  }
+  for (std::size_t k = 0; k < stops.size(); ++k)
+    require_lazily(
+        std::isfinite(stops[k].s) && stops[k].s >= -tol_s && stops[k].s <= length + tol_s,
+        [k] { return indexed("stops", k) + ".s"; }, stops[k].s, [] { return "must lie on the path"; });
+  require_lazily(
+      sources.empty() || sources.size() == path.section_count(), [] { return std::string("section_sources size"); },
+      static_cast<unsigned long>(sources.size()),
+      [&] { return "must be 0 or the section count " + std::to_string(path.section_count()); });
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    const SectionSource& source = sources[k];
+    require_lazily(
+        source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
+        [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
+        [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
+  }
+}
+
 }  // namespace
 
 void Trajectory::require_consistent() const { check(true); }
@@ -114,111 +254,9 @@ void Trajectory::check(bool sections) const {
   // Positions along the path are sums of lengths: they agree to rounding, 1e-9 of the length.
   const double tol_s = 1e-9 * length;
   require_speed_limits(speed_limits_, length, tol_s);
-  const std::vector<TimeLaw::Piece>& pieces = law_.pieces();
-  require(!pieces.empty(), "time_law pieces", 0L, "must hold at least one law");
-  require_lazily(
-      law_.run_count() >= 1 && law_.run_count() <= pieces.size(), [] { return std::string("time_law runs"); },
-      static_cast<unsigned long>(law_.run_count()),
-      [&] { return "must be at least 1 and at most the number of laws " + std::to_string(pieces.size()); });
-  std::size_t span = 0;  // the first span the next law may cross
-  for (std::size_t k = 0; k < pieces.size(); ++k) {
-    const TimeLaw::Piece& p = pieces[k];
-    const auto name = [k](const char* field) { return [k, field] { return indexed("time_law pieces", k) + field; }; };
-    const double s_before = k == 0 ? 0.0 : pieces[k - 1].start_s + pieces[k - 1].distance();
-    require_lazily(std::isfinite(p.start_s) && std::abs(p.start_s - s_before) <= tol_s, name(".start_s"), p.start_s,
-                   [&] { return "must be where the law before ends, s = " + number(s_before); });
-    // Speeds where laws meet are not compared: the optimal re-timing's laws meet with speeds
-    // apart by up to a few 0.1 % (one law per grid interval), and end at rest to its solver's
-    // precision (1.6e-8 m/s), not to rounding.
-    require_lazily(std::isfinite(p.end_time), name(" end time"), p.end_time, [] { return "must be finite"; });
-    // A law cut where another takes over runs for a part of its own duration.
-    require_lazily(!p.cut || (p.end_time > p.start_time && p.end_time - p.start_time < p.profile.duration()),
-                   name(" cut time"), p.end_time,
-                   [&] { return "must lie inside the law's own run, after " + number(p.start_time) + " s"; });
-    const double allowed = largest_limit(speed_limits_, p.start_s, p.start_s + p.distance(), tol_s, span);
-    // A cut law runs up to its cut only: what it would have done after it is not checked.
-    const double peak = p.cut ? peak_until(p.profile, p.end_time - p.start_time) : p.profile.peak_velocity();
-    require_lazily(peak <= allowed * (1.0 + 1e-8), name(" peak velocity"), peak,
-                   [&] { return "must be at most the velocity limit over its span, " + number(allowed) + " m/s"; });
-    // A law planned under TimeLawLimits keeps to them in every phase (a pickle cannot bring a
-    // law that accelerates beyond them, which the profile's own checks scale their tolerance by).
-    if (limits_) {
-      for (int i = 0; i < p.profile.phase_count(); ++i) {
-        const ProfilePhase& phase = p.profile.phase(i);
-        const double a = std::max(std::abs(phase.start.a), std::abs(phase.end.a));
-        require_lazily(a <= limits_->acceleration * (1.0 + 1e-6), name(" acceleration"), a, [&] {
-          return "must be within the trajectory's acceleration limit " + number(limits_->acceleration) +
-                 " m/s² in every phase";
-        });
-      }
-    }
-    require_lazily(speed_limits_.empty() ||
-                       detail::keeps_under_tops(p.profile, p.cut ? p.end_time - p.start_time : p.profile.duration(),
-                                                p.start_s, peak, speed_limits_, span, tol_s),
-                   name(" velocity"), peak,
-                   [&] { return std::string("must keep under the velocity limit of every span it crosses"); });
-  }
-  const TimeLaw::Piece& last = pieces.back();
-  const double law_end = last.start_s + last.distance();
-  // The law runs to the path's end, or stops before it at rest (stopped_at).
-  // (Messages are made on failure only: events check every trajectory they make.)
-  const auto named = [](const char* name) { return [name] { return std::string(name); }; };
-  require_lazily(std::isfinite(law_end) && law_end <= length + tol_s && law_end >= -tol_s, named("time_law distance"),
-                 law_end, [&] {
-                   return "must be the path length, the sum of the section lengths, " + number(length) +
-                          " m (or less, stopped at rest)";
-                 });
-  if (end_s_ < length) {
-    // A stop before the end is a rest of the trajectory, with its reason (stopped_at).
-    const auto near = [&](double s) { return std::abs(s - law_end) <= tol_s; };
-    require_lazily(std::any_of(stops_.begin(), stops_.end(), [&](const Stop& x) { return near(x.s); }) &&
-                       std::any_of(rest_s_.begin(), rest_s_.end(), near),
-                   named("time_law distance"), law_end, [&] {
-                     return "must be the path length, the sum of the section lengths, " + number(length) +
-                            " m, unless the motion stopped there: a rest position and a stop at that position";
-                   });
-    const ProfileState end =
-        last.profile.state_at(last.cut ? last.end_time - last.start_time : last.profile.duration());
-    // At rest to 1e-8 of the trajectory's scales: its highest limit and its acceleration.
-    double scale_v = last.profile.peak_velocity();
-    for (const SpeedLimit& l : speed_limits_) scale_v = std::max(scale_v, l.top());
-    const double scale_a = limits_ ? limits_->acceleration : std::abs(end.a);
-    require_lazily(std::abs(end.v) <= 1e-8 * scale_v && std::abs(end.a) <= 1e-8 * scale_a,
-                   named("time_law end velocity"), end.v, [&] {
-                     return "must be 0 (at rest) where the motion stops before the end of the path, at s = " +
-                            number(law_end) + " m";
-                   });
-  }
-  if (limits_) {
-    require(limits_->acceleration >= numeric_range::min_limit && limits_->acceleration <= numeric_range::max_limit,
-            "limits.acceleration", limits_->acceleration, "must be in [1e-12, 1e12] m/s²");
-    if (limits_->jerk)
-      require(*limits_->jerk >= numeric_range::min_limit && *limits_->jerk <= numeric_range::max_limit, "limits.jerk",
-              *limits_->jerk, "must be in [1e-12, 1e12] m/s³");
-  }
-  require_lazily(override_ >= min_override && override_ <= max_override, named("override_factor"), override_,
-                 [] { return "must be in [" + number(min_override) + ", " + number(max_override) + "]"; });
-  for (std::size_t k = 0; k < rest_s_.size(); ++k) {
-    const double s = rest_s_[k];
-    require_lazily(
-        std::isfinite(s) && s >= -tol_s && s <= length + tol_s && (k == 0 || s >= rest_s_[k - 1]),
-        [k] { return indexed("rest_positions", k); }, s, [] { return "must lie on the path, in order"; });
-  }
-  for (std::size_t k = 0; k < stops_.size(); ++k)
-    require_lazily(
-        std::isfinite(stops_[k].s) && stops_[k].s >= -tol_s && stops_[k].s <= length + tol_s,
-        [k] { return indexed("stops", k) + ".s"; }, stops_[k].s, [] { return "must lie on the path"; });
-  require_lazily(
-      sources_.empty() || sources_.size() == path_.section_count(), [] { return std::string("section_sources size"); },
-      static_cast<unsigned long>(sources_.size()),
-      [&] { return "must be 0 or the section count " + std::to_string(path_.section_count()); });
-  for (std::size_t k = 0; k < sources_.size(); ++k) {
-    const SectionSource& source = sources_[k];
-    require_lazily(
-        source.tau_start >= 0.0 && source.tau_start <= source.tau_end && source.tau_end <= 1.0,
-        [k] { return indexed("section_sources", k); }, Eigen::Vector2d(source.tau_start, source.tau_end),
-        [] { return "must be a part [tau_start, tau_end] of [0, 1]"; });
-  }
+  require_time_law(*this, tol_s);
+  require_law_end(*this, length, tol_s);
+  require_event_records(*this, length, tol_s);
 }
 
 double Trajectory::law_end() const noexcept {

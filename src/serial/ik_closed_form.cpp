@@ -127,6 +127,36 @@ void spherical_wrist_inverse(const RevoluteChain& chain, const ChainGeometry& ge
   }
 }
 
+// At the wrist singularity of a three-parallel arm: the two q₆ that put the elbow distance
+// ‖H p₄ − p₂‖ mid-way in the range both the elbow (q₃) and the circle of q₆ allow (subproblem 3
+// in −q₆), given e₁⁻¹ G and e₅. Writes them to `out` and returns how many there are (0 or 2).
+std::size_t elbow_reaching_q6(const RevoluteChain& chain, const Motion& e1_inverse_g, const Motion& e5, CosSin* out) {
+  const Eigen::Vector3d& w3 = chain.axes[2];
+  const Eigen::Vector3d& w6 = chain.axes[5];
+  const Eigen::Vector3d& p2 = chain.points[1];
+  const Eigen::Vector3d& p3 = chain.points[2];
+  const Eigen::Vector3d& p4 = chain.points[3];
+  const Eigen::Vector3d& p6 = chain.points[5];
+  const Eigen::Vector3d u6 = e5.inverse() * p4 - p6;
+  const Eigen::Vector3d v6 = e1_inverse_g.inverse() * p2 - p6;  // (e₁⁻¹ G)⁻¹ p₂
+  // ‖R(k, θ) u − v‖² ranges over base ± 2 ‖u⊥‖ ‖v⊥‖.
+  auto range = [](const Eigen::Vector3d& k, const Eigen::Vector3d& uu, const Eigen::Vector3d& vv) {
+    const double base = uu.squaredNorm() + vv.squaredNorm() - 2.0 * k.dot(uu) * k.dot(vv);
+    const double spread = 2.0 * (uu - k.dot(uu) * k).norm() * (vv - k.dot(vv) * k).norm();
+    return std::array<double, 2>{{base - spread, base + spread}};
+  };
+  const auto elbow = range(w3, p4 - p3, p2 - p3);
+  const auto circle = range(w6, u6, v6);
+  const double lo = std::max(elbow[0], circle[0]);
+  const double hi = std::min(elbow[1], circle[1]);
+  if (lo > hi) return 0;
+  const Angles minus_q6 = subproblem3(w6, u6, v6, std::max(0.0, 0.5 * (lo + hi)));
+  if (!minus_q6.exists) return 0;
+  out[0] = minus_q6.plus.inverse();
+  out[1] = minus_q6.minus.inverse();
+  return 2;
+}
+
 bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geometry, const Posed& pose,
                             IkSolutionSet& out) {
   if (geometry.three_parallel_plane && three_parallel_plane_inverse(geometry.plane, pose, out)) return false;
@@ -144,7 +174,6 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
   const Eigen::Vector3d& p2 = chain.points[1];
   const Eigen::Vector3d& p3 = chain.points[2];
   const Eigen::Vector3d& p4 = chain.points[3];
-  const Eigen::Vector3d& p6 = chain.points[5];
   const Eigen::Vector3d& c = geometry.point_56;
   const Eigen::Vector3d& x4 = geometry.normal_4;
   // e₂e₃e₄ keep the component along ω₂, e₅e₆ fix c = axes 5 ∩ 6: ω₂ · e₁⁻¹ G c = ω₂ · c.
@@ -175,25 +204,7 @@ bool three_parallel_inverse(const RevoluteChain& chain, const ChainGeometry& geo
       const bool singular_wrist = u.cross(w6).norm() < 1e-6;
       if (singular_wrist) {
         near_singular = true;
-        const Eigen::Vector3d u6 = e5.inverse() * p4 - p6;
-        const Eigen::Vector3d v6 = (e1.inverse() * g).inverse() * p2 - p6;  // (e₁⁻¹ G)⁻¹ p₂
-        // ‖R(k, θ) u − v‖² ranges over base ± 2 ‖u⊥‖ ‖v⊥‖.
-        auto range = [](const Eigen::Vector3d& k, const Eigen::Vector3d& uu, const Eigen::Vector3d& vv) {
-          const double base = uu.squaredNorm() + vv.squaredNorm() - 2.0 * k.dot(uu) * k.dot(vv);
-          const double spread = 2.0 * (uu - k.dot(uu) * k).norm() * (vv - k.dot(vv) * k).norm();
-          return std::array<double, 2>{{base - spread, base + spread}};
-        };
-        const auto elbow = range(w3, p4 - p3, p2 - p3);
-        const auto circle = range(w6, u6, v6);
-        const double lo = std::max(elbow[0], circle[0]);
-        const double hi = std::min(elbow[1], circle[1]);
-        if (lo <= hi) {
-          const Angles minus_q6 = subproblem3(w6, u6, v6, std::max(0.0, 0.5 * (lo + hi)));
-          if (minus_q6.exists) {
-            q6_candidates[q6_count++] = minus_q6.plus.inverse();
-            q6_candidates[q6_count++] = minus_q6.minus.inverse();
-          }
-        }
+        q6_count += elbow_reaching_q6(chain, e1.inverse() * g, e5, &q6_candidates[1]);
       }
       for (std::size_t k6 = 0; k6 < q6_count; ++k6) {
         const CosSin q6 = q6_candidates[k6];

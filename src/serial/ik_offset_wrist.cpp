@@ -424,14 +424,10 @@ void island(const OffsetWristSearch& search, std::size_t b, double lo, double hi
   scan(search, b, run, true, true, out);
 }
 
-}  // namespace
-
-std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
-                                                 const Posed& pose, int samples) {
-  const OffsetWristSearch search(chain, geometry, pose);
-  // The samples: `samples` equally spaced, and one inside every interval between two
-  // positioning ends that none of them falls in (a gap the equal spacing would straddle, an
-  // island it would miss); the runs, gaps and islands below then see it.
+// The angles sampled: `samples` equally spaced, and one inside every interval between two
+// positioning ends that none of them falls in (a gap the equal spacing would straddle, an
+// island it would miss), so that the runs, gaps and islands of the search see it; in order.
+std::vector<double> sample_angles(const OffsetWristSearch& search, int samples) {
   const double step = 2.0 * pi / samples;
   std::vector<double> thetas(static_cast<std::size_t>(samples));
   for (int j = 0; j < samples; ++j) thetas[static_cast<std::size_t>(j)] = -pi + j * step;
@@ -444,6 +440,15 @@ std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, con
     if (first_sample_after >= hi) thetas.push_back(mid < pi ? mid : mid - 2.0 * pi);
   }
   std::sort(thetas.begin(), thetas.end());
+  return thetas;
+}
+
+}  // namespace
+
+std::vector<Eigen::VectorXd> offset_wrist_search(const RevoluteChain& chain, const ChainGeometry& geometry,
+                                                 const Posed& pose, int samples) {
+  const OffsetWristSearch search(chain, geometry, pose);
+  const std::vector<double> thetas = sample_angles(search, samples);
   const int n = static_cast<int>(thetas.size());
   std::vector<Sample> table(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) table[static_cast<std::size_t>(j)] = search.evaluate(thetas[static_cast<std::size_t>(j)]);

@@ -175,7 +175,7 @@ void SerialArm::require_dynamics() const {
 
 // Recursive Newton–Euler on the product-of-exponentials chain (chain_dynamics.hpp): the pass of
 // forward() and jacobian(), no per-call solver or KDL chain (it matches KDL's ChainIdSolver_RNE to
-// rounding: test_serial_arm.cpp).
+// rounding: test_serial_dynamics.cpp).
 Eigen::VectorXd SerialArm::torques(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                    const Eigen::VectorXd& qdd) const {
   require_joint_vector(q, "q");

@@ -211,6 +211,66 @@ Eigen::Vector3d nearest_point_on_line(const Eigen::Vector3d& pa, const Eigen::Ve
   return pb + s * ub;
 }
 
+// The links from base_link to tip_link: the path tip → base through the parent joints, then
+// reversed. Cycles were refused before urdfdom parsed the text (which accepts some); the walk
+// still stops at a repeated link, so it cannot run forever whatever urdfdom builds.
+std::vector<urdf::LinkConstSharedPtr> link_path(const urdf::LinkConstSharedPtr& tip, const std::string& base_link,
+                                                const std::string& tip_link) {
+  std::vector<urdf::LinkConstSharedPtr> path{tip};
+  std::set<std::string> visited{tip_link};
+  while (path.back()->name != base_link) {
+    const urdf::LinkConstSharedPtr parent = path.back()->getParent();
+    require(parent != nullptr, "base_link", base_link, "is not an ancestor of tip_link \"" + tip_link + "\"");
+    require(visited.insert(parent->name).second, "link", parent->name,
+            "is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"" + tip_link + "\"");
+    path.push_back(parent);
+  }
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// The joints along the path of links, each revolute, continuous or fixed.
+std::vector<const urdf::Joint*> path_joints(const std::vector<urdf::LinkConstSharedPtr>& path) {
+  std::vector<const urdf::Joint*> joints;
+  for (std::size_t k = 1; k < path.size(); ++k) {
+    const urdf::Joint& joint = *path[k]->parent_joint;
+    switch (joint.type) {
+      case urdf::Joint::REVOLUTE:
+      case urdf::Joint::CONTINUOUS:
+      case urdf::Joint::FIXED:
+        break;
+      case urdf::Joint::PRISMATIC:
+      case urdf::Joint::PLANAR:
+      case urdf::Joint::FLOATING:
+      default:
+        throw std::invalid_argument(joint_label(joint) + " between \"" + joint.parent_link_name + "\" and \"" +
+                                    joint.child_link_name +
+                                    "\": only revolute, continuous and fixed joints are supported on a serial arm");
+    }
+    joints.push_back(&joint);
+  }
+  return joints;
+}
+
+// The inertia of every joint's moving body: its segment plus the fixed segments after it.
+std::vector<BodyInertia> moving_body_inertias(const KDL::Chain& chain) {
+  std::vector<BodyInertia> inertias;
+  for (unsigned s = 0; s < chain.getNrOfSegments(); ++s) {
+    const KDL::Segment& seg = chain.getSegment(s);
+    if (seg.getJoint().getType() == KDL::Joint::Fixed) continue;
+    KDL::RigidBodyInertia body = seg.getInertia();
+    KDL::Frame to_body = KDL::Frame::Identity();
+    for (unsigned f = s + 1; f < chain.getNrOfSegments(); ++f) {
+      const KDL::Segment& fixed = chain.getSegment(f);
+      if (fixed.getJoint().getType() != KDL::Joint::Fixed) break;
+      to_body = to_body * fixed.getFrameToTip();
+      body = body + to_body * fixed.getInertia();
+    }
+    inertias.push_back(to_body_inertia(body));
+  }
+  return inertias;
+}
+
 }  // namespace
 
 SerialArm SerialArm::from_urdf_file(const std::string& path, const std::string& base_link,
@@ -244,43 +304,14 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
   const urdf::LinkConstSharedPtr tip = urdf->getLink(tip_link);
   require(tip != nullptr, "tip_link", tip_link, "is not a link of robot \"" + urdf->getName() + "\"");
 
-  // The path tip → base through the parent joints, then reversed. Cycles were refused before
-  // urdfdom parsed the text (which accepts some); the walk still stops at a repeated link, so
-  // it cannot run forever whatever urdfdom builds.
-  std::vector<urdf::LinkConstSharedPtr> path{tip};
-  std::set<std::string> visited{tip_link};
-  while (path.back()->name != base_link) {
-    const urdf::LinkConstSharedPtr parent = path.back()->getParent();
-    require(parent != nullptr, "base_link", base_link, "is not an ancestor of tip_link \"" + tip_link + "\"");
-    require(visited.insert(parent->name).second, "link", parent->name,
-            "is its own ancestor: the URDF's joints form a cycle on the way from tip_link \"" + tip_link + "\"");
-    path.push_back(parent);
-  }
-  std::reverse(path.begin(), path.end());
+  const std::vector<urdf::LinkConstSharedPtr> path = link_path(tip, base_link, tip_link);
 
   auto model = std::make_shared<Model>();
   model->robot_name = urdf->getName();
   model->base_link = base_link;
   model->tip_link = tip_link;
   model->urdf = xml;
-  std::vector<const urdf::Joint*> joints;
-  for (std::size_t k = 1; k < path.size(); ++k) {
-    const urdf::Joint& joint = *path[k]->parent_joint;
-    switch (joint.type) {
-      case urdf::Joint::REVOLUTE:
-      case urdf::Joint::CONTINUOUS:
-      case urdf::Joint::FIXED:
-        break;
-      case urdf::Joint::PRISMATIC:
-      case urdf::Joint::PLANAR:
-      case urdf::Joint::FLOATING:
-      default:
-        throw std::invalid_argument(joint_label(joint) + " between \"" + joint.parent_link_name + "\" and \"" +
-                                    joint.child_link_name +
-                                    "\": only revolute, continuous and fixed joints are supported on a serial arm");
-    }
-    joints.push_back(&joint);
-  }
+  const std::vector<const urdf::Joint*> joints = path_joints(path);
 
   int n = 0;
   for (const urdf::Joint* joint : joints) n += joint->type == urdf::Joint::FIXED ? 0 : 1;
@@ -316,19 +347,7 @@ SerialArm SerialArm::from_urdf_string(const std::string& xml, const std::string&
     ++i;
   }
   // inertias(): the moving body of joint i is its segment plus the fixed segments after it.
-  for (unsigned s = 0; s < model->chain.getNrOfSegments(); ++s) {
-    const KDL::Segment& seg = model->chain.getSegment(s);
-    if (seg.getJoint().getType() == KDL::Joint::Fixed) continue;
-    KDL::RigidBodyInertia body = seg.getInertia();
-    KDL::Frame to_body = KDL::Frame::Identity();
-    for (unsigned f = s + 1; f < model->chain.getNrOfSegments(); ++f) {
-      const KDL::Segment& fixed = model->chain.getSegment(f);
-      if (fixed.getJoint().getType() != KDL::Joint::Fixed) break;
-      to_body = to_body * fixed.getFrameToTip();
-      body = body + to_body * fixed.getInertia();
-    }
-    model->inertias.push_back(to_body_inertia(body));
-  }
+  model->inertias = moving_body_inertias(model->chain);
   model->bodies = detail::chain_bodies(model->inertias, link_frames_at_zero(model->chain));
 
   model->revolute = revolute_chain_of(model->chain);

@@ -9,12 +9,9 @@
 #include <dispkin/serial/serial_arm.hpp>
 #include <dispkin/shapes.hpp>
 
-namespace dispkin::testing {
+#include "serial_test_arms.hpp"  // ur5e
 
-inline serial::SerialArm ur5e() {
-  return serial::SerialArm::from_urdf_file(std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_ur5e_dh.urdf",
-                                           "base_link", "tool0");
-}
+namespace dispkin::testing {
 
 inline MetricSetd tool() {
   MetricSetd set;

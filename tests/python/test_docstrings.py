@@ -30,6 +30,8 @@ PYTHON_MODULES = [
     "dispkin.job.export",
     "dispkin.job.violations",
     "dispkin.job.machine_limits",
+    "dispkin.job.metric_set_section",
+    "dispkin.job.move_sequence",
     "dispkin.cli",
     "dispkin.progress",
     "dispkin.commands",

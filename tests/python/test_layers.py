@@ -78,3 +78,29 @@ def test_a_core_file_in_a_plugin_namespace_is_reported(tmp_path):
     assert result.returncode == 1
     assert "src/planning/planner.cpp:2: the planning layer opens namespace dispkin::serial" in result.stdout
     assert "src/serial/ptp.cpp:1: the serial layer opens namespace dispkin::hexapod::detail" in result.stdout
+
+
+def test_a_public_declaration_naming_detail_is_reported_with_its_line(tmp_path):
+    write(
+        tmp_path,
+        "include/dispkin/pose.hpp",
+        "namespace dispkin {\nnamespace detail {\nstruct Kernel {};\n}  // namespace detail\n"
+        "class Pose {\n public:\n  void apply(const detail::Kernel& k);\n};\n}  // namespace dispkin\n",
+    )
+    result = run(tmp_path)
+    assert result.returncode == 1
+    assert "include/dispkin/pose.hpp:7: a public declaration names detail: void apply(const detail::Kernel& k)" in (
+        result.stdout
+    )
+
+
+def test_detail_in_bodies_private_members_and_friends_passes(tmp_path):
+    write(
+        tmp_path,
+        "include/dispkin/pose.hpp",
+        "namespace dispkin {\nnamespace detail {\nstruct Kernel {};\ninline int f() { return 1; }\n}\n"
+        "inline int g() { return detail::f(); }  // detail::Kernel in a comment\n"
+        "class Pose {\n  detail::Kernel kernel_;\n public:\n  Pose() : x_(detail::f()) {}\n"
+        " private:\n  friend struct detail::Kernel;\n  int x_;\n};\n}  // namespace dispkin\n",
+    )
+    assert run(tmp_path).returncode == 0, run(tmp_path).stdout

@@ -2,140 +2,23 @@
 object of the type satisfies (the same C++ checks run on both paths), names the type, the field and
 the value in the house format, raises TypeError for a wrong type and ValueError for a bad value,
 never crashes, and an object it accepts samples finite numbers within its own limits. Called on an
-object that already exists, __setstate__ raises TypeError instead of silently doing nothing."""
+object that already exists, __setstate__ raises TypeError instead of silently doing nothing.
+Random states and corruptions: test_pickle_properties.py."""
 
 import copy
-import functools
 import math
 import pickle
 import subprocess
 import sys
 import textwrap
 
-import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
 
 import dispkin
 
-from test_python_objects import Q0, arm, blended_path, hexapod, pose, tool
+from test_python_objects import Q0, blended_path
 
-
-def fresh(cls, state):
-    """What unpickling does: a new, empty instance made from `state`."""
-    obj = cls.__new__(cls)
-    obj.__setstate__(state)
-    return obj
-
-
-def plain(x):
-    """A state as nested tuples of Python values (arrays as tuples, dispkin objects as their state)."""
-    if isinstance(x, np.ndarray):
-        return plain(x.tolist())
-    if isinstance(x, (list, tuple)):
-        return tuple(plain(v) for v in x)
-    if hasattr(x, "__getstate__") and type(x).__module__.startswith("dispkin"):
-        return (type(x).__name__, plain(x.__getstate__()))
-    return x
-
-
-def replaced(state, path, value):
-    """`state` with the item at `path` (indices into nested tuples) replaced by `value`."""
-    if not path:
-        return value
-    items = list(state)
-    items[path[0]] = replaced(items[path[0]], path[1:], value)
-    return tuple(items)
-
-
-def item(state, path):
-    for k in path:
-        state = state[k]
-    return state
-
-
-def number_paths(state, path=()):
-    """The paths of every float (not int, not bool) in a plain state."""
-    if isinstance(state, tuple):
-        for k, v in enumerate(state):
-            yield from number_paths(v, path + (k,))
-    elif isinstance(state, float):
-        yield path
-
-
-# --- objects of every pickled type --------------------------------------------------------------
-
-
-@functools.lru_cache(maxsize=None)
-def trajectory():
-    return dispkin.plan(blended_path(), tool(), dispkin.Limits(0.25, 1.0, 10.0))
-
-
-@functools.lru_cache(maxsize=None)
-def retimed():
-    a = arm()
-    lin = dispkin.Path.lin(a.forward(Q0), a.forward(Q0) * pose(0, 0, 0, 0, 0, 90))
-    scaled = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0, 10.0), a, Q0)
-    optimal = dispkin.retime(lin, tool(), dispkin.Limits(0.25, 1.0), a, Q0, profile="trapezoid", method="optimal")
-    return scaled, optimal
-
-
-@functools.lru_cache(maxsize=None)
-def hexapod_checks():
-    h = hexapod()
-    far = h.home * dispkin.Pose(translation=(0, 0, 0.2))
-    ms = dispkin.MetricSet()
-    h.add_leg_speed_group(ms, 0)
-    traj = dispkin.plan(dispkin.Path.lin(h.home, far), ms, dispkin.Limits(0.05, 0.5), "trapezoid")
-    return h.check(far), h.check_trajectory(traj, 1e-3)
-
-
-def objects():
-    """(name, object) for every type with a py::pickle."""
-    scaled, optimal = retimed()
-    workspace, checked = hexapod_checks()
-    a = arm()
-    return [
-        ("Pose", pose(0.1, 0.2, 0.3, 10, 20, 30)),
-        ("WorkToolFrames", dispkin.WorkToolFrames(pose(0, 0, 0.2, 0, 0, 10), pose(0, 0, 0.05, 5, 0, 0))),
-        ("MetricSet", tool()),
-        ("Limits", dispkin.Limits(0.25, 1.0, 10.0, angular_velocity=2.0)),
-        ("JointPath", dispkin.Path.ptp(Q0, Q0 + 0.3)),
-        ("Path", blended_path()),
-        ("Profile", dispkin.Profile.scurve(0.3, 0.25, 1.0, 10.0, 0.05, 0.1)),
-        ("Trajectory", trajectory()),
-        ("LegViolation", workspace.violations[0]),
-        ("WorkspaceCheck", workspace),
-        ("LegExcursion", checked.excursions[0]),
-        ("TrajectoryCheck", checked),
-        ("Hexapod", hexapod()),
-        ("JointLimits", a.joint_limits),
-        ("InverseResult", a.inverse_solutions(a.forward(Q0))),
-        ("SerialArm", a),
-        ("JointLimitReport", optimal.report),
-        ("RetimeResult", scaled),
-        ("OptimalRetimeResult", optimal),
-    ]
-
-
-NAMES = [name for name, _ in objects()]
-
-
-def named(name):
-    return dict(objects())[name]
-
-
-def assert_refused(cls, state, error, *fragments):
-    """`cls.__setstate__(state)` on a fresh instance raises exactly `error`, whose message names the
-    type and contains each fragment."""
-    with pytest.raises(Exception) as caught:
-        fresh(cls, state)
-    assert type(caught.value) is error, f"{type(caught.value).__name__}: {caught.value}"
-    message = str(caught.value)
-    assert message.startswith(cls.__name__ + ".__setstate__: "), message
-    for fragment in fragments:
-        assert fragment in message, message
-    return message
+from _pickled import NAMES, assert_refused, fresh, named, plain, replaced, trajectory
 
 
 # --- every type ---------------------------------------------------------------------------------
@@ -509,111 +392,3 @@ def test_arm_states_name_the_field():
     group = m[0]
     assert_refused(dispkin.MetricSet, [(group[0], group[1], [[0.0, math.nan, 0.0]]) + group[3:]], ValueError, "nan")
     assert_refused(dispkin.MetricSet, [("0",) + group[1:]], TypeError, "state[0] (group.id) = '0': must be an int")
-
-
-# --- properties ---------------------------------------------------------------------------------
-
-FINITE = st.floats(allow_nan=False, allow_infinity=False)
-
-
-@settings(max_examples=60, deadline=None)
-@given(
-    distance=st.floats(1e-3, 10.0),
-    v=st.floats(1e-2, 5.0),
-    a=st.floats(1e-2, 50.0),
-    j=st.floats(0.1, 500.0),
-    ends=st.tuples(st.floats(0.0, 1.0), st.floats(0.0, 1.0)),
-    scurve=st.booleans(),
-)
-def test_random_profiles_round_trip_exactly(distance, v, a, j, ends, scurve):
-    v_start, v_end = ends[0] * v, ends[1] * v
-    try:
-        law = (
-            dispkin.Profile.scurve(distance, v, a, j, v_start, v_end)
-            if scurve
-            else dispkin.Profile.trapezoid(distance, v, a, v_start, v_end)
-        )
-    except ValueError:
-        return  # too short for the boundary velocities
-    copied = pickle.loads(pickle.dumps(law))
-    assert copied.__getstate__() == law.__getstate__()
-    t = np.linspace(0.0, law.duration, 101)
-    np.testing.assert_array_equal(copied.sample(t), law.sample(t))
-
-
-@settings(max_examples=60, deadline=None)
-@given(
-    xyzuvw=st.tuples(*[st.floats(-1e3, 1e3)] * 3, *[st.floats(-math.pi, math.pi)] * 3),
-    limits=st.tuples(st.floats(1e-3, 1e3), st.floats(1e-3, 1e3), st.none() | st.floats(1e-3, 1e3)),
-)
-def test_random_poses_and_limits_round_trip_exactly(xyzuvw, limits):
-    p = dispkin.Pose.from_xyzuvw(list(xyzuvw))
-    assert pickle.loads(pickle.dumps(p)).__getstate__() == p.__getstate__()
-    lim = dispkin.Limits(*limits)
-    assert pickle.loads(pickle.dumps(lim)) == lim
-
-
-CORRUPTIONS = [math.nan, math.inf, -math.inf, 1e308, -1e308, 0.0, -1.0, 5e-324]
-
-
-@functools.lru_cache(maxsize=None)
-def plain_state(name):
-    """The plain state of the object `name` (the planned trajectory, or one of objects()) and the
-    paths of its floats, computed once: every example corrupts a copy of the same state."""
-    obj = trajectory() if name == "Trajectory" else named(name)
-    state = plain(obj.__getstate__())
-    return state, tuple(number_paths(state))
-
-
-def corrupted(name, data):
-    """The plain state of `name` with one of its floats replaced by a hostile or slightly moved value."""
-    state, paths = plain_state(name)
-    path = data.draw(st.sampled_from(paths), label="path")
-    old = item(state, path)
-    value = data.draw(st.sampled_from(CORRUPTIONS + [old * 1000.0, old * (1 + 1e-6), old + 8.6, -old]), label="value")
-    return replaced(state, path, value)
-
-
-def accepted_or_refused(cls, state):
-    try:
-        return fresh(cls, state)
-    except (ValueError, TypeError):
-        return None
-
-
-@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(data=st.data())
-def test_a_corrupted_trajectory_is_refused_or_finite_within_its_limits(data):
-    copy_ = accepted_or_refused(dispkin.Trajectory, corrupted("Trajectory", data))
-    if copy_ is None:
-        return
-    assert math.isfinite(copy_.duration) and copy_.duration >= 0.0
-    t = np.linspace(0.0, copy_.duration, 301)
-    for method in ("sample", "body_twist", "path_position", "path_velocity", "path_acceleration", "body_acceleration"):
-        assert np.all(np.isfinite(getattr(copy_, method)(t))), method
-    fastest = copy_.speed_limits()[:, 2].max()
-    assert np.all(copy_.path_velocity(t) <= fastest * (1 + 1e-8))
-    assert np.all(copy_.path_velocity(t) >= -1e-9 * fastest)
-
-
-@settings(max_examples=200, deadline=None)
-@given(data=st.data())
-def test_a_corrupted_profile_is_refused_or_a_law_within_its_peak(data):
-    copy_ = accepted_or_refused(dispkin.Profile, corrupted("Profile", data))
-    if copy_ is None:
-        return
-    x = copy_.sample(np.linspace(-0.1, copy_.duration + 0.1, 501))
-    assert np.all(np.isfinite(x)) and math.isfinite(copy_.duration)
-    assert np.all(x[:, 1] <= copy_.peak_velocity * (1 + 1e-7) + 1e-12)
-    assert np.all(x[:, 1] >= -1e-7 * copy_.peak_velocity - 1e-12)
-
-
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(data=st.data())
-def test_a_corrupted_report_is_refused_or_reads_finite_arrays(data):
-    copy_ = accepted_or_refused(dispkin.JointLimitReport, corrupted("JointLimitReport", data))
-    if copy_ is None:
-        return
-    for key, value in copy_.samples.items():
-        assert np.all(np.isfinite(value)), key
-    assert math.isfinite(copy_.velocity_time) and math.isfinite(copy_.torque_time)

@@ -11,7 +11,7 @@ import pickle
 import pytest
 
 import dispkin
-from test_hostile_inputs import planar_urdf, refusal_in_child, run_isolated
+from _hostile import planar_urdf, refusal_in_child, run_isolated
 
 pytestmark = pytest.mark.skipif(not hasattr(dispkin, "SerialArm"), reason="built without the serial-arm plugin")
 
