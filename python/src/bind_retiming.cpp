@@ -164,7 +164,9 @@ method="scaling") take a seven-joint arm's redundancy parameter: RedundancyRule(
 q_start's value away from joint limits and singular poses, by the rule of SerialArm.follow per unit
 of path (doc/inverse-kinematics.md eqs. 45, 49); RedundancyRule.held() (what they use without one)
 keeps it at q_start's value.)doc")
-      .def(py::init<>())
+      .def(py::init<>(),
+           "The rule that moves the parameter, with follow()'s defaults (gain 0.05, max_rate 0.5, "
+           "singularity_weight 0.1).")
       .def_static("held", &serial::RedundancyRule::held, "The rule that keeps the parameter at q_start's value.")
       .def_readwrite("move", &serial::RedundancyRule::move, "False: the parameter stays at q_start's value.")
       .def_readwrite("gain", &serial::RedundancyRule::gain,
