@@ -1,6 +1,6 @@
 // θ(s) of a seven-joint arm along a planned path (redundancy_schedule.hpp): the rule of
-// doc/inverse-kinematics.md eq. 45 taken per unit of path, integrated node by node (eq. 49) and
-// interpolated by cubic Hermite polynomials (eq. 50).
+// doc/inverse-kinematics.md eq. 45 taken per unit of path, integrated node by node by Heun's
+// method (doc/inverse-kinematics.md eq. 49) and interpolated by Hermite pieces (eq. 50).
 #include "redundancy_schedule.hpp"
 
 #include <algorithm>
@@ -12,6 +12,28 @@
 #include "redundancy_rule.hpp"
 
 namespace dispkin::serial::detail {
+
+namespace {
+
+// θ′ of doc/inverse-kinematics.md eq. 49 at τ of section k with the parameter at θ: q (in, the
+// previous joints; out, the solution at θ on their branch), the joints' travel per unit of path at
+// a held θ (doc/inverse-kinematics.md eq. 42), the rule's rate per unit of that travel
+// (doc/inverse-kinematics.md eq. 45).
+double rule_slope(const SampledPath& path, const SerialArm& arm, const RedundancyRule& rule, std::size_t k, double tau,
+                  Eigen::VectorXd& q, double theta) {
+  constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
+  const double length = path.section_lengths()[k], s = path.section_start(k) + tau * length;
+  Posed pose;
+  Twistd per_tau;
+  path.section_state_at(k, tau, pose, per_tau);
+  Eigen::VectorXd reference = q;
+  reference(arm.redundancy().joint) = theta;
+  q = branch_solution(arm, pose, reference, no_time, s);
+  const Eigen::VectorXd held = joint_velocity(arm, q, per_tau, no_time, s) / length;
+  return parameter_step(arm, q, held.norm(), rule);
+}
+
+}  // namespace
 
 RedundancySchedule::RedundancySchedule(const SampledPath& path, const SerialArm& arm, const Eigen::VectorXd& q_given,
                                        bool backwards, double spacing, const RedundancyRule& rule) {
@@ -29,35 +51,40 @@ RedundancySchedule::RedundancySchedule(const SampledPath& path, const SerialArm&
   }
   value_.resize(total);
   rate_.resize(total);
-  constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
   const double direction = backwards ? -1.0 : 1.0;
   Eigen::VectorXd q = q_given;
-  double theta = q_given(joint_);
+  double theta = q_given(joint_), slope = 0.0;  // slope: dθ per unit of path in the direction run
   for (std::size_t done = 0; done < count; ++done) {
     const std::size_t k = backwards ? count - 1 - done : done;
     const SectionNodes& section = sections_[k];
     const double h = section.length / section.intervals;  // in s
-    for (int m = 0; m <= section.intervals; ++m) {
-      const int i = backwards ? section.intervals - m : m;
-      const double tau = static_cast<double>(i) / section.intervals;
-      const double s = section.start + tau * section.length;
-      Posed pose;
-      Twistd per_tau;
-      path.section_state_at(k, tau, pose, per_tau);
-      // q at θ on the branch of the previous node (of q_given at the first).
-      q = branch_solution(arm, pose, reference(q, theta), no_time, s);
-      // The joints' travel per unit of path at a held θ (doc/inverse-kinematics.md eq. 42), and θ's
-      // rate per unit of that travel in the direction the path is run (doc/inverse-kinematics.md eq. 49).
-      const Eigen::VectorXd held = joint_velocity(arm, q, per_tau, no_time, s) / section.length;
-      double slope = parameter_step(arm, q, held.norm(), rule);
-      // θ stays in its range: the last step onto an end is shortened (a Hermite piece from a
-      // slope Δ/h to 0 is monotone, so θ never overshoots between the nodes either).
-      const double next = std::clamp(theta + slope * h, redundancy.lower, redundancy.upper);
-      if (m < section.intervals) slope = (next - theta) / h;
-      const std::size_t node = section.first + static_cast<std::size_t>(i);
-      value_[node] = theta;
-      rate_[node] = direction * slope;
-      if (m < section.intervals) theta = next;
+    const auto node = [&](int m) {
+      return section.first + static_cast<std::size_t>(backwards ? section.intervals - m : m);
+    };
+    // The section's first node: q at θ on the branch of the previous one (of q_given at the
+    // path's first), the slope with this section's twist.
+    slope = rule_slope(path, arm, rule, k, backwards ? 1.0 : 0.0, q, theta);
+    for (int m = 0;; ++m) {
+      value_[node(m)] = theta;
+      rate_[node(m)] = direction * slope;
+      if (m == section.intervals) break;
+      // Heun's step of doc/inverse-kinematics.md eq. 49: the slope at the node ahead reached by
+      // Euler's, then the mean of both. The values then agree with the Hermite pieces' end slopes
+      // (Δθ = h (θ′_i + θ′_{i+1}) / 2), so each piece of doc/inverse-kinematics.md eq. 50
+      // is a parabola.
+      const double tau = static_cast<double>(backwards ? section.intervals - m - 1 : m + 1) / section.intervals;
+      const double ahead = std::clamp(theta + h * slope, redundancy.lower, redundancy.upper);
+      const double slope_ahead = rule_slope(path, arm, rule, k, tau, q, ahead);
+      const double next = std::clamp(theta + 0.5 * h * (slope + slope_ahead), redundancy.lower, redundancy.upper);
+      if (next == redundancy.lower || next == redundancy.upper) {
+        // Onto an end of the range: the piece from slope Δ/h to 0 is monotone, so θ does not
+        // pass the end between the nodes either.
+        rate_[node(m)] = direction * (next - theta) / h;
+        slope = 0.0;
+      } else {
+        slope = slope_ahead;
+      }
+      theta = next;
     }
   }
 }
