@@ -149,7 +149,11 @@ Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, c
   BodyJacobian j;
   FullJacobian full;
   const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s);
-  if (arm.dof() == 6) return lu.solve(body.vector());
+  if (arm.dof() == 6) {
+    // Solved into a fixed-size vector, as ever (bit for bit tests/data/plan_fingerprint.txt).
+    const Eigen::Matrix<double, 6, 1> qd = lu.solve(body.vector());
+    return qd;
+  }
   // The parameter's own share of the twist moves to the right side (doc/inverse-kinematics.md eq. 47).
   const int locked = arm.redundancy().joint;
   Eigen::VectorXd qd;
