@@ -431,11 +431,21 @@ class OverlappedJointTrajectory:
 class FollowedTrajectory:
     @staticmethod
     def from_start(
-        trajectory: Trajectory, robot: SerialArm, q_start: _ArrayLike, spacing: float = 0.002
+        trajectory: Trajectory,
+        robot: SerialArm,
+        q_start: _ArrayLike,
+        spacing: float = 0.002,
+        *,
+        redundancy_rule: Optional[RedundancyRule] = None,
     ) -> FollowedTrajectory: ...
     @staticmethod
     def to_end(
-        trajectory: Trajectory, robot: SerialArm, q_end: _ArrayLike, spacing: float = 0.002
+        trajectory: Trajectory,
+        robot: SerialArm,
+        q_end: _ArrayLike,
+        spacing: float = 0.002,
+        *,
+        redundancy_rule: Optional[RedundancyRule] = None,
     ) -> FollowedTrajectory: ...
     @property
     def duration(self) -> float: ...
@@ -730,7 +740,7 @@ class SerialArm:
         move_redundancy: bool = True,
         gain: float = 0.05,
         max_rate: float = 0.5,
-        singularity_weight: float = 0.01,
+        singularity_weight: float = 0.1,
     ) -> _Array: ...
     def joint_velocities(self, q: _ArrayLike, body_twists: _ArrayLike) -> _Array: ...
     def follow_trajectory(
@@ -741,6 +751,27 @@ class SerialArm:
     def __setstate__(self, state: _State) -> None: ...
     @property
     def urdf(self) -> str: ...
+
+class RedundancyRule:
+    @property
+    def move(self) -> bool: ...
+    @move.setter
+    def move(self, value: bool) -> None: ...
+    @property
+    def gain(self) -> float: ...
+    @gain.setter
+    def gain(self, value: float) -> None: ...
+    @property
+    def max_rate(self) -> float: ...
+    @max_rate.setter
+    def max_rate(self, value: float) -> None: ...
+    @property
+    def singularity_weight(self) -> float: ...
+    @singularity_weight.setter
+    def singularity_weight(self, value: float) -> None: ...
+    def __init__(self) -> None: ...
+    @staticmethod
+    def held() -> RedundancyRule: ...
 
 class JointLimitReport:
     @property
@@ -809,6 +840,8 @@ def check_joint_limits(
     q_start: _ArrayLike,
     samples_between: int = 10,
     difference_step: float = 1e-4,
+    *,
+    redundancy_rule: Optional[RedundancyRule] = None,
 ) -> JointLimitReport: ...
 @overload
 def check_joint_limits(
@@ -832,6 +865,8 @@ def retime(
     joint_acceleration: Optional[_ArrayLike] = None,
     torque_limits: bool = True,
     corner_tolerance: float = 0.0,
+    *,
+    redundancy_rule: Optional[RedundancyRule] = None,
 ) -> Union[RetimeResult, OptimalRetimeResult]: ...
 @overload
 def retime(

@@ -37,7 +37,8 @@ def run_check(job_file: str, out: TextIO) -> int:
     if job.arm is not None and job.arm.redundancy.kind != "none":
         r = job.arm.redundancy
         print(
-            f"  redundancy: joint {r.joint_name} (range [{r.lower:g}, {r.upper:g}] rad) held at its value in q_start, "
+            f"  redundancy: joint {r.joint_name} (range [{r.lower:g}, {r.upper:g}] rad) "
+            f"{'moved from' if job.redundancy_rule is not None else 'held at'} its value in q_start, "
             f"{r.value(job.q_start):g} rad",
             file=out,
         )

@@ -1,6 +1,7 @@
 // Python binding of dispkin/serial/ptp.hpp: JointTrajectory and plan(JointPath, ..., robot=SerialArm).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <pybind11/eigen.h>
@@ -100,6 +101,14 @@ void def_joint_sampling(py::class_<Traj>& cls) {
             });
           },
           py::arg("times"), "Joint accelerations at `times`, (N, dof), rad/s^2.");
+}
+
+// FollowedTrajectory::from_start or ::to_end with the redundancy rule optional (None: held).
+template <FollowedTrajectory (*make)(Trajectory, const serial::SerialArm&, const Eigen::VectorXd&, double,
+                                     const serial::RedundancyRule&)>
+FollowedTrajectory followed_from(Trajectory trajectory, const serial::SerialArm& arm, const Eigen::VectorXd& q,
+                                 double spacing, const std::optional<serial::RedundancyRule>& redundancy_rule) {
+  return make(std::move(trajectory), arm, q, spacing, redundancy_rule.value_or(serial::RedundancyRule::held()));
 }
 
 // What a PTP move was planned as: its ends, joint sections and velocity-limit curve.
@@ -325,14 +334,17 @@ every interval's middle agrees with the branch's IK solution to 1e-10 rad) and i
 cubic Hermite polynomials; the trajectory's own time law gives s(t). The sampled pose is the
 arm's forward kinematics of the joints.)doc");
   followed
-      .def_static("from_start", &FollowedTrajectory::from_start, py::arg("trajectory"), py::arg("robot"),
-                  py::arg("q_start"), py::arg("spacing") = FollowedTrajectory::default_spacing,
+      .def_static("from_start", &followed_from<&FollowedTrajectory::from_start>, py::arg("trajectory"),
+                  py::arg("robot"), py::arg("q_start"), py::arg("spacing") = FollowedTrajectory::default_spacing,
+                  py::kw_only(), py::arg("redundancy_rule") = py::none(),
                   "The branch that starts at q_start (whose forward kinematics must be the trajectory's start "
                   "pose to 1e-9). ValueError naming the argument for a wrong q_start or spacing, an arm that is "
                   "neither 6R nor 7R with a redundancy parameter (kept at q_start's value), or a trajectory the arm "
-                  "cannot follow (out of reach, singular, a joint limit).")
-      .def_static("to_end", &FollowedTrajectory::to_end, py::arg("trajectory"), py::arg("robot"), py::arg("q_end"),
-                  py::arg("spacing") = FollowedTrajectory::default_spacing,
+                  "cannot follow (out of reach, singular, a joint limit). A seven-joint arm's parameter moves by "
+                  "`redundancy_rule` (a RedundancyRule; doc/inverse-kinematics.md eqs. 47-50), else it is held.")
+      .def_static("to_end", &followed_from<&FollowedTrajectory::to_end>, py::arg("trajectory"), py::arg("robot"),
+                  py::arg("q_end"), py::arg("spacing") = FollowedTrajectory::default_spacing, py::kw_only(),
+                  py::arg("redundancy_rule") = py::none(),
                   "The branch that ends at q_end (followed backwards from the trajectory's end pose, which "
                   "forward kinematics of q_end must be): for a Cartesian move a PTP move from q_end follows.")
       .def_property_readonly("duration", &FollowedTrajectory::duration, "Seconds.")

@@ -155,6 +155,34 @@ JointCheckOptions check_options(int samples_between, double difference_step) {
   return o;
 }
 
+// How the followers take a seven-joint arm's redundancy parameter.
+void bind_redundancy_rule(py::module_& m) {
+  py::class_<serial::RedundancyRule>(m, "RedundancyRule", R"doc(
+How the followers of a Cartesian trajectory (FollowedTrajectory, check_joint_limits, retime with
+method="scaling") take a seven-joint arm's redundancy parameter: RedundancyRule() moves it from
+q_start's value away from joint limits and singular poses, by the rule of SerialArm.follow per unit
+of path (doc/inverse-kinematics.md eqs. 45, 49); RedundancyRule.held() (what they use without one)
+keeps it at q_start's value.)doc")
+      .def(py::init<>(),
+           "The rule that moves the parameter, with follow()'s defaults (gain 0.05, max_rate 0.5, "
+           "singularity_weight 0.1).")
+      .def_static("held", &serial::RedundancyRule::held, "The rule that keeps the parameter at q_start's value.")
+      .def_readwrite("move", &serial::RedundancyRule::move, "False: the parameter stays at q_start's value.")
+      .def_readwrite("gain", &serial::RedundancyRule::gain,
+                     "g of doc/inverse-kinematics.md eq. 45: rate per unit of the cost's slope, >= 0.")
+      .def_readwrite("max_rate", &serial::RedundancyRule::max_rate,
+                     "rho of doc/inverse-kinematics.md eq. 45: the largest change of the parameter (rad) per radian "
+                     "the joints travel, >= 0.")
+      .def_readwrite("singularity_weight", &serial::RedundancyRule::singularity_weight,
+                     "mu of doc/inverse-kinematics.md eq. 44: the weight of the singularity term against the "
+                     "joint-limit term, >= 0.")
+      .def("__repr__", [](const serial::RedundancyRule& r) {
+        return "RedundancyRule(move=" + std::string(r.move ? "True" : "False") + ", gain=" + float_repr(r.gain) +
+               ", max_rate=" + float_repr(r.max_rate) + ", singularity_weight=" + float_repr(r.singularity_weight) +
+               ")";
+      });
+}
+
 void bind_joint_limit_report(py::module_& m) {
   py::class_<JointLimitReport> report(m, "JointLimitReport", R"doc(
 What check_joint_limits found along a trajectory: the KUKA re-timing patent's factors FVEL = max |qd_i| / qd_max_i
@@ -194,16 +222,20 @@ void bind_check_joint_limits(py::module_& m) {
       "check_joint_limits",
       // The arm by value: its gravity as at the call, whatever another thread sets meanwhile.
       [](const Trajectory& trajectory, serial::SerialArm arm, const Eigen::VectorXd& q_start, int samples_between,
-         double difference_step) {
-        return check_joint_limits(trajectory, arm, q_start, check_options(samples_between, difference_step));
+         double difference_step, const std::optional<serial::RedundancyRule>& redundancy_rule) {
+        return check_joint_limits(trajectory, arm, q_start, check_options(samples_between, difference_step),
+                                  redundancy_rule.value_or(serial::RedundancyRule::held()));
       },
       py::call_guard<py::gil_scoped_release>(), py::arg("trajectory"), py::arg("robot"), py::arg("q_start"),
-      py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4,
+      py::arg("samples_between") = 10, py::arg("difference_step") = 1e-4, py::kw_only(),
+      py::arg("redundancy_rule") = py::none(),
       "Follow the planned trajectory (poses of the robot's tip link) through the robot's IK, on the branch "
       "continuous from q_start, at every characteristic point of its time laws and `samples_between` "
       "points between them: joint positions, velocities (Jacobian), accelerations and torques (static and "
       "dynamic). Returns a JointLimitReport. RuntimeError naming the time and path position where a pose has "
-      "no IK solution, the arm is singular, or the static torque alone exceeds a joint's effort limit.");
+      "no IK solution, the arm is singular, or the static torque alone exceeds a joint's effort limit. A "
+      "seven-joint arm's redundancy parameter as `redundancy_rule` (a RedundancyRule) moves it; None: held at "
+      "q_start's value.");
 
   m.def(
       "check_joint_limits",
@@ -292,8 +324,10 @@ void bind_retime_serial_arm(py::module_& m) {
       [](const Path& path, const MetricSetd& set, const Limits& limits, const serial::SerialArm& robot,
          const Eigen::VectorXd& q_start, const std::string& profile, const std::string& method, int samples_between,
          int max_iterations, int grid_intervals, const std::optional<Eigen::VectorXd>& joint_acceleration,
-         bool torque_limits, double corner_tolerance) -> py::object {
+         bool torque_limits, double corner_tolerance,
+         const std::optional<serial::RedundancyRule>& redundancy_rule) -> py::object {
         const ProfileKind kind = profile_kind(profile);
+        const serial::RedundancyRule rule = redundancy_rule.value_or(serial::RedundancyRule::held());
         const serial::SerialArm arm = robot;  // its gravity as at the call, whatever another thread sets meanwhile
         if (method == "scaling") {
           // The scaling loop has no joint acceleration limit to scale against: refused, not ignored.
@@ -306,12 +340,17 @@ void bind_retime_serial_arm(py::module_& m) {
           {
             const UnlockedIf unlocked(true, path, set);
             result = retime_by_scaling(path, set, limits, kind, arm, q_start, check_options(samples_between, 1e-4),
-                                       max_iterations, corner_tolerance);
+                                       max_iterations, corner_tolerance, rule);
           }
           return py::cast(std::move(result));
         }
         if (method != "optimal")
           throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
+        // The optimal grid solves the joints at a held parameter: a moving one is refused, not ignored.
+        if (rule.move)
+          throw std::invalid_argument("redundancy_rule: " + std::string(rule.move ? "move=True" : "") +
+                                      " is not supported by method=\"optimal\" (its grid holds the parameter at "
+                                      "q_start's value); use method=\"scaling\" or RedundancyRule.held()");
         limits.validate(kind);  // the S-curve needs a jerk limit, the trapezoid refuses one
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
@@ -330,7 +369,11 @@ void bind_retime_serial_arm(py::module_& m) {
       py::arg("path"), py::arg("metric_set"), py::arg("limits"), py::arg("robot"), py::arg("q_start"),
       py::arg("profile") = "scurve", py::arg("method") = "scaling", py::arg("samples_between") = 10,
       py::arg("max_iterations") = 20, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
-      py::arg("torque_limits") = true, py::arg("corner_tolerance") = 0.0,
+      py::arg("torque_limits") = true, py::arg("corner_tolerance") = 0.0, py::kw_only(),
+      py::arg("redundancy_rule") = py::none(),
+      "Re-time `path` so that the robot keeps its joint limits. `redundancy_rule` (a RedundancyRule, "
+      "method=\"scaling\" only): a seven-joint arm's parameter moved as check_joint_limits moves it; None: held."
+      "\n\n"
       "Re-time `path` so that the robot keeps its joint limits. `corner_tolerance` (m): the path's corners blended "
       "first, as plan(..., corner_tolerance=) does (0: the path as given).\n\n"
       "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by "
@@ -383,6 +426,7 @@ void bind_retime_hexapod(py::module_& m) {
 }  // namespace
 
 void bind_retiming(py::module_& m) {
+  bind_redundancy_rule(m);
   bind_joint_limit_report(m);
   bind_check_joint_limits(m);
   bind_retime_result(m);

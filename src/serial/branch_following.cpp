@@ -128,12 +128,7 @@ std::vector<Eigen::VectorXd> follow(const SerialArm& arm, const std::vector<Pose
   // inverse_solutions' own checks, which tracking would skip.
   require(options.max_attempts > 0, "max_attempts", options.max_attempts, "must be greater than zero");
   require_positive(options.time_budget, "time_budget");
-  require(std::isfinite(redundancy_rule.gain) && redundancy_rule.gain >= 0.0, "redundancy_rule.gain",
-          redundancy_rule.gain, "must be finite and at least 0");
-  require(std::isfinite(redundancy_rule.max_rate) && redundancy_rule.max_rate >= 0.0, "redundancy_rule.max_rate",
-          redundancy_rule.max_rate, "must be finite and at least 0");
-  require(std::isfinite(redundancy_rule.singularity_weight) && redundancy_rule.singularity_weight >= 0.0,
-          "redundancy_rule.singularity_weight", redundancy_rule.singularity_weight, "must be finite and at least 0");
+  detail::require_valid(redundancy_rule);
   // A branch turns on through the joints' whole range: the 2π copies inside the limits are
   // candidates whatever offer_equivalents says (found in closed form, not enumerated).
   detail::BranchRule rule{options, detail::Turns::listed};

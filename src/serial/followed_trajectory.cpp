@@ -11,36 +11,21 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
+#include "cubic_hermite.hpp"
 #include "joint_following.hpp"
+#include "redundancy_rule.hpp"
+#include "redundancy_schedule.hpp"
 
 namespace dispkin::serial {
 
 namespace {
 
+using detail::Hermite;
+
 // A section's grid is halved at most this many times (64 × finer than `spacing`): the cubic
 // Hermite error falls as h⁴, so a motion that still misses the midpoint check then is not smooth
 // on this branch (a branch change, a near-singular spike).
 constexpr int max_refinements = 6;
-
-// The cubic Hermite polynomial on one interval of span h (in τ) between (q0, m0) and (q1, m1),
-// at x ∈ [0, 1] of it: value, first and second derivative per τ (doc/ptp.md eq. 18).
-struct Hermite {
-  double x, h;
-  template <typename A, typename B, typename C, typename D>
-  auto value(const A& q0, const B& m0, const C& q1, const D& m1) const {
-    const double x2 = x * x, x3 = x2 * x;
-    return (2 * x3 - 3 * x2 + 1) * q0 + ((x3 - 2 * x2 + x) * h) * m0 + (3 * x2 - 2 * x3) * q1 + ((x3 - x2) * h) * m1;
-  }
-  template <typename A, typename B, typename C, typename D>
-  auto rate(const A& q0, const B& m0, const C& q1, const D& m1) const {
-    const double x2 = x * x;
-    return ((6 * x2 - 6 * x) / h) * (q0 - q1) + (3 * x2 - 4 * x + 1) * m0 + (3 * x2 - 2 * x) * m1;
-  }
-  template <typename A, typename B, typename C, typename D>
-  auto curvature(const A& q0, const B& m0, const C& q1, const D& m1) const {
-    return ((12 * x - 6) / (h * h)) * (q0 - q1) + ((6 * x - 4) / h) * m0 + ((6 * x - 2) / h) * m1;
-  }
-};
 
 [[noreturn]] void not_followed(double s, const std::string& why) {
   throw std::invalid_argument(
@@ -56,8 +41,8 @@ struct SectionNodes {
 
 class SectionFollower {
  public:
-  SectionFollower(const Trajectory& trajectory, const SerialArm& arm)
-      : path_(trajectory.path()), arm_(arm), limits_(arm.joint_limits()) {}
+  SectionFollower(const Trajectory& trajectory, const SerialArm& arm, const detail::RedundancySchedule& parameter)
+      : path_(trajectory.path()), arm_(arm), limits_(arm.joint_limits()), parameter_(parameter) {}
 
   SectionNodes follow(std::size_t k, int n, const Eigen::VectorXd& q_in, bool backwards) const {
     SectionNodes out;
@@ -102,7 +87,11 @@ class SectionFollower {
                         const Eigen::VectorXd& guess) const {
     Eigen::VectorXd q;
     try {
-      q = detail::branch_solution(arm_, pose, q_ref, std::numeric_limits<double>::quiet_NaN(), s_at(k, tau), &guess);
+      // A moving parameter: the solution at θ(s) (doc/inverse-kinematics.md eq. 50) on q_ref's branch.
+      const Eigen::VectorXd reference =
+          parameter_.moves() ? parameter_.reference(q_ref, parameter_.at(k, tau).value) : q_ref;
+      q = detail::branch_solution(arm_, pose, reference, std::numeric_limits<double>::quiet_NaN(), s_at(k, tau),
+                                  &guess);
     } catch (const std::runtime_error& e) {
       not_followed(s_at(k, tau), e.what());
     }
@@ -116,10 +105,13 @@ class SectionFollower {
     return q;
   }
 
-  // q′ = J_b(q)⁻¹ ξ_τ (doc/ptp.md eq. 17).
+  // q′ = J_b(q)⁻¹ ξ_τ (doc/ptp.md eq. 17); a moving parameter turns at θ′ = dθ/ds · L_k per τ
+  // (doc/inverse-kinematics.md eq. 47).
   Eigen::VectorXd rate_of(std::size_t k, double tau, const Eigen::VectorXd& q, const Twistd& per_tau) const {
+    const double parameter_rate = parameter_.moves() ? parameter_.at(k, tau).rate * path_.section_lengths()[k] : 0.0;
     try {
-      return detail::joint_velocity(arm_, q, per_tau, std::numeric_limits<double>::quiet_NaN(), s_at(k, tau));
+      return detail::joint_velocity(arm_, q, per_tau, std::numeric_limits<double>::quiet_NaN(), s_at(k, tau),
+                                    parameter_rate);
     } catch (const std::runtime_error& e) {
       not_followed(s_at(k, tau), e.what());
     }
@@ -128,22 +120,24 @@ class SectionFollower {
   const SampledPath& path_;
   const SerialArm& arm_;
   JointLimits limits_;
+  const detail::RedundancySchedule& parameter_;
 };
 
 }  // namespace
 
 FollowedTrajectory FollowedTrajectory::from_start(Trajectory trajectory, const SerialArm& arm,
-                                                  const Eigen::VectorXd& q_start, double spacing) {
-  return FollowedTrajectory(std::move(trajectory), arm, q_start, false, spacing);
+                                                  const Eigen::VectorXd& q_start, double spacing,
+                                                  const RedundancyRule& redundancy_rule) {
+  return FollowedTrajectory(std::move(trajectory), arm, q_start, false, spacing, redundancy_rule);
 }
 
 FollowedTrajectory FollowedTrajectory::to_end(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_end,
-                                              double spacing) {
-  return FollowedTrajectory(std::move(trajectory), arm, q_end, true, spacing);
+                                              double spacing, const RedundancyRule& redundancy_rule) {
+  return FollowedTrajectory(std::move(trajectory), arm, q_end, true, spacing, redundancy_rule);
 }
 
 FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_given,
-                                       bool backwards, double spacing)
+                                       bool backwards, double spacing, const RedundancyRule& redundancy_rule)
     : trajectory_(std::move(trajectory)), chain_(arm.chain()) {
   const char* given = backwards ? "q_end" : "q_start";
   require(arm.dof() == 6 || arm.redundancy().has_parameter(), "arm", static_cast<long>(arm.dof()),
@@ -166,7 +160,18 @@ FollowedTrajectory::FollowedTrajectory(Trajectory trajectory, const SerialArm& a
   const SampledPath& path = trajectory_.path();
   const std::size_t sections = path.section_count();
   std::vector<SectionNodes> nodes(sections);
-  const SectionFollower follower(trajectory_, arm);
+  detail::require_valid(redundancy_rule);
+  // The parameter's schedule on the unrefined grid, so that every refined interval lies in one of
+  // its Hermite pieces and the joints stay smooth inside it (doc/inverse-kinematics.md eq. 50).
+  detail::RedundancySchedule parameter;
+  try {
+    parameter = detail::RedundancySchedule(path, arm, q_given, backwards, spacing, redundancy_rule);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(
+        describe("trajectory", trajectory_.length(),
+                 std::string("the arm cannot follow it with its redundancy parameter moved: ") + e.what()));
+  }
+  const SectionFollower follower(trajectory_, arm, parameter);
   Eigen::VectorXd q_in = q_given;
   for (std::size_t done = 0; done < sections; ++done) {
     const std::size_t k = backwards ? sections - 1 - done : done;

@@ -117,12 +117,13 @@ void moving_jacobian(const SerialArm& arm, const Eigen::VectorXd& q, FullJacobia
     if (c != locked) j.col(k++) = full.col(c);
 }
 
-// The rates of the moving joints (`moving`, 6) as rates of all joints into `out`, 0 at the locked
-// one (no allocation when `out` has the size already).
-void all_joints(const SerialArm& arm, const Eigen::Matrix<double, 6, 1>& moving, Eigen::VectorXd& out) {
+// The rates of the moving joints (`moving`, 6) as rates of all joints into `out`, `parameter` at
+// the locked one (no allocation when `out` has the size already).
+void all_joints(const SerialArm& arm, const Eigen::Matrix<double, 6, 1>& moving, double parameter,
+                Eigen::VectorXd& out) {
   const int locked = arm.redundancy().joint;
   out.resize(arm.dof());
-  for (int c = 0, k = 0; c < arm.dof(); ++c) out(c) = c == locked ? 0.0 : moving(k++);
+  for (int c = 0, k = 0; c < arm.dof(); ++c) out(c) = c == locked ? parameter : moving(k++);
 }
 
 // J_b(q) of the moving joints and its LU (partial pivoting: it is square and, where it is used,
@@ -143,20 +144,28 @@ Eigen::PartialPivLU<BodyJacobian> factorised_jacobian(const SerialArm& arm, cons
 
 }  // namespace
 
-Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s) {
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s,
+                               double parameter_rate) {
   BodyJacobian j;
   FullJacobian full;
-  const Eigen::Matrix<double, 6, 1> moving = factorised_jacobian(arm, q, full, j, t, s).solve(body.vector());
-  if (arm.dof() == 6) return moving;
+  const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s);
+  if (arm.dof() == 6) {
+    // Solved into a fixed-size vector, as ever (bit for bit tests/data/plan_fingerprint.txt).
+    const Eigen::Matrix<double, 6, 1> qd = lu.solve(body.vector());
+    return qd;
+  }
+  // The parameter's own share of the twist moves to the right side (doc/inverse-kinematics.md eq. 47).
+  const int locked = arm.redundancy().joint;
   Eigen::VectorXd qd;
-  all_joints(arm, moving, qd);
+  all_joints(arm, lu.solve(body.vector() - parameter_rate * full.col(locked)), parameter_rate, qd);
   return qd;
 }
 
 namespace {
 
 void rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
-           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, detail::ChainPassRecord* record) {
+           double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, ParameterRates parameter,
+           detail::ChainPassRecord* record) {
   BodyJacobian j;
   FullJacobian full;
   const Eigen::PartialPivLU<BodyJacobian> lu = factorised_jacobian(arm, q, full, j, t, s, record);
@@ -166,23 +175,27 @@ void rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, c
     qdd = lu.solve(body_rate.vector() - product.vector());
     return;
   }
-  all_joints(arm, lu.solve(body.vector()), qd);
+  // doc/inverse-kinematics.md eqs. 47–48: the parameter's column times θ̇ and θ̈ on the right side;
+  // J̇_b q̇ takes θ̇ with the other rates.
+  const auto column = full.col(arm.redundancy().joint);
+  all_joints(arm, lu.solve(body.vector() - parameter.rate * column), parameter.rate, qd);
   const Twistd product = chain_velocity_product(full, qd.data());
-  all_joints(arm, lu.solve(body_rate.vector() - product.vector()), qdd);
+  all_joints(arm, lu.solve(body_rate.vector() - product.vector() - parameter.acceleration * column),
+             parameter.acceleration, qdd);
 }
 
 }  // namespace
 
 void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
-                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
-  rates(arm, q, body, body_rate, t, s, qd, qdd, nullptr);
+                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, ParameterRates parameter) {
+  rates(arm, q, body, body_rate, t, s, qd, qdd, parameter, nullptr);
 }
 
 void joint_rates_and_torques(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                              const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
-                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque) {
+                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque, ParameterRates parameter) {
   detail::ChainPassRecord record;
-  rates(arm, q, body, body_rate, t, s, qd, qdd, &record);
+  rates(arm, q, body, body_rate, t, s, qd, qdd, parameter, &record);
   detail::recorded_torques(arm, record, qd, qdd, torque, static_torque);
 }
 

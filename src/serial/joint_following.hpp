@@ -22,20 +22,30 @@ Eigen::VectorXd branch_solution(const SerialArm& arm, const Posed& pose, const E
                                 double s, const Eigen::VectorXd* guess = nullptr);
 
 //! q̇ with J_b(q) q̇ = ξ_b; throws std::runtime_error naming the place near a singularity (the
-//! joint speeds there are unbounded: slowing down cannot help).
-Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s);
+//! joint speeds there are unbounded: slowing down cannot help). A redundant arm's parameter joint
+//! turns at `parameter_rate` θ̇ and the others take the rest of ξ_b (doc/inverse-kinematics.md
+//! eq. 47); ignored for a 6R arm.
+Eigen::VectorXd joint_velocity(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, double t, double s,
+                               double parameter_rate = 0.0);
+
+//! θ̇ and θ̈ of a redundant arm's parameter where the path moves it (doc/inverse-kinematics.md
+//! eqs. 47–48); zero where it is held at one value.
+struct ParameterRates {
+  double rate = 0.0, acceleration = 0.0;
+};
 
 //! q̇ as joint_velocity gives it and, from the same factorisation of J_b(q), the joint
 //! acceleration of the body acceleration `body_rate`: J_b q̈ = ξ̇_b − J̇_b(q, q̇) q̇ (doc/retiming.md
-//! (doc/retiming.md eq. 27)). Per unit of path instead of time (ξ′, ξ″) it gives q′ and q″ (eq. 28). Throws as
+//! (doc/retiming.md eq. 27)). Per unit of path instead of time (ξ′, ξ″) it gives q′ and q″ (eq. 28). A
+//! redundant arm's parameter moves at `parameter` (doc/inverse-kinematics.md eqs. 47–48). Throws as
 //! joint_velocity.
 void joint_rates(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body, const Twistd& body_rate, double t,
-                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd);
+                 double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd, ParameterRates parameter = {});
 
 //! joint_rates followed by the torques τ(q, q̇, q̈) and g(q) (SerialArm::torques) on the pass that
 //! gave J_b: one pass over the chain for all of them.
 void joint_rates_and_torques(const SerialArm& arm, const Eigen::VectorXd& q, const Twistd& body,
                              const Twistd& body_rate, double t, double s, Eigen::VectorXd& qd, Eigen::VectorXd& qdd,
-                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque);
+                             Eigen::VectorXd& torque, Eigen::VectorXd& static_torque, ParameterRates parameter = {});
 
 }  // namespace dispkin::serial::detail

@@ -9,6 +9,8 @@
 
 #include <Eigen/LU>
 
+#include "dispkin/error.hpp"
+
 namespace dispkin::serial::detail {
 namespace {
 
@@ -17,15 +19,28 @@ using Square = Eigen::Matrix<double, 6, 6>;
 // Below this reciprocal condition number of J_b without the parameter's column the self-motion
 // is not taken (the threshold of the followers' Jacobian, joint_following.cpp).
 constexpr double singular_rcond = 1e-10;
-// The step of the central difference of ln det(J_b J_bᵀ) along n (doc/inverse-kinematics.md eq. 44's second term): its
+// The step of the central difference of ln det(J_b^(j))² along n (doc/inverse-kinematics.md eq. 44's second term): its
 // error is O(ε²) relative, its rounding O(1e-16 / ε).
 constexpr double slope_step = 1e-6;
 
-// ln det(J_b J_bᵀ) (−∞ at a singular pose): the manipulability's logarithm, twice over.
+// J_b(q) without the parameter's column j: the six joints that move at a held parameter.
+Square moving_jacobian(const SerialArm& arm, const Eigen::VectorXd& q, Eigen::MatrixXd& full) {
+  const int locked = arm.redundancy().joint;
+  full = arm.body_jacobian(q);
+  Square j;
+  for (int c = 0, k = 0; c < arm.dof(); ++c)
+    if (c != locked) j.col(k++) = full.col(c);
+  return j;
+}
+
+// ln det(J_b^(j))² (−∞ where the six moving joints are singular): the logarithm of their
+// manipulability, twice over. Their singular poses, not the arm's, are where the parameter stops
+// describing the self-motion and the closed form at a held θ turns joints fast (the Panda's
+// q₂ = 0, axes 1 and 3 in line).
 double log_manipulability(const SerialArm& arm, const Eigen::VectorXd& q) {
-  const Eigen::MatrixXd j = arm.body_jacobian(q);
-  const double det = (j * j.transpose()).determinant();
-  return det > 0.0 ? std::log(det) : -std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd full;
+  const double det = moving_jacobian(arm, q, full).determinant();
+  return det != 0.0 ? std::log(det * det) : -std::numeric_limits<double>::infinity();
 }
 
 // The slope along n of the joint-limit term of doc/inverse-kinematics.md eq. 44, analytically: each
@@ -48,16 +63,23 @@ double limit_slope(const JointLimits& limits, const Eigen::VectorXd& q, const Ei
 std::optional<Eigen::VectorXd> self_motion(const SerialArm& arm, const Eigen::VectorXd& q) {
   const int locked = arm.redundancy().joint;
   if (locked < 0) return std::nullopt;
-  const Eigen::MatrixXd full = arm.body_jacobian(q);
-  Square j;
-  for (int c = 0, k = 0; c < arm.dof(); ++c)
-    if (c != locked) j.col(k++) = full.col(c);
+  Eigen::MatrixXd full;
+  const Square j = moving_jacobian(arm, q, full);
   const Eigen::PartialPivLU<Square> lu(j);
   if (!(lu.rcond() >= singular_rcond)) return std::nullopt;
   const Eigen::Matrix<double, 6, 1> moving = lu.solve(-full.col(locked));
   Eigen::VectorXd n(arm.dof());
   for (int c = 0, k = 0; c < arm.dof(); ++c) n(c) = c == locked ? 1.0 : moving(k++);
   return n;
+}
+
+void require_valid(const RedundancyRule& rule) {
+  require(std::isfinite(rule.gain) && rule.gain >= 0.0, "redundancy_rule.gain", rule.gain,
+          "must be finite and at least 0");
+  require(std::isfinite(rule.max_rate) && rule.max_rate >= 0.0, "redundancy_rule.max_rate", rule.max_rate,
+          "must be finite and at least 0");
+  require(std::isfinite(rule.singularity_weight) && rule.singularity_weight >= 0.0,
+          "redundancy_rule.singularity_weight", rule.singularity_weight, "must be finite and at least 0");
 }
 
 double parameter_step(const SerialArm& arm, const Eigen::VectorXd& q, double travel, const RedundancyRule& rule) {

@@ -15,7 +15,10 @@
 
 #include "dispkin/error.hpp"
 #include "dispkin/planning/trajectory_acceleration.hpp"
+#include "dispkin/serial/followed_trajectory.hpp"
 #include "joint_following.hpp"
+#include "redundancy_rule.hpp"
+#include "redundancy_schedule.hpp"
 
 namespace dispkin::serial {
 using detail::branch_solution;
@@ -88,14 +91,34 @@ bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1)
   return path.section_at(s0, path.section_count()) == path.section_at(s1, path.section_count());
 }
 
+// What the joints at a trajectory sample are solved with: q_ref with the parameter's value θ(s),
+// and θ̇ = θ′ ṡ, θ̈ = θ″ ṡ² + θ′ s̈ (doc/inverse-kinematics.md eq. 48); q_ref and zero rates where
+// the parameter is held.
+struct ParameterAt {
+  Eigen::VectorXd reference;
+  detail::ParameterRates rates;
+};
+
+ParameterAt parameter_at(const detail::RedundancySchedule& schedule, const TrajectorySample& here,
+                         const Eigen::VectorXd& q_ref) {
+  if (!schedule.moves()) return {q_ref, {}};
+  const detail::RedundancySchedule::State theta = schedule.at(here.s);
+  return {schedule.reference(q_ref, theta.value),
+          {theta.rate * here.s_dot, theta.curvature * here.s_dot * here.s_dot + theta.rate * here.s_ddot}};
+}
+
 }  // namespace
 
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
-                                    const JointCheckOptions& options) {
+                                    const JointCheckOptions& options, const RedundancyRule& redundancy_rule) {
   const std::vector<double> times = checked_times(trajectory, options);
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
   require_finite(q_start, "q_start");
+  detail::require_valid(redundancy_rule);
+  // θ(s) on FollowedTrajectory's default grid: the check sees the joints from_start gives.
+  const detail::RedundancySchedule schedule(trajectory.path(), arm, q_start, false, FollowedTrajectory::default_spacing,
+                                            redundancy_rule);
   const JointLimits limits = arm.joint_limits();
   JointLimitReport report;
   report.samples.reserve(times.size());
@@ -115,26 +138,31 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
       const double dt = t - previous->time;
       guess = q_prev + dt * previous->qd + (0.5 * dt * dt) * previous->qdd;
     }
-    sample.q = branch_solution(arm, here.pose, q_prev, t, here.s, previous ? &guess : nullptr);
+    const ParameterAt parameter = parameter_at(schedule, here, q_prev);
+    sample.q = branch_solution(arm, here.pose, parameter.reference, t, here.s, previous ? &guess : nullptr);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
       // q̇ and q̈ from one factorisation of J_b (doc/retiming.md eq. 27), τ and g(q) on the pass that gave J_b.
       Eigen::VectorXd torque;
       detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s,
-                                      sample.qd, sample.qdd, torque, sample.static_torque);
+                                      sample.qd, sample.qdd, torque, sample.static_torque, parameter.rates);
       sample.dynamic_torque = torque - sample.static_torque;
     } else {
-      sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s);
+      sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s, parameter.rates.rate);
       // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
       if (t_after > t_before) {
         const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
+        const ParameterAt at_before = parameter_at(schedule, before, sample.q);
+        const ParameterAt at_after = parameter_at(schedule, after, sample.q);
         // Predicted to first order, so that Newton needs a single step.
         const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
         const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
-        const Eigen::VectorXd q_before = branch_solution(arm, before.pose, sample.q, t_before, before.s, &guess_before);
-        const Eigen::VectorXd q_after = branch_solution(arm, after.pose, sample.q, t_after, after.s, &guess_after);
-        sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s) -
-                      joint_velocity(arm, q_before, before.body_twist, t_before, before.s)) /
+        const Eigen::VectorXd q_before =
+            branch_solution(arm, before.pose, at_before.reference, t_before, before.s, &guess_before);
+        const Eigen::VectorXd q_after =
+            branch_solution(arm, after.pose, at_after.reference, t_after, after.s, &guess_after);
+        sample.qdd = (joint_velocity(arm, q_after, after.body_twist, t_after, after.s, at_after.rates.rate) -
+                      joint_velocity(arm, q_before, before.body_twist, t_before, before.s, at_before.rates.rate)) /
                      (t_after - t_before);
       } else {
         sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
@@ -218,7 +246,7 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
 
 RetimeResult retime_by_scaling(const Path& given_path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const SerialArm& arm, const Eigen::VectorXd& q_start, const JointCheckOptions& options,
-                               int max_iterations, double corner_tolerance) {
+                               int max_iterations, double corner_tolerance, const RedundancyRule& redundancy_rule) {
   require(max_iterations >= 1, "max_iterations", static_cast<long>(max_iterations), "must be ≥ 1");
   PlanOptions continuous;
   continuous.corner_tolerance = corner_tolerance;
@@ -227,7 +255,7 @@ RetimeResult retime_by_scaling(const Path& given_path, const MetricSetd& set, co
   Limits scaled = limits;
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     Trajectory trajectory = plan(path, set, scaled, profile);
-    JointLimitReport report = check_joint_limits(trajectory, arm, q_start, options);
+    JointLimitReport report = check_joint_limits(trajectory, arm, q_start, options, redundancy_rule);
     if (report.position_excess > 0.0) {
       const JointSample& at = report.samples[report.position_sample];
       throw std::runtime_error("joint " + arm.joint_names()[static_cast<std::size_t>(report.position_joint)] +

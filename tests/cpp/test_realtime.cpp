@@ -2,10 +2,12 @@
 // with versions that count every call, and checks that the sampling paths allocate nothing
 // (doc/guarantees-and-measurements.md: sampling never allocates; Drake's LimitMalloc idea).
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <new>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -31,6 +33,7 @@ std::atomic<long> eigen_assert_failures{0};
 #include "dispkin/serial/mixed_overlap.hpp"
 #include "dispkin/serial/ptp.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
+#include "dispkin/serial/followed_trajectory.hpp"
 #include "ptp_moves.hpp"
 #include "serial_test_chains.hpp"
 #endif
@@ -380,6 +383,33 @@ TEST(Realtime, MixedOverlapSamplingDoesNotAllocate) {
     for (int i = 0; i < 5000; ++i) checksum += lin_out.sample(lin_out.duration() * (1.2 * i / 5000 - 0.1)).qdd.norm();
   });
   EXPECT_EQ(allocated, 0) << "OverlappedMixedTrajectory::sample allocated";
+  EXPECT_EQ(eigen_assert_failures.load(), 0);
+  EXPECT_TRUE(checksum > 0.0);
+}
+
+// A seven-joint arm (the iiwa14) following a LIN with its redundancy parameter moved along the
+// path (doc/inverse-kinematics.md eqs. 47–50): the nodes hold all seven joints, so sampling is the
+// same Hermite interval and FK as for six.
+TEST(Realtime, SevenJointFollowedSamplingDoesNotAllocate) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  const serial::SerialArm arm = serial::SerialArm::from_urdf_file(
+      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_iiwa14_dh.urdf", "link_0", "tool0");
+  Eigen::VectorXd q(7);
+  q << 0.3, 0.5, 0.2, -1.6, -0.3, 1.0, 0.4;
+  const Posed start = arm.forward(q);
+  const Posed end = start * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ())),
+                                  Eigen::Vector3d(0.08, -0.05, 0.04));
+  const FollowedTrajectory lin =
+      FollowedTrajectory::from_start(plan(Path::lin(start, end), set, Limits{0.5, 2.0, 20.0}), arm, q,
+                                     FollowedTrajectory::default_spacing, serial::RedundancyRule{});
+  ASSERT_EQ(lin.start(), q);
+  ASSERT_GT(std::abs(lin.end()(6) - q(6)), 1e-6) << "the parameter did not move";
+  double checksum = 0.0;
+  const long allocated = allocations_during([&] {
+    for (int i = 0; i < 20000; ++i) checksum += lin.sample(lin.duration() * (1.2 * i / 20000 - 0.1)).qdd.norm();
+  });
+  EXPECT_EQ(allocated, 0) << "FollowedTrajectory::sample allocated for seven joints";
   EXPECT_EQ(eigen_assert_failures.load(), 0);
   EXPECT_TRUE(checksum > 0.0);
 }

@@ -45,15 +45,22 @@ class FollowedTrajectory {
   //! start pose to 1e-9: rotation-matrix entries and m), the branch continued node by node.
   //! Throws std::invalid_argument naming the argument: q_start of the wrong size, not finite, or
   //! not at the start pose; spacing not in [1e-5, 1] m; an arm that is neither 6R nor 7R with a
-  //! redundancy parameter (its Jacobian must be inverted; a 7R arm keeps the parameter at its value
-  //! in q_start, doc/inverse-kinematics.md (eq. 41), (eq. 42)); a trajectory whose poses leave the arm's
-  //! reach, pass a singular pose, change the branch, or take a joint out of its position range.
+  //! redundancy parameter (its Jacobian must be inverted); a trajectory whose poses leave the arm's
+  //! reach, pass a singular pose, change the branch, or take a joint out of its position range; a
+  //! redundancy_rule field not finite or below 0. A 7R arm's parameter stays at its value in
+  //! q_start (RedundancyRule::held(), doc/inverse-kinematics.md (eq. 41), (eq. 42)), or with a rule
+  //! that moves it follows θ(s) of doc/inverse-kinematics.md (eq. 49), (eq. 50): the rule of
+  //! SerialArm's follow per unit of path, precomputed on the grid of `spacing`, q′ with θ′'s
+  //! self-motion (doc/inverse-kinematics.md eq. 47).
   static FollowedTrajectory from_start(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
-                                       double spacing = default_spacing);
+                                       double spacing = default_spacing,
+                                       const RedundancyRule& redundancy_rule = RedundancyRule::held());
   //! The same on the branch that ends at q_end (followed backwards from the trajectory's end pose,
   //! which FK(q_end) must be): for a Cartesian move that a PTP move starting at q_end follows.
+  //! A moving parameter is moved backwards from q_end's value.
   static FollowedTrajectory to_end(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_end,
-                                   double spacing = default_spacing);
+                                   double spacing = default_spacing,
+                                   const RedundancyRule& redundancy_rule = RedundancyRule::held());
 
   double duration() const noexcept { return trajectory_.duration(); }  //!< the trajectory's duration (s)
   //! DISP arc length of the Cartesian trajectory (m).
@@ -84,7 +91,7 @@ class FollowedTrajectory {
     int intervals;
   };
   FollowedTrajectory(Trajectory trajectory, const SerialArm& arm, const Eigen::VectorXd& q_given, bool backwards,
-                     double spacing);
+                     double spacing, const RedundancyRule& redundancy_rule);
 
   Trajectory trajectory_;
   RevoluteChain chain_;

@@ -82,7 +82,15 @@ struct RedundancyRule {
   //! fixed parameter from one pose to the next, ≥ 0; it keeps the parameter from jumping.
   double max_rate = 0.5;
   //! μ of doc/inverse-kinematics.md eq. 44: the weight of the singularity term against the joint-limit term, ≥ 0.
-  double singularity_weight = 0.01;
+  double singularity_weight = 0.1;
+
+  //! The rule that holds the parameter at its value in q_start (move false): what the followers of
+  //! a Cartesian trajectory use unless given another (doc/inverse-kinematics.md eq. 41).
+  static RedundancyRule held() noexcept {
+    RedundancyRule rule;
+    rule.move = false;
+    return rule;
+  }
 };
 
 }  // namespace serial

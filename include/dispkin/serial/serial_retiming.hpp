@@ -26,8 +26,12 @@ namespace dispkin::serial {
 //! options or a q_start of the wrong size, std::runtime_error naming the time and path position
 //! where a pose has no IK solution, where the Jacobian is singular, or where the static torque
 //! alone exceeds a joint's effort limit (the KUKA re-timing patent's "cannot be reached by slowing down").
+//! A 7R arm's redundancy parameter stays at q_start's value, or with a redundancy_rule that moves
+//! it follows θ(s) as FollowedTrajectory::from_start does with its default spacing
+//! (doc/inverse-kinematics.md (eq. 49)), q̇ and q̈ with θ̇ and θ̈ (eq. 48).
 JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialArm& arm, const Eigen::VectorXd& q_start,
-                                    const JointCheckOptions& options = {});
+                                    const JointCheckOptions& options = {},
+                                    const RedundancyRule& redundancy_rule = RedundancyRule::held());
 
 //! The joint-limit factors of a PTP move at `times` (s): FVEL and FACC (doc/retiming.md (eq. 4)
 //! and (doc/retiming.md eq. 5)) of its joint line's own q, q̇ and q̈, with the torques of the arm's dynamics
@@ -58,11 +62,13 @@ FollowedJoints follow_joints(const Trajectory& trajectory, const SerialArm& arm,
 //! factors are ≤ 1 at every checked sample. Throws std::runtime_error if a position limit is
 //! violated (slowing down cannot help), if the static torque exceeds a limit, or if
 //! `max_iterations` plans do not converge. `corner_tolerance` (m, ≥ 0): continuous-path mode as
-//! plan()'s, the path's corners blended (continuous_path) before the first plan.
+//! plan()'s, the path's corners blended (continuous_path) before the first plan. `redundancy_rule`:
+//! a 7R arm's parameter as check_joint_limits takes it.
 RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Limits& limits, ProfileKind profile,
                                const SerialArm& arm, const Eigen::VectorXd& q_start,
                                const JointCheckOptions& options = {}, int max_iterations = 20,
-                               double corner_tolerance = 0.0);
+                               double corner_tolerance = 0.0,
+                               const RedundancyRule& redundancy_rule = RedundancyRule::held());
 
 //! The fastest parameterisation of `path` (planned with plan(path, set, limits, trapezoid): the
 //! DISP velocity-limit curve and its rests are kept, and |s̈| ≤ limits.acceleration) under the

@@ -217,6 +217,8 @@ class _Builder(MetricSetSection, MoveSequence):
                 f"{a['redundancy']}: the arm ({arm.dof} joints, family {arm.family}) has no redundancy parameter",
             )
         job["arm"], job["q_start"] = arm, q_start
+        if a.get("redundancy") == "moved":
+            job["redundancy_rule"] = _core.RedundancyRule()
 
     def frames(self, job: Dict[str, Any]) -> None:
         """frames: the work and tool frames, and the pivot (by default the tool frame's origin)."""
@@ -309,6 +311,7 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     path_, moves, parts = builder.moves(job, start)
     limits, profile = builder.limits(pilz)
     read_retime(builder, job)
+    builder.moved_redundancy(job, parts)
     read_events(builder, job, parts)
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.output(job, safe_name)

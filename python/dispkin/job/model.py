@@ -135,6 +135,9 @@ class Job:
     leg_speed_group: Optional[int] = None
     arm: Optional[Any] = None
     q_start: Optional[np.ndarray] = None
+    #: A seven-joint arm's redundancy parameter moved along the Cartesian runs (`redundancy: moved`):
+    #: the RedundancyRule the followers take; None: held at its value where each run starts.
+    redundancy_rule: Optional[Any] = None
     #: Output period (s) and file names (relative to the output directory).
     sample_period: float = DEFAULT_SAMPLE_PERIOD
     outputs: Dict[str, str] = dataclasses.field(default_factory=dict)

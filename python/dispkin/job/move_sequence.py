@@ -226,8 +226,29 @@ class MoveSequence:
         moves.parts.append(Part("path", whole, q_run, [m.index for m in run]))
         if arm is not None:
             poses = [Pose.from_matrix(m) for m in np.asarray(whole.sample(np.linspace(0.0, 1.0, _FOLLOW_SAMPLES)))]
-            moves.q_current = self.call(("moves", run[-1].index), arm.follow, poses, q_run)[-1]
+            # The parameter as the followers take it: held, or moved by the same rule.
+            moved = job.get("redundancy_rule") is not None
+            moves.q_current = self.call(("moves", run[-1].index), arm.follow, poses, q_run, move_redundancy=moved)[-1]
         run.clear()
+
+    def moved_redundancy(self, job: Dict[str, Any], parts: List[Part]) -> None:
+        """`redundancy: moved` where the followers can take it: the optimal re-timing holds the
+        parameter, and a PTP move after a Cartesian run would start from joints the run reaches
+        only once planned (doc/inverse-kinematics.md §14)."""
+        if job.get("redundancy_rule") is None:
+            return
+        at = ("machine", "serial_arm", "redundancy")
+        retime = job.get("retime")
+        if retime is not None and retime.method == "optimal":
+            raise self.fail(at, "moved: not with retime method optimal (its grid holds the parameter); use scaling")
+        kinds = [part.kind for part in parts]
+        for k, part in enumerate(parts):
+            if part.kind == "ptp" and "path" in kinds[:k]:
+                raise self.fail(
+                    ("moves", part.moves[0], "ptp"),
+                    "a PTP move after a Cartesian move with `redundancy: moved`: its start joints are the run's "
+                    "end, known only once the run is planned; use `redundancy: q_start`",
+                )
 
     def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
         """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the

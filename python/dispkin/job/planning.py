@@ -91,6 +91,8 @@ def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory
     if job.retime.joint_acceleration is not None:
         extra["joint_acceleration"] = job.retime.joint_acceleration
     if job.arm is not None:
+        if job.redundancy_rule is not None:
+            extra["redundancy_rule"] = job.redundancy_rule
         result = _core.retime(
             path, job.metric_set, job.limits, job.arm, q_start, profile=job.profile, method=job.retime.method, **extra
         )

@@ -14,6 +14,7 @@ from typing import Callable, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
+from .. import _core
 from .._core import MetricSet, Pose, Trajectory, max_point_speed
 from . import input_budget
 from .model import Job, JobError
@@ -92,6 +93,16 @@ def _cartesian_joint_states(
     job: Job, trajectory: Trajectory, t: np.ndarray, q_reference: Optional[np.ndarray]
 ) -> JointStates:
     """Joint positions, velocities and accelerations along a Cartesian trajectory at `t`."""
+    if job.arm is not None and job.redundancy_rule is not None:
+        # The redundancy parameter moved along the run: the joints of θ(s) with its own rates
+        # (FollowedTrajectory, doc/inverse-kinematics.md §14), as the check and re-timing see them.
+        try:
+            followed = _core.FollowedTrajectory.from_start(
+                trajectory, job.arm, q_reference, redundancy_rule=job.redundancy_rule
+            )
+        except (ValueError, RuntimeError) as error:
+            raise JobError(f"{job.file}: the serial arm cannot follow the trajectory: {error}") from error
+        return followed.joint_positions(t), followed.joint_velocities(t), followed.joint_accelerations(t)
     if job.arm is not None:
         # The branch followed from q_reference, q-dot by the body Jacobian, q-double-dot by central
         # differences of q-dot, each neighbour on its sample's branch (SerialArm.follow_trajectory).

@@ -186,7 +186,9 @@ def _joint_report(job: Job, trajectory: Union[Trajectory, JobTrajectory]) -> Tup
     broken): check_joint_limits, or part by part."""
     if isinstance(trajectory, JobTrajectory):
         return _joint_report_of_parts(job, trajectory)
-    report = _core.check_joint_limits(trajectory, _without_effort_limits(job.arm), job.q_start)
+    report = _core.check_joint_limits(
+        trajectory, _without_effort_limits(job.arm), job.q_start, redundancy_rule=job.redundancy_rule
+    )
     return (
         {
             "velocity_factor": float(report.velocity_factor),
@@ -210,7 +212,7 @@ def _joint_report_of_parts(job: Job, trajectory: JobTrajectory) -> Tuple[Dict[st
     dense: List[Violation] = []
     for (part, traj), start_time in zip(trajectory.parts, trajectory.start_times):
         if part.kind == "path":
-            report = _core.check_joint_limits(traj, arm, part.q_start)
+            report = _core.check_joint_limits(traj, arm, part.q_start, redundancy_rule=job.redundancy_rule)
             position_excess = max(position_excess, float(report.position_excess))
         else:
             t = np.linspace(0.0, traj.duration, max(2, int(math.ceil(traj.duration / _PTP_CHECK_STEP)) + 1))
