@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "dispkin/error.hpp"
 #include "dispkin/profile.hpp"
@@ -167,9 +168,11 @@ void Profile::require_consistent() const {
   within(end_.v, named("end.v"));
 }
 
-Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
-                             double distance, double v_end, double a_end) {
-  require(count >= 1 && count <= max_phases, "count", static_cast<long>(count), "must be within [1, 7]");
+namespace {
+
+void require_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
+                    double distance, double v_end, double a_end) {
+  require(count >= 1 && count <= Profile::max_phases, "count", static_cast<long>(count), "must be within [1, 7]");
   for (int i = 0; i < count; ++i) {
     require(std::isfinite(durations[i]) && durations[i] > 0.0, "durations[" + std::to_string(i) + "]", durations[i],
             "must be finite and > 0");
@@ -180,7 +183,40 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
   require(std::isfinite(v_end) && v_end >= 0.0, "v_end", v_end, "must be finite and not negative");
   require_finite(a_start, "a_start");
   require_finite(a_end, "a_end");
+}
 
+// The velocity's extremes over the phases (inside a phase ṡ is a parabola; its vertex, where
+// a = 0, may be its lowest or highest point), and the largest |s̈| and |s⃛|.
+struct PhaseExtremes {
+  double lowest, peak = 0.0, a = 0.0, j = 0.0, v = 0.0;
+};
+
+PhaseExtremes phase_extremes(const ProfilePhase* phases, int count, double v_start, double v_end) {
+  PhaseExtremes e{std::min(v_start, v_end)};
+  for (int i = 0; i < count; ++i) {
+    const ProfilePhase& phase = phases[i];
+    e.a = std::max({e.a, std::abs(phase.start.a), std::abs(phase.end.a)});
+    e.j = std::max(e.j, std::abs(phase.jerk));
+    e.v = std::max({e.v, phase.start.v, phase.end.v});
+    e.peak = std::max({e.peak, phase.start.v, phase.end.v});
+    e.lowest = std::min({e.lowest, phase.start.v, phase.end.v});
+    if (phase.jerk != 0.0) {
+      const double at = -phase.start.a / phase.jerk;
+      if (at > 0.0 && at < phase.duration) {
+        const double v = phase.start.v + at * (phase.start.a + 0.5 * phase.jerk * at);
+        e.lowest = std::min(e.lowest, v);
+        e.peak = std::max(e.peak, v);
+      }
+    }
+  }
+  return e;
+}
+
+}  // namespace
+
+Profile Profile::from_phases(const double* durations, const double* jerks, int count, double v_start, double a_start,
+                             double distance, double v_end, double a_end) {
+  require_phases(durations, jerks, count, v_start, a_start, distance, v_end, a_end);
   Profile p;
   p.kind_ = ProfileKind::scurve;
   p.distance_ = distance;
@@ -194,57 +230,16 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
     p.time_[static_cast<std::size_t>(i + 1)] = p.time_[static_cast<std::size_t>(i)] + durations[i];
   }
   p.count_ = count;
-  // Forward over the first half, backward over the second: they meet at phase `middle`. A law of
-  // one phase is carried forward, so that it starts exactly at s = 0 (where it meets its end state,
-  // state_at's end is exactly the distance).
-  const int middle = std::max(1, count / 2);
-  ProfileState x{0.0, v_start, a_start, 0.0};
-  double scale_v = std::max(v_start, v_end), scale_a = std::max(std::abs(a_start), std::abs(a_end));
-  for (int i = 0; i < middle; ++i) {
-    ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
-    const double d = phase.duration, j = phase.jerk;
-    phase.start = {x.s, x.v, x.a, j};
-    x.s += d * (x.v + d * (0.5 * x.a + j * d / 6.0));
-    x.v += d * (x.a + 0.5 * j * d);
-    x.a += j * d;
-    phase.end = {x.s, x.v, x.a, j};
-  }
-  ProfileState y{distance, v_end, a_end, 0.0};
-  for (int i = count - 1; i >= middle; --i) {
-    ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
-    const double d = phase.duration, j = phase.jerk;
-    phase.end = {y.s, y.v, y.a, j};
-    y.s -= d * (y.v - d * (0.5 * y.a - j * d / 6.0));
-    y.v -= d * (y.a - 0.5 * j * d);
-    y.a -= j * d;
-    phase.start = {y.s, y.v, y.a, j};
-  }
+  const auto [x, y] = p.integrate_from_both_ends(v_start, a_start, v_end, a_end);
   // The law's scales: the largest speed and acceleration any phase reaches, and its duration.
   const double total = p.duration();
-  double peak = 0.0, scale_j = 0.0;
-  double lowest = std::min(v_start, v_end);
-  for (int i = 0; i < count; ++i) {
-    const ProfilePhase& phase = p.phases_[static_cast<std::size_t>(i)];
-    scale_a = std::max({scale_a, std::abs(phase.start.a), std::abs(phase.end.a)});
-    scale_j = std::max(scale_j, std::abs(phase.jerk));
-    scale_v = std::max({scale_v, phase.start.v, phase.end.v});
-    peak = std::max({peak, phase.start.v, phase.end.v});
-    lowest = std::min({lowest, phase.start.v, phase.end.v});
-    // Inside the phase ṡ is a parabola; its vertex, where a = 0, may be its lowest point.
-    if (phase.jerk != 0.0) {
-      const double at = -phase.start.a / phase.jerk;
-      if (at > 0.0 && at < phase.duration) {
-        const double v = phase.start.v + at * (phase.start.a + 0.5 * phase.jerk * at);
-        lowest = std::min(lowest, v);
-        peak = std::max(peak, v);
-      }
-    }
-  }
-  scale_v += scale_a * total;
+  const PhaseExtremes e = phase_extremes(p.phases_.data(), count, v_start, v_end);
+  const double scale_a = std::max({std::abs(a_start), std::abs(a_end), e.a});
+  const double scale_v = std::max({v_start, v_end, e.v}) + scale_a * total;
   const double tolerance = 1e-8;
   const bool meet = std::abs(x.s - y.s) <= tolerance * (distance + scale_v * total) &&
                     std::abs(x.v - y.v) <= tolerance * scale_v &&
-                    std::abs(x.a - y.a) <= tolerance * (scale_a + scale_j * total) +
+                    std::abs(x.a - y.a) <= tolerance * (scale_a + e.j * total) +
                                                1e-12 * scale_v / std::max(total, std::numeric_limits<double>::min());
   if (!meet) {
     throw std::invalid_argument(
@@ -255,14 +250,43 @@ Profile Profile::from_phases(const double* durations, const double* jerks, int c
                      ", a = " + number(x.a) + " where integrated backward they give s = " + number(y.s) +
                      ", v = " + number(y.v) + ", a = " + number(y.a)));
   }
-  if (lowest < -tolerance * scale_v) {
+  if (e.lowest < -tolerance * scale_v) {
     throw std::invalid_argument(
         describe("v_start", v_start,
-                 "the phases make the velocity negative (down to " + number(lowest) + "): s would move backwards"));
+                 "the phases make the velocity negative (down to " + number(e.lowest) + "): s would move backwards"));
   }
-  p.peak_velocity_ = peak;
+  p.peak_velocity_ = e.peak;
   p.require_consistent();
   return p;
+}
+
+// Forward over the first half, backward over the second: they meet at phase `middle` (the
+// states each half reaches there). A law of one phase is carried forward, so that it starts
+// exactly at s = 0 (where it meets its end state, state_at's end is exactly the distance).
+std::pair<ProfileState, ProfileState> Profile::integrate_from_both_ends(double v_start, double a_start, double v_end,
+                                                                        double a_end) noexcept {
+  const int middle = std::max(1, count_ / 2);
+  ProfileState x{0.0, v_start, a_start, 0.0};
+  for (int i = 0; i < middle; ++i) {
+    ProfilePhase& phase = phases_[static_cast<std::size_t>(i)];
+    const double d = phase.duration, j = phase.jerk;
+    phase.start = {x.s, x.v, x.a, j};
+    x.s += d * (x.v + d * (0.5 * x.a + j * d / 6.0));
+    x.v += d * (x.a + 0.5 * j * d);
+    x.a += j * d;
+    phase.end = {x.s, x.v, x.a, j};
+  }
+  ProfileState y{distance_, v_end, a_end, 0.0};
+  for (int i = count_ - 1; i >= middle; --i) {
+    ProfilePhase& phase = phases_[static_cast<std::size_t>(i)];
+    const double d = phase.duration, j = phase.jerk;
+    phase.end = {y.s, y.v, y.a, j};
+    y.s -= d * (y.v - d * (0.5 * y.a - j * d / 6.0));
+    y.v -= d * (y.a - 0.5 * j * d);
+    y.a -= j * d;
+    phase.start = {y.s, y.v, y.a, j};
+  }
+  return {x, y};
 }
 
 }  // namespace dispkin

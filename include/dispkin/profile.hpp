@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <utility>
 
 namespace dispkin {
 
@@ -164,6 +165,10 @@ class Profile {
   //! phase `cruise` and backward from (S, v_end) from its end, so that both ends of the law
   //! are reproduced to rounding.
   void integrate(double v_start, double v_end, int cruise) noexcept;
+  // from_phases: the phases' states integrated forward from the start over the first half and
+  // backward from the end over the second; the two states where the halves meet.
+  std::pair<ProfileState, ProfileState> integrate_from_both_ends(double v_start, double a_start, double v_end,
+                                                                 double a_end) noexcept;
 
   std::array<ProfilePhase, max_phases> phases_{};
   std::array<double, max_phases + 1> time_{};  //!< start times of the phases, then T
