@@ -135,7 +135,7 @@ class Job:
     leg_speed_group: Optional[int] = None
     arm: Optional[Any] = None
     q_start: Optional[np.ndarray] = None
-    #: A seven-joint arm's redundancy parameter moved along the Cartesian runs (`redundancy: moved`):
+    #: A seven-joint arm's redundancy parameter moved along the Cartesian runs (``redundancy: moved``):
     #: the RedundancyRule the followers take; None: held at its value where each run starts.
     redundancy_rule: Optional[Any] = None
     #: Output period (s) and file names (relative to the output directory).

@@ -232,7 +232,7 @@ class MoveSequence:
         run.clear()
 
     def moved_redundancy(self, job: Dict[str, Any], parts: List[Part]) -> None:
-        """`redundancy: moved` where the followers can take it: the optimal re-timing holds the
+        """``redundancy: moved`` where the followers can take it: the optimal re-timing holds the
         parameter, and a PTP move after a Cartesian run would start from joints the run reaches
         only once planned (doc/inverse-kinematics.md §14)."""
         if job.get("redundancy_rule") is None:
