@@ -19,8 +19,8 @@ using serial::FollowedJoints;
 using serial::JointTrajectory;
 using serial::SerialArm;
 
-void def_following(py::class_<SerialArm>& arm) {
-  arm.def(
+void def_following(py::class_<SerialArm>& cls) {
+  cls.def(
          "follow",
          [](const SerialArm& a, const std::vector<Posed>& poses, const py::object& q_start, bool move_redundancy,
             double gain, double max_rate, double singularity_weight) {
