@@ -75,7 +75,6 @@ double jerk_limited_duration_bound(const std::vector<LimitedSegment>& segments, 
   // The longest path of doc/profiles.md eq. 37 over windows [i, k) of at most `widest` segments.
   for (std::size_t k = 1; k <= n; ++k) {
     Window w{0.0, boundary_limit[k], 0.0, 0.0, j_max};
-    best[k] = 0.0;
     for (std::size_t i = k; i-- > 0 && k - i <= widest;) {
       w.c_start = boundary_limit[i];
       w.top = std::max(w.top, segments[i].limit);

@@ -5,7 +5,6 @@
 #include <array>
 #include <utility>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "carried_acceleration.hpp"
@@ -155,16 +154,9 @@ bool append_fastest(Run& run, double j_max, std::vector<Profile>& out) {
       ++i;
       // Built from the end and run backwards, it enters the limits ahead as the forward law
       // leaves them behind.
-      if (auto backward = detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end,
-                                                           run.v_start, settle)) {
-        try {
-          candidates[i] = detail::reversed_in_time(*backward);
-        } catch (const std::invalid_argument&) {
-          // Run forwards, a law over a segment shorter than the rounding of its phases' times does
-          // not reproduce its end state to rounding (Profile::from_phases): dropped, as a forward
-          // law that does not settle is.
-        }
-      }
+      if (auto backward =
+              detail::carried_acceleration_law(reversed, reversed_accelerations, j_max, run.v_end, run.v_start, settle))
+        candidates[i] = detail::reversed_in_time(*backward);
       ++i;
     }
     for (std::vector<Profile>& candidate : candidates) {

@@ -20,9 +20,9 @@ std::optional<Eigen::VectorXd> self_motion(const SerialArm& arm, const Eigen::Ve
 //! value after `travel` radians of joint motion (‖q − q_previous‖₂): the cost's slope along the
 //! self-motion, times the gain, bounded by the rate, times the travel. 0 where the slope is not
 //! defined (a singular pose) or rule.move is false.
+double parameter_step(const SerialArm& arm, const Eigen::VectorXd& q, double travel, const RedundancyRule& rule);
+
 //! Throws std::invalid_argument naming the field of `rule` that is not finite or below 0.
 void require_valid(const RedundancyRule& rule);
-
-double parameter_step(const SerialArm& arm, const Eigen::VectorXd& q, double travel, const RedundancyRule& rule);
 
 }  // namespace dispkin::serial::detail
