@@ -268,6 +268,26 @@ TimeLaw time_law_from_state(const py::handle& state, const StateField& where) {
   return law;
 }
 
+namespace {
+
+py::tuple sources_state(const std::vector<SectionSource>& sources) {
+  py::tuple out(sources.size());
+  for (std::size_t k = 0; k < sources.size(); ++k)
+    out[k] = py::make_tuple(sources[k].section, sources[k].tau_start, sources[k].tau_end);
+  return out;
+}
+
+// (section, tau_start, tau_end) items; `bound`: the largest index accepted.
+std::vector<SectionSource> sources_of(const py::handle& obj, const StateField& where, std::size_t bound) {
+  return each<SectionSource>(obj, where, [bound](const py::handle& item, const StateField& at) {
+    const py::tuple t = state_fields(item, 3, at);
+    return SectionSource{state_count(t[0], at / ".section", bound), state_number(t[1], at / ".tau_start"),
+                         state_number(t[2], at / ".tau_end")};
+  });
+}
+
+}  // namespace
+
 py::tuple trajectory_state(const Trajectory& trajectory) {
   py::list limits;
   for (const SpeedLimit& l : trajectory.speed_limits())
@@ -277,13 +297,15 @@ py::tuple trajectory_state(const Trajectory& trajectory) {
       law_limits ? py::object(py::make_tuple(law_limits->acceleration, py::cast(law_limits->jerk))) : py::none();
   const std::vector<double>& lengths = trajectory.section_lengths();
   const std::vector<double>& rests = trajectory.rest_positions();
-  py::list stops, sources;
+  const SampledPath& path = trajectory.path();
+  py::list stops;
   for (const Stop& stop : trajectory.stops()) stops.append(py::make_tuple(stop.s, stop.reason));
-  for (const SectionSource& source : trajectory.section_sources())
-    sources.append(py::make_tuple(source.section, source.tau_start, source.tau_end));
-  return py::make_tuple(sections_state(trajectory.path().sections()), py::tuple(py::cast(lengths)),
+  // The sources when they are other than the parts (a trajectory continued on another plan).
+  const bool own_sources = &trajectory.section_sources() != &path.parts();
+  return py::make_tuple(sections_state(path.whole_sections()), py::tuple(py::cast(lengths)),
                         time_law_state(trajectory.time_law()), py::tuple(limits), py::tuple(py::cast(rests)),
-                        py::tuple(stops), py::tuple(sources), limits_of_law, trajectory.override_factor());
+                        py::tuple(stops), own_sources ? sources_state(trajectory.section_sources()) : py::tuple(),
+                        limits_of_law, trajectory.override_factor(), sources_state(path.parts()));
 }
 
 namespace {
@@ -293,12 +315,16 @@ template <typename Field>
 Trajectory trajectory_of_items(const py::tuple& s, Field field) {
   std::vector<Section> sections = sections_from_state(s[0], field(0, "sections"));
   std::vector<double> lengths = numbers(s[1], field(1, "section_lengths"));
+  // Item 9 (since sections are kept once, however finely cut): where each section of the
+  // trajectory lies in the sections of item 0; before, item 0 held them one by one.
+  std::vector<SectionSource> parts;
+  if (s.size() == 10) parts = sources_of(s[9], field(9, "section_parts"), sections.empty() ? 0 : sections.size() - 1);
+  const std::size_t count = parts.empty() ? sections.size() : parts.size();
   // The constructor checks everything else; the lengths must pair with the sections before
   // SampledPath divides by them.
-  if (lengths.size() != sections.size())
+  if (lengths.size() != count)
     throw py::value_error(
-        field(1, "section_lengths")
-            .message(s[1], "must hold one length per section (" + std::to_string(sections.size()) + ")"));
+        field(1, "section_lengths").message(s[1], "must hold one length per section (" + std::to_string(count) + ")"));
   for (std::size_t k = 0; k < lengths.size(); ++k)
     if (!(lengths[k] > 0.0))
       throw py::value_error(field(1, "section_lengths").at(k).message(py::float_(lengths[k]), "must be > 0"));
@@ -315,18 +341,14 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
     const py::tuple t = state_fields(item, 2, at);
     return Stop{state_number(t[0], at / ".s"), state_cast<std::string>(t[1], at / ".reason")};
   });
+  // Any index: it names a section of the path as planned, which the state does not hold.
   std::vector<SectionSource> sources =
-      each<SectionSource>(s[6], field(6, "section_sources"), [](const py::handle& item, const StateField& at) {
-        const py::tuple t = state_fields(item, 3, at);
-        // Any index: it names a section of the path as planned, which the state does not hold.
-        return SectionSource{state_count(t[0], at / ".section", std::numeric_limits<std::size_t>::max() >> 1),
-                             state_number(t[1], at / ".tau_start"), state_number(t[2], at / ".tau_end")};
-      });
+      sources_of(s[6], field(6, "section_sources"), std::numeric_limits<std::size_t>::max() >> 1);
   // Items 7 and 8 (what the law keeps to, the override in force) since the events; a state of 7
   // items holds neither.
   std::optional<TimeLawLimits> law_limits;
   double override_factor = 1.0;
-  if (s.size() == 9) {
+  if (s.size() >= 9) {
     if (!s[7].is_none()) {
       const py::tuple l = state_fields(s[7], 2, field(7, "limits"));
       law_limits = TimeLawLimits{
@@ -335,14 +357,19 @@ Trajectory trajectory_of_items(const py::tuple& s, Field field) {
     }
     override_factor = state_number(s[8], field(8, "override_factor"));
   }
-  return Trajectory(SampledPath(std::move(sections), std::move(lengths)),
-                    time_law_from_state(s[2], field(2, "time_law")), limits, numbers(s[4], field(4, "rest_positions")),
-                    std::move(stops), std::move(sources), law_limits, override_factor);
+  SampledPath path = inside(field(9, "section_parts"),
+                            [&] { return SampledPath(std::move(sections), std::move(parts), std::move(lengths)); });
+  return Trajectory(std::move(path), time_law_from_state(s[2], field(2, "time_law")), limits,
+                    numbers(s[4], field(4, "rest_positions")), std::move(stops), std::move(sources), law_limits,
+                    override_factor);
 }
 
-// The items of a Trajectory state: 9, or 7 from before the events.
+// The items of a Trajectory state: 10, or 9 from before sections were kept once, or 7 from
+// before the events.
 std::size_t trajectory_items(const py::handle& state) {
-  return py::isinstance<py::tuple>(state) && py::len(state) == 7 ? 7 : 9;
+  if (!py::isinstance<py::tuple>(state)) return 10;
+  const std::size_t n = py::len(state);
+  return n == 7 || n == 9 ? n : 10;
 }
 
 }  // namespace

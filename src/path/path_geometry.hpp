@@ -70,5 +70,28 @@ inline Section section_part(const Section& section, double t0, double t1) {
       section);
 }
 
+//! The part τ ∈ [t0, t1] of a section as the planner cuts it (doc/planning.md §9): the section
+//! itself when whole; else as section_part, but with the section's own ends at τ = 0 and 1 (a
+//! LIN's poses, a curve's v₁), so that the part that ends a section ends where the section does,
+//! bit for bit.
+inline Section planned_part(const Section& section, double t0, double t1) {
+  if (t0 == 0.0 && t1 == 1.0) return section;
+  return std::visit(
+      [&](const auto& s) -> Section {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, LinSection>) {
+          return LinSection{t0 == 0.0 ? s.start : s.pose(t0), t1 >= 1.0 ? s.end : s.pose(t1), s.interpolation, s.pivot};
+        } else if constexpr (std::is_same_v<T, ArcSection>) {
+          return detail::section_part(section, t0, t1);
+        } else {
+          T part = s;
+          part.v0 = s.v0 + t0 * s.span();
+          part.v1 = t1 >= 1.0 ? s.v1 : s.v0 + t1 * s.span();
+          return part;
+        }
+      },
+      section);
+}
+
 }  // namespace detail
 }  // namespace dispkin

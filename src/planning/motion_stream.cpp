@@ -43,9 +43,9 @@ std::optional<Path> path_ahead(const Trajectory& trajectory, const std::vector<M
       // Within 10⁻⁶ of the section's end the part left is a sliver whose twist direction is lost
       // to rounding (as blends snap there, path/blend.cpp): no path ahead starts there.
       if (tau > 1.0 - 1e-6) return std::nullopt;
-      sections.push_back(section_part(path.sections()[k], tau, 1.0));
+      sections.push_back(section_part(path.section(k), tau, 1.0));
     } else {
-      sections.push_back(path.sections()[k]);
+      sections.push_back(path.section(k));
     }
     if (sections.size() == 1 || moves[k] != moves[k - 1]) move_starts.push_back(sections.size() - 1);
     limits.push_back(move_limits[k]);

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "../path/path_geometry.hpp"
 #include "../path/section_bounds.hpp"
 #include "dispkin/error.hpp"
 #include "dispkin/planning/velocity_limit.hpp"
@@ -91,34 +92,25 @@ std::optional<JunctionSpeeds> direction_continuous(const Section& before, const 
   return JunctionSpeeds{out_size, in_size};
 }
 
-// The sections of the path as planned — each a section of the path or a piece of one — with
-// which section they came from, their bounds and their lengths as planned. Kept as parallel
-// arrays: the sections move on into the sampled path and the sources into the trajectory
-// without being copied.
+// The sections of the path as planned — each a section of the path or a piece of one — as
+// where they lie in the path's sections, with their bounds and their lengths as planned. Kept as
+// parallel arrays: the sources move on into the sampled path without being copied, and no piece
+// is made a section of its own.
 struct PlannedSections {
-  std::vector<Section> sections;
   std::vector<SectionSource> sources;
   std::vector<SectionBounds> bounds;
   std::vector<double> lengths;
 
-  std::size_t size() const noexcept { return sections.size(); }
+  std::size_t size() const noexcept { return sources.size(); }
   void reserve(std::size_t n) {
-    sections.reserve(n);
     sources.reserve(n);
     bounds.reserve(n);
     lengths.reserve(n);
   }
-  void push_back(const Section& section, const SectionSource& source, const SectionBounds& b) {
-    sections.push_back(section);
+  void push_back(const SectionSource& source, const SectionBounds& b) {
     sources.push_back(source);
     bounds.push_back(b);
     lengths.push_back(b.length);
-  }
-  void pop_back() {
-    sections.pop_back();
-    sources.pop_back();
-    bounds.pop_back();
-    lengths.pop_back();
   }
 };
 
@@ -167,7 +159,7 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
   const auto cut = [&](const auto& self, double t0, double t1, const Curve& part, const RefinedBounds& r) -> void {
     const double parts = parts_wanted(t0, t1, r);
     if (!(parts > 1.0) || count + static_cast<std::size_t>(parts) - 1 > max_parts) {
-      out.push_back(part, {source, t0, t1}, r.bounds);
+      out.push_back({source, t0, t1}, r.bounds);
       return;
     }
     count += static_cast<std::size_t>(parts) - 1;
@@ -214,7 +206,7 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
       whole.acceleration > 0.0 && whole.length * std::sqrt(acceleration / whole.acceleration) < speed_cap;
   const double floor = std::max(minimum, whole.omega * rotation_scale);  // per unit τ of the section
   if (!lin || lin->interpolation != Interpolation::decoupled || floor >= whole.length || curvature_binds) {
-    out.push_back(section, {source, 0.0, 1.0}, whole);
+    out.push_back({source, 0.0, 1.0}, whole);
     return;
   }
   const detail::DecoupledSpeeds speeds(*lin, factors);
@@ -225,7 +217,7 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
   };
   const detail::SpeedRange all = speeds.range(0.0, 1.0);
   if (variation(all) <= cruise_ratio_loss) {
-    out.push_back(section, {source, 0.0, 1.0}, whole);
+    out.push_back({source, 0.0, 1.0}, whole);
     return;
   }
   const MetricSetd& set = factors.set();
@@ -234,23 +226,18 @@ void append_cut(const Section& section, std::size_t source, GroupFactors& factor
   std::size_t count = 1;  // pieces emitted or promised
   const std::size_t expected =
       static_cast<std::size_t>(std::min(max_split, std::ceil(variation(all) / cruise_ratio_loss)));
-  if (out.size() + expected > out.sections.capacity())
-    out.reserve(std::max(out.size() + 2 * expected, 2 * out.sections.capacity()));
-  Posed piece_start = lin->start;
-  // A piece [t0, t1]: the same motion between its ends (the ends shared with the neighbours, the
-  // section's own at τ = 0 and 1), its exact peak as length, and the acceleration bound of the
-  // part (the pivot's and the rotation's rates scale with the part's share h).
+  if (out.size() + expected > out.sources.capacity())
+    out.reserve(std::max(out.size() + 2 * expected, 2 * out.sources.capacity()));
+  // A piece [t0, t1]: its exact peak as length, and the acceleration bound of the part (the
+  // pivot's and the rotation's rates scale with the part's share h).
   const auto emit = [&](double t0, double t1, const detail::SpeedRange& r) {
     const double h = t1 - t0;
-    const Posed piece_end = t1 >= 1.0 ? lin->end : speeds.pose(t1);
     const MotionBounds motion{travel * h, 0.0, whole.omega * h, 0.0};
     const Eigen::Vector3d pivot_middle = pivot_start + (0.5 * (t0 + t1)) * pivot_travel;
     double rate = 0.0;
     for (std::size_t i = 0; i < set.groups().size(); ++i)
       rate = std::max(rate, detail::group_acceleration_bound(set.groups()[i], factors.reach(i), pivot_middle, motion));
-    out.push_back(LinSection{piece_start, piece_end, Interpolation::decoupled, lin->pivot}, {source, t0, t1},
-                  {h * r.high, rate, motion.omega, 0.0});
-    piece_start = piece_end;
+    out.push_back({source, t0, t1}, {h * r.high, rate, motion.omega, 0.0});
   };
   // Depth first, in order of τ: a part is emitted when its range is narrow enough (or the piece
   // budget is spent), else cut into equal parts.
@@ -392,7 +379,8 @@ PlannedSections planned_sections(const Path& path, const MetricSetd& set, const 
 
 // The junctions passed at speed (none where the twist turns), the lengths on either side raised
 // until the speed per unit of s steps by less than 1 % there.
-std::vector<std::optional<JunctionSpeeds>> junctions_at_speed(PlannedSections& planned) {
+std::vector<std::optional<JunctionSpeeds>> junctions_at_speed(const std::vector<Section>& sections,
+                                                              PlannedSections& planned) {
   std::vector<double>& lengths = planned.lengths;
   // Junctions that keep the twist's direction are passed at speed once the speed per unit of s
   // steps by less than 1 % there (doc/planning.md eq. 9): lengthening the faster side, forward then backward,
@@ -409,7 +397,9 @@ std::vector<std::optional<JunctionSpeeds>> junctions_at_speed(PlannedSections& p
       junctions[k] = JunctionSpeeds{before.tau_end - before.tau_start, after.tau_end - after.tau_start};
       continue;
     }
-    junctions[k] = direction_continuous(planned.sections[k], planned.sections[k + 1]);
+    junctions[k] =
+        direction_continuous(detail::planned_part(sections[before.section], before.tau_start, before.tau_end),
+                             detail::planned_part(sections[after.section], after.tau_start, after.tau_end));
   }
   constexpr double step_ratio = 0.99;
   for (std::size_t k = 0; k + 1 < count; ++k) {
@@ -426,13 +416,16 @@ std::vector<std::optional<JunctionSpeeds>> junctions_at_speed(PlannedSections& p
 }
 
 // The time law: rest-to-rest runs between the corners the motion stops at, each run under the
-// law of its velocity-limit curve.
-Trajectory timed_runs(PlannedSections& planned, const std::vector<std::optional<JunctionSpeeds>>& junctions,
-                      const std::vector<MoveLimits>& moves, const Limits& limits, ProfileKind profile,
-                      const std::vector<CornerStop>& corner_stops, double corner_tolerance) {
+// law of its velocity-limit curve. The trajectory's sections are the planned parts of `path`'s
+// sections (SampledPath keeps each section once, however finely it was cut).
+Trajectory timed_runs(const Path& path, PlannedSections& planned,
+                      const std::vector<std::optional<JunctionSpeeds>>& junctions, const Limits& limits,
+                      ProfileKind profile, const std::vector<CornerStop>& corner_stops, double corner_tolerance) {
+  const std::vector<MoveLimits>& moves = path.section_limits();
   const std::vector<double>& lengths = planned.lengths;
   const std::size_t count = planned.size();
-  SampledPath sampled(std::move(planned.sections), lengths);  // the lengths stay for the staircase
+  // The sources and lengths stay for the staircase and the stops.
+  SampledPath sampled(path.sections(), planned.sources, lengths);
 
   // Rest-to-rest runs between corners; within a run the velocity-limit curve.
   const std::optional<double> jerk = profile == ProfileKind::scurve ? limits.jerk : std::nullopt;
@@ -469,8 +462,11 @@ Trajectory timed_runs(PlannedSections& planned, const std::vector<std::optional<
       stops.push_back({rest, corner_reason(corner_stops, planned.sources[k].section, corner_tolerance)});
     first = k + 1;
   }
+  // The sources are the sampled path's parts unless it keeps runs of one curve as one section.
+  std::vector<SectionSource> sources;
+  if (sampled.whole_sections().size() != path.sections().size()) sources = std::move(planned.sources);
   return Trajectory(std::move(sampled), std::move(law), std::move(speed_limits), std::move(rests), std::move(stops),
-                    std::move(planned.sources), TimeLawLimits{limits.acceleration, jerk});
+                    std::move(sources), TimeLawLimits{limits.acceleration, jerk});
 }
 
 // A moving start: the first run's law from that state (doc/events.md §3).
@@ -527,9 +523,8 @@ Trajectory plan(const Path& given_path, const MetricSetd& set, const Limits& lim
   require_compatible(options);
   const Path& path = blended ? *blended : given_path;
   PlannedSections planned = planned_sections(path, set, limits, minimum_lengths(path, limits, options));
-  const std::vector<std::optional<JunctionSpeeds>> junctions = junctions_at_speed(planned);
-  Trajectory from_rest =
-      timed_runs(planned, junctions, path.section_limits(), limits, profile, corner_stops, options.corner_tolerance);
+  const std::vector<std::optional<JunctionSpeeds>> junctions = junctions_at_speed(path.sections(), planned);
+  Trajectory from_rest = timed_runs(path, planned, junctions, limits, profile, corner_stops, options.corner_tolerance);
   if (options.start_velocity == 0.0 && options.start_acceleration == 0.0) return from_rest;
   return moving_start(from_rest, options);
 }

@@ -56,7 +56,7 @@ class SmoothParameter {
     const std::size_t k = section_at(sigma);
     if (!(ell_[k] > 0.0)) return Twistd(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
     const double tau = std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0);
-    return section_twist_rate(planned_.path().sections()[k], tau) * (1.0 / (ell_[k] * ell_[k]));
+    return section_twist_rate(planned_.path(), k, tau) * (1.0 / (ell_[k] * ell_[k]));
   }
 
   //! The DISP limits in σ over [σ0, σ1]: the lowest of the sections it touches.

@@ -19,22 +19,33 @@ namespace {
 
 std::string indexed(const char* name, std::size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
 
-// The sections join, and each has a length that sampling can divide by.
+// The sections join, and each has a length that sampling can divide by. Parts of one section
+// that follow one another join by being one motion; elsewhere the sampled poses are compared.
 void require_sections(const SampledPath& path) {
-  const std::vector<Section>& sections = path.sections();
+  const std::vector<Section>& sections = path.whole_sections();
   const std::vector<double>& lengths = path.section_lengths();
-  require(!sections.empty(), "sections", 0L, "must hold at least one section");
-  require(lengths.size() == sections.size(), "section_lengths size", static_cast<unsigned long>(lengths.size()),
-          "must be the section count " + std::to_string(sections.size()));
-  for (std::size_t k = 0; k < sections.size(); ++k) {
-    require_valid(sections[k], [k] { return indexed("sections", k); });
+  require(!sections.empty() && !lengths.empty(), "sections", 0L, "must hold at least one section");
+  for (std::size_t i = 0; i < sections.size(); ++i) require_valid(sections[i], [i] { return indexed("sections", i); });
+  Posed end, start;
+  Twistd twist;
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
     const double L = lengths[k];
     require_lazily(
         std::isfinite(L) && L > 0.0 && std::isfinite(1.0 / L), [k] { return indexed("section_lengths", k); }, L,
         [] { return "must be finite and > 0, with a finite inverse"; });
-    if (k > 0)
-      require_join(section_end(sections[k - 1]), section_start(sections[k]),
-                   [k] { return indexed("sections", k) + ".start"; });
+    if (k == 0) continue;
+    const SectionSource before = path.part(k - 1), after = path.part(k);
+    if (before.section == after.section && before.tau_end == after.tau_start) continue;
+    path.section_state_at(k - 1, 1.0, end, twist);
+    path.section_state_at(k, 0.0, start, twist);
+    // Named by the section it starts, or by the part when it starts inside one.
+    const bool parts = !path.parts().empty();
+    require_join(end, start, [&] {
+      return (!parts                   ? indexed("sections", k)
+              : after.tau_start == 0.0 ? indexed("sections", after.section)
+                                       : indexed("section_parts", k)) +
+             ".start";
+    });
   }
   require(std::isfinite(path.length()), "length", path.length(), "must be finite (the sum of the section lengths)");
 }

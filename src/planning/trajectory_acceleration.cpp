@@ -59,6 +59,12 @@ Twistd section_twist_rate(const Section& section, double tau) noexcept {
   return std::visit([tau](const auto& s) { return twist_rate(s, tau); }, section);
 }
 
+Twistd section_twist_rate(const SampledPath& path, std::size_t k, double tau) noexcept {
+  const SectionSource part = path.part(k);
+  const double h = part.tau_end - part.tau_start;
+  return section_twist_rate(path.whole_sections()[part.section], part.tau_start + tau * h) * (h * h);
+}
+
 Twistd body_acceleration(const Trajectory& trajectory, double t) noexcept {
   const TimeLaw& law = trajectory.time_law();
   if (law.size() == 0) return Twistd();
@@ -69,9 +75,11 @@ Twistd body_acceleration(const Trajectory& trajectory, double t) noexcept {
   const std::size_t k = path.section_at(state.s, path.section_count());
   const double inverse_length = path.inverse_length(k);
   const double tau = std::clamp((state.s - path.section_start(k)) * inverse_length, 0.0, 1.0);
-  const Section& section = path.sections()[k];
   const double rate = state.v * inverse_length;  // dτ/dt
-  const Twistd xi = section_twist(section, tau), xi_rate = section_twist_rate(section, tau);
+  Posed pose;
+  Twistd xi;
+  path.section_state_at(k, tau, pose, xi);
+  const Twistd xi_rate = section_twist_rate(path, k, tau);
   return Twistd(xi_rate.linear * (rate * rate) + xi.linear * (state.a * inverse_length),
                 xi_rate.angular * (rate * rate) + xi.angular * (state.a * inverse_length));
 }

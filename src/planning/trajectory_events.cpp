@@ -280,6 +280,27 @@ struct Splice {
   std::size_t here, there;
 };
 
+// Sections of sampled paths gathered into one: each whole section once per run of its parts.
+struct SampledPathParts {
+  std::vector<Section> sections;
+  std::vector<SectionSource> parts;
+  std::vector<double> lengths;
+
+  // Sections [from, to) of `path`.
+  void append(const SampledPath& path, std::size_t from, std::size_t to) {
+    std::size_t last = path.whole_sections().size();  // none yet
+    for (std::size_t k = from; k < to; ++k) {
+      const SectionSource part = path.part(k);
+      if (part.section != last) {
+        sections.push_back(path.whole_sections()[part.section]);
+        last = part.section;
+      }
+      parts.push_back({sections.size() - 1, part.tau_start, part.tau_end});
+      lengths.push_back(path.section_lengths()[k]);
+    }
+  }
+};
+
 SectionSource source_of(const Trajectory& traj, std::size_t k) {
   return traj.section_sources().empty() ? SectionSource{k, 0.0, 1.0} : traj.section_sources()[k];
 }
@@ -326,17 +347,15 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
   const std::size_t here = splice->here, there = splice->there;
   const double s_here = here == section_count() ? length() : path_.section_start(here);
   const double shift = s_here - longer.path_.section_start(there), tol = 1e-9 * std::max(length(), longer.length());
-  std::vector<Section> sections(path_.sections().begin(), path_.sections().begin() + static_cast<std::ptrdiff_t>(here));
-  std::vector<double> lengths(path_.section_lengths().begin(),
-                              path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(here));
-  sections.insert(sections.end(), longer.path_.sections().begin() + static_cast<std::ptrdiff_t>(there),
-                  longer.path_.sections().end());
-  lengths.insert(lengths.end(), longer.path_.section_lengths().begin() + static_cast<std::ptrdiff_t>(there),
-                 longer.path_.section_lengths().end());
+  SampledPathParts joined;
+  joined.append(path_, 0, here);
+  joined.append(longer.path_, there, longer.section_count());
+  // Where the sections come from in the two paths as planned.
   std::vector<SectionSource> sources;
-  if (!sources_.empty() && !longer.sources_.empty()) {
-    sources.assign(sources_.begin(), sources_.begin() + static_cast<std::ptrdiff_t>(here));
-    sources.insert(sources.end(), longer.sources_.begin() + static_cast<std::ptrdiff_t>(there), longer.sources_.end());
+  const std::vector<SectionSource>&mine = section_sources(), &theirs = longer.section_sources();
+  if (!mine.empty() && !theirs.empty()) {
+    sources.assign(mine.begin(), mine.begin() + static_cast<std::ptrdiff_t>(here));
+    sources.insert(sources.end(), theirs.begin() + static_cast<std::ptrdiff_t>(there), theirs.end());
   }
   std::vector<SpeedLimit> spans;
   for (const SpeedLimit& span : speed_limits_) {
@@ -367,7 +386,7 @@ Trajectory Trajectory::continued_on(double t, const Trajectory& longer) const {
     if (stop.s < s_here - tol && !is_stop_of_event(stop)) stops.push_back(stop);
   for (const Stop& stop : longer.stops_)
     if (stop.s >= s_here - shift - tol) stops.push_back(Stop{stop.s + shift, stop.reason});
-  SampledPath spliced(std::move(sections), std::move(lengths));
+  SampledPath spliced(std::move(joined.sections), std::move(joined.parts), std::move(joined.lengths));
   append_continuation(law, x, spans, rests, spliced.length(), limits, override_);
   return Trajectory(std::move(spliced), std::move(law), std::move(spans), std::move(rests), std::move(stops),
                     std::move(sources), limits_, override_);

@@ -144,7 +144,8 @@ TEST(Planner, ATrajectoryKeepsItsOwnLimitsAndJoinsUp) {
               traj.with_time_law(TimeLaw::consecutive({Profile::scurve(2.0 * length, 0.1, 0.5, 5.0)}, 1));
             }).find("time_law distance = "),
             std::string::npos);
-  std::vector<Section> sections = traj.path().sections();
+  std::vector<Section> sections;
+  for (std::size_t k = 0; k < traj.section_count(); ++k) sections.push_back(traj.path().section(k));
   const Posed far = Posed(Eigen::Quaterniond::Identity(), V(8.6, 0, 0));
   sections.push_back(LinSection{far, far * Posed(Eigen::Quaterniond::Identity(), V(0.1, 0, 0))});
   std::vector<double> lengths = traj.section_lengths();
@@ -448,6 +449,51 @@ TEST(SectionMotion, SeriesExpAndRightJacobian) {
 // The benchmark's paths (benchmarks/bench_planner.cpp) sample through the cheap forms: every
 // CIRC section's turns are small angles, the SPLINE's rotation stays within the series' range;
 // and their samples still lie on the path to 1e-12 with the sections' own twists.
+// A trajectory keeps each section of the path as planned once, however finely the planner cuts
+// it (doc/planning.md §9): its sections are parts of those, each sampled from its section's form,
+// and section(k) makes a part a section of its own that runs as the part does.
+TEST(Planner, APartIsKeptAsWhereItLiesNotAsASection) {
+  MetricSetd set;
+  set.add_relative(shapes::icosahedron(0.1));
+  const auto turn = [](double a) { return Eigen::Quaterniond(Eigen::AngleAxisd(a, V(0.3, 0.2, 1.0).normalized())); };
+  Path path = Path::lin(Posed(), Posed(turn(1.2), V(0.2, 0.0, 0.0)));
+  path.then(Path::lin(Posed(turn(1.2), V(0.2, 0.0, 0.0)), Posed(turn(0.4), V(0.2, 0.3, 0.1))));
+  PlanOptions options;
+  options.corner_tolerance = 0.02;
+  const Trajectory traj = plan(path, set, Limits{0.2, 1.0, 10.0}, ProfileKind::scurve, options);
+  const SampledPath& sampled = traj.path();
+  // Two LINs and their blend (which the path cuts where its speed varies), cut into many parts.
+  ASSERT_EQ(sampled.whole_sections().size(), 3u);
+  ASSERT_GT(traj.section_count(), 20u);
+  for (std::size_t k = 0; k < traj.section_count(); ++k) {
+    const SectionSource part = sampled.part(k);
+    ASSERT_LT(part.section, 3u);
+    const Section own = sampled.section(k);
+    for (const double tau : {0.0, 0.37, 1.0}) {
+      Posed pose;
+      Twistd twist;
+      sampled.section_state_at(k, tau, pose, twist);
+      ASSERT_TRUE(pose.is_approx(section_pose(own, tau), 1e-12)) << k << " " << tau;
+      const Eigen::Matrix<double, 6, 1> expected = section_twist(own, tau).vector();
+      ASSERT_LE((twist.vector() - expected).norm(), 1e-12 * (1.0 + expected.norm())) << k << " " << tau;
+    }
+  }
+  // Parts must name a section and lie in [0, 1]; one length per part.
+  const std::vector<Section>& whole = sampled.whole_sections();
+  EXPECT_NE(message_of([&] {
+              SampledPath(whole, {{3, 0.0, 1.0}}, {0.1});
+            }).find("parts[0].section = 3"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              SampledPath(whole, {{0, 0.0, 0.5}, {0, 0.5, 1.5}}, {0.1, 0.1});
+            }).find("parts[1]"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              SampledPath(whole, {{0, 0.0, 1.0}}, {0.1, 0.2});
+            }).find("section_lengths size = 2"),
+            std::string::npos);
+}
+
 TEST(SectionMotion, CheapFormsOnLongPaths) {
   MetricSetd set;
   set.add_relative(shapes::icosahedron(0.1));

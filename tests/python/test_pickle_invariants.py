@@ -54,7 +54,9 @@ def test_a_state_of_the_wrong_shape_is_refused_with_the_type_named(name):
         assert_refused(cls, [(0, None)], ValueError, "state[0] (group) = (0, None): must be a tuple of 6 items, not 2")
         return
     assert_refused(cls, state + (0.0,), ValueError, f"state: expected a tuple of {len(state)} items, got (")
-    assert_refused(cls, state[:-1], ValueError, f"state: expected a tuple of {len(state)} items")
+    # A Trajectory's state of 9 items is the layout before sections were kept once.
+    shorter = state[:-2] if cls is dispkin.Trajectory else state[:-1]
+    assert_refused(cls, shorter, ValueError, f"state: expected a tuple of {len(state)} items")
     assert_refused(cls, list(state), TypeError, f"state: expected a tuple of {len(state)} items, got [")
 
 
@@ -178,6 +180,14 @@ def test_a_profile_must_be_a_law():
     assert faster.duration == pytest.approx(named("Profile").duration / 2, rel=1e-12)
 
 
+def without_section(s, i):
+    """A Trajectory state with section i of item 0 left out, and its parts (item 9) and their lengths."""
+    parts = s[9] or tuple((k, 0.0, 1.0) for k in range(len(s[0])))
+    kept = [k for k, p in enumerate(parts) if p[0] != i]
+    new_parts = tuple((p[0] - (p[0] > i), p[1], p[2]) for p in parts if p[0] != i)
+    return (s[0][:i] + s[0][i + 1 :], tuple(s[1][k] for k in kept)) + s[2:9] + (new_parts,)
+
+
 def test_a_trajectory_must_keep_its_own_limits_and_join_up():
     traj = trajectory()
     s = traj.__getstate__()
@@ -189,10 +199,11 @@ def test_a_trajectory_must_keep_its_own_limits_and_join_up():
         ValueError,
         "time_law pieces[0] peak velocity = 250: must be at most the velocity limit over its span, 0.25 m/s",
     )
-    # A section left out: the next one starts where the one before the gap did not end.
+    # A section left out, with its parts: the next one starts where the one before the gap did
+    # not end.
     assert_refused(
         dispkin.Trajectory,
-        ((s[0][0],) + s[0][2:], s[1][1:]) + s[2:],
+        without_section(s, 1),
         ValueError,
         "sections[1].start = (",
         "must start where the path ends (gap ",

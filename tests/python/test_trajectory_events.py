@@ -160,9 +160,13 @@ def test_events_survive_a_pickle_bit_for_bit(name, path, profile, traj):
 
 
 def test_an_older_state_loads_without_limits_and_refuses_events():
-    traj = PLANS[0][3]
+    # A translation: its LIN is not cut.
+    a, b = dispkin.Pose.from_xyzuvw([0, 0, 0, 0, 0, 0]), dispkin.Pose.from_xyzuvw([0.3, 0.1, 0, 0, 0, 0])
+    traj = dispkin.plan(dispkin.Path.lin(a, b), tool(), dispkin.Limits(0.4, 2.0, 15.0))
     state = traj.__getstate__()
-    assert len(state) == 9
+    # A plan whose sections are its path's own, whole (its parts one to one): items 0–6 are the
+    # state from before the events.
+    assert len(state) == 10 and state[9] == tuple((k, 0.0, 1.0) for k in range(len(state[0])))
     older = dispkin.Trajectory.__new__(dispkin.Trajectory)
     older.__setstate__(state[:3] + (tuple(span[:3] for span in state[3]),) + state[4:7])
     assert older.time_law_limits is None and older.override_factor == 1.0

@@ -6,13 +6,15 @@
 //! are in namespace detail.
 //!
 //! Each form gives the pose and the body twist per unit τ of its section at τ ∈ [0, 1], the
-//! same motion as the section's own pose()/twist() (to rounding). Sections cut from one cubic
-//! curve share its form; lines and arcs keep one form each.
+//! same motion as the section's own pose()/twist() (to rounding). The parts a section is cut
+//! into share its form.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
@@ -216,7 +218,7 @@ struct ScrewMotion {
 namespace detail {
 
 //! Whether the curve (R₀, c, φ, p) is the one `section` is cut from: the same coefficients,
-//! bit for bit (one block comparison each; a false "no" only costs sharing).
+//! bit for bit (one block comparison each).
 inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, const Cubic3& rotation,
                        const Eigen::Vector3d& pivot, const CurveSection& section) noexcept {
   return same_bits(section.q0.coeffs().data(), q0.coeffs().data(), 4) &&
@@ -227,83 +229,83 @@ inline bool same_curve(const Eigen::Quaterniond& q0, const Cubic3& position, con
 
 }  // namespace detail
 
-//! A cubic pose curve, shared by all the sections cut from it (they differ only in the part
-//! [v₀, v₀ + h] they run over): R = R₀ exp(φ(v)), ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p
-//! per unit τ, as CurveSection::at.
-struct CurveMotion {
-  Eigen::Quaterniond q0 = Eigen::Quaterniond::Identity();  //!< R₀
-  //! c(v) (world) and φ(v) (body of R₀), as the CurveSection.
-  //!@{
-  Cubic3 position, rotation;
-  //!@}
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();  //!< p, body coordinates of the point on c(v)
+//! A cubic pose curve sampled at curve parameter v for a part of span h = dv/dτ: R = R₀ exp(φ(v)),
+//! ω_b = h J_r(φ) φ′, v_b = Rᵀ h c′ − ω_b × p per unit τ, as CurveSection::at, with the series
+//! exp and right Jacobian of the sampling path.
+inline void curve_motion_at(const CurveSection& curve, double v, double h, Posed& pose, Twistd& twist) noexcept {
+  Eigen::Quaterniond turn;
+  Eigen::Vector3d omega;
+  detail::exp_and_right_jacobian_sampled(curve.rotation.value(v), curve.rotation.first(v), turn, omega);
+  omega *= h;
+  // A product of unit quaternions: unit to rounding without normalising.
+  const Eigen::Quaterniond q = curve.q0 * turn;
+  pose = Posed::unchecked(q, curve.position.value(v) - q * curve.pivot);
+  twist.angular = omega;
+  twist.linear = q.conjugate() * (h * curve.position.first(v)) - omega.cross(curve.pivot);
+}
 
-  //! Whether `section` is cut from this curve.
-  bool holds(const CurveSection& section) const noexcept {
-    return detail::same_curve(q0, position, rotation, pivot, section);
-  }
-
-  //! Pose and body twist per unit τ at curve parameter v, for a section of span h = dv/dτ.
-  void at(double v, double h, Posed& pose, Twistd& twist) const noexcept {
-    Eigen::Quaterniond turn;
-    Eigen::Vector3d omega;
-    detail::exp_and_right_jacobian_sampled(rotation.value(v), rotation.first(v), turn, omega);
-    omega *= h;
-    // A product of unit quaternions: unit to rounding without normalising.
-    const Eigen::Quaterniond q = q0 * turn;
-    pose = Posed::unchecked(q, position.value(v) - q * pivot);
-    twist.angular = omega;
-    twist.linear = q.conjugate() * (h * position.first(v)) - omega.cross(pivot);
-  }
-};
-
-//! The sampling forms of a path's sections, stored by kind so that each section costs only
-//! what its kind needs (a section of a curve: the part of the shared curve it runs over).
+//! The sampling forms of the parts of a path's sections: one form per section, shared by every
+//! part cut from it, so that a part costs only the place it runs over in its section. Lines,
+//! arcs and screws keep a precomputed form; curves and blends are sampled from the section
+//! itself (their coefficients are their form). A part over τ ∈ [t₀, t₁] of its section runs
+//! through it at u = t₀ + τ (t₁ − t₀) (for curves v = v₀ + τ h, the curve parameter of the part as
+//! section_part makes it), its twist per unit τ the section's per unit u times dt/dτ
+//! (doc/planning.md eq. 40).
 class SectionMotions {
  public:
-  //! Room for the forms of `sections` (planning side).
-  void reserve(const std::vector<Section>& sections);
+  //! Room for `parts` parts of `sections` (planning side).
+  void reserve(const std::vector<Section>& sections, std::size_t parts);
 
-  //! Appends the form of the next section (planning side; allocates).
-  void append(const Section& section);
+  //! Appends the form of the part [t0, t1] of `section`, kept as section k of those at() is
+  //! given: the same curve (a curve kept over a longer run of v) or the same section (planning
+  //! side; allocates).
+  void append(const Section& section, std::size_t k, double t0, double t1);
 
-  std::size_t size() const noexcept { return entries_.size(); }  //!< the number of sections
+  std::size_t size() const noexcept { return entries_.size(); }  //!< the number of parts
 
-  //! Pose and body twist per unit τ of section k at τ.
-  void at(std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {
+  //! Pose and body twist per unit τ of part k at τ; `sections`: those the parts were made of.
+  void at(const std::vector<Section>& sections, std::size_t k, double tau, Posed& pose, Twistd& twist) const noexcept {
     const Entry& e = entries_[k];
+    const double u = e.v0 + tau * e.span;
     switch (e.kind) {
       case Kind::line:
-        lines_[e.index].at(tau, pose, twist);
-        return;
+        lines_[e.index].at(u, pose, twist);
+        break;
       case Kind::arc:
-        arcs_[e.index].at(tau, pose, twist);
-        return;
+        arcs_[e.index].at(u, pose, twist);
+        break;
       case Kind::screw:
-        screws_[e.index].at(tau, pose, twist);
-        return;
+        screws_[e.index].at(u, pose, twist);
+        break;
       case Kind::curve:
-        curves_[e.index].at(e.v0 + tau * e.span, e.span, pose, twist);
+        curve_motion_at(*std::get_if<CurveSection>(&sections[e.index]), u, e.span, pose, twist);
         return;
       case Kind::slerp_blend:
-        slerp_blends_[e.index].at(tau, pose, twist);
+        std::get_if<SlerpBlendSection>(&sections[e.index])->at_curve(u, e.span, pose, twist);
         return;
     }
+    // Per unit τ of the part: the form's twist per unit of its section's τ times dt/dτ
+    // (exactly the form's own for a whole section, span 1).
+    if (e.span != 1.0) twist = twist * e.span;
   }
 
  private:
   enum class Kind : unsigned char { line, arc, screw, curve, slerp_blend };
   struct Entry {
     Kind kind;
-    std::size_t index;            // into the vector of its kind
-    double v0 = 0.0, span = 0.0;  // a curve's part: v = v₀ + τ h
+    std::size_t index;            // into the vector of its kind (curves, blends: into the sections)
+    double v0 = 0.0, span = 1.0;  // the part: u = v₀ + τ h
   };
+  // The form of a line, arc or screw section (appended to its vector), and its index.
+  std::pair<Kind, std::size_t> make_form(const Section& section);
+
   std::vector<Entry> entries_;
   std::vector<LineMotion> lines_;
   std::vector<ArcMotion> arcs_;
   std::vector<ScrewMotion> screws_;
-  std::vector<CurveMotion> curves_;
-  std::vector<SlerpBlendSection> slerp_blends_;  // their own form: at() is noexcept and allocation-free
+  // The section whose form was made last and where it is: parts of one section come in a run.
+  std::size_t last_section_ = static_cast<std::size_t>(-1);
+  std::pair<Kind, std::size_t> last_form_{Kind::line, 0};
 };
 
 }  // namespace dispkin

@@ -166,7 +166,13 @@ struct SlerpBlendSection {
 
   //! Pose and body twist per unit τ at τ. noexcept, allocation-free.
   void at(double tau, Posed& pose_out, Twistd& twist_out) const noexcept {
-    const double h = span(), v = v0 + tau * h;
+    const double h = span();
+    at_curve(v0 + tau * h, h, pose_out, twist_out);
+  }
+
+  //! Pose and body twist per unit τ at curve parameter v, for a part of the curve of span
+  //! h = dv/dτ (SectionMotions samples every part of a blend from the one section).
+  void at_curve(double v, double h, Posed& pose_out, Twistd& twist_out) const noexcept {
     Eigen::Quaterniond turn;
     Eigen::Vector3d omega;
     detail::NestedSlerp{a, b}.at(v, turn, omega);

@@ -58,17 +58,6 @@ struct Stop {
   std::string reason;  //!< e.g. "the motion reverses ..."
 };
 
-//! Where a section of a trajectory comes from: the part τ ∈ [tau_start, tau_end] of section
-//! `section` of the path as planned (the blended path in continuous-path mode). The planner
-//! cuts sections whose fastest point's speed varies (doc/planning.md §9).
-struct SectionSource {
-  std::size_t section = 0;  //!< the index of the section in the planned path
-  //! The part of it, τ ∈ [tau_start, tau_end] ⊂ [0, 1].
-  //!@{
-  double tau_start = 0.0, tau_end = 1.0;
-  //!@}
-};
-
 //! A planned trajectory. A control loop samples consecutive cycles fastest with a Cursor
 //! (sample(t, cursor)).
 class Trajectory {
@@ -83,7 +72,8 @@ class Trajectory {
   //! `path` run through by `law`, planned under the velocity-limit curve `speed_limits` with rests
   //! at `rest_positions` (0, every corner, path.length()).
   //! `stops`: why it rests at each inner rest position.
-  //! `sources`: where each section comes from (empty: the path's own sections, one to one).
+  //! `sources`: where each section comes from (empty: where it lies in the path's whole
+  //! sections, SampledPath::parts()).
   //! `limits`: what the time law keeps to (what stopped_at(), resumed_at() and with_override()
   //! need; none for a law made under other limits, e.g. a re-timing under joint limits), and
   //! `override_factor`: the speed override the law runs at from its last event on (1: as planned).
@@ -197,8 +187,11 @@ class Trajectory {
   const std::vector<double>& rest_positions() const noexcept { return rest_s_; }
   //! The inner rests (rest_positions() without 0 and length()) with the reason of each.
   const std::vector<Stop>& stops() const noexcept { return stops_; }
-  //! Where each section comes from in the path as planned (empty when one to one).
-  const std::vector<SectionSource>& section_sources() const noexcept { return sources_; }
+  //! Where each section comes from in the path as planned: for a plan, where it lies in the
+  //! path's whole sections (the path as planned; empty when one to one).
+  const std::vector<SectionSource>& section_sources() const noexcept {
+    return sources_.empty() ? path_.parts() : sources_;
+  }
 
   //! The pose at path position s (clamped to [0, length()]) and its body twist per unit of s
   //! (the body twist at ṡ = 1 m/s).
@@ -238,7 +231,7 @@ class Trajectory {
   std::vector<SpeedLimit> speed_limits_;
   std::vector<double> rest_s_;
   std::vector<Stop> stops_;
-  std::vector<SectionSource> sources_;
+  std::vector<SectionSource> sources_;  // given apart from the path's parts (empty: those)
   std::optional<TimeLawLimits> limits_;
   double override_ = 1.0;
   double end_s_ = 0.0;  // where the last law ends: the path's length, or a stop before it

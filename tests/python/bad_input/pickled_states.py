@@ -54,6 +54,8 @@ def jumping_section(s):
     start = end[:4] + (end[4] + 8.6,) + end[5:]
     s[0] = s[0] + (("lin", start, start[:4] + (start[4] + 0.1,) + start[5:], "decoupled", (0.0, 0.0, 0.0)),)
     s[1] = s[1] + (0.1,)
+    if s[9]:  # the trajectory's sections as parts of the sections of item 0: the new one whole
+        s[9] = s[9] + ((len(s[0]) - 1, 0.0, 1.0),)
 
 
 def short_report_sample():
