@@ -72,14 +72,41 @@ std::vector<double> averaged_knots(const AccelerationSteps& law, double window) 
   return knots;
 }
 
-// max_t |u(t) − u(t−T)|: a step function whose steps are at the averaged law's knots.
+// u(t) at non-decreasing t: the interval found by walking on from the last one, as interval_at
+// finds it (the last knot ≤ t, at most N − 1), zero outside [t_0, t_N).
+class AccelerationWalk {
+ public:
+  explicit AccelerationWalk(const AccelerationSteps& law) : law_(law) {}
+  double at(double t) {
+    if (!(t >= law_.time.front()) || t >= law_.time.back()) return 0.0;
+    const std::size_t n = law_.acceleration.size();
+    while (i_ + 1 < n && law_.time[i_ + 1] <= t) ++i_;
+    return law_.acceleration[i_];
+  }
+
+ private:
+  const AccelerationSteps& law_;
+  std::size_t i_ = 0;
+};
+
+// max_t |u(t) − u(t−T)|: a step function whose steps are at the averaged law's knots (the law's
+// knots and the same shifted by T). Both knot lists are sorted, so they are merged in one walk,
+// and u is looked up by walking on (the smallest window's bisection evaluates this some thirty
+// times per solve of the jerk-limited search).
 double largest_step(const AccelerationSteps& law, double window) {
-  const std::vector<double> times = averaged_knots(law, window);
-  double largest = 0.0;
-  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
-    if (!(times[k + 1] > times[k])) continue;
-    const double t = 0.5 * (times[k] + times[k + 1]);
-    largest = std::max(largest, std::abs(acceleration_at(law, t) - acceleration_at(law, t - window)));
+  const std::vector<double>& time = law.time;
+  const std::size_t m = time.size();
+  AccelerationWalk now(law), earlier(law);
+  std::size_t a = 0, b = 0;  // the next knot of the law and of the law shifted by T
+  auto next_knot = [&] { return b == m || (a < m && time[a] <= time[b] + window) ? time[a++] : time[b++] + window; };
+  double largest = 0.0, previous = next_knot();
+  while (a < m || b < m) {
+    const double t = next_knot();
+    if (t > previous) {
+      const double middle = 0.5 * (previous + t);
+      largest = std::max(largest, std::abs(now.at(middle) - earlier.at(middle - window)));
+    }
+    previous = t;
   }
   return largest;
 }

@@ -8,15 +8,26 @@ namespace dispkin::detail {
 
 ConvexPolygon::ConvexPolygon(double u_bound, double x_bound)
     : vertices_{{-u_bound, 0.0}, {u_bound, 0.0}, {u_bound, x_bound}, {-u_bound, x_bound}},
-      tolerance_(1e-12 * (u_bound + x_bound)) {}
+      tolerance_(1e-12 * (u_bound + x_bound)) {
+  vertices_.reserve(reserved_vertices);
+  scratch_.reserve(reserved_vertices);
+}
+
+ConvexPolygon::ConvexPolygon(const ConvexPolygon& other) : tolerance_(other.tolerance_) {
+  vertices_.reserve(std::max(reserved_vertices, other.vertices_.size()));
+  vertices_.assign(other.vertices_.begin(), other.vertices_.end());
+  scratch_.reserve(std::max(reserved_vertices, other.vertices_.size() + 1));
+}
 
 void ConvexPolygon::clip(const HalfPlane& h) {
   // Sutherland–Hodgman against one half-plane. A vertex on the line within rounding counts as
   // inside, so that clipping by a·u + b·x ≤ c and by its reverse leaves the segment on the line.
+  // The kept vertices go into the scratch buffer, which then becomes the polygon: both keep their
+  // capacity, so a polygon allocates only while it grows.
   const double scale = std::abs(h.a) + std::abs(h.b) + std::abs(h.c);
   const double slack = tolerance_ * std::max(1.0, scale);
-  std::vector<Eigen::Vector2d> kept;
-  kept.reserve(vertices_.size() + 1);
+  std::vector<Eigen::Vector2d>& kept = scratch_;
+  kept.clear();
   const std::size_t n = vertices_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
@@ -30,15 +41,14 @@ void ConvexPolygon::clip(const HalfPlane& h) {
       kept.push_back(p + t * (q - p));
     }
   }
-  // Drop repeated vertices (clipping a degenerate polygon creates them).
-  std::vector<Eigen::Vector2d> unique;
-  unique.reserve(kept.size());
-  for (const Eigen::Vector2d& v : kept) {
-    if (unique.empty() || (v - unique.back()).lpNorm<Eigen::Infinity>() > tolerance_) unique.push_back(v);
+  // Drop repeated vertices (clipping a degenerate polygon creates them), in place.
+  std::size_t unique = 0;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (unique == 0 || (kept[k] - kept[unique - 1]).lpNorm<Eigen::Infinity>() > tolerance_) kept[unique++] = kept[k];
   }
-  while (unique.size() > 1 && (unique.front() - unique.back()).lpNorm<Eigen::Infinity>() <= tolerance_)
-    unique.pop_back();
-  vertices_ = std::move(unique);
+  while (unique > 1 && (kept.front() - kept[unique - 1]).lpNorm<Eigen::Infinity>() <= tolerance_) --unique;
+  kept.resize(unique);
+  vertices_.swap(kept);
 }
 
 void ConvexPolygon::x_range(double& lo, double& hi) const noexcept {

@@ -32,6 +32,11 @@ class ConvexPolygon {
  public:
   //! The box |u| ≤ u_bound, 0 ≤ x ≤ x_bound.
   ConvexPolygon(double u_bound, double x_bound);
+  //! A copy with room to be clipped further without allocating.
+  ConvexPolygon(const ConvexPolygon& other);
+  ConvexPolygon(ConvexPolygon&&) noexcept = default;
+  ConvexPolygon& operator=(const ConvexPolygon&) = default;
+  ConvexPolygon& operator=(ConvexPolygon&&) noexcept = default;
   //! Keeps the part with a·u + b·x ≤ c (up to a rounding tolerance relative to the box).
   void clip(const HalfPlane& h);
   bool empty() const noexcept { return vertices_.empty(); }
@@ -41,7 +46,11 @@ class ConvexPolygon {
   bool largest_u_at(double x, double& u) const noexcept;
 
  private:
+  // Room for the vertices a polygon usually reaches (4 of the box and one per binding limit),
+  // so that clipping does not allocate.
+  static constexpr std::size_t reserved_vertices = 16;
   std::vector<Eigen::Vector2d> vertices_;  // (u, x)
+  std::vector<Eigen::Vector2d> scratch_;   // clip()'s output, swapped in
   double tolerance_;
 };
 
