@@ -105,7 +105,9 @@ RunProblem::RunProblem(const SmoothParameter& smooth, const std::vector<GridPoin
 }
 
 Parameterisation RunProblem::solve(double reach, double run_acceleration, double run_speed) const {
-  std::vector<GridInterval> intervals = admissible_;
+  std::vector<GridInterval>& intervals = clipped_;
+  intervals = admissible_;  // into the storage of the last solve: no allocation
+  std::size_t near_begin = 0, near_end = 0;  // the grid points within ±reach of the interval
   for (std::size_t i = 0; i < run_.count; ++i) {
     ConvexPolygon& polygon = intervals[i].admissible;
     const double delta = intervals[i].delta;
@@ -125,18 +127,19 @@ Parameterisation RunProblem::solve(double reach, double run_acceleration, double
       polygon.clip({2.0 * delta, 1.0, speed * speed});
     }
     if (reach > 0.0) {
-      double joint_speed = std::numeric_limits<double>::infinity();  // σ̇² cap of the joint speeds nearby
-      for (std::size_t g = 0; g <= run_.count; ++g) {
-        const double at = grid_[run_.first + g].sigma;
-        if (at >= sigma - reach && at <= sigma_next + reach) joint_speed = std::min(joint_speed, speed_cap_[g]);
-      }
+      // σ̇² cap of the joint speeds nearby; the window of grid points moves on with the interval.
+      while (near_begin <= run_.count && grid_[run_.first + near_begin].sigma < sigma - reach) ++near_begin;
+      near_end = std::max(near_end, near_begin);
+      while (near_end <= run_.count && grid_[run_.first + near_end].sigma <= sigma_next + reach) ++near_end;
+      double joint_speed = std::numeric_limits<double>::infinity();
+      for (std::size_t g = near_begin; g < near_end; ++g) joint_speed = std::min(joint_speed, speed_cap_[g]);
       if (std::isfinite(joint_speed)) {
         polygon.clip({0.0, 1.0, joint_speed});
         polygon.clip({2.0 * delta, 1.0, joint_speed});
       }
     }
   }
-  Parameterisation fastest = fastest_parameterisation(std::move(intervals), 0.0, 0.0);
+  Parameterisation fastest = fastest_parameterisation_clipping(intervals, 0.0, 0.0);
   if (fastest.infeasible_interval >= 0) {
     const std::size_t i = run_.first + static_cast<std::size_t>(fastest.infeasible_interval);
     throw std::runtime_error("no speed keeps every joint limit on the path interval " +

@@ -77,6 +77,7 @@ class RunProblem {
   Run run_;
   std::vector<GridInterval> admissible_;  // per interval: the DISP and joint limits, no run caps
   std::vector<double> speed_cap_;         // per grid point of the run: joint_speed_cap
+  mutable std::vector<GridInterval> clipped_;  // solve()'s copy of admissible_, clipped
 };
 
 }  // namespace dispkin::detail

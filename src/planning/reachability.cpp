@@ -13,7 +13,8 @@ ConvexPolygon::ConvexPolygon(double u_bound, double x_bound)
   scratch_.reserve(reserved_vertices);
 }
 
-ConvexPolygon::ConvexPolygon(const ConvexPolygon& other) : tolerance_(other.tolerance_) {
+ConvexPolygon::ConvexPolygon(const ConvexPolygon& other)
+    : tolerance_(other.tolerance_), deduplicated_(other.deduplicated_) {
   vertices_.reserve(std::max(reserved_vertices, other.vertices_.size()));
   vertices_.assign(other.vertices_.begin(), other.vertices_.end());
   scratch_.reserve(std::max(reserved_vertices, other.vertices_.size() + 1));
@@ -26,12 +27,18 @@ void ConvexPolygon::clip(const HalfPlane& h) {
   // capacity, so a polygon allocates only while it grows.
   const double scale = std::abs(h.a) + std::abs(h.b) + std::abs(h.c);
   const double slack = tolerance_ * std::max(1.0, scale);
+  const std::size_t n = vertices_.size();
+  // Most limits do not cut a polygon that is already clipped (its repeated vertices dropped):
+  // then it stays as it is, as the full pass below would leave it.
+  if (deduplicated_ && std::all_of(vertices_.begin(), vertices_.end(), [&](const Eigen::Vector2d& v) {
+        return h.a * v.x() + h.b * v.y() - h.c <= slack;
+      }))
+    return;
   std::vector<Eigen::Vector2d>& kept = scratch_;
   kept.clear();
-  const std::size_t n = vertices_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
-    const Eigen::Vector2d& q = vertices_[(k + 1) % n];
+    const Eigen::Vector2d& q = vertices_[k + 1 == n ? 0 : k + 1];
     const double fp = h.a * p.x() + h.b * p.y() - h.c;
     const double fq = h.a * q.x() + h.b * q.y() - h.c;
     const bool p_in = fp <= slack, q_in = fq <= slack;
@@ -49,6 +56,7 @@ void ConvexPolygon::clip(const HalfPlane& h) {
   while (unique > 1 && (kept.front() - kept[unique - 1]).lpNorm<Eigen::Infinity>() <= tolerance_) --unique;
   kept.resize(unique);
   vertices_.swap(kept);
+  deduplicated_ = true;
 }
 
 void ConvexPolygon::x_range(double& lo, double& hi) const noexcept {
@@ -64,7 +72,7 @@ bool ConvexPolygon::largest_u_at(double x, double& u) const noexcept {
   const std::size_t n = vertices_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
-    const Eigen::Vector2d& q = vertices_[(k + 1) % n];
+    const Eigen::Vector2d& q = vertices_[k + 1 == n ? 0 : k + 1];
     double candidate;
     if (std::abs(p.y() - x) <= tolerance_) {
       candidate = p.x();
@@ -80,6 +88,11 @@ bool ConvexPolygon::largest_u_at(double x, double& u) const noexcept {
 }
 
 Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, double x_start, double x_end) {
+  return fastest_parameterisation_clipping(intervals, x_start, x_end);
+}
+
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start,
+                                                   double x_end) {
   const std::size_t n = intervals.size();
   Parameterisation result;
   std::vector<double> lo(n + 1), hi(n + 1);

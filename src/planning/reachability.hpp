@@ -52,6 +52,7 @@ class ConvexPolygon {
   std::vector<Eigen::Vector2d> vertices_;  // (u, x)
   std::vector<Eigen::Vector2d> scratch_;   // clip()'s output, swapped in
   double tolerance_;
+  bool deduplicated_ = false;  // clipped at least once: no repeated vertices
 };
 
 //! One interval of the grid: its length Δ_i > 0 and its admissible polygon P_i in (u_i, x_i).
@@ -70,5 +71,9 @@ struct Parameterisation {
 
 //! The fastest parameterisation from x_start to x_end over `intervals` (see the file comment).
 Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, double x_start, double x_end);
+
+//! The same on the caller's intervals, whose polygons it clips to the controllable sets (no copy).
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start,
+                                                   double x_end);
 
 }  // namespace dispkin::detail
