@@ -89,26 +89,26 @@ class AccelerationWalk {
   std::size_t i_ = 0;
 };
 
-// max_t |u(t) − u(t−T)|: a step function whose steps are at the averaged law's knots (the law's
-// knots and the same shifted by T). Both knot lists are sorted, so they are merged in one walk,
-// and u is looked up by walking on (the smallest window's bisection evaluates this some thirty
-// times per solve of the jerk-limited search).
-double largest_step(const AccelerationSteps& law, double window) {
+// Whether max_t |u(t) − u(t−T)| ≤ bound: a step function whose steps are at the averaged law's
+// knots (the law's knots and the same shifted by T). Both knot lists are sorted, so they are merged
+// in one walk, u is looked up by walking on, and the walk stops at the first step above the bound
+// (the smallest window's bisection asks this some thirty times per solve of the jerk-limited search).
+bool steps_within(const AccelerationSteps& law, double window, double bound) {
   const std::vector<double>& time = law.time;
   const std::size_t m = time.size();
   AccelerationWalk now(law), earlier(law);
   std::size_t a = 0, b = 0;  // the next knot of the law and of the law shifted by T
   auto next_knot = [&] { return b == m || (a < m && time[a] <= time[b] + window) ? time[a++] : time[b++] + window; };
-  double largest = 0.0, previous = next_knot();
+  double previous = next_knot();
   while (a < m || b < m) {
     const double t = next_knot();
     if (t > previous) {
       const double middle = 0.5 * (previous + t);
-      largest = std::max(largest, std::abs(now.at(middle) - earlier.at(middle - window)));
+      if (!(std::abs(now.at(middle) - earlier.at(middle - window)) <= bound)) return false;
     }
     previous = t;
   }
-  return largest;
+  return true;
 }
 
 }  // namespace
@@ -117,7 +117,7 @@ double smallest_window(const AccelerationSteps& law, double jerk, double upper) 
   double lo = 0.0, hi = upper;
   while (hi - lo > 1e-9 * upper) {
     const double mid = 0.5 * (lo + hi);
-    (largest_step(law, mid) <= jerk * mid ? hi : lo) = mid;
+    (steps_within(law, mid, jerk * mid) ? hi : lo) = mid;
   }
   return hi;
 }
