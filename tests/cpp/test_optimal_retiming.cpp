@@ -65,6 +65,46 @@ TEST(Reachability, SlowsDownOnlyWhereALimitBinds) {
   EXPECT_EQ(detail::fastest_parameterisation(blocked, 0.0, 0.0).infeasible_interval, 1);
 }
 
+// A run's solves clip the polygons of the joint limits, built once, by their own caps afterwards
+// (RunProblem): the order of the clips must not change the set. A wide box cut by limits and then
+// by the caps has the x range and the largest u of the caps' box cut by the same limits, to
+// rounding; a limit that does not cut leaves a clipped polygon exactly as it was.
+TEST(Reachability, ClippingInAnotherOrderGivesTheSamePolygon) {
+  const std::vector<detail::HalfPlane> limits{
+      {0.3, 1.0, 0.8}, {-0.5, 1.0, 0.7}, {1.0, 0.2, 1.1}, {-1.0, 0.1, 0.9}, {0.0, 1.0, 0.95}};
+  const double cap_u = 0.6, cap_x = 0.9;
+  detail::ConvexPolygon caps_first(cap_u, cap_x), limits_first(2.0, 1.5);
+  for (const detail::HalfPlane& h : limits) {
+    caps_first.clip(h);
+    limits_first.clip(h);
+  }
+  for (const detail::HalfPlane& h :
+       {detail::HalfPlane{1.0, 0.0, cap_u}, detail::HalfPlane{-1.0, 0.0, cap_u}, detail::HalfPlane{0.0, 1.0, cap_x}})
+    limits_first.clip(h);
+  double lo_a, hi_a, lo_b, hi_b;
+  caps_first.x_range(lo_a, hi_a);
+  limits_first.x_range(lo_b, hi_b);
+  EXPECT_NEAR(lo_a, lo_b, 1e-14);
+  EXPECT_NEAR(hi_a, hi_b, 1e-14);
+  EXPECT_LT(hi_a, cap_x);  // a limit binds below the cap: the test compares cut polygons
+  for (double x = lo_a; x <= hi_a; x += (hi_a - lo_a) / 16) {
+    double u_a, u_b;
+    ASSERT_TRUE(caps_first.largest_u_at(x, u_a));
+    ASSERT_TRUE(limits_first.largest_u_at(x, u_b));
+    EXPECT_NEAR(u_a, u_b, 1e-14) << "at x = " << x;
+  }
+  // Not cutting: the same polygon, bit for bit.
+  detail::ConvexPolygon same = caps_first;
+  same.clip({0.0, 1.0, 10.0});
+  double lo_c, hi_c, u_c, u_a;
+  same.x_range(lo_c, hi_c);
+  EXPECT_EQ(lo_c, lo_a);
+  EXPECT_EQ(hi_c, hi_a);
+  ASSERT_TRUE(same.largest_u_at(0.5 * (lo_a + hi_a), u_c));
+  ASSERT_TRUE(caps_first.largest_u_at(0.5 * (lo_a + hi_a), u_a));
+  EXPECT_EQ(u_c, u_a);
+}
+
 using testing::lin_move;
 using testing::Move;
 using testing::tool;
