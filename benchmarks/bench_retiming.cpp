@@ -123,8 +123,7 @@ void BM_RetimeOptimalLargeMotion(benchmark::State& state) {
   options.joint_acceleration << 8.0, 8.0, 8.0, 12.0, 12.0, 12.0;
   options.torque_limits = false;
   options.check_samples_between = static_cast<int>(state.range(0));
-  for (auto _ : state)
-    benchmark::DoNotOptimize(dispkin::serial::retime_optimal(path, tool, slack, arm, q, options));
+  for (auto _ : state) benchmark::DoNotOptimize(dispkin::serial::retime_optimal(path, tool, slack, arm, q, options));
 }
 BENCHMARK(BM_RetimeOptimalLargeMotion)->Arg(0)->Arg(3)->Unit(benchmark::kMillisecond);
 

@@ -106,7 +106,7 @@ RunProblem::RunProblem(const SmoothParameter& smooth, const std::vector<GridPoin
 
 Parameterisation RunProblem::solve(double reach, double run_acceleration, double run_speed) const {
   std::vector<GridInterval>& intervals = clipped_;
-  intervals = admissible_;  // into the storage of the last solve: no allocation
+  intervals = admissible_;                   // into the storage of the last solve: no allocation
   std::size_t near_begin = 0, near_end = 0;  // the grid points within ±reach of the interval
   for (std::size_t i = 0; i < run_.count; ++i) {
     ConvexPolygon& polygon = intervals[i].admissible;

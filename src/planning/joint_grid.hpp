@@ -75,8 +75,8 @@ class RunProblem {
   const SmoothParameter& smooth_;
   const std::vector<GridPoint>& grid_;
   Run run_;
-  std::vector<GridInterval> admissible_;  // per interval: the DISP and joint limits, no run caps
-  std::vector<double> speed_cap_;         // per grid point of the run: joint_speed_cap
+  std::vector<GridInterval> admissible_;       // per interval: the DISP and joint limits, no run caps
+  std::vector<double> speed_cap_;              // per grid point of the run: joint_speed_cap
   mutable std::vector<GridInterval> clipped_;  // solve()'s copy of admissible_, clipped
 };
 

@@ -78,8 +78,7 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
         const double step = sigma - previous->sigma;
         guess = previous->q + step * previous->q1 + (0.5 * step * step) * previous->q2;
       }
-      grid.push_back(
-          detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr, torques));
+      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr, torques));
       q_ref = grid.back().q;
     }
   }

@@ -30,9 +30,8 @@ void ConvexPolygon::clip(const HalfPlane& h) {
   const std::size_t n = vertices_.size();
   // Most limits do not cut a polygon that is already clipped (its repeated vertices dropped):
   // then it stays as it is, as the full pass below would leave it.
-  if (deduplicated_ && std::all_of(vertices_.begin(), vertices_.end(), [&](const Eigen::Vector2d& v) {
-        return h.a * v.x() + h.b * v.y() - h.c <= slack;
-      }))
+  if (deduplicated_ && std::all_of(vertices_.begin(), vertices_.end(),
+                                   [&](const Eigen::Vector2d& v) { return h.a * v.x() + h.b * v.y() - h.c <= slack; }))
     return;
   std::vector<Eigen::Vector2d>& kept = scratch_;
   kept.clear();
@@ -91,8 +90,7 @@ Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, d
   return fastest_parameterisation_clipping(intervals, x_start, x_end);
 }
 
-Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start,
-                                                   double x_end) {
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start, double x_end) {
   const std::size_t n = intervals.size();
   Parameterisation result;
   std::vector<double> lo(n + 1), hi(n + 1);

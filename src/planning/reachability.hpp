@@ -73,7 +73,6 @@ struct Parameterisation {
 Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, double x_start, double x_end);
 
 //! The same on the caller's intervals, whose polygons it clips to the controllable sets (no copy).
-Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start,
-                                                   double x_end);
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start, double x_end);
 
 }  // namespace dispkin::detail

@@ -216,7 +216,14 @@ def test_large_joint_motion_matches_toppra_and_keeps_the_limits_densely():
     tool.add_relative(dispkin.shapes.icosahedron(0.05, [0, 0, 0.1]))
     slack = dispkin.Limits(10.0, 1000.0)
     ours = dispkin.retime(
-        path, tool, slack, arm, q0, profile="trapezoid", method="optimal", joint_acceleration=ACCELERATION,
+        path,
+        tool,
+        slack,
+        arm,
+        q0,
+        profile="trapezoid",
+        method="optimal",
+        joint_acceleration=ACCELERATION,
         torque_limits=False,
     )
     samples = dispkin.check_joint_limits(
