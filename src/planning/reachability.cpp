@@ -35,17 +35,20 @@ void ConvexPolygon::clip(const HalfPlane& h) {
     return;
   std::vector<Eigen::Vector2d>& kept = scratch_;
   kept.clear();
+  auto side = [&h](const Eigen::Vector2d& v) { return h.a * v.x() + h.b * v.y() - h.c; };
+  const double f_first = n ? side(vertices_.front()) : 0.0;
+  double fp = f_first;  // each vertex's side evaluated once, carried to the next edge
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
     const Eigen::Vector2d& q = vertices_[k + 1 == n ? 0 : k + 1];
-    const double fp = h.a * p.x() + h.b * p.y() - h.c;
-    const double fq = h.a * q.x() + h.b * q.y() - h.c;
+    const double fq = k + 1 == n ? f_first : side(q);
     const bool p_in = fp <= slack, q_in = fq <= slack;
     if (p_in) kept.push_back(p);
     if (p_in != q_in && fp != fq) {
       const double t = fp / (fp - fq);
       kept.push_back(p + t * (q - p));
     }
+    fp = fq;
   }
   // Drop repeated vertices (clipping a degenerate polygon creates them), in place.
   std::size_t unique = 0;
