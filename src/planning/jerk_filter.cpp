@@ -95,7 +95,7 @@ class AccelerationWalk {
 // are sorted, so they are merged in one walk and u is looked up by walking on. The steps depend
 // on T only through the merged order of the knots: while T moves by less than half the smallest
 // gap next to a shifted knot (less a rounding allowance) the same pairs of steps meet, and the
-// largest difference is the same number.
+// largest difference is the same number (doc/retiming.md eq. 30).
 struct StepScan {
   double largest;  // max_t |u(t) − u(t−T)|
   double steady;   // |T′ − T| below this: the same largest step

@@ -3,6 +3,8 @@
 
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <random>
 
 #include <dispkin/hexapod/hexapod.hpp>
 #include <dispkin/hexapod/hexapod_retiming.hpp>
@@ -417,6 +419,53 @@ TEST(JerkFilter, MovingAverageOfATrapezoidIsTheSCurve) {
   const ProfileState last = jerk_law_at(phases, end);
   EXPECT_NEAR(last.s, distance, 1e-15);
   EXPECT_NEAR(last.v, 0.0, 1e-15);
+}
+
+// The smallest window's bisection reuses one scan of the steps for every window within its steady
+// range. On random step laws it must return the window of the same bisection whose every step
+// test enumerates the pairs of steps that meet, |u_P − u_Q| for each interval P of t and Q of
+// t − T (before and after the law: u = 0) that overlap for a time: bit for bit.
+TEST(JerkFilter, SmallestWindowIsTheBisectionOfThePairsThatMeet) {
+  std::mt19937_64 engine(20261204);
+  std::uniform_real_distribution<double> duration(0.005, 0.1), acceleration(-2.0, 2.0), jerk(5.0, 200.0);
+  for (int law_index = 0; law_index < 200; ++law_index) {
+    detail::AccelerationSteps steps;
+    const int n = 3 + law_index % 20;
+    steps.time.push_back(0.0);
+    for (int i = 0; i < n; ++i) {
+      steps.acceleration.push_back(acceleration(engine));
+      steps.time.push_back(steps.time.back() + duration(engine));
+    }
+    const double j = jerk(engine);
+    double largest = 0.0;
+    for (const double u : steps.acceleration) largest = std::max(largest, std::abs(u));
+    const double upper = 2.0 * largest / j;
+    // The intervals of u, with u = 0 before and after the law.
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> lo{-inf}, hi{0.0}, value{0.0};
+    for (int i = 0; i < n; ++i) {
+      lo.push_back(steps.time[i]);
+      hi.push_back(steps.time[i + 1]);
+      value.push_back(steps.acceleration[i]);
+    }
+    lo.push_back(steps.time.back());
+    hi.push_back(inf);
+    value.push_back(0.0);
+    auto within = [&](double window) {
+      for (std::size_t p = 0; p < lo.size(); ++p)
+        for (std::size_t q = 0; q < lo.size(); ++q)
+          if (std::max(lo[p], lo[q] + window) < std::min(hi[p], hi[q] + window) &&
+              !(std::abs(value[p] - value[q]) <= j * window))
+            return false;
+      return true;
+    };
+    double a = 0.0, b = upper;
+    while (b - a > 1e-9 * upper) {
+      const double mid = 0.5 * (a + b);
+      (within(mid) ? b : a) = mid;
+    }
+    ASSERT_EQ(detail::smallest_window(steps, j, upper), b) << "law " << law_index;
+  }
 }
 
 // Without a cruise the acceleration steps from +a to −a: a window shorter than the acceleration
