@@ -20,6 +20,13 @@ ConvexPolygon::ConvexPolygon(const ConvexPolygon& other)
   scratch_.reserve(std::max(reserved_vertices, other.vertices_.size() + 1));
 }
 
+ConvexPolygon& ConvexPolygon::operator=(const ConvexPolygon& other) {
+  vertices_.assign(other.vertices_.begin(), other.vertices_.end());
+  tolerance_ = other.tolerance_;
+  deduplicated_ = other.deduplicated_;
+  return *this;
+}
+
 void ConvexPolygon::clip(const HalfPlane& h) {
   // Sutherland–Hodgman against one half-plane. A vertex on the line within rounding counts as
   // inside, so that clipping by a·u + b·x ≤ c and by its reverse leaves the segment on the line.

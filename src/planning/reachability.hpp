@@ -35,7 +35,9 @@ class ConvexPolygon {
   //! A copy with room to be clipped further without allocating.
   ConvexPolygon(const ConvexPolygon& other);
   ConvexPolygon(ConvexPolygon&&) noexcept = default;
-  ConvexPolygon& operator=(const ConvexPolygon&) = default;
+  //! The vertices and tolerance only, into the storage this polygon has (no allocation once it
+  //! has held as many vertices).
+  ConvexPolygon& operator=(const ConvexPolygon& other);
   ConvexPolygon& operator=(ConvexPolygon&&) noexcept = default;
   //! Keeps the part with a·u + b·x ≤ c (up to a rounding tolerance relative to the box).
   void clip(const HalfPlane& h);
