@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dispkin::detail {
 namespace {
@@ -72,25 +73,76 @@ std::vector<double> averaged_knots(const AccelerationSteps& law, double window) 
   return knots;
 }
 
-// max_t |u(t) − u(t−T)|: a step function whose steps are at the averaged law's knots.
-double largest_step(const AccelerationSteps& law, double window) {
-  const std::vector<double> times = averaged_knots(law, window);
-  double largest = 0.0;
-  for (std::size_t k = 0; k + 1 < times.size(); ++k) {
-    if (!(times[k + 1] > times[k])) continue;
-    const double t = 0.5 * (times[k] + times[k + 1]);
-    largest = std::max(largest, std::abs(acceleration_at(law, t) - acceleration_at(law, t - window)));
+// u(t) at non-decreasing t: the interval found by walking on from the last one, as interval_at
+// finds it (the last knot ≤ t, at most N − 1), zero outside [t_0, t_N).
+class AccelerationWalk {
+ public:
+  explicit AccelerationWalk(const AccelerationSteps& law) : law_(law) {}
+  double at(double t) {
+    if (!(t >= law_.time.front()) || t >= law_.time.back()) return 0.0;
+    const std::size_t n = law_.acceleration.size();
+    while (i_ + 1 < n && law_.time[i_ + 1] <= t) ++i_;
+    return law_.acceleration[i_];
   }
-  return largest;
+
+ private:
+  const AccelerationSteps& law_;
+  std::size_t i_ = 0;
+};
+
+// max_t |u(t) − u(t−T)|, a step function whose steps are at the averaged law's knots (the law's
+// knots and the same shifted by T), and how far T may move before that changes. Both knot lists
+// are sorted, so they are merged in one walk and u is looked up by walking on. The steps depend
+// on T only through the merged order of the knots: while T moves by less than half the smallest
+// gap next to a shifted knot (less a rounding allowance) the same pairs of steps meet, and the
+// largest difference is the same number (doc/retiming.md eq. 30).
+struct StepScan {
+  double largest;  // max_t |u(t) − u(t−T)|
+  double steady;   // |T′ − T| below this: the same largest step
+};
+
+StepScan scan_steps(const AccelerationSteps& law, double window) {
+  const std::vector<double>& time = law.time;
+  const std::size_t m = time.size();
+  AccelerationWalk now(law), earlier(law);
+  std::size_t a = 0, b = 0;  // the next knot of the law and of the law shifted by T
+  bool shifted = false;      // whether the knot just taken is a shifted one
+  auto next_knot = [&] {
+    shifted = !(b == m || (a < m && time[a] <= time[b] + window));
+    return shifted ? time[b++] + window : time[a++];
+  };
+  double largest = 0.0, nearest = std::numeric_limits<double>::infinity();
+  double previous = next_knot();
+  bool previous_shifted = shifted;
+  while (a < m || b < m) {
+    const double t = next_knot();
+    if (shifted || previous_shifted) nearest = std::min(nearest, t - previous);
+    if (t > previous) {
+      const double middle = 0.5 * (previous + t);
+      largest = std::max(largest, std::abs(now.at(middle) - earlier.at(middle - window)));
+    }
+    previous = t;
+    previous_shifted = shifted;
+  }
+  const double rounding = 16.0 * std::numeric_limits<double>::epsilon() * (std::abs(time.back()) + window);
+  return {largest, std::max(0.0, 0.5 * nearest - rounding)};
 }
 
 }  // namespace
 
 double smallest_window(const AccelerationSteps& law, double jerk, double upper) {
   double lo = 0.0, hi = upper;
+  // The last scan serves every window within its steady range: once the bracket is narrower than
+  // the gaps between knots, the bisection's remaining steps compare one number.
+  double scanned = std::numeric_limits<double>::quiet_NaN();
+  StepScan scan{0.0, 0.0};
   while (hi - lo > 1e-9 * upper) {
     const double mid = 0.5 * (lo + hi);
-    (largest_step(law, mid) <= jerk * mid ? hi : lo) = mid;
+    if (!(std::abs(mid - scanned) < scan.steady)) {
+      scan = scan_steps(law, mid);
+      scanned = mid;
+    }
+    (scan.largest <= jerk * mid ? hi : lo) = mid;
   }
   return hi;
 }

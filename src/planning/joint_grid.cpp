@@ -10,7 +10,7 @@
 namespace dispkin::detail {
 
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
-                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess) {
+                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, bool torques) {
   auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* start, Eigen::VectorXd& q,
                         Eigen::VectorXd& q1) {
     Posed pose;
@@ -27,7 +27,7 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
     Twistd per_sigma;
     path.state(sigma, pose, per_sigma);
     if (model.joints_with_rate(pose, per_sigma, path.twist_rate(sigma), q_ref, guess, sigma, p.q, p.q1, p.q2)) {
-      model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+      if (torques) model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
       return p;
     }
   } else {
@@ -39,7 +39,7 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
   joint_path(before, p.q, &guess_before, q_before, q1_before);
   joint_path(after, p.q, &guess_after, q_after, q1_after);
   p.q2 = (q1_after - q1_before) / (after - before);
-  model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+  if (torques) model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
   return p;
 }
 
@@ -79,43 +79,67 @@ std::string interval_text(double s0, double s1) {
   return out.str();
 }
 
-Parameterisation RunProblem::solve(double reach, double run_acceleration, double run_speed) const {
-  std::vector<GridInterval> intervals;
-  intervals.reserve(run_.count);
+RunProblem::RunProblem(const SmoothParameter& smooth, const std::vector<GridPoint>& grid, const JointBounds& bounds,
+                       double scale, Run run)
+    : smooth_(smooth), grid_(grid), run_(run) {
+  admissible_.reserve(run_.count);
+  speed_cap_.reserve(run_.count + 1);
+  std::vector<HalfPlane> at_start, at_end;
   for (std::size_t i = run_.first; i < run_.first + run_.count; ++i) {
     const GridPoint &p = grid_[i], &p_next = grid_[i + 1];
     const double delta = p_next.sigma - p.sigma;
     double speed, accel;
     smooth_.limits_over(p.sigma, p_next.sigma, speed, accel);
-    if (reach > 0.0) {
-      double unused;
-      smooth_.limits_over(std::max(start(), p.sigma - reach), std::min(end(), p_next.sigma + reach), speed, unused);
-    }
-    if (run_acceleration > 0.0) accel = run_acceleration;
-    speed = std::min(speed, run_speed);
     GridInterval interval{delta, ConvexPolygon(accel, speed * speed)};
     interval.admissible.clip({2.0 * delta, 1.0, speed * speed});  // at the interval's end as well
-    at_start_.clear();
-    at_end_.clear();
-    append_limits(p, bounds_, scale_, at_start_);
-    append_limits(p_next, bounds_, scale_, at_end_);
-    for (const HalfPlane& h : at_start_) interval.admissible.clip(h);
-    for (const HalfPlane& h : at_end_) interval.admissible.clip({h.a + 2.0 * delta * h.b, h.b, h.c});
+    at_start.clear();
+    at_end.clear();
+    append_limits(p, bounds, scale, at_start);
+    append_limits(p_next, bounds, scale, at_end);
+    for (const HalfPlane& h : at_start) interval.admissible.clip(h);
+    for (const HalfPlane& h : at_end) interval.admissible.clip({h.a + 2.0 * delta * h.b, h.b, h.c});
+    admissible_.push_back(std::move(interval));
+  }
+  for (std::size_t g = run_.first; g <= run_.first + run_.count; ++g)
+    speed_cap_.push_back(joint_speed_cap(grid_[g], bounds, scale));
+}
+
+Parameterisation RunProblem::solve(double reach, double run_acceleration, double run_speed) const {
+  std::vector<GridInterval>& intervals = clipped_;
+  intervals = admissible_;                   // into the storage of the last solve: no allocation
+  std::size_t near_begin = 0, near_end = 0;  // the grid points within ±reach of the interval
+  for (std::size_t i = 0; i < run_.count; ++i) {
+    ConvexPolygon& polygon = intervals[i].admissible;
+    const double delta = intervals[i].delta;
+    const double sigma = grid_[run_.first + i].sigma, sigma_next = grid_[run_.first + i + 1].sigma;
+    if (run_acceleration > 0.0) {
+      polygon.clip({1.0, 0.0, run_acceleration});
+      polygon.clip({-1.0, 0.0, run_acceleration});
+    }
+    double speed = run_speed;
     if (reach > 0.0) {
-      double joint_speed = std::numeric_limits<double>::infinity();  // σ̇² cap of the joint speeds nearby
-      for (std::size_t g = run_.first; g <= run_.first + run_.count; ++g) {
-        if (grid_[g].sigma >= p.sigma - reach && grid_[g].sigma <= p_next.sigma + reach) {
-          joint_speed = std::min(joint_speed, joint_speed_cap(grid_[g], bounds_, scale_));
-        }
-      }
+      double disp_speed, unused;
+      smooth_.limits_over(std::max(start(), sigma - reach), std::min(end(), sigma_next + reach), disp_speed, unused);
+      speed = std::min(speed, disp_speed);
+    }
+    if (std::isfinite(speed)) {  // at both ends of the interval
+      polygon.clip({0.0, 1.0, speed * speed});
+      polygon.clip({2.0 * delta, 1.0, speed * speed});
+    }
+    if (reach > 0.0) {
+      // σ̇² cap of the joint speeds nearby; the window of grid points moves on with the interval.
+      while (near_begin <= run_.count && grid_[run_.first + near_begin].sigma < sigma - reach) ++near_begin;
+      near_end = std::max(near_end, near_begin);
+      while (near_end <= run_.count && grid_[run_.first + near_end].sigma <= sigma_next + reach) ++near_end;
+      double joint_speed = std::numeric_limits<double>::infinity();
+      for (std::size_t g = near_begin; g < near_end; ++g) joint_speed = std::min(joint_speed, speed_cap_[g]);
       if (std::isfinite(joint_speed)) {
-        interval.admissible.clip({0.0, 1.0, joint_speed});
-        interval.admissible.clip({2.0 * delta, 1.0, joint_speed});
+        polygon.clip({0.0, 1.0, joint_speed});
+        polygon.clip({2.0 * delta, 1.0, joint_speed});
       }
     }
-    intervals.push_back(std::move(interval));
   }
-  Parameterisation fastest = fastest_parameterisation(std::move(intervals), 0.0, 0.0);
+  Parameterisation fastest = fastest_parameterisation_clipping(intervals, 0.0, 0.0);
   if (fastest.infeasible_interval >= 0) {
     const std::size_t i = run_.first + static_cast<std::size_t>(fastest.infeasible_interval);
     throw std::runtime_error("no speed keeps every joint limit on the path interval " +

@@ -26,9 +26,10 @@ struct GridPoint {
 //! not null), q″ in closed form (JointModel::joints_with_rate, doc/retiming.md (eq. 28)) where
 //! [σ − h, σ + h] lies inside [lo, hi] and one section, else (or where the machine has no closed
 //! form) by central differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's
-//! ends are rests, where the path may turn a corner), and the torque coefficients (doc/retiming.md eq. 12).
+//! ends are rests, where the path may turn a corner), and with `torques` the torque coefficients
+//! (doc/retiming.md eq. 12; left empty without: no effort limit to keep).
 GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
-                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr);
+                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr, bool torques = true);
 
 //! The joint limits at one grid point as half-planes in (u, x) = (σ̈, σ̇²), each limit multiplied by
 //! `scale` (doc/retiming.md (eq. 13)).
@@ -46,12 +47,14 @@ struct Run {
 };
 
 //! The fastest parameterisation of one run on the grid under the DISP limits in σ and the joint
-//! limits at `scale` (reachability.hpp; doc/retiming.md (eq. 14–16)).
+//! limits at `scale` (reachability.hpp; doc/retiming.md (eq. 14–16)). The admissible polygon of
+//! every interval under the DISP limits and the joint limits at both its ends, and the joint speeds'
+//! cap on σ̇² at every grid point, are built once: a solve copies the polygons and clips them only
+//! by its own caps (the jerk-limited search solves the same run hundreds of times).
 class RunProblem {
  public:
   RunProblem(const SmoothParameter& smooth, const std::vector<GridPoint>& grid, const JointBounds& bounds, double scale,
-             Run run)
-      : smooth_(smooth), grid_(grid), bounds_(bounds), scale_(scale), run_(run) {}
+             Run run);
 
   const SmoothParameter& smooth() const noexcept { return smooth_; }
   const std::vector<GridPoint>& grid() const noexcept { return grid_; }
@@ -60,9 +63,9 @@ class RunProblem {
   double start() const noexcept { return grid_[run_.first].sigma; }
   double end() const noexcept { return grid_[run_.first + run_.count].sigma; }
 
-  //! Solves the run. With a jerk limit, `reach` > 0 widens every speed cap (the DISP velocity-limit
+  //! Solves the run. With a jerk limit, `reach` > 0 lowers every speed cap (the DISP velocity-limit
   //! curve and the joint speeds) to its minimum over ±reach around the interval, and a
-  //! `run_acceleration` > 0 replaces the acceleration cap: the moving average then keeps them
+  //! `run_acceleration` > 0 lowers the acceleration cap to it: the moving average then keeps them
   //! (doc/retiming.md (eq. 22)). `run_speed` caps σ̇ throughout. Throws std::runtime_error naming
   //! the path interval where no speed keeps the limits.
   Parameterisation solve(double reach, double run_acceleration,
@@ -71,10 +74,10 @@ class RunProblem {
  private:
   const SmoothParameter& smooth_;
   const std::vector<GridPoint>& grid_;
-  const JointBounds& bounds_;
-  double scale_;
   Run run_;
-  mutable std::vector<HalfPlane> at_start_, at_end_;  // scratch of solve()
+  std::vector<GridInterval> admissible_;       // per interval: the DISP and joint limits, no run caps
+  std::vector<double> speed_cap_;              // per grid point of the run: joint_speed_cap
+  mutable std::vector<GridInterval> clipped_;  // solve()'s copy of admissible_, clipped
 };
 
 }  // namespace dispkin::detail

@@ -57,8 +57,10 @@ void require_valid(const OptimalRetimeOptions& options, int dof) {
 // 2), the joints followed from q_start; the runs' index ranges in `runs`.
 std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth, const JointModel& model,
                                           const OptimalRetimeOptions& options, const Eigen::VectorXd& q_start,
-                                          std::vector<detail::Run>& runs) {
+                                          const JointBounds& bounds, std::vector<detail::Run>& runs) {
   const std::vector<double>& rests = smooth.rests();
+  // The torque coefficients (two inverse-dynamics passes a point) only where an effort limit is kept.
+  const bool torques = bounds.effort.array().isFinite().any();
   std::vector<detail::GridPoint> grid;
   Eigen::VectorXd q_ref = q_start, guess;
   for (std::size_t r = 0; r + 1 < rests.size(); ++r) {
@@ -76,7 +78,7 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
         const double step = sigma - previous->sigma;
         guess = previous->q + step * previous->q1 + (0.5 * step * step) * previous->q2;
       }
-      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr));
+      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr, torques));
       q_ref = grid.back().q;
     }
   }
@@ -210,7 +212,7 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   const JointBounds bounds = model.bounds(options);
 
   std::vector<detail::Run> runs;
-  const std::vector<detail::GridPoint> grid = joint_grid(smooth, model, options, q_start, runs);
+  const std::vector<detail::GridPoint> grid = joint_grid(smooth, model, options, q_start, bounds, runs);
   require_holding_possible(grid, bounds, model, smooth);
 
   OptimalRetimeResult result;

@@ -8,37 +8,64 @@ namespace dispkin::detail {
 
 ConvexPolygon::ConvexPolygon(double u_bound, double x_bound)
     : vertices_{{-u_bound, 0.0}, {u_bound, 0.0}, {u_bound, x_bound}, {-u_bound, x_bound}},
-      tolerance_(1e-12 * (u_bound + x_bound)) {}
+      tolerance_(1e-12 * (u_bound + x_bound)) {
+  vertices_.reserve(reserved_vertices);
+  scratch_.reserve(reserved_vertices);
+}
+
+ConvexPolygon::ConvexPolygon(const ConvexPolygon& other)
+    : tolerance_(other.tolerance_), deduplicated_(other.deduplicated_) {
+  vertices_.reserve(std::max(reserved_vertices, other.vertices_.size()));
+  vertices_.assign(other.vertices_.begin(), other.vertices_.end());
+  scratch_.reserve(std::max(reserved_vertices, other.vertices_.size() + 1));
+}
+
+ConvexPolygon& ConvexPolygon::operator=(const ConvexPolygon& other) {
+  vertices_.assign(other.vertices_.begin(), other.vertices_.end());
+  tolerance_ = other.tolerance_;
+  deduplicated_ = other.deduplicated_;
+  return *this;
+}
 
 void ConvexPolygon::clip(const HalfPlane& h) {
   // Sutherland–Hodgman against one half-plane. A vertex on the line within rounding counts as
   // inside, so that clipping by a·u + b·x ≤ c and by its reverse leaves the segment on the line.
+  // The kept vertices go into the scratch buffer, which then becomes the polygon: both keep their
+  // capacity, so a polygon allocates only while it grows.
   const double scale = std::abs(h.a) + std::abs(h.b) + std::abs(h.c);
   const double slack = tolerance_ * std::max(1.0, scale);
-  std::vector<Eigen::Vector2d> kept;
-  kept.reserve(vertices_.size() + 1);
   const std::size_t n = vertices_.size();
+  // Most limits do not cut a polygon that is already clipped (its repeated vertices dropped):
+  // then it stays as it is, as the full pass below would leave it.
+  if (deduplicated_ && std::all_of(vertices_.begin(), vertices_.end(),
+                                   [&](const Eigen::Vector2d& v) { return h.a * v.x() + h.b * v.y() - h.c <= slack; }))
+    return;
+  std::vector<Eigen::Vector2d>& kept = scratch_;
+  kept.clear();
+  auto side = [&h](const Eigen::Vector2d& v) { return h.a * v.x() + h.b * v.y() - h.c; };
+  const double f_first = n ? side(vertices_.front()) : 0.0;
+  double fp = f_first;  // each vertex's side evaluated once, carried to the next edge
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
-    const Eigen::Vector2d& q = vertices_[(k + 1) % n];
-    const double fp = h.a * p.x() + h.b * p.y() - h.c;
-    const double fq = h.a * q.x() + h.b * q.y() - h.c;
+    const Eigen::Vector2d& q = vertices_[k + 1 == n ? 0 : k + 1];
+    const double fq = k + 1 == n ? f_first : side(q);
     const bool p_in = fp <= slack, q_in = fq <= slack;
     if (p_in) kept.push_back(p);
     if (p_in != q_in && fp != fq) {
       const double t = fp / (fp - fq);
       kept.push_back(p + t * (q - p));
     }
+    fp = fq;
   }
-  // Drop repeated vertices (clipping a degenerate polygon creates them).
-  std::vector<Eigen::Vector2d> unique;
-  unique.reserve(kept.size());
-  for (const Eigen::Vector2d& v : kept) {
-    if (unique.empty() || (v - unique.back()).lpNorm<Eigen::Infinity>() > tolerance_) unique.push_back(v);
+  // Drop repeated vertices (clipping a degenerate polygon creates them), in place.
+  std::size_t unique = 0;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    if (unique == 0 || (kept[k] - kept[unique - 1]).lpNorm<Eigen::Infinity>() > tolerance_) kept[unique++] = kept[k];
   }
-  while (unique.size() > 1 && (unique.front() - unique.back()).lpNorm<Eigen::Infinity>() <= tolerance_)
-    unique.pop_back();
-  vertices_ = std::move(unique);
+  while (unique > 1 && (kept.front() - kept[unique - 1]).lpNorm<Eigen::Infinity>() <= tolerance_) --unique;
+  kept.resize(unique);
+  vertices_.swap(kept);
+  deduplicated_ = true;
 }
 
 void ConvexPolygon::x_range(double& lo, double& hi) const noexcept {
@@ -54,7 +81,7 @@ bool ConvexPolygon::largest_u_at(double x, double& u) const noexcept {
   const std::size_t n = vertices_.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& p = vertices_[k];
-    const Eigen::Vector2d& q = vertices_[(k + 1) % n];
+    const Eigen::Vector2d& q = vertices_[k + 1 == n ? 0 : k + 1];
     double candidate;
     if (std::abs(p.y() - x) <= tolerance_) {
       candidate = p.x();
@@ -70,6 +97,10 @@ bool ConvexPolygon::largest_u_at(double x, double& u) const noexcept {
 }
 
 Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, double x_start, double x_end) {
+  return fastest_parameterisation_clipping(intervals, x_start, x_end);
+}
+
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start, double x_end) {
   const std::size_t n = intervals.size();
   Parameterisation result;
   std::vector<double> lo(n + 1), hi(n + 1);

@@ -32,6 +32,13 @@ class ConvexPolygon {
  public:
   //! The box |u| ≤ u_bound, 0 ≤ x ≤ x_bound.
   ConvexPolygon(double u_bound, double x_bound);
+  //! A copy with room to be clipped further without allocating.
+  ConvexPolygon(const ConvexPolygon& other);
+  ConvexPolygon(ConvexPolygon&&) noexcept = default;
+  //! The vertices and tolerance only, into the storage this polygon has (no allocation once it
+  //! has held as many vertices).
+  ConvexPolygon& operator=(const ConvexPolygon& other);
+  ConvexPolygon& operator=(ConvexPolygon&&) noexcept = default;
   //! Keeps the part with a·u + b·x ≤ c (up to a rounding tolerance relative to the box).
   void clip(const HalfPlane& h);
   bool empty() const noexcept { return vertices_.empty(); }
@@ -41,8 +48,13 @@ class ConvexPolygon {
   bool largest_u_at(double x, double& u) const noexcept;
 
  private:
+  // Room for the vertices a polygon usually reaches (4 of the box and one per binding limit),
+  // so that clipping does not allocate.
+  static constexpr std::size_t reserved_vertices = 16;
   std::vector<Eigen::Vector2d> vertices_;  // (u, x)
+  std::vector<Eigen::Vector2d> scratch_;   // clip()'s output, swapped in
   double tolerance_;
+  bool deduplicated_ = false;  // clipped at least once: no repeated vertices
 };
 
 //! One interval of the grid: its length Δ_i > 0 and its admissible polygon P_i in (u_i, x_i).
@@ -61,5 +73,8 @@ struct Parameterisation {
 
 //! The fastest parameterisation from x_start to x_end over `intervals` (see the file comment).
 Parameterisation fastest_parameterisation(std::vector<GridInterval> intervals, double x_start, double x_end);
+
+//! The same on the caller's intervals, whose polygons it clips to the controllable sets (no copy).
+Parameterisation fastest_parameterisation_clipping(std::vector<GridInterval>& intervals, double x_start, double x_end);
 
 }  // namespace dispkin::detail

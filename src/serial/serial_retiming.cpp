@@ -92,19 +92,20 @@ bool acceleration_continuous(const Trajectory& trajectory, double t0, double t1)
 }
 
 // What the joints at a trajectory sample are solved with: q_ref with the parameter's value θ(s),
-// and θ̇ = θ′ ṡ, θ̈ = θ″ ṡ² + θ′ s̈ (doc/inverse-kinematics.md eq. 48); q_ref and zero rates where
-// the parameter is held.
+// and θ̇ = θ′ ṡ, θ̈ = θ″ ṡ² + θ′ s̈ (doc/inverse-kinematics.md eq. 48); q_ref itself (not a copy)
+// and zero rates where the parameter is held.
 struct ParameterAt {
-  Eigen::VectorXd reference;
+  const Eigen::VectorXd& reference;
   detail::ParameterRates rates;
 };
 
+// `moved` holds the reference where the parameter moves.
 ParameterAt parameter_at(const detail::RedundancySchedule& schedule, const TrajectorySample& here,
-                         const Eigen::VectorXd& q_ref) {
+                         const Eigen::VectorXd& q_ref, Eigen::VectorXd& moved) {
   if (!schedule.moves()) return {q_ref, {}};
   const detail::RedundancySchedule::State theta = schedule.at(here.s);
-  return {schedule.reference(q_ref, theta.value),
-          {theta.rate * here.s_dot, theta.curvature * here.s_dot * here.s_dot + theta.rate * here.s_ddot}};
+  moved = schedule.reference(q_ref, theta.value);
+  return {moved, {theta.rate * here.s_dot, theta.curvature * here.s_dot * here.s_dot + theta.rate * here.s_ddot}};
 }
 
 }  // namespace
@@ -124,7 +125,7 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
   report.samples.reserve(times.size());
   const double duration = trajectory.duration();
   const double h = options.difference_step;
-  Eigen::VectorXd q_prev = q_start, guess;
+  Eigen::VectorXd q_prev = q_start, guess, moved, moved_before, moved_after;
   for (std::size_t k = 0; k < times.size(); ++k) {
     const double t = times[k];
     const TrajectorySample here = trajectory.sample(t);
@@ -138,22 +139,23 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
       const double dt = t - previous->time;
       guess = q_prev + dt * previous->qd + (0.5 * dt * dt) * previous->qdd;
     }
-    const ParameterAt parameter = parameter_at(schedule, here, q_prev);
+    const ParameterAt parameter = parameter_at(schedule, here, q_prev, moved);
     sample.q = branch_solution(arm, here.pose, parameter.reference, t, here.s, previous ? &guess : nullptr);
     const double t_before = std::max(0.0, t - h), t_after = std::min(duration, t + h);
     if (t - h >= 0.0 && t + h <= duration && acceleration_continuous(trajectory, t_before, t_after)) {
-      // q̇ and q̈ from one factorisation of J_b (doc/retiming.md eq. 27), τ and g(q) on the pass that gave J_b.
-      Eigen::VectorXd torque;
+      // q̇ and q̈ from one factorisation of J_b (doc/retiming.md eq. 27), τ and g(q) on the pass that gave J_b;
+      // τ − g(q) formed in place.
       detail::joint_rates_and_torques(arm, sample.q, here.body_twist, body_acceleration(trajectory, t), t, here.s,
-                                      sample.qd, sample.qdd, torque, sample.static_torque, parameter.rates);
-      sample.dynamic_torque = torque - sample.static_torque;
+                                      sample.qd, sample.qdd, sample.dynamic_torque, sample.static_torque,
+                                      parameter.rates);
+      sample.dynamic_torque -= sample.static_torque;
     } else {
       sample.qd = joint_velocity(arm, sample.q, here.body_twist, t, here.s, parameter.rates.rate);
       // q̈ by central differences of the Jacobian velocities (one-sided at the ends).
       if (t_after > t_before) {
         const TrajectorySample before = trajectory.sample(t_before), after = trajectory.sample(t_after);
-        const ParameterAt at_before = parameter_at(schedule, before, sample.q);
-        const ParameterAt at_after = parameter_at(schedule, after, sample.q);
+        const ParameterAt at_before = parameter_at(schedule, before, sample.q, moved_before);
+        const ParameterAt at_after = parameter_at(schedule, after, sample.q, moved_after);
         // Predicted to first order, so that Newton needs a single step.
         const Eigen::VectorXd guess_before = sample.q - (t - t_before) * sample.qd;
         const Eigen::VectorXd guess_after = sample.q + (t_after - t) * sample.qd;
@@ -168,9 +170,8 @@ JointLimitReport check_joint_limits(const Trajectory& trajectory, const SerialAr
         sample.qdd = Eigen::VectorXd::Zero(sample.q.size());
       }
       // τ and g(q) in one pass (doc/retiming.md eq. 3).
-      Eigen::VectorXd torque;
-      arm.torques(sample.q, sample.qd, sample.qdd, torque, sample.static_torque);
-      sample.dynamic_torque = torque - sample.static_torque;
+      arm.torques(sample.q, sample.qd, sample.qdd, sample.dynamic_torque, sample.static_torque);
+      sample.dynamic_torque -= sample.static_torque;
     }
 
     add_sample(report, std::move(sample), arm, limits, here.s);

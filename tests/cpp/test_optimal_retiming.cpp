@@ -3,6 +3,8 @@
 
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <random>
 
 #include <dispkin/hexapod/hexapod.hpp>
 #include <dispkin/hexapod/hexapod_retiming.hpp>
@@ -63,6 +65,46 @@ TEST(Reachability, SlowsDownOnlyWhereALimitBinds) {
                                             {0.1, detail::ConvexPolygon(1.0, 1.0)}};
   blocked[1].admissible.clip({0.0, -1.0, -0.5});  // x ≥ 0.5: it could never stop at the end
   EXPECT_EQ(detail::fastest_parameterisation(blocked, 0.0, 0.0).infeasible_interval, 1);
+}
+
+// A run's solves clip the polygons of the joint limits, built once, by their own caps afterwards
+// (RunProblem): the order of the clips must not change the set. A wide box cut by limits and then
+// by the caps has the x range and the largest u of the caps' box cut by the same limits, to
+// rounding; a limit that does not cut leaves a clipped polygon exactly as it was.
+TEST(Reachability, ClippingInAnotherOrderGivesTheSamePolygon) {
+  const std::vector<detail::HalfPlane> limits{
+      {0.3, 1.0, 0.8}, {-0.5, 1.0, 0.7}, {1.0, 0.2, 1.1}, {-1.0, 0.1, 0.9}, {0.0, 1.0, 0.95}};
+  const double cap_u = 0.6, cap_x = 0.9;
+  detail::ConvexPolygon caps_first(cap_u, cap_x), limits_first(2.0, 1.5);
+  for (const detail::HalfPlane& h : limits) {
+    caps_first.clip(h);
+    limits_first.clip(h);
+  }
+  for (const detail::HalfPlane& h :
+       {detail::HalfPlane{1.0, 0.0, cap_u}, detail::HalfPlane{-1.0, 0.0, cap_u}, detail::HalfPlane{0.0, 1.0, cap_x}})
+    limits_first.clip(h);
+  double lo_a, hi_a, lo_b, hi_b;
+  caps_first.x_range(lo_a, hi_a);
+  limits_first.x_range(lo_b, hi_b);
+  EXPECT_NEAR(lo_a, lo_b, 1e-14);
+  EXPECT_NEAR(hi_a, hi_b, 1e-14);
+  EXPECT_LT(hi_a, cap_x);  // a limit binds below the cap: the test compares cut polygons
+  for (double x = lo_a; x <= hi_a; x += (hi_a - lo_a) / 16) {
+    double u_a, u_b;
+    ASSERT_TRUE(caps_first.largest_u_at(x, u_a));
+    ASSERT_TRUE(limits_first.largest_u_at(x, u_b));
+    EXPECT_NEAR(u_a, u_b, 1e-14) << "at x = " << x;
+  }
+  // Not cutting: the same polygon, bit for bit.
+  detail::ConvexPolygon same = caps_first;
+  same.clip({0.0, 1.0, 10.0});
+  double lo_c, hi_c, u_c, u_a;
+  same.x_range(lo_c, hi_c);
+  EXPECT_EQ(lo_c, lo_a);
+  EXPECT_EQ(hi_c, hi_a);
+  ASSERT_TRUE(same.largest_u_at(0.5 * (lo_a + hi_a), u_c));
+  ASSERT_TRUE(caps_first.largest_u_at(0.5 * (lo_a + hi_a), u_a));
+  EXPECT_EQ(u_c, u_a);
 }
 
 using testing::lin_move;
@@ -377,6 +419,53 @@ TEST(JerkFilter, MovingAverageOfATrapezoidIsTheSCurve) {
   const ProfileState last = jerk_law_at(phases, end);
   EXPECT_NEAR(last.s, distance, 1e-15);
   EXPECT_NEAR(last.v, 0.0, 1e-15);
+}
+
+// The smallest window's bisection reuses one scan of the steps for every window within its steady
+// range. On random step laws it must return the window of the same bisection whose every step
+// test enumerates the pairs of steps that meet, |u_P − u_Q| for each interval P of t and Q of
+// t − T (before and after the law: u = 0) that overlap for a time: bit for bit.
+TEST(JerkFilter, SmallestWindowIsTheBisectionOfThePairsThatMeet) {
+  std::mt19937_64 engine(20261204);
+  std::uniform_real_distribution<double> duration(0.005, 0.1), acceleration(-2.0, 2.0), jerk(5.0, 200.0);
+  for (int law_index = 0; law_index < 200; ++law_index) {
+    detail::AccelerationSteps steps;
+    const int n = 3 + law_index % 20;
+    steps.time.push_back(0.0);
+    for (int i = 0; i < n; ++i) {
+      steps.acceleration.push_back(acceleration(engine));
+      steps.time.push_back(steps.time.back() + duration(engine));
+    }
+    const double j = jerk(engine);
+    double largest = 0.0;
+    for (const double u : steps.acceleration) largest = std::max(largest, std::abs(u));
+    const double upper = 2.0 * largest / j;
+    // The intervals of u, with u = 0 before and after the law.
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> lo{-inf}, hi{0.0}, value{0.0};
+    for (int i = 0; i < n; ++i) {
+      lo.push_back(steps.time[i]);
+      hi.push_back(steps.time[i + 1]);
+      value.push_back(steps.acceleration[i]);
+    }
+    lo.push_back(steps.time.back());
+    hi.push_back(inf);
+    value.push_back(0.0);
+    auto within = [&](double window) {
+      for (std::size_t p = 0; p < lo.size(); ++p)
+        for (std::size_t q = 0; q < lo.size(); ++q)
+          if (std::max(lo[p], lo[q] + window) < std::min(hi[p], hi[q] + window) &&
+              !(std::abs(value[p] - value[q]) <= j * window))
+            return false;
+      return true;
+    };
+    double a = 0.0, b = upper;
+    while (b - a > 1e-9 * upper) {
+      const double mid = 0.5 * (a + b);
+      (within(mid) ? b : a) = mid;
+    }
+    ASSERT_EQ(detail::smallest_window(steps, j, upper), b) << "law " << law_index;
+  }
 }
 
 // Without a cruise the acceleration steps from +a to −a: a window shorter than the acceleration
