@@ -13,6 +13,7 @@ debian_packages=(
   liburdfdom-dev         # URDF parsing (serial-arm plugin)
   libtinyxml-dev         # urdfdom's XML parser: the URDF joint graph is checked first
   liborocos-kdl-dev      # chains, Jacobians, dynamics (serial-arm plugin)
+  libsleef-dev           # vectorised atan2 of the closed-form IK (serial-arm plugin)
   libgtest-dev           # C++ tests
   libbenchmark-dev       # C++ benchmarks
   doxygen                # `make docs`: the C++ API reference (doc/api/Doxyfile)

@@ -101,7 +101,6 @@ struct ShoulderTurn {
   FastStep step = FastStep::general;
   std::array<CosSin, 2> q1{};     //!< for the labels plus and minus
   std::array<double, 2> reach{};  //!< u: the x coordinate of e₁⁻¹ W in link 1's frame
-  std::array<double, 2> angle{};  //!< q₁ (one arctangent for both where b = 0: they differ by π)
 };
 
 inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noexcept {
@@ -123,9 +122,13 @@ inline ShoulderTurn shoulder_turn(const Eigen::Vector3d& w, double lateral) noex
     out.q1[l] = {(w.x() * u + w.y() * lateral) * inverse, (w.y() * u - w.x() * lateral) * inverse};
     out.reach[l] = u;
   }
-  out.angle[1] = out.q1[1].angle();
-  out.angle[0] = lateral == 0.0 ? half_turn(out.angle[1]) : out.q1[0].angle();
   return out;
+}
+
+//! q₁ of both labels of an exact shoulder turn (one arctangent where b = 0: they differ by π).
+inline std::array<double, 2> shoulder_angles(const ShoulderTurn& turn, double lateral) noexcept {
+  const double minus = turn.q1[1].angle();
+  return {{lateral == 0.0 ? half_turn(minus) : turn.q1[0].angle(), minus}};
 }
 
 //! The two-link elbow of the arm plane (doc/inverse-kinematics.md eq. 31): axis 2 at p₂, axis 3 (along σ₃ y) at p₃, the
@@ -166,7 +169,7 @@ inline PlaneElbow plane_elbow(const RevoluteChain& chain, const ArmFrame& frame,
 struct ElbowTurn {
   FastStep step = FastStep::general;
   std::array<CosSin, 2> q3{};
-  std::array<double, 2> angle{};  //!< φ ± arccos x: one arctangent for both labels
+  CosSin half;  //!< arccos x in [0, π] as (x, √(1 − x²)): q₃ = φ ± arccos x, one arctangent for both labels
 };
 
 inline ElbowTurn elbow_turn(const PlaneElbow& e, const PlaneVector& w) noexcept {
@@ -183,10 +186,13 @@ inline ElbowTurn elbow_turn(const PlaneElbow& e, const PlaneVector& w) noexcept 
   const CosSin& p = e.phase;
   out.q3[0] = {p.c * x - p.s * sd, p.s * x + p.c * sd};
   out.q3[1] = {p.c * x + p.s * sd, p.s * x - p.c * sd};
-  const double half = CosSin{x, sd}.angle();  // arccos x in [0, π]
-  out.angle[0] = wrap_angle(e.phase_angle + half);
-  out.angle[1] = wrap_angle(e.phase_angle - half);
+  out.half = {x, sd};
   return out;
+}
+
+//! q₃ = φ ± arccos x of the labels plus and minus, from the angle of ElbowTurn::half.
+inline std::array<double, 2> elbow_angles(const PlaneElbow& e, double half) noexcept {
+  return {{wrap_angle(e.phase_angle + half), wrap_angle(e.phase_angle - half)}};
 }
 
 //! The joint-3 turn as a plane rotation: R(σ₃ q₃).

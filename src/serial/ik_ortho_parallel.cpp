@@ -3,8 +3,9 @@
 // (ik_closed_form.cpp, doc/inverse-kinematics.md eq. 11) solves the same subproblems with rotations about general axes;
 // here the positioning stage is the plane problem of doc/inverse-kinematics.md eqs. 30–32 on per-chain constants and
 // the wrist reads its angles off two target vectors in the wrist's own basis (doc/inverse-kinematics.md eqs. 33–34), so
-// a pose costs a few hundred multiplications, six square roots and twenty arctangents for its eight solutions.
-// doc/inverse-kinematics.md §10.
+// a pose costs a few hundred multiplications, six square roots and twenty arctangents (taken in one batch) for its
+// eight solutions. doc/inverse-kinematics.md §10.
+#include "angle_batch.hpp"
 #include "ik_arm_frame.hpp"
 
 namespace dispkin {
@@ -51,7 +52,6 @@ bool make_ortho_parallel(const RevoluteChain& chain, const Eigen::Vector3d& cent
 }
 
 bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolutionSet& out) {
-  const int start = out.count;
   // The pose in the arm frame: W = G c (doc/inverse-kinematics.md eq. 30) and the target's wrist axes R_G ω₆, R_G ω₅.
   const Eigen::Matrix3d into_arm = arm.frame.to_arm * pose.rotation();
   const Eigen::Vector3d w = into_arm * arm.centre_in_tip + arm.frame.point(pose.translation());
@@ -61,16 +61,20 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
   if (shoulder.step != FastStep::exact) return shoulder.step == FastStep::none;
   const PlaneElbow& elbow = arm.elbow;
   const double b = arm.lateral;
+  // Every joint as cosine and sine first, all twenty arctangents of the pose in one batch after
+  // the last check (angle_batch.hpp). Slots: q₁ of both labels, arccos x of both elbows, then
+  // q₂, q₄, q₅, q₆ of each branch (l₁, l₃).
+  std::array<CosSin, 20> turns{};
+  std::array<bool, 4> branch{};
+  const auto slot = [](std::size_t l1, std::size_t l3) { return 4 + 4 * (2 * l1 + l3); };
   for (std::size_t l1 = 0; l1 < 2; ++l1) {
     const CosSin q1 = shoulder.q1[l1];
+    turns[l1] = q1;
     const PlaneVector target{w.z(), shoulder.reach[l1]};  // e₁⁻¹ W in the arm plane
     const ElbowTurn q3s = elbow_turn(elbow, target);
     if (q3s.step == FastStep::none) continue;
-    if (q3s.step == FastStep::general) {
-      out.count = start;
-      return false;
-    }
-    const double q1_angle = shoulder.angle[l1];
+    if (q3s.step == FastStep::general) return false;
+    turns[2 + l1] = q3s.half;
     const Eigen::Vector3d h6 = unturn1(q1, g6), h5 = unturn1(q1, g5);
     const PlaneVector to_target = target - elbow.p2;
     for (std::size_t l3 = 0; l3 < 2; ++l3) {
@@ -85,30 +89,34 @@ bool ortho_parallel_inverse(const OrthoParallel& arm, const Posed& pose, IkSolut
       const double rx = q1.c * placed.eta - q1.s * b - w.x();
       const double ry = q1.s * placed.eta + q1.c * b - w.y();
       const double rz = placed.xi - w.z();
-      if (!(rx * rx + ry * ry + rz * rz <= exact_position * exact_position)) {
-        out.count = start;
-        return false;
-      }
+      if (!(rx * rx + ry * ry + rz * rz <= exact_position * exact_position)) return false;
       // The wrist (doc/inverse-kinematics.md eq. 33): a = R_w ω₆ and v = R_w ω₅ in the basis (ω₄, ω₅, ω₄ × ω₅), R_w =
       // (R₁R₂R₃)ᵀ R_G.
       const CosSin q23 = add(q2, plane_turn3(elbow, q3));
       const Eigen::Vector3d a = arm.wrist_rows * unturn_y(q23, h6);
       const Eigen::Vector3d v = arm.wrist_rows * unturn_y(q23, h5);
       const double gamma2 = a.y() * a.y() + a.z() * a.z();
-      if (!(gamma2 >=
-            well_inside * a.squaredNorm())) {  // subproblem 2's margin sin² q₅ (doc/inverse-kinematics.md eq. 26)
-        out.count = start;
-        return false;
-      }
+      // Subproblem 2's margin sin² q₅ (doc/inverse-kinematics.md eq. 26).
+      if (!(gamma2 >= well_inside * a.squaredNorm())) return false;
       const double gamma = std::sqrt(gamma2);
-      const double q4 = CosSin{a.z(), -a.y()}.angle();
-      const double q5 = CosSin{arm.sign6 * a.x(), -arm.sign6 * gamma}.angle();
-      const double q6 =
-          CosSin{a.z() * v.y() - a.y() * v.z(), a.x() * (a.y() * v.y() + a.z() * v.z()) - gamma2 * v.x()}.angle();
-      const double q2_angle = q2.angle();
-      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], q4, q5, q6});
-      push_exact(out, {q1_angle, q2_angle, q3s.angle[l3], half_turn(q4), -q5,
-                       half_turn(q6)});  // doc/inverse-kinematics.md eq. 27
+      CosSin* q = &turns[slot(l1, l3)];
+      q[0] = q2;
+      q[1] = {a.z(), -a.y()};
+      q[2] = {arm.sign6 * a.x(), -arm.sign6 * gamma};
+      q[3] = {a.z() * v.y() - a.y() * v.z(), a.x() * (a.y() * v.y() + a.z() * v.z()) - gamma2 * v.x()};
+      branch[2 * l1 + l3] = true;
+    }
+  }
+  std::array<double, 20> angle{};
+  angles_of(turns.data(), turns.size(), angle.data());
+  for (std::size_t l1 = 0; l1 < 2; ++l1) {
+    const std::array<double, 2> q3 = elbow_angles(elbow, angle[2 + l1]);
+    for (std::size_t l3 = 0; l3 < 2; ++l3) {
+      if (!branch[2 * l1 + l3]) continue;
+      const double* q = &angle[slot(l1, l3)];
+      push_exact(out, {angle[l1], q[0], q3[l3], q[1], q[2], q[3]});
+      // The wrist flip (doc/inverse-kinematics.md eq. 27).
+      push_exact(out, {angle[l1], q[0], q3[l3], half_turn(q[1]), -q[2], half_turn(q[3])});
     }
   }
   return true;

@@ -64,9 +64,10 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
   // q₁: ω₂ · e₁⁻¹ G c = ω₂ · c (doc/inverse-kinematics.md eq. 30).
   const ShoulderTurn shoulder = shoulder_turn(w, arm.lateral);
   if (shoulder.step != FastStep::exact) return shoulder.step == FastStep::none;
+  const std::array<double, 2> q1_angles = shoulder_angles(shoulder, arm.lateral);
   for (std::size_t l1 = 0; l1 < 2; ++l1) {
     const CosSin q1 = shoulder.q1[l1];
-    const double q1_angle = shoulder.angle[l1];
+    const double q1_angle = q1_angles[l1];
     // q₅: ω₂ · R₅ ω₆ = (R₁ ω₂) · R_G ω₆ (subproblem 4, doc/inverse-kinematics.md eq. 12).
     const double x = (q1.c * g6.y() - q1.s * g6.x() - arm.q5_offset) / arm.q5_r;
     const double margin5 = 1.0 - std::abs(x);
@@ -105,10 +106,11 @@ bool three_parallel_plane_inverse(const ThreeParallelPlane& arm, const Posed& po
       if (q3s.step == FastStep::none) continue;
       if (q3s.step == FastStep::general) return general();
       const PlaneVector to_target = target - elbow.p2;
+      const std::array<double, 2> q3_angles = elbow_angles(elbow, q3s.half.angle());
       for (std::size_t l3 = 0; l3 < 2; ++l3) {
         const PlaneVector reach = elbow_reach(elbow, q3s.q3[l3]);
         const double q2 = CosSin{dot(reach, to_target), cross(reach, to_target)}.angle();
-        const double q3 = q3s.angle[l3];
+        const double q3 = q3_angles[l3];
         // R₂R₃R₄ = R_H about y: q₂ + σ₃q₃ + σ₄q₄ = θ_H.
         const double q4 = arm.sign4 * (theta_h - q2 - elbow.sign3 * q3);
         push_exact(out, {q1_angle, q2, q3, q4, q5_angle, q6_angle});

@@ -12,6 +12,7 @@
 #include <Eigen/SVD>
 #include <gtest/gtest.h>
 
+#include "angle_batch.hpp"
 #include "dispkin/serial/analytic_ik.hpp"
 #include "ik_internal.hpp"
 #include "ik_recovery_bound.hpp"
@@ -230,6 +231,27 @@ TEST(IkArmFrame, ShoulderAndElbowSingularitiesAgree) {
 
 // The geometry cached for the last chain holds constants of its tip: a chain that differs only
 // in its tip must not be solved with them.
+// The batched arctangents (angle_batch.hpp) are atan2 within SLEEF's 3.5 ulp: on the axes and
+// the signed zeros (atan2's conventions: ±π at (−1, ±0)), on pairs not of unit length, and on
+// random pairs; for an even count and an odd one (its last pair alone), nothing written past n.
+TEST(IkArmFrame, BatchedAnglesAreAtan2) {
+  std::vector<detail::CosSin> pairs = {{1.0, 0.0},  {0.0, 1.0}, {-1.0, 0.0},    {0.0, -1.0},   {-1.0, -0.0},
+                                       {1.0, -0.0}, {3.0, 3.0}, {-2e-3, -1e-3}, {-1.0, 1e-300}};
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> angle(-pi, pi);
+  for (int i = 0; i < 41; ++i) {
+    const double a = angle(random);
+    pairs.push_back({std::cos(a), std::sin(a)});
+  }
+  for (const std::size_t n : {pairs.size(), pairs.size() - 1}) {
+    std::vector<double> out(n + 1, 42.0);
+    detail::angles_of(pairs.data(), n, out.data());
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_NEAR(out[i], std::atan2(pairs[i].s, pairs[i].c), 3.5 * 4.5e-16) << "pair " << i;
+    EXPECT_EQ(out[n], 42.0);
+  }
+}
+
 TEST(IkArmFrame, AnalysedChainCacheKnowsTheTip) {
   const RevoluteChain a = testing::kuka_kr6_r900();
   RevoluteChain b = a;

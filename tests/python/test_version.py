@@ -52,6 +52,7 @@ def test_package_xml_is_a_ros2_cmake_package_of_this_version():
         "urdfdom": "urdfdom",
         "TinyXML": "tinyxml",
         "OrocosKDL": "liborocos-kdl-dev",
+        "SLEEF": "libsleef-dev",
     }
     for cmake_name, key in needed.items():
         assert f"dispkin_find_dependency({cmake_name} " in cmake, cmake_name

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The repaired wheel as a newcomer with only Python gets it: installed with pip into a fresh
 # venv, then, in a mount namespace where the system's copies of the libraries it bundles
-# (Qhull, urdfdom, console_bridge, TinyXML, Orocos KDL) are hidden under empty files, the
+# (Qhull, urdfdom, console_bridge, TinyXML, Orocos KDL, SLEEF) are hidden under empty files, the
 # Python snippets of the README and the user guide run from an empty directory, and `dispkin plan` plans an example job.
 #   tests/wheel/run_wheel_test.sh WHEEL_DIR WORK_DIR
 # Needs root (or CAP_SYS_ADMIN) for `unshare -m`; fails if it cannot hide the libraries.
@@ -19,7 +19,7 @@ wheel=${wheels[0]}
 echo "wheel test: $(basename "$wheel") ($(du -k "$wheel" | cut -f1) KiB)"
 
 # The libraries auditwheel must have put inside (dispkin.libs/, names with a hash).
-bundled=(libqhull_r liburdfdom_model libconsole_bridge libtinyxml liborocos-kdl)
+bundled=(libqhull_r liburdfdom_model libconsole_bridge libtinyxml liborocos-kdl libsleef)
 contents=$("$python" -m zipfile -l "$wheel")
 for lib in "${bundled[@]}"; do
   grep -q "dispkin.libs/$lib-" <<<"$contents" || { echo "wheel test: $lib is not bundled in the wheel" >&2; exit 1; }

@@ -308,12 +308,17 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     metric_set = builder.metric_set(job)
     pilz = read_limits_files(builder, job, metric_set)  # before the moves: they keep the arm's limits
     start = builder.start(job)
-    path_, moves, parts = builder.moves(job, start)
+    # Before the moves: a run that moves the redundancy parameter before a PTP move is planned as
+    # it is read (MoveSequence.planned_end).
     limits, profile = builder.limits(pilz)
     read_retime(builder, job)
-    builder.moved_redundancy(job, parts)
-    read_events(builder, job, parts)
+    builder.moved_redundancy(job)
     job["corner_tolerance"] = builder.corner_tolerance()
+    builder.run_planning = dict(
+        metric_set=metric_set, limits=limits, profile=profile, corner_tolerance=job["corner_tolerance"]
+    )
+    path_, moves, parts = builder.moves(job, start)
+    read_events(builder, job, parts)
     builder.output(job, safe_name)
     return Job(
         file=source.path,

@@ -78,6 +78,10 @@ class Part:
     q_start: Optional[np.ndarray]
     #: Indices of its moves in Job.moves.
     moves: List[int]
+    #: A Cartesian run planned while the job was built (its Trajectory): a run that moves a
+    #: seven-joint arm's redundancy parameter before a PTP move, whose start is where θ(s) of the
+    #: planned path ends (doc/inverse-kinematics.md §14); None: planned with the job.
+    trajectory: Optional[Any] = None
 
 
 @dataclasses.dataclass

@@ -5,12 +5,15 @@ job builder (:mod:`.builder`), whose ``fail``, ``call``, ``call_section`` and po
 
 import dataclasses
 import functools
+import types
 from typing import Any, Callable, Dict, List, NamedTuple, Optional, Tuple
 
 import numpy as np
 
+from .. import _core
 from .._core import Path, Pose
 from .model import KeyPath, Move, Part, value_at
+from .planning import plan_run
 
 #: The smallest blend_weight: the blend's ends lie at this share of each move from the corner,
 #: and within 1e-6 of a section's end they snap to it (a rotation-vector blend then has nothing
@@ -55,6 +58,10 @@ class MoveSequence:
     call_section: Any
     pose: Any
     relative_end: Any
+    #: What a Cartesian run is planned under (metric_set, limits, profile, corner_tolerance; set
+    #: before the moves are read): a run that moves the redundancy parameter before a PTP move is
+    #: planned as it is read.
+    run_planning: Dict[str, Any]
 
     def start(self, job: Dict[str, Any]) -> Pose:
         """start, or the machine's own start: a hexapod's home, the arm's pose at q_start."""
@@ -127,7 +134,7 @@ class MoveSequence:
                 at + ("blend",),
                 f"{blend}: a PTP move starts and ends at rest; it does not blend with the previous move",
             )
-        self.close_run(job, moves)
+        self.close_run(job, moves, before_ptp=True)
         q_a, q_b, end = self.ptp(job, at, moves.current, moves.q_current)
         path = self.call(at + ("ptp",), Path.ptp, q_a, q_b)
         moves.built.append(Move("ptp", path, None))
@@ -193,9 +200,10 @@ class MoveSequence:
         end = self.pose(at + ("spline", "to"), job["frames"])
         return Path.spline, ([current, *through, end], job["pivot"]), end
 
-    def close_run(self, job: Dict[str, Any], moves: _Moves) -> None:
+    def close_run(self, job: Dict[str, Any], moves: _Moves, before_ptp: bool = False) -> None:
         """The Cartesian moves since the last PTP move joined (and blended) into one Path, a part;
-        on an arm, the joints at its end are the branch followed along its geometry."""
+        on an arm, the joints at its end are the branch followed along its geometry. Before a PTP
+        move with the redundancy parameter moved, they are where the planned run ends (planned_end)."""
         run = moves.run
         if not run:
             return
@@ -229,26 +237,38 @@ class MoveSequence:
             # The parameter as the followers take it: held, or moved by the same rule.
             moved = job.get("redundancy_rule") is not None
             moves.q_current = self.call(("moves", run[-1].index), arm.follow, poses, q_run, move_redundancy=moved)[-1]
+            if moved and before_ptp:
+                moves.q_current = self.planned_end(job, moves.parts[-1], first.index)
         run.clear()
 
-    def moved_redundancy(self, job: Dict[str, Any], parts: List[Part]) -> None:
+    def planned_end(self, job: Dict[str, Any], part: Part, first: int) -> np.ndarray:
+        """The joints where a run that moves the redundancy parameter ends: θ(s) lives on the
+        planned path (its sections and lengths, doc/inverse-kinematics.md eqs. 49–50), so the run is
+        planned now, as plan_job would plan it (and then takes this plan), and followed as the
+        samples follow it (FollowedTrajectory.from_start). The PTP move after it starts there."""
+        settings = dict(self.run_planning, arm=job["arm"], redundancy_rule=job["redundancy_rule"])
+        settings.update(retime=job.get("retime"), hexapod=None, joint_metric=False)
+        at: KeyPath = ("moves", first)
+        part.trajectory = self.call(at, plan_run, types.SimpleNamespace(**settings), part.path, part.q_start)
+        followed = self.call(
+            at,
+            _core.FollowedTrajectory.from_start,
+            part.trajectory,
+            job["arm"],
+            part.q_start,
+            redundancy_rule=job["redundancy_rule"],
+        )
+        return np.asarray(followed.end, dtype=float)
+
+    def moved_redundancy(self, job: Dict[str, Any]) -> None:
         """``redundancy: moved`` where the followers can take it: the optimal re-timing holds the
-        parameter, and a PTP move after a Cartesian run would start from joints the run reaches
-        only once planned (doc/inverse-kinematics.md §14)."""
+        parameter (doc/inverse-kinematics.md §14)."""
         if job.get("redundancy_rule") is None:
             return
         at = ("machine", "serial_arm", "redundancy")
         retime = job.get("retime")
         if retime is not None and retime.method == "optimal":
             raise self.fail(at, "moved: not with retime method optimal (its grid holds the parameter); use scaling")
-        kinds = [part.kind for part in parts]
-        for k, part in enumerate(parts):
-            if part.kind == "ptp" and "path" in kinds[:k]:
-                raise self.fail(
-                    ("moves", part.moves[0], "ptp"),
-                    "a PTP move after a Cartesian move with `redundancy: moved`: its start joints are the run's "
-                    "end, known only once the run is planned; use `redundancy: q_start`",
-                )
 
     def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
         """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the

@@ -74,7 +74,7 @@ class JobTrajectory:
         return self._gather(t, "path_position", ()) + self._start_s[self.part_indices(t)]
 
 
-def _plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory:
+def plan_run(job: Job, path: Path, q_start: Optional[np.ndarray]) -> Trajectory:
     """A Cartesian run planned under the DISP limits, then re-timed to the joint limits if the
     job asks (dispkin.retime: the arm from the joints at the run's start, or the hexapod)."""
     if job.retime is None:
@@ -110,7 +110,7 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     applied in time order. A job with PTP moves is planned part by part (a JobTrajectory):
     each Cartesian run as one path, each PTP move on the arm (within its joint velocity limits)."""
     if not job.has_ptp:
-        planned = _planned(job, job.parts[0] if job.parts else None, lambda: _plan_run(job, job.path, job.q_start))
+        planned = _planned(job, job.parts[0] if job.parts else None, lambda: plan_run(job, job.path, job.q_start))
         return apply_events(job, planned)
     planned = []
     for part in job.parts:
@@ -123,8 +123,11 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
                     ),
                 )
             )
+        elif part.trajectory is not None:
+            # A run planned while the job was built (MoveSequence.planned_end) keeps that plan.
+            planned.append((part, part.trajectory))
         else:
-            planned.append((part, _planned(job, part, lambda: _plan_run(job, part.path, part.q_start))))
+            planned.append((part, _planned(job, part, lambda: plan_run(job, part.path, part.q_start))))
     return JobTrajectory(planned)
 
 
