@@ -84,10 +84,7 @@ bool goes_on(const Section& last, const Section& next) {
   }
   if (const auto* a = std::get_if<SlerpBlendSection>(&last)) {
     const auto* b = std::get_if<SlerpBlendSection>(&next);
-    return b && a->v1 == b->v0 && detail::same_bits(a->q_start.coeffs().data(), b->q_start.coeffs().data(), 4) &&
-           detail::same_bits(a->a.data(), b->a.data(), 3) && detail::same_bits(a->b.data(), b->b.data(), 3) &&
-           detail::same_bits(a->position.a[0].data(), b->position.a[0].data(), 12) &&
-           detail::same_bits(a->pivot.data(), b->pivot.data(), 3);
+    return b && a->v1 == b->v0 && a->same_blend(*b);
   }
   return false;
 }

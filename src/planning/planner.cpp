@@ -32,11 +32,7 @@ bool continues(const CurveSection& before, const CurveSection& after) {
   return before.v1 == after.v0 && detail::same_curve(before.q0, before.position, before.rotation, before.pivot, after);
 }
 bool continues(const SlerpBlendSection& before, const SlerpBlendSection& after) {
-  return before.v1 == after.v0 && detail::same_bits(before.q_start.coeffs().data(), after.q_start.coeffs().data(), 4) &&
-         detail::same_bits(before.a.data(), after.a.data(), 3) &&
-         detail::same_bits(before.b.data(), after.b.data(), 3) &&
-         detail::same_bits(before.position.a[0].data(), after.position.a[0].data(), 12) &&
-         detail::same_bits(before.pivot.data(), after.pivot.data(), 3);
+  return before.v1 == after.v0 && before.same_blend(after);
 }
 bool continues(const ArcSection& before, const ArcSection& after) {
   return before.center == after.center && before.normal == after.normal && before.angle == after.angle &&

@@ -148,6 +148,14 @@ struct SlerpBlendSection {
   //! v1 − v0: dv/dτ.
   double span() const noexcept { return v1 - v0; }
 
+  //! Whether `other` is a part of the same blend: the same coefficients, bit for bit.
+  bool same_blend(const SlerpBlendSection& other) const noexcept {
+    return detail::same_bits(q_start.coeffs().data(), other.q_start.coeffs().data(), 4) &&
+           detail::same_bits(a.data(), other.a.data(), 3) && detail::same_bits(b.data(), other.b.data(), 3) &&
+           detail::same_bits(position.a[0].data(), other.position.a[0].data(), 12) &&
+           detail::same_bits(pivot.data(), other.pivot.data(), 3);
+  }
+
   //! The pose at τ ∈ [0, 1].
   Posed pose(double tau) const noexcept {
     Posed p;
