@@ -70,6 +70,13 @@ inline Section section_part(const Section& section, double t0, double t1) {
       section);
 }
 
+//! The curve parameter at τ of a curve or nested-SLERP section as the planner cuts it:
+//! v₀ + τ h, and the section's own v₁ at τ = 1 (so that the last part ends where the section does).
+template <class Curve>
+double cut_parameter(const Curve& curve, double tau) {
+  return tau >= 1.0 ? curve.v1 : curve.v0 + tau * curve.span();
+}
+
 //! The part τ ∈ [t0, t1] of a section as the planner cuts it (doc/planning.md §9): the section
 //! itself when whole; else as section_part, but with the section's own ends at τ = 0 and 1 (a
 //! LIN's poses, a curve's v₁), so that the part that ends a section ends where the section does,
@@ -85,8 +92,8 @@ inline Section planned_part(const Section& section, double t0, double t1) {
           return detail::section_part(section, t0, t1);
         } else {
           T part = s;
-          part.v0 = s.v0 + t0 * s.span();
-          part.v1 = t1 >= 1.0 ? s.v1 : s.v0 + t1 * s.span();
+          part.v0 = cut_parameter(s, t0);
+          part.v1 = cut_parameter(s, t1);
           return part;
         }
       },

@@ -59,7 +59,7 @@ void SectionMotions::append(const Section& section, std::size_t k, double t0, do
   // Curves and blends: the part's curve parameter as the planner's cut gives it (doc/planning.md
   // eq. 40), so that a part samples as the section cut from it would.
   const auto curve_part = [&](const auto& curve, Kind kind) {
-    const double h = curve.span(), v0 = curve.v0 + t0 * h, v1 = t1 >= 1.0 ? curve.v1 : curve.v0 + t1 * h;
+    const double v0 = detail::cut_parameter(curve, t0), v1 = detail::cut_parameter(curve, t1);
     entries_.push_back({kind, k, v0, v1 - v0});
   };
   if (const auto* curve = std::get_if<CurveSection>(&section)) return curve_part(*curve, Kind::curve);
@@ -89,47 +89,27 @@ bool goes_on(const Section& last, const Section& next) {
   return false;
 }
 
-// The curve parameter v of a curve section (or blend) at its τ, as the planner's cut takes it.
-template <class Curve>
-double curve_v(const Curve& c, double tau) {
-  return tau >= 1.0 ? c.v1 : c.v0 + tau * c.span();
-}
-
-// τ of the part of `merged` where its curve parameter is v.
-double merged_tau(const Section& merged, double v) {
+// τ of the run `into` (the longer part of its curve that `given` was kept in) where `given` is
+// at τ: the run's own end where both end together.
+double tau_in_run(const Section& given, const Section& into, double tau) {
   return std::visit(
-      [v](const auto& c) -> double {
+      [&](const auto& c) -> double {
         using T = std::decay_t<decltype(c)>;
         if constexpr (std::is_same_v<T, CurveSection> || std::is_same_v<T, SlerpBlendSection>) {
-          return std::clamp((v - c.v0) / c.span(), 0.0, 1.0);
+          const T& run = std::get<T>(into);
+          if (tau >= 1.0 && c.v1 == run.v1) return 1.0;
+          return std::clamp((detail::cut_parameter(c, tau) - run.v0) / run.span(), 0.0, 1.0);
         } else {
-          return v;
+          return tau;  // only curves are kept in runs
         }
       },
-      merged);
+      given);
 }
 
-double part_v(const Section& section, double tau) {
-  return std::visit(
-      [tau](const auto& c) -> double {
-        using T = std::decay_t<decltype(c)>;
-        if constexpr (std::is_same_v<T, CurveSection> || std::is_same_v<T, SlerpBlendSection>) {
-          return curve_v(c, tau);
-        } else {
-          return tau;
-        }
-      },
-      section);
-}
-
-void extend_to(Section& merged, const Section& next) {
-  std::visit(
-      [&](auto& c) {
-        using T = std::decay_t<decltype(c)>;
-        if constexpr (std::is_same_v<T, CurveSection> || std::is_same_v<T, SlerpBlendSection>)
-          c.v1 = std::get<T>(next).v1;
-      },
-      merged);
+// `run` taken on to where `next`, the next part of its curve, ends.
+void extend_to(Section& run, const Section& next) {
+  if (auto* curve = std::get_if<CurveSection>(&run)) curve->v1 = std::get<CurveSection>(next).v1;
+  if (auto* blend = std::get_if<SlerpBlendSection>(&run)) blend->v1 = std::get<SlerpBlendSection>(next).v1;
 }
 
 }  // namespace
@@ -170,13 +150,14 @@ SampledPath::SampledPath(std::vector<Section> sections, std::vector<SectionSourc
     parts_.resize(n);
     for (std::size_t k = 0; k < n; ++k) parts_[k] = {k, 0.0, 1.0};
   }
+  const auto in_run = [&](std::size_t i) {
+    return (i > 0 && kept[i - 1] == kept[i]) || (i + 1 < kept.size() && kept[i + 1] == kept[i]);
+  };
   for (SectionSource& p : parts_) {
-    const Section& given = sections[p.section];
-    const Section& into = sections_[kept[p.section]];
-    if (!(part_v(given, 0.0) == part_v(into, 0.0) && part_v(given, 1.0) == part_v(into, 1.0))) {
-      const bool ends_run = p.tau_end >= 1.0 && part_v(given, 1.0) == part_v(into, 1.0);
-      p.tau_start = merged_tau(into, part_v(given, p.tau_start));
-      p.tau_end = ends_run ? 1.0 : merged_tau(into, part_v(given, p.tau_end));
+    if (in_run(p.section)) {
+      const Section &given = sections[p.section], &into = sections_[kept[p.section]];
+      p.tau_start = tau_in_run(given, into, p.tau_start);
+      p.tau_end = tau_in_run(given, into, p.tau_end);
     }
     p.section = kept[p.section];
   }

@@ -38,14 +38,6 @@ DecoupledSpeeds::DecoupledSpeeds(const LinSection& lin, const GroupFactors& fact
   omega_world_ = theta_ * w_hat_;
   drift_ = omega_world_.cross(delta_c_);
   along_world_ = delta_c_.dot(w_hat_);
-  motion_ = LineMotion(TurningFrame(qa, w_hat_, theta_, lin.pivot), pivot_start_, delta_c_);
-}
-
-Posed DecoupledSpeeds::pose(double t) const noexcept {
-  Posed at;
-  Twistd twist;
-  motion_.at(t, at, twist);
-  return at;
 }
 
 Eigen::Vector3d DecoupledSpeeds::across_at(double t) const noexcept {

@@ -30,9 +30,6 @@ class DecoupledSpeeds {
   //! The range over τ ∈ [t0, t1] ⊂ [0, 1].
   SpeedRange range(double t0, double t1) const noexcept;
 
-  //! The LIN's pose at τ by its closed form (one sine/cosine pair; the ends of a part).
-  Posed pose(double t) const noexcept;
-
  private:
   // Δc⊥ seen from the body at τ (doc/planning.md eq. 27), remembered for the last two τ asked.
   Eigen::Vector3d across_at(double t) const noexcept;
@@ -47,7 +44,6 @@ class DecoupledSpeeds {
   // World view of absolute objects: g(τ) = Δc + Ω_w × (x − c₀) − τ Ω_w × Δc (doc/planning.md eq. 30).
   Eigen::Vector3d delta_c_, omega_world_, w_hat_, pivot_start_, drift_;
   double along_world_ = 0.0;
-  LineMotion motion_;
   struct TurnMemo {
     double t;
     Eigen::Vector3d across;

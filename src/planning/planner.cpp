@@ -145,14 +145,15 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
     }
     return std::min(max_split, std::ceil(loss));
   };
+  // The refined bounds of the part [t0, t1].
   const auto measure = [&](double t0, double t1) {
     Curve part = curve;
-    part.v0 = curve.v0 + t0 * curve.span();
-    part.v1 = t1 >= 1.0 ? curve.v1 : curve.v0 + t1 * curve.span();
-    return std::make_pair(part, part.refined(factors));
+    part.v0 = detail::cut_parameter(curve, t0);
+    part.v1 = detail::cut_parameter(curve, t1);
+    return part.refined(factors);
   };
   std::size_t count = 1;  // parts emitted or promised
-  const auto cut = [&](const auto& self, double t0, double t1, const Curve& part, const RefinedBounds& r) -> void {
+  const auto cut = [&](const auto& self, double t0, double t1, const RefinedBounds& r) -> void {
     const double parts = parts_wanted(t0, t1, r);
     if (!(parts > 1.0) || count + static_cast<std::size_t>(parts) - 1 > max_parts) {
       out.push_back({source, t0, t1}, r.bounds);
@@ -161,11 +162,10 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
     count += static_cast<std::size_t>(parts) - 1;
     for (double i = 0; i < parts; ++i) {
       const double a = t0 + (t1 - t0) * i / parts, b = i + 1.0 >= parts ? t1 : t0 + (t1 - t0) * (i + 1.0) / parts;
-      const auto [sub, bounds] = measure(a, b);
-      self(self, a, b, sub, bounds);
+      self(self, a, b, measure(a, b));
     }
   };
-  cut(cut, 0.0, 1.0, curve, curve.refined(factors));
+  cut(cut, 0.0, 1.0, curve.refined(factors));
 }
 
 // Appends `section` to `out`; a decoupled LIN cut into pieces until the fastest object's speed

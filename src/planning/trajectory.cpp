@@ -28,6 +28,7 @@ void require_sections(const SampledPath& path) {
   for (std::size_t i = 0; i < sections.size(); ++i) require_valid(sections[i], [i] { return indexed("sections", i); });
   Posed end, start;
   Twistd twist;
+  const bool parts = !path.parts().empty();
   for (std::size_t k = 0; k < lengths.size(); ++k) {
     const double L = lengths[k];
     require_lazily(
@@ -39,7 +40,6 @@ void require_sections(const SampledPath& path) {
     path.section_state_at(k - 1, 1.0, end, twist);
     path.section_state_at(k, 0.0, start, twist);
     // Named by the section it starts, or by the part when it starts inside one.
-    const bool parts = !path.parts().empty();
     require_join(end, start, [&] {
       return (!parts                   ? indexed("sections", k)
               : after.tau_start == 0.0 ? indexed("sections", after.section)
