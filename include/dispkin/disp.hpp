@@ -328,6 +328,29 @@ Scalar disp_distance(const MetricSet<Scalar>& set, const Pose<Scalar>& a, const 
 
 namespace detail {
 
+// q·v·q̄ with exactly the operations of Eigen's Quaternion * Vector3 — u = 2 (q_v × v), then
+// v + w u + q_v × u — so with the same rounding, written out in scalars and always inlined: a
+// decoupled section's set-up is a handful of rotations, and GCC keeps Eigen's cross products
+// out of line in a large translation unit.
+template <typename Scalar>
+EIGEN_ALWAYS_INLINE Eigen::Matrix<Scalar, 3, 1> rotate(const Eigen::Quaternion<Scalar>& q,
+                                                       const Eigen::Matrix<Scalar, 3, 1>& v) noexcept {
+  const Scalar x = q.x(), y = q.y(), z = q.z(), w = q.w();
+  Scalar ux = y * v.z() - z * v.y(), uy = z * v.x() - x * v.z(), uz = x * v.y() - y * v.x();
+  ux += ux;
+  uy += uy;
+  uz += uz;
+  return Eigen::Matrix<Scalar, 3, 1>(v.x() + w * ux + (y * uz - z * uy), v.y() + w * uy + (z * ux - x * uz),
+                                     v.z() + w * uz + (x * uy - y * ux));
+}
+
+// q̄·v·q: world to body coordinates (the conjugate's sign flips are exact).
+template <typename Scalar>
+EIGEN_ALWAYS_INLINE Eigen::Matrix<Scalar, 3, 1> rotate_back(const Eigen::Quaternion<Scalar>& q,
+                                                            const Eigen::Matrix<Scalar, 3, 1>& v) noexcept {
+  return rotate(Eigen::Quaternion<Scalar>(q.w(), -q.x(), -q.y(), -q.z()), v);
+}
+
 // A decoupled section, precomputed once for all objects: the pivot travels Δc (world) while
 // the orientation turns by θ about k (body coordinates of a) — ω per unit τ is Ω = θ k.
 template <typename Scalar>
@@ -335,7 +358,7 @@ struct DecoupledSection {
   using Vector3 = Eigen::Matrix<Scalar, 3, 1>;
 
   DecoupledSection(const Pose<Scalar>& a, const Pose<Scalar>& b, const Vector3& pivot) noexcept
-      : DecoupledSection(a.quaternion(), b.quaternion(), a * pivot, b * pivot - a * pivot,
+      : DecoupledSection(a.quaternion(), b.quaternion(), pivot_at(a, pivot), pivot_at(b, pivot) - pivot_at(a, pivot),
                          quaternion_log(Eigen::Quaternion<Scalar>(a.quaternion().conjugate() * b.quaternion())),
                          pivot) {}
 
@@ -344,14 +367,15 @@ struct DecoupledSection {
   // in [0, π]).
   DecoupledSection(const Eigen::Quaternion<Scalar>& qa, const Eigen::Quaternion<Scalar>& qb, const Vector3& ca,
                    const Vector3& travel, const Vector3& rotation, const Vector3& pivot) noexcept {
+    q_a = qa;
     delta_c = travel;
     omega = rotation;
     theta = omega.norm();
     k = theta > Scalar(0) ? Vector3(omega / theta) : Vector3::UnitZ();
     pivot_body = pivot;
     // Body-frame views of Δc at both ends (Rb = Ra·exp(θk), so they differ by a turn about k).
-    d_a = qa.conjugate() * delta_c;
-    d_b = qb.conjugate() * delta_c;
+    d_a = rotate_back(qa, delta_c);
+    d_b = rotate_back(qb, delta_c);
     along = d_a.dot(k);
     d_a_across = d_a - along * k;
     d_b_across = d_b - along * k;
@@ -360,9 +384,6 @@ struct DecoupledSection {
     // direction of ω × (r − p) (θ ≤ π): there the speed peaks between the ends.
     m_a = d_a.cross(omega);
     m_b = omega.cross(d_b);
-    // World view for absolute points: g(τ) = Δc + θ ŵ × (x − c(τ)), affine in τ.
-    omega_world = qa * omega;
-    w_hat = qa * k;
     pivot_start = ca;
   }
 
@@ -371,47 +392,51 @@ struct DecoupledSection {
   // them the speed peaks at along² + (across + ‖q‖)² when the arc swept by the direction of q
   // contains that of Δc⊥ (q·m_a ≥ 0 and q·m_b ≥ 0).
   Scalar relative_points_speed2(const PointColumns<Scalar>& points) const noexcept {
-    const Scalar* xs = points.x().data();
-    const Scalar* ys = points.y().data();
-    const Scalar* zs = points.z().data();
-    Scalar ends2(0);
-    Scalar inside_q2(-1);  // the peak grows with ‖q‖: keep the largest ‖q‖² with the peak inside
-    // A plain loop in blocks: GCC vectorises a floating max reduction only under -ffast-math
-    // (and an Eigen array expression with select measured 2.5× slower in bench_disp's
-    // section_length_cloud/decoupled),
-    // so each block writes its points' values to buffers in a loop it vectorises and the maxima
-    // are taken after, in the same order as one loop would.
-    constexpr std::size_t block = 16;
-    Scalar end2_of[block], q2_of[block];
+    const std::size_t n = points.size();
+    if (n == 0) return Scalar(0);
+    // Four points at a time in fixed-size arrays, which Eigen evaluates in SIMD packets (GCC
+    // vectorises neither a floating max reduction nor a select without -ffast-math); each lane
+    // keeps its own maxima, and the maxima are exact whatever the order they are taken in.
+    using Lanes = Eigen::Array<Scalar, 4, 1>;
     const Scalar px = pivot_body.x(), py = pivot_body.y(), pz = pivot_body.z();
     const Scalar ox = omega.x(), oy = omega.y(), oz = omega.z();
     const Scalar dax = d_a.x(), day = d_a.y(), daz = d_a.z(), dbx = d_b.x(), dby = d_b.y(), dbz = d_b.z();
     const Scalar max_ = m_a.x(), may = m_a.y(), maz = m_a.z(), mbx = m_b.x(), mby = m_b.y(), mbz = m_b.z();
-    for (std::size_t first = 0; first < points.size(); first += block) {
-      const std::size_t n = std::min(block, points.size() - first);
-      for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t i = first + j;
-        const Scalar rx = xs[i] - px, ry = ys[i] - py, rz = zs[i] - pz;
-        const Scalar qx = oy * rz - oz * ry;
-        const Scalar qy = oz * rx - ox * rz;
-        const Scalar qz = ox * ry - oy * rx;
-        const Scalar ax = dax + qx, ay = day + qy, az = daz + qz;
-        const Scalar bx = dbx + qx, by = dby + qy, bz = dbz + qz;
-        const Scalar a2 = ax * ax + ay * ay + az * az, b2 = bx * bx + by * by + bz * bz;
-        end2_of[j] = a2 < b2 ? b2 : a2;  // std::max(a2, b2)
-        const bool inside =
-            (qx * max_ + qy * may + qz * maz >= Scalar(0)) & (qx * mbx + qy * mby + qz * mbz >= Scalar(0));
-        q2_of[j] = inside ? qx * qx + qy * qy + qz * qz : Scalar(-1);
+    Lanes ends2 = Lanes::Zero();
+    Lanes inside_q2 = Lanes::Constant(Scalar(-1));  // the peak grows with ‖q‖: the largest ‖q‖² inside
+    const auto four_points = [&](const Lanes& x, const Lanes& y, const Lanes& z) {
+      const Lanes rx = x - px, ry = y - py, rz = z - pz;
+      const Lanes qx = oy * rz - oz * ry;
+      const Lanes qy = oz * rx - ox * rz;
+      const Lanes qz = ox * ry - oy * rx;
+      const Lanes ax = dax + qx, ay = day + qy, az = daz + qz;
+      const Lanes bx = dbx + qx, by = dby + qy, bz = dbz + qz;
+      ends2 = ends2.max((ax * ax + ay * ay + az * az).max(bx * bx + by * by + bz * bz));
+      const Lanes q2 = qx * qx + qy * qy + qz * qz;
+      const Lanes on_arc = (qx * max_ + qy * may + qz * maz).min(qx * mbx + qy * mby + qz * mbz);
+      inside_q2 = inside_q2.max((on_arc >= Scalar(0)).select(q2, Scalar(-1)));
+    };
+    const Scalar* xs = points.x().data();
+    const Scalar* ys = points.y().data();
+    const Scalar* zs = points.z().data();
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4)
+      four_points(Eigen::Map<const Lanes>(xs + i), Eigen::Map<const Lanes>(ys + i), Eigen::Map<const Lanes>(zs + i));
+    if (i < n) {
+      Lanes x, y, z;
+      for (Eigen::Index j = 0; j < 4; ++j) {
+        const std::size_t at = std::min(i + static_cast<std::size_t>(j), n - 1);  // a point twice: same maxima
+        x[j] = xs[at];
+        y[j] = ys[at];
+        z[j] = zs[at];
       }
-      for (std::size_t j = 0; j < n; ++j) {
-        ends2 = std::max(ends2, end2_of[j]);
-        inside_q2 = std::max(inside_q2, q2_of[j]);
-      }
+      four_points(x, y, z);
     }
-    if (inside_q2 < Scalar(0)) return ends2;
+    const Scalar end_max = ends2.maxCoeff(), q2_max = inside_q2.maxCoeff();
+    if (q2_max < Scalar(0)) return end_max;
     using std::sqrt;
-    const Scalar rim = across + sqrt(inside_q2);
-    return std::max(ends2, along * along + rim * rim);
+    const Scalar rim = across + sqrt(q2_max);
+    return std::max(end_max, along * along + rim * rim);
   }
 
   // Peak over τ of a relative sphere: the centre's velocity across k is maximised as for a
@@ -426,37 +451,55 @@ struct DecoupledSection {
     return sqrt(along * along + rim * rim);
   }
 
+  // World view for absolute objects: g(τ) = Δc + θ ŵ × (x − c(τ)), affine in τ; Ω_w = Ra Ω and
+  // ŵ = Ra k, made only for a group that has absolute objects.
+  struct World {
+    Vector3 omega, w_hat;
+  };
+  World world() const noexcept { return {rotate(q_a, omega), rotate(q_a, k)}; }
+
   // Absolute points: the apparent velocity g(τ) = Δc + Ω_w × (x − c(τ)) is affine in τ, so
   // the peak is at an end; at each end it is the speed of the twist (e, Ω_w) at x, with
   // e₀ = Δc − Ω_w × c_a and e₁ = e₀ − Ω_w × Δc.
-  Scalar absolute_points_speed2(const PointColumns<Scalar>& points) const noexcept {
-    const Vector3 e0 = delta_c - omega_world.cross(pivot_start);
-    const Vector3 e1 = e0 - omega_world.cross(delta_c);
-    return std::max(max_speed2(points, e0, omega_world), max_speed2(points, e1, omega_world));
+  Scalar absolute_points_speed2(const PointColumns<Scalar>& points, const World& world) const noexcept {
+    const Vector3 e0 = delta_c - world.omega.cross(pivot_start);
+    const Vector3 e1 = e0 - world.omega.cross(delta_c);
+    return std::max(max_speed2(points, e0, world.omega), max_speed2(points, e1, world.omega));
   }
 
-  Scalar absolute_sphere_speed(const Sphere<Scalar>& s) const noexcept {
+  Scalar absolute_sphere_speed(const Sphere<Scalar>& s, const World& world) const noexcept {
     using std::sqrt;
-    const Vector3 g0 = delta_c + omega_world.cross(s.center - pivot_start);
-    const Vector3 g1 = g0 - omega_world.cross(delta_c);
-    const Scalar along_w = delta_c.dot(w_hat);
-    const Scalar across_peak = std::max((g0 - g0.dot(w_hat) * w_hat).norm(), (g1 - g1.dot(w_hat) * w_hat).norm());
+    const Vector3 g0 = delta_c + world.omega.cross(s.center - pivot_start);
+    const Vector3 g1 = g0 - world.omega.cross(delta_c);
+    const Scalar along_w = delta_c.dot(world.w_hat);
+    const Scalar across_peak =
+        std::max((g0 - g0.dot(world.w_hat) * world.w_hat).norm(), (g1 - g1.dot(world.w_hat) * world.w_hat).norm());
     const Scalar rim = across_peak + theta * s.radius;
     return sqrt(along_w * along_w + rim * rim);
   }
 
-  Vector3 delta_c, omega, k, pivot_body, d_a, d_b, d_a_across, d_b_across, m_a, m_b, omega_world, w_hat, pivot_start;
+  Eigen::Quaternion<Scalar> q_a;
+  Vector3 delta_c, omega, k, pivot_body, d_a, d_b, d_a_across, d_b_across, m_a, m_b, pivot_start;
   Scalar theta, along, across;
+
+ private:
+  EIGEN_ALWAYS_INLINE static Vector3 pivot_at(const Pose<Scalar>& pose, const Vector3& pivot) noexcept {
+    return rotate(pose.quaternion(), pivot) + pose.translation();
+  }
 };
 
 template <typename Scalar>
 Scalar group_decoupled_length(const MetricGroup<Scalar>& g, const DecoupledSection<Scalar>& section) noexcept {
   using std::sqrt;
-  Scalar best = sqrt(
-      std::max(section.relative_points_speed2(g.relative_points), section.absolute_points_speed2(g.absolute_points)));
+  Scalar best2 = section.relative_points_speed2(g.relative_points);
+  Scalar best(0);
   for (const auto& s : g.relative_spheres) best = std::max(best, section.relative_sphere_speed(s));
-  for (const auto& s : g.absolute_spheres) best = std::max(best, section.absolute_sphere_speed(s));
-  return best;
+  if (!g.absolute_points.empty() || !g.absolute_spheres.empty()) {
+    const typename DecoupledSection<Scalar>::World world = section.world();
+    best2 = std::max(best2, section.absolute_points_speed2(g.absolute_points, world));
+    for (const auto& s : g.absolute_spheres) best = std::max(best, section.absolute_sphere_speed(s, world));
+  }
+  return std::max(best, sqrt(best2));
 }
 
 }  // namespace detail

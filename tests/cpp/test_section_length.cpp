@@ -166,5 +166,30 @@ TEST(SectionLength, DecoupledInterpolationIsLinAboutThePivot) {
   }
 }
 
+// The relative points are taken four at a time, the last lanes filled by repeating a point: the
+// peak over a set of any size is exactly the largest of its points' own peaks (each taken as four
+// copies, a full set of lanes), so no point is dropped or replaced by a filler that moves. The
+// points lie around a pivot far from the body origin, where a filler at the origin would be the
+// fastest point.
+TEST(SectionLength, DecoupledPointsPeakIsTheLargestOfTheirOwn) {
+  Random rnd(81);
+  for (int i = 0; i < 300; ++i) {
+    const Posed a = rnd.pose(0.5);
+    const Posed b = rnd.nearby(a, i % 5 == 0 ? 0.0 : rnd.uniform(0.0, 1.0), i % 7 == 0 ? 0.0 : rnd.uniform(0.0, 3.1));
+    const V pivot = V(0.3, 0.4, 0.5) + rnd.vector(0.1);
+    const detail::DecoupledSection<double> section(a, b, pivot);
+    PointColumns<double> all;
+    double largest = 0;
+    for (int n = 1 + i % 13; n > 0; --n) {
+      const V p = pivot + rnd.vector(0.05);
+      all.push_back(p);
+      PointColumns<double> copies;
+      for (int c = 0; c < 4; ++c) copies.push_back(p);
+      largest = std::max(largest, section.relative_points_speed2(copies));
+    }
+    ASSERT_EQ(section.relative_points_speed2(all), largest) << "case " << i << ", " << all.size() << " points";
+  }
+}
+
 }  // namespace
 }  // namespace dispkin
