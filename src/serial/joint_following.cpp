@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +18,7 @@
 #include "dispkin/error.hpp"
 #include "dispkin/serial/chain_kinematics.hpp"
 #include "dispkin/serial/ptp.hpp"
+#include "dispkin/serial/redundancy.hpp"
 
 namespace dispkin::serial {
 namespace detail {
@@ -30,7 +32,18 @@ Eigen::VectorXd branch_solution(const SerialArm& arm, const Posed& pose, const E
   rule.options.keep_outside_limits = true;  // reported as a position excursion, not hidden
   rule.turns = detail::Turns::nearest;
   std::optional<Eigen::VectorXd> q = detail::solution_on_branch(arm, pose, q_ref, rule, guess);
-  if (!q) throw std::runtime_error("the pose at " + where(t, s) + " has no inverse-kinematics solution");
+  if (!q) {
+    // A seven-joint arm is solved at one value of its parameter: say which, since another value
+    // (a RedundancyRule that moves it) may reach the pose.
+    const Redundancy& redundancy = arm.redundancy();
+    std::ostringstream at_value;
+    if (redundancy.has_parameter()) {
+      at_value.precision(12);
+      at_value << " with its redundancy parameter " << redundancy.joint_name << " at " << q_ref(redundancy.joint)
+               << " rad";
+    }
+    throw std::runtime_error("the pose at " + where(t, s) + " has no inverse-kinematics solution" + at_value.str());
+  }
   return std::move(*q);
 }
 

@@ -455,3 +455,32 @@ def test_a_random_7r_arm_solves_from_a_near_start_by_newton_first():
     assert np.abs(path[0] - q).max() <= 1e-9 and np.abs(np.diff(path, axis=0)).max() <= 0.05
     for pose, x in zip(poses, path):
         assert np.abs(arm.forward(x).matrix() - pose.matrix()).max() <= 1e-10
+
+
+def test_a_pose_out_of_reach_at_the_held_parameter_names_the_parameter():
+    """TIAGo's arm (example-robot-data) has its first joint as parameter: along this LIN the pose
+    leaves what the six other joints reach with arm_1_joint held at 0.5 (no solution there, even
+    outside the limits); the check says so, naming the parameter and its value, and the rule that
+    moves the parameter follows the same trajectory."""
+    from test_serial_arm import robots_dir
+
+    urdf = robots_dir() / "tiago_description" / "robots" / "tiago_no_hand.urdf"
+    a = dispkin.SerialArm.from_urdf(urdf.read_text(), "torso_lift_link", "arm_7_link")
+    assert a.redundancy.kind == "locked_joint" and a.redundancy.joint_name == "arm_1_joint"
+    q = np.array([0.5, 0.3, -1.0, 1.2, 0.1, 0.6, 0.2])
+    start = a.forward(q)
+    end = dispkin.Pose(start.quaternion, start.translation + np.array([0.05, 0.05, -0.05]))
+    tool = dispkin.MetricSet()
+    tool.add_relative(dispkin.shapes.icosahedron(0.05, [0, 0, 0.1]))
+    traj = dispkin.plan(dispkin.Path.lin(start, end), tool, dispkin.Limits(0.5, 5.0, 100.0))
+    with pytest.raises(
+        RuntimeError,
+        match=r"no inverse-kinematics solution with its redundancy parameter "
+        r"arm_1_joint at 0\.5 rad",
+    ) as raised:
+        dispkin.check_joint_limits(traj, a, q)
+    t = float(str(raised.value).split("the pose at t = ")[1].split(" s")[0])
+    pose = traj.sample([t])[0]
+    assert len(a.inverse_solutions(pose, keep_outside_limits=True, redundancy=0.5).solutions) == 0
+    report = dispkin.check_joint_limits(traj, a, q, redundancy_rule=dispkin.RedundancyRule())
+    np.testing.assert_allclose(report.samples["q"][0], q, atol=1e-9)
