@@ -260,16 +260,6 @@ class MoveSequence:
         )
         return np.asarray(followed.end, dtype=float)
 
-    def moved_redundancy(self, job: Dict[str, Any]) -> None:
-        """``redundancy: moved`` where the followers can take it: the optimal re-timing holds the
-        parameter (doc/inverse-kinematics.md §14)."""
-        if job.get("redundancy_rule") is None:
-            return
-        at = ("machine", "serial_arm", "redundancy")
-        retime = job.get("retime")
-        if retime is not None and retime.method == "optimal":
-            raise self.fail(at, "moved: not with retime method optimal (its grid holds the parameter); use scaling")
-
     def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
         """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the
         inverse-kinematics solution (within the limits) on its branch, the one nearest to it
