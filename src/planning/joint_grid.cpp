@@ -70,8 +70,8 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
       Posed pose;
       Twistd per_sigma, rate;
       path.state_in(k, sigma, pose, per_sigma, rate);
-      if (!model.joints_with_rate(pose, per_sigma, rate, p.q, &p.q, PathPlace{path.s_of(sigma), path.s_per_sigma(k)},
-                                  q, q1, q2))
+      if (!model.joints_with_rate(pose, per_sigma, rate, p.q, &p.q, PathPlace{path.s_of(sigma), path.s_per_sigma(k)}, q,
+                                  q1, q2))
         continue;
       p.q2_other.push_back(q2);
       if (!torques) continue;

@@ -422,8 +422,7 @@ TEST(OptimalRetiming, SevenJointsMoveTheParameterAsTheCheckSeesIt) {
 
   // Velocity and torque limits only, as the scaling loop keeps them.
   const OptimalRetimeResult plain = retime_optimal(path, tool(), fast, arm, q, {}, rule);
-  const RetimeResult scaled =
-      retime_by_scaling(path, tool(), fast, ProfileKind::trapezoid, arm, q, {}, 20, 0.0, rule);
+  const RetimeResult scaled = retime_by_scaling(path, tool(), fast, ProfileKind::trapezoid, arm, q, {}, 20, 0.0, rule);
   std::printf("  optimal %.4f s vs scaling %.4f s\n", plain.trajectory.duration(), scaled.trajectory.duration());
   EXPECT_LE(plain.trajectory.duration(), scaled.trajectory.duration());
 

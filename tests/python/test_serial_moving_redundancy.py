@@ -173,7 +173,14 @@ def test_bad_redundancy_rules_are_named(lin):
             dispkin.check_joint_limits(traj, a, q, redundancy_rule=rule)
         with pytest.raises(ValueError, match=f"redundancy_rule.{name}"):
             dispkin.retime(
-                path, tool, dispkin.Limits(1.5, 400.0), a, q, profile="trapezoid", method="optimal", redundancy_rule=rule
+                path,
+                tool,
+                dispkin.Limits(1.5, 400.0),
+                a,
+                q,
+                profile="trapezoid",
+                method="optimal",
+                redundancy_rule=rule,
             )
 
 

@@ -272,8 +272,8 @@ class JointModel {
   //! given q, q′ and q″ there, each as if taken at `place` — the values the limits between the
   //! grid points must allow for. None by default. (A seven-joint arm's moving parameter: θ″ steps
   //! at the nodes of doc/inverse-kinematics.md eq. 50.)
-  virtual void rate_steps(const Eigen::VectorXd& q, const Eigen::VectorXd& q2, const PathPlace& place,
-                          double s_before, double s_after, std::vector<Eigen::VectorXd>& q2_other) const;
+  virtual void rate_steps(const Eigen::VectorXd& q, const Eigen::VectorXd& q2, const PathPlace& place, double s_before,
+                          double s_after, std::vector<Eigen::VectorXd>& q2_other) const;
   //! Whether q″ may step between places (rate_steps), and q′ · ds/dσ with it at a section junction:
   //! then the re-timing keeps the limits there for q″ as each section gives it, not only for the
   //! central difference across the junction. False by default.
