@@ -158,8 +158,8 @@ JointCheckOptions check_options(int samples_between, double difference_step) {
 // How the followers take a seven-joint arm's redundancy parameter.
 void bind_redundancy_rule(py::module_& m) {
   py::class_<serial::RedundancyRule>(m, "RedundancyRule", R"doc(
-How the followers of a Cartesian trajectory (FollowedTrajectory, check_joint_limits, retime with
-method="scaling") take a seven-joint arm's redundancy parameter: RedundancyRule() moves it from
+How the followers of a Cartesian trajectory (FollowedTrajectory, check_joint_limits, retime by
+either method) take a seven-joint arm's redundancy parameter: RedundancyRule() moves it from
 q_start's value away from joint limits and singular poses, by the rule of SerialArm.follow per unit
 of path (doc/inverse-kinematics.md eqs. 45, 49); RedundancyRule.held() (what they use without one)
 keeps it at q_start's value.)doc")
@@ -346,11 +346,6 @@ void bind_retime_serial_arm(py::module_& m) {
         }
         if (method != "optimal")
           throw std::invalid_argument(describe("method", method, "must be \"scaling\" or \"optimal\""));
-        // The optimal grid solves the joints at a held parameter: a moving one is refused, not ignored.
-        if (rule.move)
-          throw std::invalid_argument("redundancy_rule: " + std::string(rule.move ? "move=True" : "") +
-                                      " is not supported by method=\"optimal\" (its grid holds the parameter at "
-                                      "q_start's value); use method=\"scaling\" or RedundancyRule.held()");
         limits.validate(kind);  // the S-curve needs a jerk limit, the trapezoid refuses one
         OptimalRetimeOptions options;
         options.grid_intervals = grid_intervals;
@@ -362,7 +357,7 @@ void bind_retime_serial_arm(py::module_& m) {
         OptimalRetimeResult result;
         {
           const UnlockedIf unlocked(true, path, set);
-          result = retime_optimal(path, set, limits, arm, q_start, options);
+          result = retime_optimal(path, set, limits, arm, q_start, options, rule);
         }
         return py::cast(std::move(result));
       },
@@ -371,19 +366,21 @@ void bind_retime_serial_arm(py::module_& m) {
       py::arg("max_iterations") = 20, py::arg("grid_intervals") = 100, py::arg("joint_acceleration") = py::none(),
       py::arg("torque_limits") = true, py::arg("corner_tolerance") = 0.0, py::kw_only(),
       py::arg("redundancy_rule") = py::none(),
-      "Re-time `path` so that the robot keeps its joint limits. `redundancy_rule` (a RedundancyRule, "
-      "method=\"scaling\" only): a seven-joint arm's parameter moved as check_joint_limits moves it; None: held."
-      "\n\n"
       "Re-time `path` so that the robot keeps its joint limits. `corner_tolerance` (m): the path's corners blended "
-      "first, as plan(..., corner_tolerance=) does (0: the path as given).\n\n"
+      "first, as plan(..., corner_tolerance=) does (0: the path as given). `redundancy_rule` (a RedundancyRule; "
+      "None: RedundancyRule.held()): a seven-joint arm's parameter along the path, for either method as "
+      "check_joint_limits(..., redundancy_rule=) takes it: RedundancyRule() moves it away from joint limits and "
+      "singular poses (doc/inverse-kinematics.md §14), the held rule keeps it at q_start's value.\n\n"
       "method=\"scaling\" (the KUKA re-timing patent's loop): plan, check_joint_limits, divide the velocity limit by "
-      "FVEL and the "
-      "acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a RetimeResult.\n"
+      "FVEL and the acceleration limit by FACC, re-plan until both are <= 1 at every checked sample; returns a "
+      "RetimeResult.\n"
       "method=\"optimal\": the fastest parameterisation under the DISP limits and the joint velocity limits, "
       "`joint_acceleration` ((dof,) array, optional) and the effort limits (if `torque_limits`) at once, over "
       "`grid_intervals` intervals of s, checked at `samples_between` points between characteristic points and "
       "re-solved with tightened limits up to `max_iterations` times if that check finds an overshoot; returns an "
-      "OptimalRetimeResult. With profile=\"trapezoid\" (limits without jerk) its laws are piecewise-constant "
+      "OptimalRetimeResult, whose report is that check. With a moving redundancy_rule its grid solves the joints "
+      "at the parameter's values along the planned path, their rates included (doc/inverse-kinematics.md eq. 51). "
+      "With profile=\"trapezoid\" (limits without jerk) its laws are piecewise-constant "
       "acceleration; with profile=\"scurve\" (limits with jerk) each rest-to-rest run is then averaged over a "
       "window (jerk_window) so that |s'''| <= jerk within every section, the speed caps tightened beforehand so "
       "that the DISP limits still hold.\n"

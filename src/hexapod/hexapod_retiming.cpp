@@ -60,8 +60,8 @@ class HexapodModel final : public JointModel {
   int dof() const override { return 6; }
   std::string joint_name(int k) const override { return "leg " + std::to_string(k + 1); }
   const char* position_unit() const override { return "m"; }
-  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd&, const Eigen::VectorXd*, double,
-              Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
+  void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd&, const Eigen::VectorXd*,
+              const PathPlace&, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
     q = hexapod_.leg_lengths(pose);
     q1 = hexapod_.leg_jacobian(pose) * per_sigma.vector();
   }

@@ -9,14 +9,33 @@
 
 namespace dispkin::detail {
 
-GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
-                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, bool torques) {
+namespace {
+
+// The other values of p.q2 near σ (JointModel::rate_steps) and the torque_x of each.
+void add_rate_steps(GridPoint& p, const SmoothParameter& path, const JointModel& model, const PathPlace& place,
+                    double spacing, double lo, double hi, bool torques) {
+  model.rate_steps(p.q, p.q2, place, path.s_of(std::max(lo, p.sigma - spacing)),
+                   path.s_of(std::min(hi, p.sigma + spacing)), p.q2_other);
+  if (!torques) return;
+  Eigen::VectorXd gravity, torque_u;
+  for (const Eigen::VectorXd& q2 : p.q2_other) {
+    p.torque_x_other.emplace_back();
+    model.torque_coefficients(p.q, p.q1, q2, gravity, torque_u, p.torque_x_other.back());
+  }
+}
+
+}  // namespace
+
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double spacing,
+                     double lo, double hi, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, bool torques) {
+  // The path position and ds/dσ at σ (the section's own, the later one at a junction).
+  auto place = [&](double at) { return PathPlace{path.s_of(at), path.s_per_sigma(path.section_at(at))}; };
   auto joint_path = [&](double at, const Eigen::VectorXd& reference, const Eigen::VectorXd* start, Eigen::VectorXd& q,
                         Eigen::VectorXd& q1) {
     Posed pose;
     Twistd per_sigma;
     path.state(at, pose, per_sigma);
-    model.joints(pose, per_sigma, reference, start, at, q, q1);
+    model.joints(pose, per_sigma, reference, start, place(at), q, q1);
   };
   GridPoint p;
   p.sigma = sigma;
@@ -26,8 +45,9 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
     Posed pose;
     Twistd per_sigma;
     path.state(sigma, pose, per_sigma);
-    if (model.joints_with_rate(pose, per_sigma, path.twist_rate(sigma), q_ref, guess, sigma, p.q, p.q1, p.q2)) {
+    if (model.joints_with_rate(pose, per_sigma, path.twist_rate(sigma), q_ref, guess, place(sigma), p.q, p.q1, p.q2)) {
       if (torques) model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+      add_rate_steps(p, path, model, place(sigma), spacing, lo, hi, torques);
       return p;
     }
   } else {
@@ -40,6 +60,25 @@ GridPoint grid_point(const SmoothParameter& path, const JointModel& model, doubl
   joint_path(after, p.q, &guess_after, q_after, q1_after);
   p.q2 = (q1_after - q1_before) / (after - before);
   if (torques) model.torque_coefficients(p.q, p.q1, p.q2, p.gravity, p.torque_u, p.torque_x);
+  add_rate_steps(p, path, model, place(sigma), spacing, lo, hi, torques);
+  const std::size_t k_before = path.section_at(before), k_after = path.section_at(after);
+  if (model.rates_step() && k_before != k_after) {
+    // A junction inside the run, where q″ of a moving redundancy parameter steps with ds/dσ
+    // (doc/inverse-kinematics.md eq. 51): the limits hold for either section's own q″ as well.
+    Eigen::VectorXd q, q1, q2, gravity, torque_u;
+    for (const std::size_t k : {k_before, k_after}) {
+      Posed pose;
+      Twistd per_sigma, rate;
+      path.state_in(k, sigma, pose, per_sigma, rate);
+      if (!model.joints_with_rate(pose, per_sigma, rate, p.q, &p.q, PathPlace{path.s_of(sigma), path.s_per_sigma(k)}, q,
+                                  q1, q2))
+        continue;
+      p.q2_other.push_back(q2);
+      if (!torques) continue;
+      p.torque_x_other.emplace_back();
+      model.torque_coefficients(p.q, p.q1, q2, gravity, torque_u, p.torque_x_other.back());
+    }
+  }
   return p;
 }
 
@@ -53,11 +92,19 @@ void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, 
       const double a = scale * bounds.acceleration(k);
       out.push_back({p.q1(k), p.q2(k), a});
       out.push_back({-p.q1(k), -p.q2(k), a});
+      for (const Eigen::VectorXd& q2 : p.q2_other) {
+        out.push_back({p.q1(k), q2(k), a});
+        out.push_back({-p.q1(k), -q2(k), a});
+      }
     }
     if (std::isfinite(bounds.effort(k)) && p.gravity.size()) {
       const double t = scale * bounds.effort(k);
       out.push_back({p.torque_u(k), p.torque_x(k), t - p.gravity(k)});
       out.push_back({-p.torque_u(k), -p.torque_x(k), t + p.gravity(k)});
+      for (const Eigen::VectorXd& torque_x : p.torque_x_other) {
+        out.push_back({p.torque_u(k), torque_x(k), t - p.gravity(k)});
+        out.push_back({-p.torque_u(k), -torque_x(k), t + p.gravity(k)});
+      }
     }
   }
 }

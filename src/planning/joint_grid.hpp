@@ -20,6 +20,9 @@ struct GridPoint {
   double sigma;
   Eigen::VectorXd q, q1, q2;                    // q, dq/dσ, d²q/dσ²
   Eigen::VectorXd torque_u, torque_x, gravity;  // τ = torque_u·σ̈ + torque_x·σ̇² + gravity (empty: no dynamics)
+  // The other values of q″ (and torque_x with each, where torques are kept) on the grid intervals
+  // next to σ, where the machine's q″ steps between grid points (JointModel::rate_steps).
+  std::vector<Eigen::VectorXd> q2_other, torque_x_other;
 };
 
 //! The joint path at σ: q and q′ from the machine (on the branch of q_ref, Newton from `guess` if
@@ -27,12 +30,16 @@ struct GridPoint {
 //! [σ − h, σ + h] lies inside [lo, hi] and one section, else (or where the machine has no closed
 //! form) by central differences of q′ with step h inside [lo, hi] (one-sided at its ends: a run's
 //! ends are rests, where the path may turn a corner), and with `torques` the torque coefficients
-//! (doc/retiming.md eq. 12; left empty without: no effort limit to keep).
-GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double lo, double hi,
-                     const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr, bool torques = true);
+//! (doc/retiming.md eq. 12; left empty without: no effort limit to keep). Where the machine's q″
+//! steps within ±`spacing` (the grid interval) inside [lo, hi], the other values it takes there
+//! (q2_other, with their torque_x_other).
+GridPoint grid_point(const SmoothParameter& path, const JointModel& model, double sigma, double h, double spacing,
+                     double lo, double hi, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess = nullptr,
+                     bool torques = true);
 
 //! The joint limits at one grid point as half-planes in (u, x) = (σ̈, σ̇²), each limit multiplied by
-//! `scale` (doc/retiming.md (eq. 13)).
+//! `scale` (doc/retiming.md (eq. 13)); the acceleration and torque limits for q″ and each of its
+//! other values.
 void append_limits(const GridPoint& p, const JointBounds& bounds, double scale, std::vector<HalfPlane>& out);
 
 //! The cap on σ̇² from the joint velocity limits at one grid point (+∞ where none binds).

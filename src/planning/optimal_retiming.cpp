@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -78,7 +79,8 @@ std::vector<detail::GridPoint> joint_grid(const detail::SmoothParameter& smooth,
         const double step = sigma - previous->sigma;
         guess = previous->q + step * previous->q1 + (0.5 * step * step) * previous->q2;
       }
-      grid.push_back(detail::grid_point(smooth, model, sigma, h, lo, hi, q_ref, previous ? &guess : nullptr, torques));
+      grid.push_back(detail::grid_point(smooth, model, sigma, h, (hi - lo) / static_cast<double>(count), lo, hi, q_ref,
+                                        previous ? &guess : nullptr, torques));
       q_ref = grid.back().q;
     }
   }
@@ -210,9 +212,13 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
   const Trajectory planned = plan(path, set, unjerked, ProfileKind::trapezoid);
   const detail::SmoothParameter smooth(planned, limits.acceleration);
   const JointBounds bounds = model.bounds(options);
+  // The joints along this plan's path: where they depend on the path position (a moving
+  // redundancy parameter), the grid solves them as the dense check of the result does.
+  const std::unique_ptr<JointModel> on_path = model.along(planned, q_start);
 
   std::vector<detail::Run> runs;
-  const std::vector<detail::GridPoint> grid = joint_grid(smooth, model, options, q_start, bounds, runs);
+  const std::vector<detail::GridPoint> grid =
+      joint_grid(smooth, on_path ? *on_path : model, options, q_start, bounds, runs);
   require_holding_possible(grid, bounds, model, smooth);
 
   OptimalRetimeResult result;
@@ -251,11 +257,18 @@ OptimalRetimeResult fastest_timing(const Path& path, const MetricSetd& set, cons
 }  // namespace
 
 bool JointModel::joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd&,
-                                  const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s,
+                                  const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, const PathPlace& place,
                                   Eigen::VectorXd& q, Eigen::VectorXd& q1, Eigen::VectorXd&) const {
-  joints(pose, per_sigma, q_ref, guess, s, q, q1);
+  joints(pose, per_sigma, q_ref, guess, place, q, q1);
   return false;
 }
+
+void JointModel::rate_steps(const Eigen::VectorXd&, const Eigen::VectorXd&, const PathPlace&, double, double,
+                            std::vector<Eigen::VectorXd>& q2_other) const {
+  q2_other.clear();
+}
+
+std::unique_ptr<JointModel> JointModel::along(const Trajectory&, const Eigen::VectorXd&) const { return nullptr; }
 
 std::optional<Trajectory> JointModel::scaled_scurve(const Path&, const MetricSetd&, const Limits&,
                                                     const Eigen::VectorXd&, double) const {

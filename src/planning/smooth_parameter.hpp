@@ -59,6 +59,15 @@ class SmoothParameter {
     return section_twist_rate(planned_.path(), k, tau) * (1.0 / (ell_[k] * ell_[k]));
   }
 
+  //! state() and twist_rate() at σ as section k gives them (at a junction: either side's).
+  void state_in(std::size_t k, double sigma, Posed& pose, Twistd& per_sigma, Twistd& rate) const {
+    const double tau = ell_[k] > 0.0 ? std::clamp((sigma - sigma_start_[k]) / ell_[k], 0.0, 1.0) : 0.0;
+    planned_.path().section_state_at(k, tau, pose, per_sigma);
+    per_sigma = per_sigma * (ell_[k] > 0.0 ? 1.0 / ell_[k] : 0.0);
+    rate = ell_[k] > 0.0 ? section_twist_rate(planned_.path(), k, tau) * (1.0 / (ell_[k] * ell_[k]))
+                         : Twistd(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  }
+
   //! The DISP limits in σ over [σ0, σ1]: the lowest of the sections it touches.
   void limits_over(double sigma0, double sigma1, double& speed, double& acceleration) const noexcept {
     speed = acceleration = std::numeric_limits<double>::infinity();

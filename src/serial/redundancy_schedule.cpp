@@ -109,6 +109,37 @@ RedundancySchedule::State RedundancySchedule::at(double s) const noexcept {
   return at(k, (s - section.start) / section.length);
 }
 
+void RedundancySchedule::piece_at(double s, std::size_t& k, int& i) const noexcept {
+  const auto after = std::upper_bound(sections_.begin(), sections_.end(), s,
+                                      [](double x, const SectionNodes& n) { return x < n.start; });
+  k = after == sections_.begin() ? 0 : static_cast<std::size_t>(after - sections_.begin()) - 1;
+  const SectionNodes& section = sections_[k];
+  const double x = std::clamp((s - section.start) / section.length, 0.0, 1.0) * section.intervals;
+  i = std::min(static_cast<int>(x), section.intervals - 1);
+}
+
+void RedundancySchedule::curvature_range(double s0, double s1, double& low, double& high) const noexcept {
+  low = std::numeric_limits<double>::infinity();
+  high = -low;
+  std::size_t k0, k1;
+  int i0, i1;
+  piece_at(s0, k0, i0);
+  piece_at(s1, k1, i1);
+  for (std::size_t k = k0; k <= k1; ++k) {
+    const SectionNodes& section = sections_[k];
+    const double h = section.length / section.intervals;
+    for (int i = k == k0 ? i0 : 0; i <= (k == k1 ? i1 : section.intervals - 1); ++i) {
+      const std::size_t a = section.first + static_cast<std::size_t>(i), b = a + 1;
+      // θ″ is linear on a piece (constant on Heun's parabolas): its ends bound it.
+      for (const double x : {0.0, 1.0}) {
+        const double c = Hermite{x, h}.curvature(value_[a], rate_[a], value_[b], rate_[b]);
+        low = std::min(low, c);
+        high = std::max(high, c);
+      }
+    }
+  }
+}
+
 Eigen::VectorXd RedundancySchedule::reference(const Eigen::VectorXd& q, double theta) const {
   Eigen::VectorXd out = q;
   out(joint_) = theta;

@@ -39,6 +39,9 @@ class RedundancySchedule {
   State at(std::size_t k, double tau) const noexcept;
   //! The state at path position s (clamped to the path).
   State at(double s) const noexcept;
+  //! The lowest and highest d²θ/ds² (rad/m²) on the pieces of doc/inverse-kinematics.md eq. 50
+  //! that [s0, s1] touches (clamped to the path; s0 ≤ s1): θ″ steps at the nodes.
+  void curvature_range(double s0, double s1, double& low, double& high) const noexcept;
   //! q with its parameter joint set to θ: the reference whose value branch_solution solves at
   //! (branch_following.cpp) and whose other joints pick the branch.
   Eigen::VectorXd reference(const Eigen::VectorXd& q, double theta) const;
@@ -50,6 +53,9 @@ class RedundancySchedule {
     int intervals;
   };
   int joint_ = -1;
+  // The section holding s and its piece there (both clamped).
+  void piece_at(double s, std::size_t& k, int& i) const noexcept;
+
   std::vector<SectionNodes> sections_;
   std::vector<double> value_, rate_;  // θ_i and dθ/ds at node i
 };

@@ -283,26 +283,63 @@ RetimeResult retime_by_scaling(const Path& given_path, const MetricSetd& set, co
 
 namespace {
 
+// The arm as a JointModel. With a moving redundancy rule and its schedule θ(s) on a planned path
+// (along()), the joints are solved at θ(s) with θ′ and θ″ per unit σ (doc/inverse-kinematics.md
+// eq. 51): the joints check_joint_limits with the same rule sees on that path.
 class SerialModel final : public JointModel {
  public:
-  explicit SerialModel(const SerialArm& arm) : arm_(arm) {}
+  SerialModel(const SerialArm& arm, const RedundancyRule& rule) : arm_(arm), rule_(rule) {}
+  SerialModel(const SerialArm& arm, const RedundancyRule& rule, detail::RedundancySchedule schedule)
+      : arm_(arm), rule_(rule), schedule_(std::move(schedule)) {}
   int dof() const override { return arm_.dof(); }
   std::string joint_name(int k) const override { return arm_.joint_names()[static_cast<std::size_t>(k)]; }
   const char* position_unit() const override { return "rad"; }
   void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess,
-              double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
+              const PathPlace& place, Eigen::VectorXd& q, Eigen::VectorXd& q1) const override {
     constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
-    q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
-    q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, s);
+    Eigen::VectorXd moved;
+    const ParameterAt parameter = parameter_at(place, q_ref, moved);
+    q = detail::branch_solution(arm_, pose, parameter.reference, no_time, place.s, guess);
+    q1 = detail::joint_velocity(arm_, q, per_sigma, no_time, place.s, parameter.rates.rate);
   }
   bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate,
-                        const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q,
-                        Eigen::VectorXd& q1, Eigen::VectorXd& q2) const override {
+                        const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, const PathPlace& place,
+                        Eigen::VectorXd& q, Eigen::VectorXd& q1, Eigen::VectorXd& q2) const override {
     constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
-    q = detail::branch_solution(arm_, pose, q_ref, no_time, s, guess);
-    // q′ and q″ from one factorisation of J_b (doc/retiming.md (eq. 28)).
-    detail::joint_rates(arm_, q, per_sigma, per_sigma_rate, no_time, s, q1, q2);
+    Eigen::VectorXd moved;
+    const ParameterAt parameter = parameter_at(place, q_ref, moved);
+    q = detail::branch_solution(arm_, pose, parameter.reference, no_time, place.s, guess);
+    // q′ and q″ from one factorisation of J_b (doc/retiming.md (eq. 28)), with θ′ and θ″ per unit σ.
+    detail::joint_rates(arm_, q, per_sigma, per_sigma_rate, no_time, place.s, q1, q2, parameter.rates);
     return true;
+  }
+  void rate_steps(const Eigen::VectorXd& q, const Eigen::VectorXd& q2, const PathPlace& place, double s_before,
+                  double s_after, std::vector<Eigen::VectorXd>& q2_other) const override {
+    q2_other.clear();
+    if (!schedule_.moves()) return;
+    // θ″ steps at the schedule's nodes (doc/inverse-kinematics.md eq. 50), and q″ is affine in it:
+    // q″ + Δθ″ n with the self-motion n of doc/inverse-kinematics.md eq. 43 (eq. 48), per unit σ
+    // (eq. 51). The lowest and the highest θ″ nearby bound every value between.
+    double low, high;
+    schedule_.curvature_range(s_before, s_after, low, high);
+    const double here = schedule_.at(place.s).curvature;
+    if (low == here && high == here) return;
+    constexpr double no_time = std::numeric_limits<double>::quiet_NaN();
+    const Twistd still(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    const Eigen::VectorXd n = detail::joint_velocity(arm_, q, still, no_time, place.s, 1.0);
+    const double r2 = place.s_per_sigma * place.s_per_sigma;
+    for (const double curvature : {low, high}) {
+      if (curvature != here) q2_other.push_back(q2 + ((curvature - here) * r2) * n);
+    }
+  }
+  bool rates_step() const override { return schedule_.moves(); }
+  std::unique_ptr<JointModel> along(const Trajectory& planned, const Eigen::VectorXd& q_start) const override {
+    // θ(s) on the nodes check_joint_limits takes (FollowedTrajectory's default spacing): the
+    // grid's joints are the check's.
+    detail::RedundancySchedule schedule(planned.path(), arm_, q_start, false, FollowedTrajectory::default_spacing,
+                                        rule_);
+    if (!schedule.moves()) return nullptr;
+    return std::make_unique<SerialModel>(arm_, rule_, std::move(schedule));
   }
   void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,
                            Eigen::VectorXd& gravity, Eigen::VectorXd& torque_u,
@@ -318,7 +355,7 @@ class SerialModel final : public JointModel {
                          int samples_between) const override {
     JointCheckOptions options;
     options.samples_between = samples_between;
-    return check_joint_limits(trajectory, arm_, q_start, options);
+    return check_joint_limits(trajectory, arm_, q_start, options, rule_);
   }
   std::optional<Trajectory> scaled_scurve(const Path& path, const MetricSetd& set, const Limits& limits,
                                           const Eigen::VectorXd& q_start, double headroom) const override {
@@ -328,7 +365,8 @@ class SerialModel final : public JointModel {
     held_back.velocity *= 1.0 - headroom;
     held_back.effort *= 1.0 - headroom;
     try {
-      return retime_by_scaling(path, set, limits, ProfileKind::scurve, arm_.with_joint_limits(held_back), q_start)
+      return retime_by_scaling(path, set, limits, ProfileKind::scurve, arm_.with_joint_limits(held_back), q_start, {},
+                               20, 0.0, rule_)
           .trajectory;
     } catch (const std::runtime_error&) {
       return std::nullopt;  // the loop did not converge (or slowing down cannot help): no candidate
@@ -345,19 +383,37 @@ class SerialModel final : public JointModel {
   }
 
  private:
+  // What the joints at `place` are solved with: q_ref with the parameter at θ(s), and per unit σ
+  // θ′ ds/dσ and θ″ (ds/dσ)² (doc/inverse-kinematics.md eq. 51); q_ref itself and zero rates
+  // where the parameter is held. `moved` holds the reference where it moves.
+  ParameterAt parameter_at(const PathPlace& place, const Eigen::VectorXd& q_ref, Eigen::VectorXd& moved) const {
+    if (!schedule_.moves()) return {q_ref, {}};
+    const detail::RedundancySchedule::State theta = schedule_.at(place.s);
+    moved = schedule_.reference(q_ref, theta.value);
+    const double r = place.s_per_sigma;
+    return {moved, {theta.rate * r, theta.curvature * r * r}};
+  }
+
   const SerialArm& arm_;
+  RedundancyRule rule_;
+  detail::RedundancySchedule schedule_;  // none (held) unless made by along()
 };
 
 }  // namespace
 
-std::unique_ptr<JointModel> joint_model(const SerialArm& arm) { return std::make_unique<SerialModel>(arm); }
+std::unique_ptr<JointModel> joint_model(const SerialArm& arm, const RedundancyRule& redundancy_rule) {
+  detail::require_valid(redundancy_rule);
+  return std::make_unique<SerialModel>(arm, redundancy_rule);
+}
 
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const SerialArm& arm,
-                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options) {
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options,
+                                   const RedundancyRule& redundancy_rule) {
   require(q_start.size() == arm.dof(), "q_start size", static_cast<long>(q_start.size()),
           "must equal the arm's dof " + std::to_string(arm.dof()));
   require_finite(q_start, "q_start");
-  return retime_optimal(path, set, limits, SerialModel(arm), q_start, options);
+  detail::require_valid(redundancy_rule);
+  return retime_optimal(path, set, limits, SerialModel(arm, redundancy_rule), q_start, options);
 }
 
 }  // namespace dispkin::serial

@@ -370,6 +370,71 @@ TEST(OptimalRetiming, BadOptionsAreNamed) {
             std::string::npos);
 }
 
+// A seven-joint arm (the iiwa14) on a LIN with its redundancy parameter moved along the path
+// (doc/inverse-kinematics.md eqs. 47–51): the grid solves the joints at θ(s) with θ′ and θ″, so the
+// result's report is check_joint_limits with the same rule, the joint velocity and acceleration
+// limits hold at 20 instants between characteristic points with one of them binding, the
+// parameter moves from q_start, and the result is not slower than the scaling loop with the rule.
+// The held rule gives the default's result bit for bit.
+TEST(OptimalRetiming, SevenJointsMoveTheParameterAsTheCheckSeesIt) {
+  const serial::SerialArm arm = serial::SerialArm::from_urdf_file(
+      std::string(DISPKIN_SOURCE_DIR) + "/tests/data/urdf/arm_iiwa14_dh.urdf", "link_0", "tool0");
+  Eigen::VectorXd q(7);
+  q << 0.3, 0.5, 1.9, -1.6, -0.3, 1.0, 0.4;
+  const Posed start = arm.forward(q);
+  const Posed end = start * Posed(Eigen::Quaterniond(Eigen::AngleAxisd(0.3, V::UnitZ())), V(0.1, -0.08, 0.06));
+  const Path path = Path::lin(start, end);
+  const Limits fast{1.5, 400.0, std::nullopt};
+  const serial::RedundancyRule rule;
+  OptimalRetimeOptions options;
+  options.joint_acceleration = Eigen::VectorXd::Constant(7, 10.0);
+  const OptimalRetimeResult r = retime_optimal(path, tool(), fast, arm, q, options, rule);
+
+  JointCheckOptions same;
+  same.samples_between = options.check_samples_between;
+  const JointLimitReport check = check_joint_limits(r.trajectory, arm, q, same, rule);
+  ASSERT_EQ(check.samples.size(), r.report.samples.size());
+  for (std::size_t k = 0; k < check.samples.size(); ++k) {
+    ASSERT_EQ(check.samples[k].q, r.report.samples[k].q) << k;
+    ASSERT_EQ(check.samples[k].qd, r.report.samples[k].qd) << k;
+    ASSERT_EQ(check.samples[k].qdd, r.report.samples[k].qdd) << k;
+  }
+  JointCheckOptions dense;
+  dense.samples_between = 20;
+  const JointLimitReport d = check_joint_limits(r.trajectory, arm, q, dense, rule);
+  const JointLimits limits = arm.joint_limits();
+  double velocity = 0.0, acceleration = 0.0, moved = 0.0;
+  for (const JointSample& s : d.samples) {
+    velocity = std::max(velocity, (s.qd.cwiseAbs().array() / limits.velocity.array()).maxCoeff());
+    acceleration = std::max(acceleration, (s.qdd.cwiseAbs().array() / options.joint_acceleration.array()).maxCoeff());
+    moved = std::max(moved, std::abs(s.q(6) - q(6)));
+  }
+  std::printf("iiwa14, parameter moved: optimal %.4f s after %d refinements; dense v %.6f a %.6f, q7 moved %.4f rad\n",
+              r.trajectory.duration(), r.refinements, velocity, acceleration, moved);
+  EXPECT_EQ(d.position_excess, 0.0);
+  EXPECT_LE(velocity, 1.0);
+  EXPECT_LE(acceleration, 1.0);
+  EXPECT_GT(std::max(velocity, acceleration), 0.97);
+  EXPECT_GT(moved, 0.01);
+  EXPECT_EQ(d.samples.front().q, check.samples.front().q);
+  EXPECT_LE((d.samples.front().q - q).lpNorm<Eigen::Infinity>(), 1e-14);
+  expect_disp_limits(r.trajectory, fast);
+
+  // Velocity and torque limits only, as the scaling loop keeps them.
+  const OptimalRetimeResult plain = retime_optimal(path, tool(), fast, arm, q, {}, rule);
+  const RetimeResult scaled = retime_by_scaling(path, tool(), fast, ProfileKind::trapezoid, arm, q, {}, 20, 0.0, rule);
+  std::printf("  optimal %.4f s vs scaling %.4f s\n", plain.trajectory.duration(), scaled.trajectory.duration());
+  EXPECT_LE(plain.trajectory.duration(), scaled.trajectory.duration());
+
+  const OptimalRetimeResult held = retime_optimal(path, tool(), fast, arm, q, options, serial::RedundancyRule::held());
+  const OptimalRetimeResult by_default = retime_optimal(path, tool(), fast, arm, q, options);
+  EXPECT_EQ(held.grid_s, by_default.grid_s);
+  EXPECT_EQ(held.grid_speed, by_default.grid_speed);
+  EXPECT_EQ(held.trajectory.duration(), by_default.trajectory.duration());
+  for (const JointSample& s : held.report.samples) ASSERT_EQ(s.qd(6), 0.0);
+  EXPECT_NE(held.trajectory.duration(), r.trajectory.duration());
+}
+
 // --- jerk limiting (doc/retiming.md §6) -------------------------------------------------------
 
 // The state of a moving-averaged law at t (phases and their start states).

@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -234,6 +235,12 @@ struct JointBounds {
   }
 };
 
+//! Where on the path the re-timing asks for the joints: the path position s (m) and its rate
+//! ds/dσ per unit of the parameter the twists are given in (doc/retiming.md eq. 9).
+struct PathPlace {
+  double s = 0.0, s_per_sigma = 1.0;
+};
+
 //! What re-timing needs of a machine whose joints follow a Cartesian path: the joints along the
 //! path, their limits, the torque coefficients where it has a dynamics model, and the dense check
 //! of a timed result. Implemented by the serial-arm and hexapod plugins; a machine of another
@@ -249,16 +256,33 @@ class JointModel {
   virtual const char* position_unit() const = 0;
   //! q at `pose` on the branch of q_ref (Newton from `guess` where that applies, q_ref if null)
   //! and q′ = J⁻¹ ξ′, the joint velocity per unit of path for the body twist `per_sigma` per
-  //! unit of path; `s` names the place in messages. Throws std::runtime_error where the pose has
+  //! unit of path, at `place` (named in messages). Throws std::runtime_error where the pose has
   //! no solution or the machine is singular.
   virtual void joints(const Posed& pose, const Twistd& per_sigma, const Eigen::VectorXd& q_ref,
-                      const Eigen::VectorXd* guess, double s, Eigen::VectorXd& q, Eigen::VectorXd& q1) const = 0;
+                      const Eigen::VectorXd* guess, const PathPlace& place, Eigen::VectorXd& q,
+                      Eigen::VectorXd& q1) const = 0;
   //! joints() and q″ = d²q/dσ² for the derivative `per_sigma_rate` of the body twist per unit of
   //! path, in closed form (doc/retiming.md (eq. 28)): true. The default calls joints() and returns
   //! false, leaving q″ alone: the re-timing then takes it by central differences of q′.
   virtual bool joints_with_rate(const Posed& pose, const Twistd& per_sigma, const Twistd& per_sigma_rate,
-                                const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, double s,
+                                const Eigen::VectorXd& q_ref, const Eigen::VectorXd* guess, const PathPlace& place,
                                 Eigen::VectorXd& q, Eigen::VectorXd& q1, Eigen::VectorXd& q2) const;
+  //! Where q″ steps between places of the path (not at section junctions, which the re-timing
+  //! knows): the other values q″ takes on the path positions [s_before, s_after] around `place`,
+  //! given q, q′ and q″ there, each as if taken at `place` — the values the limits between the
+  //! grid points must allow for. None by default. (A seven-joint arm's moving parameter: θ″ steps
+  //! at the nodes of doc/inverse-kinematics.md eq. 50.)
+  virtual void rate_steps(const Eigen::VectorXd& q, const Eigen::VectorXd& q2, const PathPlace& place, double s_before,
+                          double s_after, std::vector<Eigen::VectorXd>& q2_other) const;
+  //! Whether q″ may step between places (rate_steps), and q′ · ds/dσ with it at a section junction:
+  //! then the re-timing keeps the limits there for q″ as each section gives it, not only for the
+  //! central difference across the junction. False by default.
+  virtual bool rates_step() const { return false; }
+  //! The model of the joints along `planned` followed from q_start, where they depend on more than
+  //! the pose and the branch: a seven-joint arm whose redundancy parameter moves along the path, as a
+  //! function of the planned path's position s (doc/inverse-kinematics.md §14). Null (the default):
+  //! this model itself.
+  virtual std::unique_ptr<JointModel> along(const Trajectory& planned, const Eigen::VectorXd& q_start) const;
   //! The torque along the path is τ = torque_u σ̈ + torque_x σ̇² + gravity, from q, q′ and q″
   //! (doc/retiming.md); all three are left empty without a dynamics model.
   virtual void torque_coefficients(const Eigen::VectorXd& q, const Eigen::VectorXd& q1, const Eigen::VectorXd& q2,

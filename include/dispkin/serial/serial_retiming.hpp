@@ -83,16 +83,24 @@ RetimeResult retime_by_scaling(const Path& path, const MetricSetd& set, const Li
 //! arm, q_start) keeps every joint limit 0.1 % clear at a dense check (at least 10 samples between
 //! characteristic points) and is faster, the fastest of them is returned instead (jerk_window 0):
 //! the result is never slower than the KUKA re-timing patent's scaling loop where that keeps the limits so.
-//! Throws std::invalid_argument for bad options/limits, std::runtime_error where the
+//! `redundancy_rule`: a 7R arm's parameter as check_joint_limits takes it — with a rule that moves
+//! it, the grid solves the joints at θ(s) of the planned path with θ′ and θ″ in q′ and q″
+//! (doc/inverse-kinematics.md (eq. 51)), and the result's report is check_joint_limits(trajectory,
+//! arm, q_start, {check_samples_between}, redundancy_rule); the held rule (the default) keeps it
+//! at q_start's value.
+//! Throws std::invalid_argument for bad options/limits/rule, std::runtime_error where the
 //! path has no IK solution or is singular, where the static torque reaches a limit, where a
 //! joint leaves its position range, or if the dense check still fails after max_refinements.
 OptimalRetimeResult retime_optimal(const Path& path, const MetricSetd& set, const Limits& limits, const SerialArm& arm,
-                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options = {});
+                                   const Eigen::VectorXd& q_start, const OptimalRetimeOptions& options = {},
+                                   const RedundancyRule& redundancy_rule = RedundancyRule::held());
 
 //! The arm as a JointModel: joints by the continuous inverse-kinematics branch (Newton from the
 //! previous solution, all analytic solutions where that fails), q′ by the body Jacobian, torque
-//! coefficients by recursive Newton–Euler, and the scaling loop as a candidate. Holds a reference
-//! to `arm`, which must outlive it.
-std::unique_ptr<JointModel> joint_model(const SerialArm& arm);
+//! coefficients by recursive Newton–Euler, and the scaling loop as a candidate; a 7R arm's
+//! parameter as `redundancy_rule` moves it (along a planned path: JointModel::along). Holds a
+//! reference to `arm`, which must outlive it. Throws std::invalid_argument for a bad rule.
+std::unique_ptr<JointModel> joint_model(const SerialArm& arm,
+                                        const RedundancyRule& redundancy_rule = RedundancyRule::held());
 
 }  // namespace dispkin::serial

@@ -312,7 +312,6 @@ def load_job(path: Union[str, pathlib.Path]) -> Job:
     # it is read (MoveSequence.planned_end).
     limits, profile = builder.limits(pilz)
     read_retime(builder, job)
-    builder.moved_redundancy(job)
     job["corner_tolerance"] = builder.corner_tolerance()
     builder.run_planning = dict(
         metric_set=metric_set, limits=limits, profile=profile, corner_tolerance=job["corner_tolerance"]

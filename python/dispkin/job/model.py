@@ -79,8 +79,8 @@ class Part:
     #: Indices of its moves in Job.moves.
     moves: List[int]
     #: A Cartesian run planned while the job was built (its Trajectory): a run that moves a
-    #: seven-joint arm's redundancy parameter before a PTP move, whose start is where θ(s) of the
-    #: planned path ends (doc/inverse-kinematics.md §14); None: planned with the job.
+    #: seven-joint arm's redundancy parameter, whose end (where a PTP move after it starts) is
+    #: where θ(s) of the planned path ends (doc/inverse-kinematics.md §14); None: planned with the job.
     trajectory: Optional[Any] = None
 
 

@@ -134,7 +134,7 @@ class MoveSequence:
                 at + ("blend",),
                 f"{blend}: a PTP move starts and ends at rest; it does not blend with the previous move",
             )
-        self.close_run(job, moves, before_ptp=True)
+        self.close_run(job, moves)
         q_a, q_b, end = self.ptp(job, at, moves.current, moves.q_current)
         path = self.call(at + ("ptp",), Path.ptp, q_a, q_b)
         moves.built.append(Move("ptp", path, None))
@@ -200,10 +200,11 @@ class MoveSequence:
         end = self.pose(at + ("spline", "to"), job["frames"])
         return Path.spline, ([current, *through, end], job["pivot"]), end
 
-    def close_run(self, job: Dict[str, Any], moves: _Moves, before_ptp: bool = False) -> None:
+    def close_run(self, job: Dict[str, Any], moves: _Moves) -> None:
         """The Cartesian moves since the last PTP move joined (and blended) into one Path, a part;
-        on an arm, the joints at its end are the branch followed along its geometry. Before a PTP
-        move with the redundancy parameter moved, they are where the planned run ends (planned_end)."""
+        on an arm, the joints at its end are the branch followed along its geometry. With the
+        redundancy parameter moved, the run is planned as it is read and they are where the planned
+        run ends (planned_end): reading the job meets every failure of planning the run."""
         run = moves.run
         if not run:
             return
@@ -237,7 +238,7 @@ class MoveSequence:
             # The parameter as the followers take it: held, or moved by the same rule.
             moved = job.get("redundancy_rule") is not None
             moves.q_current = self.call(("moves", run[-1].index), arm.follow, poses, q_run, move_redundancy=moved)[-1]
-            if moved and before_ptp:
+            if moved:
                 moves.q_current = self.planned_end(job, moves.parts[-1], first.index)
         run.clear()
 
@@ -245,7 +246,8 @@ class MoveSequence:
         """The joints where a run that moves the redundancy parameter ends: θ(s) lives on the
         planned path (its sections and lengths, doc/inverse-kinematics.md eqs. 49–50), so the run is
         planned now, as plan_job would plan it (and then takes this plan), and followed as the
-        samples follow it (FollowedTrajectory.from_start). The PTP move after it starts there."""
+        samples follow it (FollowedTrajectory.from_start). A PTP move after it starts there; `dispkin
+        check` and `dispkin plan` both read the job, so both meet a failure of this plan."""
         settings = dict(self.run_planning, arm=job["arm"], redundancy_rule=job["redundancy_rule"])
         settings.update(retime=job.get("retime"), hexapod=None, joint_metric=False)
         at: KeyPath = ("moves", first)
@@ -259,16 +261,6 @@ class MoveSequence:
             redundancy_rule=job["redundancy_rule"],
         )
         return np.asarray(followed.end, dtype=float)
-
-    def moved_redundancy(self, job: Dict[str, Any]) -> None:
-        """``redundancy: moved`` where the followers can take it: the optimal re-timing holds the
-        parameter (doc/inverse-kinematics.md §14)."""
-        if job.get("redundancy_rule") is None:
-            return
-        at = ("machine", "serial_arm", "redundancy")
-        retime = job.get("retime")
-        if retime is not None and retime.method == "optimal":
-            raise self.fail(at, "moved: not with retime method optimal (its grid holds the parameter); use scaling")
 
     def joints_at(self, arm: Any, key_path: KeyPath, pose: Pose, q_reference: np.ndarray) -> np.ndarray:
         """The arm's joints at `pose`: q_reference itself when it reaches the pose, else the

@@ -110,7 +110,11 @@ def plan_job(job: Job) -> Union[Trajectory, JobTrajectory]:
     applied in time order. A job with PTP moves is planned part by part (a JobTrajectory):
     each Cartesian run as one path, each PTP move on the arm (within its joint velocity limits)."""
     if not job.has_ptp:
-        planned = _planned(job, job.parts[0] if job.parts else None, lambda: plan_run(job, job.path, job.q_start))
+        part = job.parts[0] if job.parts else None
+        if part is not None and part.trajectory is not None:
+            # A run planned while the job was read (MoveSequence.planned_end) keeps that plan.
+            return apply_events(job, part.trajectory)
+        planned = _planned(job, part, lambda: plan_run(job, job.path, job.q_start))
         return apply_events(job, planned)
     planned = []
     for part in job.parts:
