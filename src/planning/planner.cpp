@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "../path/path_geometry.hpp"
@@ -113,8 +114,8 @@ struct PlannedSections {
 // A curved section (a SPLINE piece or a blend) as planned: cut where, for this set, the fastest
 // object's speed or the curvature rule's speed varies along it (doc/planning.md §9, eq. 33). Each
 // part's bound is its exact peak to 0.1 % however far the velocity turns within it
-// (doc/section-length.md eqs. 25–27); a part's pieces tell how far its speed (the least middle
-// speed against the peak) and its acceleration bound vary. A part is cut into as many equal parts
+// (doc/section-length.md eqs. 25–27); a part's pieces tell how far its speed (the least speed
+// sampled against the peak) and its acceleration bound vary. A part is cut into as many equal parts
 // as that variation asks for: 0.4 % of speed where the limit v_sys binds (the cruise), one step
 // of the staircase (10 %) where the curvature rule binds (doc/planning.md eq. 11); at most 4096
 // parts a section.
@@ -141,31 +142,57 @@ void append_curve_cut(const Curve& curve, std::size_t source, const GroupFactors
                               : speed_cap;
       loss = (1.0 - v_lim / best) / curvature_ratio_loss;
     } else {
-      loss = (b.length - std::max(r.least_middle_speed, floor)) / b.length / cruise_ratio_loss;
+      loss = (b.length - std::max(r.least_speed, floor)) / b.length / cruise_ratio_loss;
     }
     return std::min(max_split, std::ceil(loss));
   };
-  // The refined bounds of the part [t0, t1].
-  const auto measure = [&](double t0, double t1) {
+  // The weighted speed at τ and the refined bounds of the part [t0, t1] whose ends have the
+  // speeds w0, w1. A cubic curve's parts are bounded from the exact speeds at the ends of their
+  // pieces (doc/section-length.md eq. 25): parts that meet share the speed where they meet. A
+  // blend's parts from the middles of theirs.
+  constexpr bool from_ends = std::is_same_v<Curve, CurveSection>;
+  const auto speed = [&](double t) {
+    if constexpr (from_ends) return curve.weighted_speed(factors, t);
+    (void)t;
+    return 0.0;
+  };
+  // Where the curvature rule (doc/planning.md eq. 11) sets the part's speed, its acceleration
+  // bound is refined to 1 % as well: its pieces' bounds then tell how it varies (eq. 33).
+  constexpr double acceleration_precision = 0.01;
+  const auto measure = [&](double t0, double t1, double w0, double w1) {
+    if constexpr (from_ends) {
+      RefinedBounds r = curve.refined_part(factors, t0, t1, w0, w1);
+      const SectionBounds& b = r.bounds;
+      if (b.acceleration > 0.0 && b.length * std::sqrt(acceleration / b.acceleration) < speed_cap)
+        r = curve.refined_part(factors, t0, t1, w0, w1, acceleration_precision);
+      return r;
+    }
+    (void)w0, (void)w1;
     Curve part = curve;
     part.v0 = detail::cut_parameter(curve, t0);
     part.v1 = detail::cut_parameter(curve, t1);
     return part.refined(factors);
   };
   std::size_t count = 1;  // parts emitted or promised
-  const auto cut = [&](const auto& self, double t0, double t1, const RefinedBounds& r) -> void {
+  const auto cut = [&](const auto& self, double t0, double t1, const RefinedBounds& r, double w0, double w1) -> void {
     const double parts = parts_wanted(t0, t1, r);
     if (!(parts > 1.0) || count + static_cast<std::size_t>(parts) - 1 > max_parts) {
       out.push_back({source, t0, t1}, r.bounds);
       return;
     }
     count += static_cast<std::size_t>(parts) - 1;
+    double a = t0, wa = w0;
     for (double i = 0; i < parts; ++i) {
-      const double a = t0 + (t1 - t0) * i / parts, b = i + 1.0 >= parts ? t1 : t0 + (t1 - t0) * (i + 1.0) / parts;
-      self(self, a, b, measure(a, b));
+      const bool last = i + 1.0 >= parts;
+      const double b = last ? t1 : t0 + (t1 - t0) * (i + 1.0) / parts;
+      const double wb = last ? w1 : speed(b);
+      self(self, a, b, measure(a, b, wa, wb), wa, wb);
+      a = b;
+      wa = wb;
     }
   };
-  cut(cut, 0.0, 1.0, curve.refined(factors));
+  const double w0 = speed(0.0), w1 = speed(1.0);
+  cut(cut, 0.0, 1.0, measure(0.0, 1.0, w0, w1), w0, w1);
 }
 
 // Appends `section` to `out`; a decoupled LIN cut into pieces until the fastest object's speed

@@ -122,13 +122,11 @@ struct CurveSection {
   }
 
   //! An upper bound of the speed of every object of the set per unit τ (never below the
-  //! exact maximum): each group's exact speed at the middle τ = ½ plus half the largest rate
-  //! at which that speed can change along the section, from bounds of the pivot
-  //! acceleration |c̈|, the angular velocity |ω| ≤ |φ̇| (‖J_r‖ ≤ 1) and the angular acceleration
-  //! |ω̇| ≤ |φ̈| + g′(θ)|φ̇|², g′(θ) = (θeᶿ − eᶿ + 1)/θ² (a bound of ‖dJ_r/dφ‖ from its series).
-  //! A body point at distance r from the pivot accelerates at most |c̈| + (|ω̇| + |ω|²) r; an
-  //! absolute point at distance r seen from the body at most |c̈| + |ω̇| r + |ω||ċ|.
-  //! Slack: about ½ × acceleration / speed of the section, which the cutting keeps small.
+  //! exact maximum) and within 0.1 % of it: the exact speeds at the ends of N equal pieces, each
+  //! piece raised by how far a velocity can bend between its ends under a bound of every
+  //! object's jerk, from bounds of the pivot's motion and of the angular velocity and its rates
+  //! (|ω| ≤ |φ̇| as ‖J_r‖ ≤ 1, the rates of J_r bounded by the series g′, g″)
+  //! (doc/section-length.md eqs. 19–27).
   double length(const MetricSetd& set, std::optional<double> system_velocity) const;
 
   //! A bound of the acceleration of every object of the set per unit τ² (unweighted): with
@@ -142,12 +140,27 @@ struct CurveSection {
   //! length() and acceleration_bound() together, sharing the motion bounds and the middle
   //! pose; `factors` must be of the same set, with use_pivot(pivot) called (the planner's way:
   //! the groups' weights and reaches are per path).
-  //! Exact peak to 0.1 %: the bounds of equal pieces of the section, each "the middle speed
-  //! plus half the rate" (doc/section-length.md eqs. 24–27).
+  //! Exact peak to 0.1 %: the bounds of equal pieces of the section, each from the exact
+  //! speeds at its ends and its jerk bound (doc/section-length.md eqs. 25–27).
   SectionBounds bounds(const GroupFactors& factors) const;
 
-  //! bounds() with how the speed and the acceleration bound vary along the section.
+  //! bounds() with how the speed and the acceleration bound vary along the section: the exact
+  //! speeds at the ends of N equal pieces and each piece's jerk bound (doc/section-length.md eqs. 25–27).
   RefinedBounds refined(const GroupFactors& factors) const;
+
+  //! refined() of the part τ ∈ [t0, t1] (cut as detail::cut_parameter), per unit τ of the part,
+  //! given the weighted speeds w0 = weighted_speed(factors, t0) and w1 = weighted_speed(factors, t1):
+  //! parts that meet share their ends' speeds.
+  //! With `acceleration_precision` > 0 the acceleration bound is refined to that share too.
+  RefinedBounds refined_part(const GroupFactors& factors, double t0, double t1, double w0, double w1,
+                             double acceleration_precision = 0.0) const;
+
+  //! The weighted fastest speed of the set at τ per unit τ, max_g w_g V_g(τ) (doc/section-length.md eq. 26).
+  double weighted_speed(const GroupFactors& factors, double tau) const;
+
+  //! The acceleration, jerk, |ω| and |ω̇| bounds of the section as one piece (doc/section-length.md
+  //! eqs. 19, 22 and 25).
+  PieceRates piece_rates(const GroupFactors& factors) const;
 
   //! The bounds of the section as one piece (doc/section-length.md eq. 24), with its weighted middle speed.
   SectionBounds piece_bounds(const GroupFactors& factors, double& middle_speed) const;
@@ -177,6 +190,21 @@ inline double jacobian_rate_bound(double theta) {
   if (theta < 1e-3) return 0.5 + theta / 3.0 + theta * theta / 8.0;
   const double e = std::exp(theta);  // once: with errno semantics the compiler calls exp twice
   return (theta * e - e + 1.0) / (theta * theta);
+}
+
+// g′(θ) as jacobian_rate_bound and g″(θ) = Σₖ≥₂ k(k − 1) θᵏ⁻²/(k + 1)! = (θ²eᶿ − 2θeᶿ + 2eᶿ − 2)/θ³,
+// which bounds ‖d²J_r(φ)[u, u]‖ / |u|² (doc/section-length.md eq. 25), from one exponential. Below
+// 10⁻² both by their series (the closed forms cancel), each tail raised to an upper bound: past
+// θ³ the tail of g′ is θ⁴/144 + θ⁵/840 + … ≤ θ⁴/140, that of g″ θ⁴/168 + θ⁵/960 + … ≤ θ⁴/160.
+inline void jacobian_rate_bounds(double theta, double& first, double& second) {
+  if (theta < 1e-2) {
+    first = 0.5 + theta * (1.0 / 3.0 + theta * (1.0 / 8.0 + theta * (1.0 / 30.0 + theta / 140.0)));
+    second = 1.0 / 3.0 + theta * (0.25 + theta * (0.1 + theta * (1.0 / 36.0 + theta / 160.0)));
+    return;
+  }
+  const double e = std::exp(theta), t2 = theta * theta;
+  first = (theta * e - e + 1.0) / t2;
+  second = (e * (t2 - 2.0 * theta + 2.0) - 2.0) / (t2 * theta);
 }
 
 // Bounds of |p′| and |p″| of a cubic over [m − δ, m + δ], by Taylor at the middle m (exact
@@ -213,6 +241,26 @@ inline MotionBounds motion_bounds_at_middle(const CubicAt& c, const CubicAt& phi
           h * h * (dphi.second + jacobian_rate_bound(theta_max) * dphi.first * dphi.first)};
 }
 
+// The motion bounds of a piece of span h from the curve at its middle, with the third
+// derivatives: |c⃛| = h³ |c‴| and |ω̈| ≤ h³ (|φ‴| + 3 g′(θ) P₁(φ) P₂(φ) + g″(θ) P₁(φ)³), from
+// ω″ = J_r φ‴ + 2 dJ_r[φ′] φ″ + dJ_r[φ″] φ′ + d²J_r[φ′, φ′] φ′ (doc/section-length.md eq. 25).
+// `middle` receives the same bounds with the half-span δ taken as 0: the motion at the middle.
+inline MotionBounds motion_bounds_with_jerk(const CubicAt& c, const CubicAt& phi, double h, MotionJerkBounds& jerk,
+                                            MotionBounds& middle) {
+  const double delta = 0.5 * h;
+  const DerivativeBounds dc = derivative_bounds(c, delta);
+  const DerivativeBounds dphi = derivative_bounds(phi, delta);
+  double g1 = 0.0, g2 = 0.0;
+  jacobian_rate_bounds(phi.value.norm() + dphi.first * delta, g1, g2);
+  const double h2 = h * h, h3 = h2 * h;
+  jerk = {h3 * c.third_norm,
+          h3 * (phi.third_norm + dphi.first * (3.0 * g1 * dphi.second + g2 * dphi.first * dphi.first))};
+  const double phi_first = phi.first.norm();
+  middle = {h * c.first.norm(), h2 * c.second.norm(), h * phi_first,
+            h2 * (phi.second.norm() + g1 * phi_first * phi_first)};
+  return {h * dc.first, h2 * dc.second, h * dphi.first, h2 * (dphi.second + g1 * dphi.first * dphi.first)};
+}
+
 }  // namespace detail
 
 inline Eigen::Matrix3d right_jacobian(const Eigen::Vector3d& phi) noexcept {
@@ -243,15 +291,53 @@ inline SectionBounds CurveSection::piece_bounds(const GroupFactors& factors, dou
 
 inline SectionBounds CurveSection::bounds(const GroupFactors& factors) const { return refined(factors).bounds; }
 
+inline PieceRates CurveSection::piece_rates(const GroupFactors& factors) const {
+  const double m = 0.5 * (v0 + v1);
+  const detail::CubicAt c = detail::cubic_at(position, m), phi = detail::cubic_at(rotation, m);
+  MotionJerkBounds jerk{0.0, 0.0};
+  MotionBounds middle{0.0, 0.0, 0.0, 0.0};
+  const MotionBounds motion = detail::motion_bounds_with_jerk(c, phi, span(), jerk, middle);
+  const MetricSetd& set = factors.set();
+  PieceRates rates{0.0, 0.0, motion.omega, motion.omega_dot, 0.0};
+  for (std::size_t i = 0; i < set.groups().size(); ++i) {
+    const GroupRates g = detail::group_rate_bounds(set.groups()[i], factors.reach(i), c.value, motion, jerk);
+    rates.acceleration = std::max(rates.acceleration, g.acceleration);
+    rates.jerk = std::max(rates.jerk, factors.weight(i) * g.jerk);
+    rates.acceleration_middle =
+        std::max(rates.acceleration_middle,
+                 detail::group_acceleration_bound(set.groups()[i], factors.reach(i), c.value, middle));
+  }
+  return rates;
+}
+
+inline double CurveSection::weighted_speed(const GroupFactors& factors, double tau) const {
+  Posed pose;
+  Twistd twist;
+  at(tau, pose, twist);
+  const MetricSetd& set = factors.set();
+  double best = 0.0;
+  for (std::size_t i = 0; i < set.groups().size(); ++i)
+    best = std::max(best, factors.weight(i) * detail::group_max_speed(set.groups()[i], pose, twist));
+  return best;
+}
+
 inline RefinedBounds CurveSection::refined(const GroupFactors& factors) const {
-  // The whole section bounded by its pieces (doc/section-length.md eq. 25).
-  CurveSection part = *this;
+  return refined_part(factors, 0.0, 1.0, weighted_speed(factors, 0.0), weighted_speed(factors, 1.0));
+}
+
+inline RefinedBounds CurveSection::refined_part(const GroupFactors& factors, double t0, double t1, double w0, double w1,
+                                                double acceleration_precision) const {
+  // The part bounded by its pieces (doc/section-length.md eq. 25): the exact speeds at their
+  // ends, the jerk bound of each.
+  CurveSection piece = *this;
   const double h = span();
-  return detail::refined_bounds([&](double t0, double t1, double& middle_speed) {
-    part.v0 = v0 + t0 * h;
-    part.v1 = t1 >= 1.0 ? v1 : v0 + t1 * h;
-    return part.piece_bounds(factors, middle_speed);
-  });
+  return detail::refined_bounds_from_ends([&](double t) { return weighted_speed(factors, t); },
+                                          [&](double a, double b) {
+                                            piece.v0 = v0 + a * h;
+                                            piece.v1 = b >= 1.0 ? v1 : v0 + b * h;
+                                            return piece.piece_rates(factors);
+                                          },
+                                          t0, t1, w0, w1, acceleration_precision);
 }
 
 inline MotionBounds CurveSection::motion_bounds() const {

@@ -29,6 +29,22 @@ struct MotionBounds {
   //!@}
 };
 
+//! Bounds over a section of the third derivatives of its motion, per unit τ³: the pivot's jerk
+//! |c⃛| and the rate of the angular acceleration |ω̈| (body).
+struct MotionJerkBounds {
+  //! |c⃛| (m per unit τ³) and |ω̈| (rad per unit τ³)
+  //!@{
+  double pivot_jerk, omega_ddot;
+  //!@}
+};
+
+//! Bounds of the acceleration ‖d²x/dτ²‖ and of the jerk ‖d³x/dτ³‖ of every object of a group over
+//! a section (unweighted, per unit τ² and τ³).
+struct GroupRates {
+  double acceleration;  //!< the acceleration bound (m per unit τ²)
+  double jerk;          //!< the jerk bound (m per unit τ³)
+};
+
 namespace detail {
 
 //! Whether n doubles are equal bit for bit (+0 and −0 differ, so a remembered result is exactly
@@ -43,6 +59,13 @@ inline bool same_bits(const double* a, const double* b, std::size_t n) noexcept 
 //! `pivot_middle`, the pivot's world position at the middle of the section, plus |ċ|/2).
 inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen::Vector3d& pivot,
                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& bounds);
+
+//! group_acceleration_bound and a bound of the jerk of every object of the group under motions
+//! within `bounds` and `jerk` (doc/section-length.md eq. 25): a body point at distance r from the
+//! pivot jerks at most |c⃛| + (|ω̈| + 3|ω||ω̇| + |ω|³) r, the velocity an absolute point at distance r
+//! sees changes its rate at most at |c⃛| + (|ω̈| + |ω||ω̇|) r + 2|ω̇||ċ| + |ω||c̈|.
+inline GroupRates group_rate_bounds(const MetricGroup<double>& g, double reach, const Eigen::Vector3d& pivot_middle,
+                                    const MotionBounds& bounds, const MotionJerkBounds& jerk) noexcept;
 
 //! How far the group's body objects reach from the pivot (body coordinates): the largest
 //! |r − p| of its relative points and |c − p| + ρ of its relative spheres, 0 without any. It
@@ -162,24 +185,44 @@ inline double group_acceleration_bound(const MetricGroup<double>& g, const Eigen
   return group_acceleration_bound(g, relative_reach(g, pivot), pivot_middle, b);
 }
 
+// The largest distance of the group's absolute objects from the pivot anywhere on the section
+// (at most |ċ|/2 from the middle); negative without any.
+inline double absolute_reach(const MetricGroup<double>& g, const Eigen::Vector3d& pivot_middle,
+                             const MotionBounds& b) noexcept {
+  if (g.absolute_points.empty() && g.absolute_spheres.empty()) return -1.0;
+  double r_absolute = 0.0;
+  for (const auto& p : g.absolute_points) r_absolute = std::max(r_absolute, (p - pivot_middle).norm());
+  for (const auto& s : g.absolute_spheres)
+    r_absolute = std::max(r_absolute, (s.center - pivot_middle).norm() + s.radius);
+  return r_absolute + 0.5 * b.pivot_speed;
+}
+
 inline double group_acceleration_bound(const MetricGroup<double>& g, double r_relative,
                                        const Eigen::Vector3d& pivot_middle, const MotionBounds& b) noexcept {
-  // The largest distance of the group's absolute objects from the pivot anywhere on the
-  // section (at most |ċ|/2 from the middle); the body objects' reach is given.
-  double r_absolute = 0.0;
-  bool has_absolute = false;
-  for (const auto& p : g.absolute_points) {
-    r_absolute = std::max(r_absolute, (p - pivot_middle).norm());
-    has_absolute = true;
-  }
-  for (const auto& s : g.absolute_spheres) {
-    r_absolute = std::max(r_absolute, (s.center - pivot_middle).norm() + s.radius);
-    has_absolute = true;
-  }
-  r_absolute += 0.5 * b.pivot_speed;
+  // The body objects' reach is given.
+  const double r_absolute = absolute_reach(g, pivot_middle, b);
   double rate = b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * r_relative;
-  if (has_absolute) rate = std::max(rate, b.pivot_acceleration + b.omega_dot * r_absolute + b.omega * b.pivot_speed);
+  if (r_absolute >= 0.0)
+    rate = std::max(rate, b.pivot_acceleration + b.omega_dot * r_absolute + b.omega * b.pivot_speed);
   return rate;
+}
+
+inline GroupRates group_rate_bounds(const MetricGroup<double>& g, double r_relative,
+                                    const Eigen::Vector3d& pivot_middle, const MotionBounds& b,
+                                    const MotionJerkBounds& j) noexcept {
+  const double r_absolute = absolute_reach(g, pivot_middle, b);
+  // Body points: x = c + R(r − p), R‴ = R([ω]ₓ³ + 2[ω]ₓ[ω̇]ₓ + [ω̇]ₓ[ω]ₓ + [ω̈]ₓ).
+  GroupRates rates{b.pivot_acceleration + (b.omega_dot + b.omega * b.omega) * r_relative,
+                   j.pivot_jerk + (j.omega_ddot + b.omega * (3.0 * b.omega_dot + b.omega * b.omega)) * r_relative};
+  if (r_absolute >= 0.0) {
+    // Absolute points: g = ċ + ω_w × (x − c), g″ = c⃛ + ω̈_w × (x − c) − 2 ω̇_w × ċ − ω_w × c̈, with
+    // ω_w = R ω, ω̇_w = R ω̇ and ω̈_w = R (ω̈ + ω × ω̇).
+    rates.acceleration =
+        std::max(rates.acceleration, b.pivot_acceleration + b.omega_dot * r_absolute + b.omega * b.pivot_speed);
+    rates.jerk = std::max(rates.jerk, j.pivot_jerk + (j.omega_ddot + b.omega * b.omega_dot) * r_absolute +
+                                          2.0 * b.omega_dot * b.pivot_speed + b.omega * b.pivot_acceleration);
+  }
+  return rates;
 }
 
 //! A section's bounds from its middle (doc/section-length.md eqs. 23–24): every object's speed changes at
