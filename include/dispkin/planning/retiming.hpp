@@ -238,7 +238,8 @@ struct JointBounds {
 //! Where on the path the re-timing asks for the joints: the path position s (m) and its rate
 //! ds/dσ per unit of the parameter the twists are given in (doc/retiming.md eq. 9).
 struct PathPlace {
-  double s = 0.0, s_per_sigma = 1.0;
+  double s = 0.0;            //!< the path position (m)
+  double s_per_sigma = 1.0;  //!< ds/dσ: the path's rate per unit of the re-timing's parameter σ
 };
 
 //! What re-timing needs of a machine whose joints follow a Cartesian path: the joints along the
