@@ -99,13 +99,19 @@ struct ParameterAt {
   detail::ParameterRates rates;
 };
 
-// `moved` holds the reference where the parameter moves.
-ParameterAt parameter_at(const detail::RedundancySchedule& schedule, const TrajectorySample& here,
+// At path position s moving at rate r and acceleration a (per second, or per unit σ of the
+// re-timing grid): θ at s, r θ′ and r² θ″ + a θ′. `moved` holds the reference where the parameter moves.
+ParameterAt parameter_at(const detail::RedundancySchedule& schedule, double s, double r, double a,
                          const Eigen::VectorXd& q_ref, Eigen::VectorXd& moved) {
   if (!schedule.moves()) return {q_ref, {}};
-  const detail::RedundancySchedule::State theta = schedule.at(here.s);
+  const detail::RedundancySchedule::State theta = schedule.at(s);
   moved = schedule.reference(q_ref, theta.value);
-  return {moved, {theta.rate * here.s_dot, theta.curvature * here.s_dot * here.s_dot + theta.rate * here.s_ddot}};
+  return {moved, {theta.rate * r, theta.curvature * r * r + theta.rate * a}};
+}
+
+ParameterAt parameter_at(const detail::RedundancySchedule& schedule, const TrajectorySample& here,
+                         const Eigen::VectorXd& q_ref, Eigen::VectorXd& moved) {
+  return parameter_at(schedule, here.s, here.s_dot, here.s_ddot, q_ref, moved);
 }
 
 }  // namespace
@@ -387,11 +393,8 @@ class SerialModel final : public JointModel {
   // θ′ ds/dσ and θ″ (ds/dσ)² (doc/inverse-kinematics.md eq. 51); q_ref itself and zero rates
   // where the parameter is held. `moved` holds the reference where it moves.
   ParameterAt parameter_at(const PathPlace& place, const Eigen::VectorXd& q_ref, Eigen::VectorXd& moved) const {
-    if (!schedule_.moves()) return {q_ref, {}};
-    const detail::RedundancySchedule::State theta = schedule_.at(place.s);
-    moved = schedule_.reference(q_ref, theta.value);
-    const double r = place.s_per_sigma;
-    return {moved, {theta.rate * r, theta.curvature * r * r}};
+    // ds/dσ is constant within a section: no θ′ d²s/dσ² term.
+    return serial::parameter_at(schedule_, place.s, place.s_per_sigma, 0.0, q_ref, moved);
   }
 
   const SerialArm& arm_;
